@@ -1,0 +1,109 @@
+"""Reading a student's answer: ``parse_answer`` and what it returns.
+
+Contents:
+    parse_answer(text, coords=, known=)  text → ParsedAnswer or Refusal; never raises
+    ParsedAnswer                         the answer as sympy objects, and how to show it back
+    Refusal                              why an answer could not be read, and where
+    TIME                                 the symbol t the coordinates depend on
+
+The modules behind it: ``tokens`` (the whitelist and threat model), ``grammar``
+(tokens to sympy), ``names`` (one spelling per name), ``messages`` (every word a
+student reads), ``readback`` (text, LaTeX, MathML).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+import sympy
+
+from grader.parse.grammar import TIME, Context, parse_tokens
+from grader.parse.messages import ParseFailure, Refusal, refusal
+from grader.parse.readback import to_latex, to_mathml, to_text
+from grader.parse.tokens import LIMITS, tokenize
+
+__all__ = ["LIMITS", "TIME", "ParsedAnswer", "Refusal", "parse_answer"]
+
+
+@dataclass(frozen=True)
+class ParsedAnswer:
+    """An answer that was read.
+
+    Attributes:
+        text: the answer as typed.
+        value: a sympy expression, a ``sympy.Eq``, or a tuple of ``Eq`` (a system).
+        kind: ``"expression"``, ``"equation"`` or ``"equations"``.
+    """
+
+    text: str
+    value: object
+    kind: str
+
+    ok = True
+
+    @property
+    def read_as_text(self) -> str:
+        """How the answer was read, as one line of Unicode text."""
+        return to_text(self.value)
+
+    @property
+    def read_as_latex(self) -> str:
+        """How the answer was read, as LaTeX."""
+        return to_latex(self.value)
+
+    @property
+    def read_as_mathml(self) -> str:
+        """How the answer was read, as a MathML ``<math>`` element."""
+        return to_mathml(self.value)
+
+
+# sympy raises these from deep inside on values it cannot build; for a student they
+# mean the same thing: this text is not mathematics we can work with.
+_SYMPY_FAILURES = (ArithmeticError, ValueError, TypeError, RecursionError, MemoryError)
+
+
+def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = ()) -> ParsedAnswer | Refusal:
+    """Read an answer typed by a student, safely.
+
+    Args:
+        text: the answer, in plain notation (``1/2 m l^2 thetadot^2``), Unicode
+            (``½``-free: ``m l² θ̇²``) or LaTeX (``\\frac{1}{2} m l^2 \\dot\\theta^2``).
+        coords: the generalized coordinates, by name in any spelling or as
+            functions of :data:`TIME`; ``theta'`` and ``θ̇`` are derivatives of these.
+        known: the other symbols the problem defines, by name or as sympy Symbols
+            (whose assumptions are kept). Juxtaposed known names split: ``mgl``.
+
+    Returns:
+        A :class:`ParsedAnswer`, or a :class:`Refusal` saying what is wrong and where.
+        Nothing a student can type makes it raise.
+
+    >>> parse_answer("1/2 m l^2 thetadot^2", coords=["theta"], known=["m", "l"]).read_as_text
+    'l^2*m*θ̇^2/2'
+    >>> print(parse_answer("sin(θ"))
+    Unbalanced bracket: the `(` at position 4 is never closed.
+    sin(θ
+       ^
+    """
+    if not isinstance(text, str):
+        return refusal("unreadable", repr(type(text)))
+    if len(text) > LIMITS.length:
+        return refusal("too_long", text[:80], length=len(text), limit=LIMITS.length)
+    if not text.strip():
+        return refusal("empty", text)
+    try:
+        tokens = tokenize(text)
+        value = parse_tokens(tokens, Context.build(coords, known), text)
+    except ParseFailure as failure:
+        return failure.to_refusal(text)
+    except _SYMPY_FAILURES:
+        return refusal("unreadable", text)
+    if _has_undefined(value):
+        return refusal("undefined_value", text)
+    kind = "equations" if isinstance(value, tuple) else "equation" if isinstance(value, sympy.Eq) else "expression"
+    return ParsedAnswer(text, value, kind)
+
+
+def _has_undefined(value) -> bool:
+    items = value if isinstance(value, tuple) else (value,)
+    return any(item.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo) for item in items)

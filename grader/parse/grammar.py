@@ -1,0 +1,585 @@
+"""From tokens to sympy objects: the grammar of answers.
+
+Contents:
+    TIME                  the symbol ``t`` the coordinates depend on
+    Context               what a problem defines: coordinates and known symbols
+    parse_tokens(...)     tokens → an expression, an ``Eq``, or a tuple of ``Eq``
+
+The grammar, loosest binding first::
+
+    answer   := item (SEP item)*  |  '[' item (',' item)* ']'
+    item     := expr ('=' expr)?
+    expr     := term (('+' | '-') term)*
+    term     := signed (('*' | '/') signed | factor)*      # juxtaposition multiplies
+    signed   := ('+' | '-') signed | factor
+    factor   := primary (SUP | '^' signed)?                 # right-associative
+    primary  := number | name | function | group | frac | sqrt
+
+Juxtaposition has the precedence of ``*`` and ``/`` and everything associates to
+the left, so ``1/2 m l^2`` is m·l²/2. Every sympy object is built here from a
+token the whitelist accepted; numbers are exact rationals (``0.5`` is 1/2).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+import sympy
+
+from grader.parse.messages import ParseFailure
+from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, canonical_name, split_derivative
+from grader.parse.tokens import LIMITS, Name, Token
+
+__all__ = ["TIME", "Context", "parse_tokens"]
+
+TIME = sympy.Symbol("t", real=True)
+
+_FUNCTIONS = {
+    "sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "cot": sympy.cot, "sec": sympy.sec,
+    "csc": sympy.csc, "asin": sympy.asin, "acos": sympy.acos, "atan": sympy.atan,
+    "sinh": sympy.sinh, "cosh": sympy.cosh, "tanh": sympy.tanh, "exp": sympy.exp,
+    "log": sympy.log, "sqrt": sympy.sqrt, "abs": sympy.Abs,
+}  # fmt: skip
+_OPENERS = {"(": ")", "[": "]", "{": "}"}
+_STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt")
+_GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
+_GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
+# One TeX symbol: a spelled-out Greek letter (from θ typed inside a run) or one letter,
+# each with its subscript; or a run of digits.
+_TEX_PIECE = re.compile(rf"(?:{_GREEK}|[A-Za-z])(?:_[A-Za-z0-9]+)?|[0-9]+")
+
+
+@dataclass(frozen=True)
+class Context:
+    """The names a problem gives meaning to.
+
+    Attributes:
+        coords: canonical name → the coordinate as a function of :data:`TIME`.
+        known: canonical name → the problem's symbol (with whatever assumptions it carries).
+    """
+
+    coords: dict[str, sympy.Expr] = field(default_factory=dict)
+    known: dict[str, sympy.Symbol] = field(default_factory=dict)
+
+    @classmethod
+    def build(cls, coords: Iterable = (), known: Iterable = ()) -> Context:
+        """A context from names (any spelling) or ready sympy objects."""
+        coord_map = {}
+        for coord in coords:
+            if isinstance(coord, str):
+                name = canonical_name(coord)
+                coord_map[name] = sympy.Function(name, real=True)(TIME)
+            else:
+                coord_map[coord.func.__name__] = coord
+        known_map = {}
+        for symbol in known:
+            if isinstance(symbol, str):
+                known_map[canonical_name(symbol)] = sympy.Symbol(canonical_name(symbol))
+            else:
+                known_map[symbol.name] = symbol
+        return cls(coord_map, known_map)
+
+    def describe_coords(self) -> str:
+        return ", ".join(self.coords) or "it has none"
+
+
+def parse_tokens(tokens: list[Token], context: Context, text: str):
+    """An expression, an ``Eq``, or a tuple of ``Eq`` (a system), from the tokens of ``text``.
+
+    Raises:
+        ParseFailure: when the tokens do not form an answer.
+    """
+    return _Parser(tokens, context, text).answer()
+
+
+class _Parser:
+    def __init__(self, tokens: list[Token], context: Context, text: str):
+        self.tokens, self.context, self.text = tokens, context, text
+        self.i = 0
+        self.depth = 0
+
+    # -- cursor ----------------------------------------------------------------
+
+    @property
+    def token(self) -> Token:
+        return self.tokens[self.i]
+
+    def advance(self) -> Token:
+        token = self.tokens[self.i]
+        self.i += 1
+        return token
+
+    def expect(self, closer: str, opener: Token) -> None:
+        if not self.token.is_op(closer):
+            self.fail_here()
+        self.advance()
+
+    def fail_here(self):
+        token = self.token
+        if token.kind == "end":
+            last = self.tokens[self.i - 1] if self.i else token
+            if self.i == 0:
+                raise ParseFailure("empty")
+            raise ParseFailure("unexpected_end", last.start, last.end, token=self.source(last))
+        if token.is_op(","):
+            raise ParseFailure("comma", token.start, token.end)
+        if token.is_op("=", "*", "/", "^", ")", "]", "}") or token.kind in ("sup", "sep"):
+            raise ParseFailure("missing_operand", token.start, token.end, token=self.show(token))
+        raise ParseFailure("unexpected", token.start, token.end, token=self.show(token))
+
+    def source(self, token: Token) -> str:
+        """A token as the student typed it, for messages."""
+        return self.text[token.start : token.end]
+
+    def show(self, token: Token) -> str:
+        return "a new line" if token.kind == "sep" else self.source(token)
+
+    def deeper(self, token: Token) -> None:
+        self.depth += 1
+        if self.depth > LIMITS.depth:
+            raise ParseFailure("too_deep", token.start, token.end, limit=LIMITS.depth)
+
+    # -- answer, item ----------------------------------------------------------
+
+    def answer(self):
+        items = self.list_of_items() if self._is_bracketed_list() else self.separated_items()
+        if self.token.kind != "end":
+            self.fail_here()
+        if len(items) == 1:
+            return items[0][1]
+        for index, (token, item) in enumerate(items, start=1):
+            if not isinstance(item, sympy.Eq):
+                raise ParseFailure("not_an_equation", token.start, token.end, index=index)
+        return tuple(item for _, item in items)
+
+    def _is_bracketed_list(self) -> bool:
+        """``[eq1, eq2]``: a bracket spanning the whole answer with a comma at its top level."""
+        if not self.token.is_op("["):
+            return False
+        depth = 0
+        has_comma = False
+        for j in range(self.i, len(self.tokens)):
+            token = self.tokens[j]
+            if token.kind == "op" and token.value in _OPENERS:
+                depth += 1
+            elif token.kind == "op" and token.value in _OPENERS.values():
+                depth -= 1
+                if depth == 0:
+                    return has_comma and self.tokens[j + 1].kind == "end"
+            elif depth == 1 and token.is_op(","):
+                has_comma = True
+        return False
+
+    def list_of_items(self):
+        self.advance()  # [
+        items = [self.item()]
+        while self.token.is_op(","):
+            self.advance()
+            items.append(self.item())
+        self.expect("]", self.tokens[0])
+        return items
+
+    def separated_items(self):
+        items = []
+        while True:
+            while self.token.kind == "sep" or self.token.is_op(";"):
+                self.advance()
+            if self.token.kind == "end":
+                break
+            items.append(self.item())
+            if not (self.token.kind == "sep" or self.token.is_op(";")):
+                break
+        if not items:
+            self.fail_here()
+        return items
+
+    def item(self):
+        first = self.token
+        lhs = self.expr()
+        if not self.token.is_op("="):
+            return first, lhs
+        self.advance()
+        rhs = self.expr()
+        if self.token.is_op("="):
+            raise ParseFailure("too_many_equals", self.token.start, self.token.end)
+        return first, sympy.Eq(lhs, rhs, evaluate=False)
+
+    # -- arithmetic ------------------------------------------------------------
+
+    def expr(self):
+        terms = [self.term()]
+        while self.token.is_op("+", "-"):
+            op = self.advance()
+            term = self.term()
+            terms.append(-term if op.value == "-" else term)
+        return sympy.Add(*terms)
+
+    def term(self):
+        factors = [self.signed()]
+        previous_was_number = self.tokens[self.i - 1].kind == "num"
+        while True:
+            token = self.token
+            if token.is_op("*", "/"):
+                self.advance()
+                factor = self.signed()
+                if token.value == "/":
+                    if factor == 0:
+                        raise ParseFailure("division_by_zero", token.start, token.end)
+                    factor = _power(factor, sympy.Integer(-1), token)
+                factors.append(factor)
+            elif token.kind in _STARTS_FACTOR or token.is_op("(", "[", "{"):
+                # Digits that touch were split on purpose (TeX's x^23); a space between is a slip.
+                if token.kind == "num" and previous_was_number and self.tokens[self.i - 1].end != token.start:
+                    raise ParseFailure("numbers_adjacent", token.start, token.end)
+                factors.append(self.factor())
+            else:
+                break
+            previous_was_number = self.tokens[self.i - 1].kind == "num"
+        return sympy.Mul(*factors)
+
+    def signed(self):
+        token = self.token
+        if token.is_op("-", "+"):
+            self.advance()
+            self.deeper(token)
+            value = self.signed()
+            self.depth -= 1
+            return -value if token.value == "-" else value
+        return self.factor()
+
+    def factor(self, primary=None):
+        prefix = []
+        if primary is not None:
+            base = primary
+        elif self.token.kind == "name":
+            # In ``kx^2`` the power belongs to x alone: split names keep their pieces apart.
+            *prefix, base = self.name(self.advance())
+        else:
+            base = self.primary()
+        return sympy.Mul(*prefix, self.exponent_of(base))
+
+    def exponent_of(self, base):
+        token = self.token
+        if token.kind == "sup":
+            self.advance()
+            return _power(base, sympy.Integer(token.value), token)
+        if token.is_op("^"):
+            self.advance()
+            self.deeper(token)
+            exponent = self.signed()
+            self.depth -= 1
+            return _power(base, exponent, token)
+        return base
+
+    # -- primaries -------------------------------------------------------------
+
+    def primary(self):
+        token = self.token
+        if token.kind == "num":
+            self.advance()
+            return sympy.Rational(token.value)
+        if token.kind == "name":
+            return sympy.Mul(*self.name(self.advance()))
+        if token.kind == "func":
+            self.advance()
+            return self.function(token)
+        if token.kind == "frac":
+            self.advance()
+            numerator = self.argument(token)
+            denominator = self.argument(token)
+            if denominator == 0:
+                raise ParseFailure("division_by_zero", token.start, token.end)
+            return numerator * _power(denominator, sympy.Integer(-1), token)
+        if token.kind == "sqrt":
+            self.advance()
+            if self.token.is_op("[") and token.value == "\\sqrt":  # \sqrt[3]{x}
+                index = self.group()
+                return _power(self.argument(token), 1 / index, token)
+            return sympy.sqrt(self.argument(token))
+        if token.kind == "op" and token.value in _OPENERS:
+            return self.group()
+        self.fail_here()
+
+    def group(self):
+        opener = self.advance()
+        self.deeper(opener)
+        value = self.expr()
+        self.expect(_OPENERS[opener.value], opener)
+        self.depth -= 1
+        return value
+
+    def argument(self, owner: Token):
+        """The argument of ``\\frac``, ``\\sqrt`` or ``√``: a group, or a single token as in TeX."""
+        token = self.token
+        if token.kind == "op" and token.value in _OPENERS:
+            return self.group()
+        if token.kind in ("num", "name", "frac", "sqrt", "func"):
+            return self.primary()
+        if token.kind == "end":
+            raise ParseFailure("missing_argument", owner.start, owner.end, name=self.source(owner))
+        self.fail_here()
+
+    def function(self, token: Token):
+        name = token.value
+        if name == "diff":
+            return self.diff(token)
+        power = None
+        if self.token.kind == "sup" or self.token.is_op("^"):
+            power = self.function_power(token)
+        self.deeper(token)
+        value = _apply(name, self.function_argument(token), token)
+        self.depth -= 1
+        return value if power is None else _power(value, sympy.Integer(power), token)
+
+    def function_power(self, function: Token) -> int:
+        """``sin^2 θ``, ``\\sin^{2}\\theta``, ``sin²θ``: the power of the function's value."""
+        token = self.advance()
+        if token.kind == "sup":
+            value = str(token.value)
+        else:
+            braced = self.token.is_op("{", "(")
+            if braced:
+                opener = self.advance()
+            value = ""
+            if self.token.is_op("-"):
+                value = "-"
+                self.advance()
+            if self.token.kind != "num":
+                raise ParseFailure("function_power", token.start, self.token.end)
+            value += self.advance().value
+            if braced:
+                self.expect(_OPENERS[opener.value], opener)
+        if value == "-1":
+            raise ParseFailure("function_inverse", function.start, self.tokens[self.i - 1].end, name=function.value)
+        if not value.isdigit() or not 1 <= int(value) <= 9:
+            raise ParseFailure("function_power", token.start, self.tokens[self.i - 1].end)
+        return int(value)
+
+    def function_argument(self, function: Token):
+        """A bracketed argument, or a bare one: ``sin θ``, ``sin 2θ``, ``cos θ₁²``, ``\\sin\\frac{θ}{2}``."""
+        token = self.token
+        if token.kind == "op" and token.value in _OPENERS:
+            return self.group()
+        if token.kind == "num":
+            coefficient = self.primary()
+            if self.token.kind == "name":
+                return coefficient * self.factor()
+            return self.factor(coefficient)
+        if token.kind in ("name", "frac", "sqrt"):
+            return self.factor()
+        if token.kind == "func":
+            return self.primary()
+        if token.kind == "end" or token.kind == "sep" or token.kind == "op":
+            raise ParseFailure("missing_argument", function.start, function.end, name=self.source(function))
+        self.fail_here()
+
+    def diff(self, token: Token):
+        """``diff(θ, t)`` and ``diff(θ, t, 2)``: time derivatives written as a call."""
+        if not self.token.is_op("("):
+            raise ParseFailure("diff_usage", token.start, token.end)
+        opener = self.advance()
+        self.deeper(opener)
+        target = self.expr()
+        order = 0
+        while self.token.is_op(","):
+            self.advance()
+            variable = self.token
+            if variable.kind == "name" and canonical_name(variable.value.raw) == "t" and not variable.value.primes:
+                self.advance()
+                order += 1
+            elif variable.kind == "num" and order == 1 and variable.value.isdigit():
+                self.advance()
+                order = int(variable.value)
+            else:
+                raise ParseFailure("diff_usage", variable.start, variable.end)
+        if not self.token.is_op(")") or order == 0:
+            raise ParseFailure("diff_usage", token.start, self.token.end)
+        self.advance()
+        self.depth -= 1
+        if order > LIMITS.derivative_order:
+            raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
+        return sympy.diff(target, TIME, order)
+
+    # -- names -----------------------------------------------------------------
+
+    def name(self, token: Token) -> list:
+        """The values a name stands for: one, or several for a split name (``mgl``)."""
+        name: Name = token.value
+        pieces = self.resolve(name, token)
+        order = name.dots + name.primes
+        if order:
+            last = pieces[-1]
+            if not _is_coordinate(last, self.context):
+                base = canonical_name(name.raw) if len(pieces) == 1 else str(last)
+                raise ParseFailure(
+                    "derivative_of_constant", token.start, token.end,
+                    name=self.source(token), base=base, coords=self.context.describe_coords(),
+                )  # fmt: skip
+            if order > LIMITS.derivative_order:
+                raise ParseFailure("derivative_order", token.start, token.end)
+            pieces[-1] = _time_derivative(last, order)
+        if len(pieces) == 1 and _is_coordinate_or_derivative(pieces[0], self.context):
+            self._skip_time_argument()
+        values, i = [], 0
+        while i < len(pieces):
+            value, i = self.chain(pieces, i, token)
+            values.append(value)
+        return values
+
+    def chain(self, pieces, i, token):
+        """Pieces of a split name, where a function piece takes the piece after it (``mglsintheta``)."""
+        piece = pieces[i]
+        if isinstance(piece, str):  # a function name
+            if i + 1 < len(pieces):
+                argument, j = self.chain(pieces, i + 1, token)
+                return _apply(piece, argument, token), j
+            return _apply(piece, self.function_argument(token), token), i + 1
+        return piece, i + 1
+
+    def _skip_time_argument(self) -> None:
+        """``theta(t)`` is the coordinate itself."""
+        t = self.tokens
+        if (
+            self.token.is_op("(")
+            and t[self.i + 1].kind == "name"
+            and t[self.i + 1].value == Name("t")
+            and t[self.i + 2].is_op(")")
+        ):
+            self.i += 3
+
+    def resolve(self, name: Name, token: Token) -> list:
+        """The meaning of a name: one piece, or several when known symbols are juxtaposed."""
+        canonical = canonical_name(name.raw)
+        whole = self.lookup(canonical)
+        if whole is not None:
+            return [whole]
+        if _GREEK_NAME.match(canonical):
+            return [sympy.Symbol(canonical)]  # lambda is λ, never l·a·m·b·d·a
+        pieces = self.split(name.raw, token)
+        if pieces:
+            return pieces
+        if name.tex:
+            return self.tex_letters(name.raw)
+        return [sympy.Symbol(canonical)]
+
+    def tex_letters(self, raw: str) -> list:
+        """A LaTeX run that is no known name, read as TeX does: one symbol per letter."""
+        pieces = []
+        for match in _TEX_PIECE.finditer(raw):
+            piece = match[0]
+            if piece.isdecimal():
+                pieces.append(sympy.Integer(piece))
+            else:
+                pieces.append(self.lookup(canonical_name(piece)) or sympy.Symbol(canonical_name(piece)))
+        return pieces
+
+    def lookup(self, canonical: str):
+        """A name that means one thing here, or ``None``."""
+        context = self.context
+        if canonical in context.coords:
+            return context.coords[canonical]
+        if canonical in context.known:
+            return context.known[canonical]
+        derivative = split_derivative(canonical)
+        if derivative and derivative[0] in context.coords:
+            return _time_derivative(context.coords[derivative[0]], derivative[1])
+        if canonical == "t":
+            return TIME
+        if canonical == "pi":
+            return sympy.pi
+        if canonical == "e":
+            return sympy.E
+        return None
+
+    def split(self, raw: str, token: Token) -> list | None:
+        """``mgl`` → m, g, l when each is known: the split into fewest known pieces.
+
+        Returns ``None`` when no split exists; refuses a name with two equally short splits.
+        """
+        n = len(raw)
+        best: list[list | None] = [None] * (n + 1)  # best[i]: the fewest-piece splits of raw[:i]
+        best[0] = [[]]
+        for end in range(1, n + 1):
+            for start in range(max(0, end - LIMITS.name), end):
+                if best[start] is None:
+                    continue
+                if raw[start] == "_":
+                    continue  # an underscore joins a piece to the one before (m_l is m·l, once)
+                piece = raw[start:end].rstrip("_")
+                meaning = self._piece(piece)
+                if meaning is None:
+                    continue
+                candidates = [[*split, (piece, meaning)] for split in best[start]]
+                if best[end] is None or len(candidates[0]) < len(best[end][0]):
+                    best[end] = candidates[:2]
+                elif len(candidates[0]) == len(best[end][0]):
+                    best[end] = (best[end] + candidates)[:2]
+        if best[n] is None or len(best[n][0]) < 2:
+            return None
+        if len(best[n]) > 1:
+            first, second = ("·".join(p for p, _ in split) for split in best[n][:2])
+            raise ParseFailure(
+                "ambiguous_name", token.start, token.end, name=self.source(token), first=first, second=second
+            )
+        return [meaning for _, meaning in best[n][0]]
+
+    def _piece(self, piece: str):
+        if not piece or piece[0].isdigit():
+            return None
+        if piece in FUNCTION_NAMES:
+            return FUNCTION_NAMES[piece]
+        if piece == "e" and "e" not in self.context.known:
+            return None  # m e is more likely a typo than m times Euler's number
+        return self.lookup(canonical_name(piece))
+
+
+def _time_derivative(coordinate, order: int):
+    # Built directly: sympy.diff would spend half the parse re-deriving what we know.
+    return sympy.Derivative(coordinate, (TIME, order))
+
+
+def _apply(name: str, argument, token: Token):
+    value = _FUNCTIONS[name](argument)
+    if value.has(sympy.zoo, sympy.nan):
+        raise ParseFailure("undefined_value", token.start, token.end)
+    return value
+
+
+def _power(base, exponent, token: Token):
+    """``base ** exponent``, refusing what would be too large to build or to check."""
+    if exponent.is_Number:
+        if abs(exponent) > LIMITS.exponent:
+            raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
+        if base.is_Rational and exponent.is_Integer:
+            digits = (_digits(base.p) + _digits(base.q)) * abs(int(exponent))
+            if digits > LIMITS.power_digits:
+                raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
+        if base == 0 and exponent.is_negative:
+            raise ParseFailure("division_by_zero", token.start, token.end)
+    elif exponent.is_number and not exponent.has(sympy.Symbol):
+        # A numeric but unevaluated exponent (sqrt(2)^(9^9)...) is bounded by its float value.
+        magnitude = abs(complex(exponent.evalf(15)))
+        if not magnitude <= LIMITS.exponent:
+            raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
+    value = sympy.Pow(base, exponent)
+    # sympy folds (x^a)^b into x^(ab): the folded exponent must be bounded too.
+    if value.is_Pow and value.exp.is_Number and abs(value.exp) > LIMITS.exponent:
+        raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
+    return value
+
+
+def _digits(n: int) -> int:
+    return 1 if n == 0 else int(math.log10(abs(n))) + 1
+
+
+def _is_coordinate(value, context: Context) -> bool:
+    return any(value == q for q in context.coords.values())
+
+
+def _is_coordinate_or_derivative(value, context: Context) -> bool:
+    if isinstance(value, sympy.Derivative):
+        value = value.expr
+    return _is_coordinate(value, context)

@@ -1,0 +1,116 @@
+"""What a student is told when an answer cannot be read: every word in one place.
+
+Contents:
+    MESSAGES     refusal code → the sentence a student reads
+    Refusal      the parser's failure value: code, message, where
+    ParseFailure the internal exception that carries a Refusal out of the parser
+
+Each message says what is wrong in the student's terms and, where there is a
+spot to point at, ``Refusal.pointer`` draws a caret under it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["MESSAGES", "ParseFailure", "Refusal", "refusal"]
+
+MESSAGES: dict[str, str] = {
+    "empty": "Your answer is empty.",
+    "too_long": "Your answer is {length} characters long; the limit is {limit}.",
+    "bad_character": "`{char}` is not something an answer can contain.",
+    "string": "Quotes are not allowed: an answer is mathematics, not text.",
+    "prime_position": "A prime (') marks a time derivative and must follow a coordinate's name, as in theta'.",
+    "comment": "`#` starts a comment in code; it cannot be part of an answer.",
+    "attribute": "`.{name}` looks like attribute access in code; it cannot be part of an answer.",
+    "lone_point": "A decimal point needs digits after it, as in 0.5.",
+    "assignment": "`{op}` is an assignment or a test in code; write an equation with a single `=`.",
+    "unclosed": "Unbalanced bracket: the `{open}` at position {position} is never closed.",
+    "unopened": "Unbalanced bracket: the `{close}` at position {position} has no matching opening bracket.",
+    "mismatched": "The `{open}` at position {open_position} is closed by `{close}` at position {position}.",
+    "too_deep": "Your answer is nested too deeply (more than {limit} levels).",
+    "exponent_too_large": "This exponent is too large to handle (the limit is {limit}).",
+    "number_too_large": "This number is too large to handle ({digits} digits; the limit is {limit}).",
+    "name_too_long": "`{name}` is too long for a name (the limit is {limit} characters).",
+    "bad_name": "`{name}` is not a name an answer can use: names are letters and digits, joined by single underscores.",
+    "unknown_function": "`{name}` is not a function this grader knows. Known functions: {known}.",
+    "unknown_command": "`\\{name}` is not a LaTeX command this grader knows.",
+    "function_inverse": "`{name}^-1` is ambiguous: write a{name}(x) for the inverse function or 1/{name}(x) for the reciprocal.",
+    "function_power": "A power written on a function name must be a small whole number, as in sin^2(θ).",
+    "missing_argument": "`{name}` needs an argument, as in {name}(θ).",
+    "derivative_of_constant": "`{name}` is written as a time derivative, but {base} is not a coordinate of this problem ({coords}).",
+    "derivative_order": "Derivatives of order higher than 3 are not accepted here.",
+    "diff_usage": "Write a time derivative as diff(θ, t) or diff(θ, t, 2).",
+    "dot_usage": "\\{name} takes one coordinate, as in \\{name}{{\\theta}}.",
+    "ambiguous_name": "`{name}` could be read as {first} or as {second}; put a space or `*` between the symbols.",
+    "numbers_adjacent": "Two numbers stand side by side here; put an operator between them.",
+    "unexpected": "`{token}` was not expected here.",
+    "missing_operand": "Something is missing before `{token}`.",
+    "unexpected_end": "Your answer ends too early: something is missing after `{token}`.",
+    "too_many_equals": "An equation has one `=`; this one has more.",
+    "comma": "A comma is not understood here. Write decimals with a point (0.5); list equations as [eq1, eq2] or on separate lines.",
+    "not_an_equation": "In a list of equations every item needs an `=`; item {index} has none.",
+    "division_by_zero": "This divides by zero.",
+    "undefined_value": "Your answer contains a value that is undefined (such as a division by zero or log(0)).",
+    "unreadable": "This answer could not be read as mathematics.",
+}
+
+
+_WINDOW = 60  # characters of a long line shown around the spot
+
+
+@dataclass(frozen=True)
+class Refusal:
+    """An answer the parser would not accept, and why.
+
+    Attributes:
+        code: a stable key into :data:`MESSAGES` (``"unclosed"``, ``"unknown_function"``…).
+        message: the sentence shown to the student.
+        text: the answer as it was typed.
+        start: 0-based offset of the offending spot in ``text``, or ``None``.
+        end: offset just past it.
+    """
+
+    code: str
+    message: str
+    text: str
+    start: int | None = None
+    end: int | None = None
+
+    ok = False  # a Refusal is falsy in the sense that matters: no answer to grade
+
+    @property
+    def pointer(self) -> str:
+        """The offending line of the answer with a caret under the spot (``""`` when none)."""
+        if self.start is None:
+            return ""
+        line_start = self.text.rfind("\n", 0, self.start) + 1
+        line_end = self.text.find("\n", self.start)
+        line_end = len(self.text) if line_end == -1 else line_end
+        # A long line is shown as a window around the spot, so the caret stays on screen.
+        window_start = max(line_start, self.start - _WINDOW // 2)
+        window_end = min(line_end, window_start + _WINDOW)
+        prefix = "…" if window_start > line_start else ""
+        suffix = "…" if window_end < line_end else ""
+        width = max(1, min(self.end or self.start + 1, window_end) - self.start)
+        column = len(prefix) + self.start - window_start
+        return f"{prefix}{self.text[window_start:window_end]}{suffix}\n{' ' * column}{'^' * width}"
+
+    def __str__(self) -> str:
+        return f"{self.message}\n{self.pointer}" if self.pointer else self.message
+
+
+def refusal(code: str, text: str, start: int | None = None, end: int | None = None, **details) -> Refusal:
+    """Build a :class:`Refusal`, with the message filled in from :data:`MESSAGES`."""
+    return Refusal(code, MESSAGES[code].format(**details), text, start, end)
+
+
+class ParseFailure(Exception):
+    """Raised inside the parser to abandon a parse; never escapes ``parse_answer``."""
+
+    def __init__(self, code: str, start: int | None = None, end: int | None = None, **details):
+        super().__init__(code)
+        self.code, self.start, self.end, self.details = code, start, end, details
+
+    def to_refusal(self, text: str) -> Refusal:
+        return refusal(self.code, text, self.start, self.end, **self.details)

@@ -1,0 +1,126 @@
+"""Names in answers: Greek letters, subscripts, and one canonical spelling per name.
+
+Contents:
+    GREEK_BY_LETTER, GREEK_NAMES   Unicode Greek letters and their ASCII names
+    SUBSCRIPT_DIGITS, SUPERSCRIPTS Unicode sub- and superscript characters
+    canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
+    split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
+    unicode_name(name)             ``theta_1`` → ``θ₁``, for reading an answer back
+
+Every spelling of one name is one symbol: ``theta1``, ``theta_1``, ``θ₁`` and
+``\\theta_1`` all become the canonical ``theta_1``. Canonical names are ASCII
+letters, digits and single underscores, so they are safe to show and to hand to
+printers.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+
+__all__ = [
+    "FUNCTION_NAMES",
+    "GREEK_BY_LETTER",
+    "GREEK_NAMES",
+    "SUBSCRIPT_DIGITS",
+    "SUPERSCRIPTS",
+    "canonical_name",
+    "split_derivative",
+    "unicode_name",
+]
+
+# Unicode letter → ASCII name. Variant forms (ϑ, ϕ, ϵ, ς) are the same letter to a
+# student, so they share a name; µ (the micro sign) is how some keyboards type μ.
+GREEK_BY_LETTER: dict[str, str] = {
+    "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "epsilon", "ϵ": "epsilon",
+    "ζ": "zeta", "η": "eta", "θ": "theta", "ϑ": "theta", "ι": "iota", "κ": "kappa",
+    "λ": "lambda", "μ": "mu", "µ": "mu", "ν": "nu", "ξ": "xi", "ο": "omicron", "π": "pi",
+    "ρ": "rho", "σ": "sigma", "ς": "sigma", "τ": "tau", "υ": "upsilon", "φ": "phi",
+    "ϕ": "phi", "χ": "chi", "ψ": "psi", "ω": "omega",
+    "Γ": "Gamma", "Δ": "Delta", "Θ": "Theta", "Λ": "Lambda", "Ξ": "Xi", "Π": "Pi",
+    "Σ": "Sigma", "Υ": "Upsilon", "Φ": "Phi", "Ψ": "Psi", "Ω": "Omega",
+}  # fmt: skip
+
+# ASCII name → the Unicode letter used when reading an answer back.
+GREEK_NAMES: dict[str, str] = {}
+for _letter, _name in GREEK_BY_LETTER.items():
+    GREEK_NAMES.setdefault(_name, _letter)
+
+SUBSCRIPT_DIGITS = {chr(0x2080 + d): str(d) for d in range(10)}
+SUPERSCRIPTS = {"²": "2", "³": "3", "¹": "1", "⁰": "0", "⁻": "-"} | {chr(0x2070 + d): str(d) for d in range(4, 10)}
+_SUBSCRIPT_OUT = {v: k for k, v in SUBSCRIPT_DIGITS.items()}
+
+# The whitelist of functions, by every name a student may use, to the canonical one.
+FUNCTION_NAMES: dict[str, str] = {
+    "sin": "sin", "cos": "cos", "tan": "tan", "cot": "cot", "sec": "sec", "csc": "csc",
+    "asin": "asin", "arcsin": "asin", "acos": "acos", "arccos": "acos",
+    "atan": "atan", "arctan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
+    "exp": "exp", "log": "log", "ln": "log", "sqrt": "sqrt", "abs": "abs",
+}  # fmt: skip
+
+_TRAILING_DIGITS = re.compile(r"^([A-Za-z]+)_?([0-9]+)$")
+# Lazy base so that ``thetaddot`` is theta + ddot, not thetad + dot.
+_DERIVATIVE = re.compile(r"^(?P<base>[A-Za-z]+?(?:_?[0-9]+)?)_?(?P<dots>d?dot)(?:_?(?P<sub>[0-9]+))?$")
+
+
+def canonical_name(raw: str) -> str:
+    """The one spelling of a name, with Greek letters spelled out in ASCII.
+
+    >>> canonical_name("theta1"), canonical_name("θ₁"), canonical_name("l2")
+    ('theta_1', 'theta_1', 'l_2')
+    >>> canonical_name("p_θ"), canonical_name("x_cm"), canonical_name("mgl")
+    ('p_theta', 'x_cm', 'mgl')
+    """
+    ascii_name = "".join(_ascii_char(c) for c in raw)
+    match = _TRAILING_DIGITS.match(ascii_name)
+    if match:
+        return f"{match[1]}_{match[2]}"
+    return ascii_name
+
+
+def _ascii_char(c: str) -> str:
+    if c in GREEK_BY_LETTER:
+        return GREEK_BY_LETTER[c]
+    if c in SUBSCRIPT_DIGITS:
+        return "_" + SUBSCRIPT_DIGITS[c]
+    return c
+
+
+def split_derivative(name: str) -> tuple[str, int] | None:
+    """Split a ``dot``/``ddot`` suffix off a canonical name.
+
+    Returns the canonical base name and the number of dots, or ``None`` when the
+    name has no such suffix. Whether the base is a coordinate is the caller's
+    question.
+
+    >>> split_derivative("thetaddot"), split_derivative("theta_1dot"), split_derivative("xdot_2")
+    (('theta', 2), ('theta_1', 1), ('x_2', 1))
+    >>> split_derivative("theta") is None
+    True
+    """
+    match = _DERIVATIVE.match(name)
+    if not match:
+        return None
+    base = match["base"]
+    if match["sub"]:
+        if _TRAILING_DIGITS.match(base):
+            return None  # two subscripts, as in theta1dot2: not a name we know
+        base = f"{base}_{match['sub']}"
+    return canonical_name(base), 2 if match["dots"] == "ddot" else 1
+
+
+def unicode_name(name: str, dots: int = 0) -> str:
+    """A canonical name as a student would write it by hand, in Unicode.
+
+    >>> unicode_name("theta_1", dots=1), unicode_name("p_theta"), unicode_name("x_cm")
+    ('θ̇₁', 'p_θ', 'x_cm')
+    """
+    base, _, sub = name.partition("_")
+    text = GREEK_NAMES.get(base, base)
+    text += {0: "", 1: "\u0307", 2: "\u0308"}.get(dots, "")
+    if sub:
+        if sub.isdigit():
+            text += "".join(_SUBSCRIPT_OUT[d] for d in sub)
+        else:
+            text += "_" + GREEK_NAMES.get(sub, sub)
+    return unicodedata.normalize("NFC", text)  # ẋ as one character where Unicode has one

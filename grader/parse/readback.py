@@ -1,0 +1,151 @@
+"""Showing an answer back as it was read: plain text, LaTeX and MathML, with dots.
+
+Contents:
+    to_text(value)     one line of Unicode that could be typed back in: ``g*l*m*sin(θ)``
+    to_latex(value)    LaTeX with ``\\dot{\\theta}_{1}`` for time derivatives
+    to_mathml(value)   a complete ``<math>`` element, presentation markup, no scripts
+
+``value`` is what the parser returns: an expression, an ``Eq`` or a tuple of them.
+Coordinates are printed as their names (``θ``, not ``θ(t)``) and their time
+derivatives with dots over them, as a student writes them.
+"""
+
+from __future__ import annotations
+
+import sympy
+from sympy.core.function import AppliedUndef
+from sympy.printing.latex import LatexPrinter
+from sympy.printing.mathml import MathMLPresentationPrinter
+from sympy.printing.str import StrPrinter
+
+from grader.parse.names import unicode_name
+
+__all__ = ["to_latex", "to_mathml", "to_text"]
+
+_MATHML_NS = "http://www.w3.org/1998/Math/MathML"
+_DOT_SUFFIX = {1: "dot", 2: "ddot", 3: "dddot"}
+
+
+def _as_coordinate(expr) -> tuple[str, int] | None:
+    """(name, number of dots) for a coordinate q(t) or its time derivative, else ``None``."""
+    if isinstance(expr, AppliedUndef) and len(expr.args) == 1 and expr.args[0].is_Symbol:
+        return expr.func.__name__, 0
+    if isinstance(expr, sympy.Derivative) and isinstance(expr.expr, AppliedUndef):
+        (variable, order), *rest = expr.variable_count
+        if not rest and variable in expr.expr.args:
+            return expr.expr.func.__name__, int(order)
+    return None
+
+
+def _dotted_symbol(name: str, dots: int) -> sympy.Symbol:
+    """A Symbol whose name sympy's printers show with dots: theta_1 → thetadot_1."""
+    base, underscore, sub = name.partition("_")
+    return sympy.Symbol(base + _DOT_SUFFIX.get(dots, "") + underscore + sub)
+
+
+class _TextPrinter(StrPrinter):
+    def _print_Symbol(self, expr):
+        return unicode_name(expr.name)
+
+    def _print_Derivative(self, expr):
+        coordinate = _as_coordinate(expr)
+        return unicode_name(*coordinate) if coordinate else super()._print_Derivative(expr)
+
+    def _print_Function(self, expr):
+        coordinate = _as_coordinate(expr)
+        return unicode_name(*coordinate) if coordinate else super()._print_Function(expr)
+
+    def _print_Pi(self, expr):
+        return "π"
+
+    def _print_Exp1(self, expr):
+        return "e"
+
+    def _print_Pow(self, expr, rational=False):
+        return super()._print_Pow(expr, rational).replace("**", "^")
+
+    def _print_Relational(self, expr):
+        return f"{self._print(expr.lhs)} = {self._print(expr.rhs)}"
+
+
+class _LatexPrinter(LatexPrinter):
+    def _print_Derivative(self, expr):
+        coordinate = _as_coordinate(expr)
+        return self._print(_dotted_symbol(*coordinate)) if coordinate else super()._print_Derivative(expr)
+
+    def _print_Function(self, expr, exp=None):
+        coordinate = _as_coordinate(expr)
+        if coordinate:
+            text = self._print(_dotted_symbol(*coordinate))
+            return f"{text}^{{{exp}}}" if exp else text
+        return super()._print_Function(expr, exp)
+
+
+class _MathMLPrinter(MathMLPresentationPrinter):
+    def _print_Derivative(self, expr):
+        coordinate = _as_coordinate(expr)
+        return self._dotted(*coordinate) if coordinate else super()._print_Derivative(expr)
+
+    def _print_Function(self, expr):
+        coordinate = _as_coordinate(expr)
+        return self._dotted(*coordinate) if coordinate else super()._print_Function(expr)
+
+    def _dotted(self, name: str, dots: int):
+        base, _, sub = name.partition("_")
+        element = self._print(sympy.Symbol(base))
+        if dots:
+            over = self.dom.createElement("mover")
+            over.setAttribute("accent", "true")
+            mark = self.dom.createElement("mo")
+            mark.appendChild(self.dom.createTextNode({1: "\u02d9", 2: "\u00a8"}.get(dots, "\u20db")))
+            over.appendChild(element)
+            over.appendChild(mark)
+            element = over
+        if sub:
+            subscripted = self.dom.createElement("msub")
+            subscripted.appendChild(element)
+            subscripted.appendChild(self._print(sympy.Symbol(sub)))
+            element = subscripted
+        return element
+
+
+def _items(value) -> list:
+    return list(value) if isinstance(value, tuple) else [value]
+
+
+def to_text(value) -> str:
+    """One line of Unicode text; the equations of a system are joined by ``; ``.
+
+    >>> import sympy
+    >>> theta = sympy.Function("theta")(sympy.Symbol("t"))
+    >>> to_text(sympy.Symbol("m_1") * theta.diff("t") ** 2)
+    'm₁*θ̇^2'
+    """
+    printer = _TextPrinter()
+    return "; ".join(printer.doprint(item) for item in _items(value))
+
+
+def to_latex(value) -> str:
+    r"""LaTeX; a system is a ``\begin{aligned}`` block.
+
+    >>> import sympy
+    >>> theta = sympy.Function("theta_1")(sympy.Symbol("t"))
+    >>> to_latex(sympy.Eq(theta.diff("t", 2), -sympy.sin(theta), evaluate=False))
+    '\\ddot{\\theta}_{1} = - \\sin{\\left(\\theta_{1} \\right)}'
+    """
+    printer = _LatexPrinter()
+    items = [printer.doprint(item) for item in _items(value)]
+    if len(items) == 1:
+        return items[0]
+    return r"\begin{aligned}" + r" \\ ".join(items) + r"\end{aligned}"
+
+
+def to_mathml(value) -> str:
+    """A complete ``<math>`` element; a system is a table, one equation per row."""
+    printer = _MathMLPrinter()
+    items = [printer.doprint(item) for item in _items(value)]
+    if len(items) == 1:
+        body = items[0]
+    else:
+        body = "<mtable>" + "".join(f"<mtr><mtd>{item}</mtd></mtr>" for item in items) + "</mtable>"
+    return f'<math xmlns="{_MATHML_NS}" display="inline">{body}</math>'

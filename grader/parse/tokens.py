@@ -1,0 +1,423 @@
+"""Turning a student's text into tokens: the whitelist, and why it is one.
+
+Contents:
+    LIMITS                   the caps on size, nesting, numbers and names
+    Token, Name              what the grammar consumes
+    tokenize(text)           plain notation (``m g l sin θ``), or LaTeX when the text has a backslash
+
+Threat model
+------------
+Every character here was typed by someone we do not trust, and the grader runs on a
+department's server. We assume the author of an answer will try to:
+
+* run code. sympy's ``sympify`` and ``parse_expr`` call ``eval``, and no restricted
+  namespace stops ``Integer.__mro__[-1].__subclasses__()``. So no student text is ever
+  handed to ``eval``, ``exec``, ``sympify``, ``parse_expr`` or ``lambdify``: this
+  tokenizer accepts a closed set of characters and words, and the grammar builds sympy
+  objects itself from the tokens. Attribute access (``.x``), strings, comments,
+  assignments, ``__dunder__`` names and unknown functions are refused outright, so
+  nothing that resembles code is ever read as mathematics.
+* make a Symbol whose *name* is code. ``lambdify`` writes Symbol names into Python
+  source (sympy #24990). Names are built only from ASCII letters, digits and single
+  underscores (Greek letters are spelled out), never from the raw text.
+* exhaust time or memory without running code: ``9^9^9^9``, ``1e999999999``, 10,000
+  nested brackets, a 20,000-term sum. The input length, bracket and recursion depth,
+  digits in a literal, exponent size and name length are capped here and in the
+  grammar; the symbolic checks downstream have their own time limits.
+* crash the grader. Whatever is typed, ``parse_answer`` returns a value; it never
+  raises. The property tests feed it arbitrary text to keep it so.
+
+Anything not explicitly allowed below is refused with a message that points at it.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+from dataclasses import dataclass
+
+from grader.parse.messages import ParseFailure
+from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, SUBSCRIPT_DIGITS, SUPERSCRIPTS
+
+__all__ = ["LIMITS", "Name", "Token", "tokenize"]
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Caps that keep a hostile answer cheap to refuse. Realistic answers are far inside them."""
+
+    length: int = 2000  # characters in an answer
+    depth: int = 40  # nested brackets, function calls and signs
+    digits: int = 30  # digits in one number
+    exponent: int = 100  # magnitude of a numeric exponent
+    power_digits: int = 400  # digits of an evaluated numeric power
+    name: int = 40  # characters in one name
+    derivative_order: int = 3
+
+
+LIMITS = Limits()
+
+
+@dataclass(frozen=True)
+class Name:
+    """An identifier as typed: ASCII spelling, time-derivative marks, and how it was written.
+
+    ``raw`` has Greek letters spelled out and Unicode subscripts as ``_digits``
+    (``θ̇₁`` → ``theta_1`` with ``dots=1``). ``tex`` marks a run of letters in a
+    LaTeX answer: where it is not a name the problem knows, TeX reads it one letter
+    at a time (``xy`` is x·y), where plain notation would keep one unknown name.
+    """
+
+    raw: str
+    dots: int = 0
+    primes: int = 0
+    tex: bool = False
+
+
+@dataclass(frozen=True)
+class Token:
+    """One token: its kind, its value, and where it stands in the original text.
+
+    Kinds: ``num`` (value: digit string), ``name`` (value: :class:`Name`), ``func``
+    (value: canonical function name, or ``diff``), ``op`` (value: one of
+    ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
+    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``end``.
+    """
+
+    kind: str
+    value: object
+    start: int
+    end: int
+
+    def is_op(self, *ops: str) -> bool:
+        return self.kind == "op" and self.value in ops
+
+
+# The whitelist. Operators by every spelling a keyboard or a PDF produces.
+_OPERATORS = {
+    "+": "+", "-": "-", "\u2212": "-", "\u2013": "-", "*": "*", "\u00b7": "*", "\u22c5": "*",
+    "\u00d7": "*", "\u2219": "*", "/": "/", "\u00f7": "/", "^": "^", "=": "=", ",": ",", ";": ";",
+    "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}",
+}  # fmt: skip
+_PRIMES = {"'": 1, "\u2032": 1, "\u2033": 2}
+_COMBINING_DOTS = {"\u0307": 1, "\u0308": 2}
+# [0-9], not \d: \d also matches ٣ and ², which are not numbers to us.
+_NUMBER = re.compile(r"([0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?")
+_DIGITS = frozenset("0123456789")
+_ASSIGNMENTS = (":=", "==", "+=", "-=", "*=", "/=", "!=", "<=", ">=")
+# What a student might try that we can name, rather than calling it a bad character.
+_NAMED_REFUSALS = {"#": "comment", '"': "string", "`": "string"}
+
+_LATEX_NAMES = {name: name for name in set(GREEK_BY_LETTER.values())} | {
+    "varphi": "phi", "vartheta": "theta", "varepsilon": "epsilon", "varrho": "rho",
+    "varsigma": "sigma", "varpi": "pi", "ell": "l",
+}  # fmt: skip
+_LATEX_FUNCTIONS = {name: name for name in FUNCTION_NAMES.values() if name not in ("asin", "acos", "atan")} | {
+    "arcsin": "asin",
+    "arccos": "acos",
+    "arctan": "atan",
+    "ln": "log",
+}
+_LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
+_LATEX_IGNORED = {"left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "quad", "qquad", "limits"}
+_LATEX_ENVIRONMENTS = {"aligned", "align", "align*", "gathered", "gather", "gather*", "split"}
+
+
+def tokenize(text: str) -> list[Token]:
+    """Tokens of an answer, ending with an ``end`` token.
+
+    Raises:
+        ParseFailure: for any character or word outside the whitelist.
+    """
+    tokens = _Tokenizer(text, latex="\\" in text).run()
+    _check_brackets(tokens)
+    return tokens
+
+
+class _Tokenizer:
+    def __init__(self, text: str, *, latex: bool):
+        self.text, self.latex = text, latex
+        self.pos = 0
+        self.tokens: list[Token] = []
+
+    def run(self) -> list[Token]:
+        text = self.text
+        while self.pos < len(text):
+            c = text[self.pos]
+            if c in " \t\r\u00a0" or (self.latex and c in "&$"):
+                self.pos += 1
+            elif c == "\n":
+                self._emit("sep", "\n", 1)
+            elif c == "\\" and self.latex:
+                self._command()
+            elif c in _DIGITS or (c == "." and text[self.pos + 1 : self.pos + 2] in _DIGITS):
+                self._number()
+            elif c == ".":
+                nxt = text[self.pos + 1 : self.pos + 2]
+                if nxt.isalpha() or nxt == "_":
+                    name = re.match(r"[\w]*", text[self.pos + 1 :]).group()
+                    raise ParseFailure("attribute", self.pos, self.pos + 1 + len(name), name=name)
+                raise ParseFailure("lone_point", self.pos, self.pos + 1)
+            elif self._is_letter(c):
+                self._name()
+            elif c in SUPERSCRIPTS:
+                self._superscript()
+            elif c == "\u221a":  # √
+                self._emit("sqrt", "√", 1)
+            elif text.startswith("**", self.pos):
+                self._emit("op", "^", 2)
+            elif text[self.pos : self.pos + 2] in _ASSIGNMENTS:
+                raise ParseFailure("assignment", self.pos, self.pos + 2, op=text[self.pos : self.pos + 2])
+            elif c in _OPERATORS:
+                self._emit("op", _OPERATORS[c], 1)
+            elif c in _PRIMES:
+                raise ParseFailure("prime_position" if self._after_value() else "string", self.pos, self.pos + 1)
+            elif c in _NAMED_REFUSALS:
+                raise ParseFailure(_NAMED_REFUSALS[c], self.pos, self.pos + 1)
+            else:
+                raise ParseFailure("bad_character", self.pos, self.pos + 1, char=c)
+        self.tokens.append(Token("end", None, len(text), len(text)))
+        return self.tokens
+
+    # -- pieces ------------------------------------------------------------------
+
+    def _emit(self, kind: str, value: object, length: int) -> None:
+        self.tokens.append(Token(kind, value, self.pos, self.pos + length))
+        self.pos += length
+
+    def _after_value(self) -> bool:
+        return bool(self.tokens) and (self.tokens[-1].kind in ("num", "sup") or self.tokens[-1].is_op(")", "]", "}"))
+
+    @staticmethod
+    def _is_letter(c: str) -> bool:
+        if c.isascii():
+            return c.isalpha()
+        base = unicodedata.normalize("NFD", c)[0]
+        return base in GREEK_BY_LETTER or (base.isascii() and base.isalpha())
+
+    def _number(self) -> None:
+        match = _NUMBER.match(self.text, self.pos)
+        mantissa, exponent = match[1], match[2]
+        digits = len(mantissa.replace(".", "").lstrip("0"))
+        if digits > LIMITS.digits:
+            raise ParseFailure("number_too_large", match.start(), match.end(), digits=digits, limit=LIMITS.digits)
+        if exponent is not None and abs(int(exponent)) > LIMITS.exponent:
+            raise ParseFailure("exponent_too_large", match.start(), match.end(), limit=LIMITS.exponent)
+        last = self.tokens[-1] if self.tokens else None
+        if self.latex and match[0].isdecimal() and last and (last.kind == "frac" or last.is_op("^")):
+            # TeX reads ``x^23`` as x²·3 and ``\frac12`` as ½: an argument is one digit.
+            for i, digit in enumerate(match[0]):
+                self.tokens.append(Token("num", digit, self.pos + i, self.pos + i + 1))
+        else:
+            self.tokens.append(Token("num", match[0], match.start(), match.end()))
+        self.pos = match.end()
+
+    def _superscript(self) -> None:
+        start = self.pos
+        while self.pos < len(self.text) and self.text[self.pos] in SUPERSCRIPTS:
+            self.pos += 1
+        digits = "".join(SUPERSCRIPTS[c] for c in self.text[start : self.pos])
+        if not re.fullmatch(r"-?\d{1,3}", digits):
+            raise ParseFailure("bad_character", start, self.pos, char=self.text[start : self.pos])
+        self.tokens.append(Token("sup", int(digits), start, self.pos))
+
+    def _name(self) -> None:
+        """A name: letters, digits, underscores, Greek, subscripts; then dots and primes."""
+        start, text = self.pos, self.text
+        if self.latex:
+            run = re.compile(r"[A-Za-z]+").match(text, self.pos)
+            if run and run[0] in FUNCTION_NAMES:  # ``sin x`` typed inside LaTeX still means sine
+                self.pos = run.end()
+                self.tokens.append(Token("func", FUNCTION_NAMES[run[0]], start, self.pos))
+                return
+        raw: list[str] = []
+        dots = 0
+        in_subscript = False  # inside a run of Unicode subscript digits, θ₁₂
+        while self.pos < len(text):
+            c = text[self.pos]
+            if c == "_" and raw and (self.latex or text.startswith("{", self.pos + 1)):
+                self._subscript(raw)
+                break
+            decomposed = unicodedata.normalize("NFD", c)
+            base, marks = decomposed[0], decomposed[1:]
+            if base in GREEK_BY_LETTER:
+                raw.append(GREEK_BY_LETTER[base])
+            elif base.isascii() and (base.isalnum() or base == "_"):
+                raw.append(base)
+            elif c in SUBSCRIPT_DIGITS:
+                raw.append(("" if in_subscript else "_") + SUBSCRIPT_DIGITS[c])
+            elif c in _COMBINING_DOTS and raw:
+                marks = c
+            else:
+                break
+            in_subscript = c in SUBSCRIPT_DIGITS
+            self.pos += 1
+            if marks:
+                if any(m not in _COMBINING_DOTS for m in marks):
+                    raise ParseFailure("bad_character", self.pos - 1, self.pos, char=c)
+                dots += sum(_COMBINING_DOTS[m] for m in marks)
+                # a dot ends the name, but its subscript may follow: θ̇₁, θ̇_1
+                match = re.compile(r"_?[0-9]+|[\u2080-\u2089]+").match(text, self.pos)
+                if match:
+                    raw.append("_" + "".join(SUBSCRIPT_DIGITS.get(d, d) for d in match[0].lstrip("_")))
+                    self.pos = match.end()
+                break
+        self._finish_name(start, "".join(raw), dots)
+
+    def _subscript(self, raw: list[str]) -> None:
+        """``_1``, ``_{12}``, ``_\\theta``, ``_{cm}``: a subscript written the TeX way."""
+        text = self.text
+        self.pos += 1  # the underscore
+        if text.startswith("{", self.pos):
+            close = text.find("}", self.pos)
+            if close == -1:
+                raise ParseFailure("unclosed", self.pos, self.pos + 1, open="{", position=self.pos + 1)
+            inner = text[self.pos + 1 : close]
+            self.pos = close + 1
+        elif text.startswith("\\", self.pos):
+            match = re.compile(r"\\([A-Za-z]+)").match(text, self.pos)
+            inner = match[0] if match else text[self.pos : self.pos + 2]
+            self.pos += len(inner)
+        else:
+            inner = text[self.pos : self.pos + 1]
+            self.pos += 1
+        sub = re.sub(r"\\([A-Za-z]+)\s*", lambda m: _LATEX_NAMES.get(m[1], "\\"), inner).replace(" ", "")
+        sub = "".join(GREEK_BY_LETTER.get(c, SUBSCRIPT_DIGITS.get(c, c)) for c in sub)
+        if not re.fullmatch(r"[A-Za-z0-9]+", sub):
+            raise ParseFailure("bad_name", self.pos - len(inner) - 1, self.pos, name="_" + inner)
+        raw.append("_" + sub)
+
+    def _finish_name(self, start: int, raw: str, dots: int) -> None:
+        end_of_name = self.pos
+        primes = 0
+        while self.pos < len(self.text) and self.text[self.pos] in _PRIMES:
+            primes += _PRIMES[self.text[self.pos]]
+            self.pos += 1
+        if len(raw) > LIMITS.name:
+            raise ParseFailure("name_too_long", start, end_of_name, name=raw[:20] + "…", limit=LIMITS.name)
+        if "__" in raw or raw.endswith("_") or raw.startswith("_"):
+            raise ParseFailure("bad_name", start, end_of_name, name=self.text[start:end_of_name])
+        if not self.latex and not dots and not primes and raw in FUNCTION_NAMES | {"diff": "diff"}:
+            self.tokens.append(Token("func", FUNCTION_NAMES.get(raw, raw), start, self.pos))
+        elif self.latex and not dots and not primes and raw in FUNCTION_NAMES:
+            self.tokens.append(Token("func", FUNCTION_NAMES[raw], start, self.pos))
+        else:
+            self.tokens.append(Token("name", Name(raw, dots, primes, tex=self.latex), start, self.pos))
+
+    # -- LaTeX -------------------------------------------------------------------
+
+    def _command(self) -> None:
+        text, start = self.text, self.pos
+        match = re.compile(r"\\([A-Za-z]+\*?|.?)").match(text, self.pos)
+        command = match[1]
+        self.pos = match.end()
+        if command in ("", ",", ";", ":", "!", " "):
+            return
+        if command == "\\":
+            self.tokens.append(Token("sep", "\n", start, self.pos))
+        elif command in ("{", "}"):
+            self.tokens.append(Token("op", command, start, self.pos))
+        elif command in _LATEX_IGNORED:
+            if command in ("left", "right") and text.startswith(".", self.pos):
+                self.pos += 1
+        elif command in ("begin", "end"):
+            env = re.compile(r"\s*\{([A-Za-z*]+)\}").match(text, self.pos)
+            if not env or env[1] not in _LATEX_ENVIRONMENTS:
+                raise ParseFailure("unknown_command", start, self.pos, name=command)
+            self.pos = env.end()
+        elif command in _LATEX_OPERATORS:
+            self.tokens.append(Token("op", _LATEX_OPERATORS[command], start, self.pos))
+        elif command in ("frac", "dfrac", "tfrac"):
+            self.tokens.append(Token("frac", "frac", start, self.pos))
+        elif command == "sqrt":
+            self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
+        elif command in _LATEX_FUNCTIONS:
+            self.tokens.append(Token("func", _LATEX_FUNCTIONS[command], start, self.pos))
+        elif command in _LATEX_NAMES:
+            raw = [_LATEX_NAMES[command]]
+            if text.startswith("_", self.pos):
+                self._subscript(raw)
+            self._finish_name(start, "".join(raw), 0)
+        elif command in ("dot", "ddot"):
+            self._latex_dot(start, command)
+        else:
+            raise ParseFailure("unknown_command", start, self.pos, name=command)
+
+    def _latex_dot(self, start: int, command: str) -> None:
+        """``\\dot{\\theta}_1``, ``\\dot\\theta_1``, ``\\dot{\\theta_1}``, ``\\ddot x``: one name, dotted."""
+        self._skip_spaces()
+        braced = self.text.startswith("{", self.pos)
+        if braced:
+            self.pos += 1
+            self._skip_spaces()
+        before = len(self.tokens)
+        c = self.text[self.pos : self.pos + 1]
+        if c == "\\":
+            self._command()
+        elif c and self._is_letter(c):
+            self._name()
+        if len(self.tokens) != before + 1 or self.tokens[-1].kind != "name":
+            raise ParseFailure("dot_usage", start, max(self.pos, start + 1), name=command)
+        name = self.tokens.pop().value
+        if braced:
+            self._skip_spaces()
+            if not self.text.startswith("}", self.pos):
+                raise ParseFailure("dot_usage", start, self.pos + 1, name=command)
+            self.pos += 1
+        raw = [name.raw]
+        if self.text.startswith("_", self.pos) and "_" not in name.raw:
+            self._subscript(raw)
+        dots = name.dots + (2 if command == "ddot" else 1)
+        self._finish_name(start, "".join(raw), dots)
+        if name.primes:
+            self.tokens[-1] = Token("name", Name("".join(raw), dots, name.primes, tex=True), start, self.pos)
+
+    def _skip_spaces(self) -> None:
+        while self.text.startswith(" ", self.pos):
+            self.pos += 1
+
+
+_CLOSERS = {"(": ")", "[": "]", "{": "}"}
+# A new line after one of these, or before one of the next, continues the line above.
+_CONTINUES_AFTER = {"+", "-", "*", "/", "^", "=", ",", "(", "[", "{"}
+_CONTINUES_BEFORE = {"+", "*", "/", "^", "=", ")", "]", "}"}
+
+
+def _check_brackets(tokens: list[Token]) -> None:
+    """Balanced brackets and bounded depth, checked before any parsing.
+
+    New lines inside brackets, or next to an operator, are spaces and are dropped
+    here; the others separate equations. A line that begins with ``-`` continues an
+    expression, but starts a new equation in a system.
+    """
+    stack: list[Token] = []
+    kept: list[Token] = []
+    has_equals = any(token.is_op("=") for token in tokens)
+    for index, token in enumerate(tokens):
+        if token.kind == "op" and token.value in _CLOSERS:
+            stack.append(token)
+            if len(stack) > LIMITS.depth:
+                raise ParseFailure("too_deep", token.start, token.end, limit=LIMITS.depth)
+        elif token.kind == "op" and token.value in _CLOSERS.values():
+            if not stack:
+                raise ParseFailure("unopened", token.start, token.end, close=token.value, position=token.start + 1)
+            opener = stack.pop()
+            if _CLOSERS[opener.value] != token.value:
+                raise ParseFailure(
+                    "mismatched", token.start, token.end, open=opener.value, open_position=opener.start + 1,
+                    close=token.value, position=token.start + 1,
+                )  # fmt: skip
+        elif token.kind == "sep":
+            following = tokens[index + 1]
+            if (
+                stack
+                or (kept and kept[-1].kind == "op" and kept[-1].value in _CONTINUES_AFTER)
+                or (following.kind == "op" and following.value in _CONTINUES_BEFORE)
+                or (following.is_op("-") and not has_equals)
+            ):
+                continue
+        kept.append(token)
+    if stack:
+        opener = stack[-1]
+        raise ParseFailure("unclosed", opener.start, opener.end, open=opener.value, position=opener.start + 1)
+    tokens[:] = kept

@@ -1,0 +1,239 @@
+"""Inputs the parser must accept, each with the sympy object it must give.
+
+The expected objects are built here directly with sympy, never through the parser.
+Rows are grouped by the line of the answer language they exercise.
+"""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+from sympy import Eq, Rational, cos, exp, sin, sqrt
+
+from grader import TIME, parse_answer
+
+t = TIME
+COORDS = ["theta", "phi", "theta_1", "theta_2", "x", "alpha", "beta", "r"]
+KNOWN = ["m", "g", "l", "m_1", "m_2", "l_1", "l_2", "k", "a", "b", "c", "d", "omega", "p_theta", "R"]
+
+m, g, l, m1, m2, l1, l2, k, a, b, c, d, omega, R = sympy.symbols("m g l m_1 m_2 l_1 l_2 k a b c d omega R")
+p_theta = sympy.Symbol("p_theta")
+theta, phi, theta1, theta2, x, alpha, beta, r = (
+    sympy.Function(name, real=True)(t) for name in ("theta", "phi", "theta_1", "theta_2", "x", "alpha", "beta", "r")
+)
+
+
+def D(q, n=1):
+    return sympy.Derivative(q, (t, n))
+
+
+ARITHMETIC = [
+    ("a + b - c", a + b - c),
+    ("a*b/c", a * b / c),
+    ("a^2", a**2),
+    ("a**2", a**2),
+    ("2m", 2 * m),
+    ("m g l", m * g * l),
+    ("2(a+1)", 2 * (a + 1)),
+    ("(a+b)(c-d)", (a + b) * (c - d)),
+    ("[a+b]c", (a + b) * c),
+    ("1/2 m l^2", m * l**2 / 2),
+    ("1/2m", m / 2),
+    ("g/l sin θ", g / l * sin(theta)),
+    ("0.5 m", Rational(1, 2) * m),
+    (".25", Rational(1, 4)),
+    ("9.81", Rational(981, 100)),
+    ("2.5e3 k", 2500 * k),
+    ("-a^2", -(a**2)),
+    ("a^-1", 1 / a),
+    ("a^b^c", a ** (b**c)),
+    ("a − b", a - b),
+    ("a · b × c ⋅ d", a * b * c * d),
+    ("a ÷ b", a / b),
+    ("a^2 b", a**2 * b),
+    ("--a", a),
+]
+
+FUNCTIONS = [
+    ("sin(θ) + cos(φ) + tan(a)", sin(theta) + cos(phi) + sympy.tan(a)),
+    ("cot(a) + sec(b) + csc(c)", sympy.cot(a) + sympy.sec(b) + sympy.csc(c)),
+    ("asin(a) + arcsin(b)", sympy.asin(a) + sympy.asin(b)),
+    ("acos(a) + arccos(b) + atan(c) + arctan(d)", sympy.acos(a) + sympy.acos(b) + sympy.atan(c) + sympy.atan(d)),
+    ("sinh(a) cosh(b) tanh(c)", sympy.sinh(a) * sympy.cosh(b) * sympy.tanh(c)),
+    ("exp(a) + log(b) + ln(c)", exp(a) + sympy.log(b) + sympy.log(c)),
+    ("sqrt(g/l)", sqrt(g / l)),
+    ("abs(a - b)", sympy.Abs(a - b)),
+    ("sin θ", sin(theta)),
+    ("cos theta1", cos(theta1)),
+    ("sin θ cos φ", sin(theta) * cos(phi)),
+    ("m g l cos θ", m * g * l * cos(theta)),
+    ("sin 2θ", sin(2 * theta)),
+    ("sin^2(θ)", sin(theta) ** 2),
+    ("sin^2 θ", sin(theta) ** 2),
+    ("sin²θ + cos²θ", sin(theta) ** 2 + cos(theta) ** 2),
+    ("\\sin^2\\theta", sin(theta) ** 2),
+    ("cos(θ₁ − θ₂)", cos(theta1 - theta2)),
+    ("√(g/l)", sqrt(g / l)),
+    ("√2 a", sqrt(2) * a),
+    ("mglsinθ", m * g * l * sin(theta)),
+]
+
+NAMES = [
+    ("theta", theta),
+    ("θ", theta),
+    ("ϑ", theta),
+    ("theta1 + theta_1 + θ₁", 3 * theta1),
+    ("m_1 + m1 + m₁", 3 * m1),
+    ("l2", l2),
+    ("omega + ω", 2 * omega),
+    ("alpha + α + beta + β", 2 * alpha + 2 * beta),
+    ("θ²", theta**2),
+    ("a³", a**3),
+    ("pi + π", 2 * sympy.pi),
+    ("e", sympy.E),
+    ("e^a", exp(a)),
+    ("p_theta + p_θ", 2 * p_theta),
+    ("psi", sympy.Symbol("psi")),
+    ("lambda + λ", 2 * sympy.Symbol("lambda")),
+    ("mu + μ", 2 * sympy.Symbol("mu")),
+    ("gamma", sympy.Symbol("gamma")),
+    ("E + I + N + S + Q", sum(sympy.Symbol(n) for n in "EINSQ")),
+    ("theta(t)", theta),
+    ("R", R),
+]
+
+DERIVATIVES = [
+    ("thetadot", D(theta)),
+    ("theta_dot", D(theta)),
+    ("theta'", D(theta)),
+    ("θ̇", D(theta)),
+    ("\\dot{\\theta}", D(theta)),
+    ("\\dot\\theta", D(theta)),
+    ("diff(theta, t)", D(theta)),
+    ("thetaddot", D(theta, 2)),
+    ("theta_ddot", D(theta, 2)),
+    ("theta''", D(theta, 2)),
+    ("θ̈", D(theta, 2)),
+    ("\\ddot{\\theta}", D(theta, 2)),
+    ("diff(theta, t, 2)", D(theta, 2)),
+    ("theta1dot", D(theta1)),
+    ("theta1'", D(theta1)),
+    ("θ̇₁", D(theta1)),
+    ("\\dot{\\theta}_1", D(theta1)),
+    ("\\dot\\theta_1", D(theta1)),
+    ("\\dot{\\theta_1}", D(theta1)),
+    ("xdot^2 + ẋ", D(x) ** 2 + D(x)),
+    ("ẍ", D(x, 2)),
+    ("θ̇²", D(theta) ** 2),
+    ("theta2ddot", D(theta2, 2)),
+    ("m l thetadot", m * l * D(theta)),
+    ("mlθ̇", m * l * D(theta)),
+    ("diff(x^2, t)", 2 * x * D(x)),
+]
+
+SPLITTING = [
+    ("mgl", m * g * l),
+    ("mgl cos θ", m * g * l * cos(theta)),
+    ("m1gl1", m1 * g * l1),
+    ("m_1l_1", m1 * l1),
+    ("kx^2", k * x**2),
+    ("2mgl", 2 * m * g * l),
+    ("xyz", sympy.Symbol("xyz")),  # not all pieces known: one unknown name
+]
+
+EQUATIONS = [
+    ("m l^2 θ̈ + m g l sin θ = 0", Eq(m * l**2 * D(theta, 2) + m * g * l * sin(theta), 0)),
+    ("thetaddot = -(g/l) sin(theta)", Eq(D(theta, 2), -(g / l) * sin(theta))),
+    ("m x'' = -k x", Eq(m * D(x, 2), -k * x)),
+]
+
+SYSTEMS = [
+    ("a = b; c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b\nc = d", (Eq(a, b), Eq(c, d))),
+    ("[a = b, c = d]", (Eq(a, b), Eq(c, d))),
+    ("a = b;", Eq(a, b)),
+    ("θ̈₁ = a; θ̈₂ = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
+    ("a = b +\nc", Eq(a, b + c)),
+    ("a = b\n+ c", Eq(a, b + c)),
+    ("a + b\n- c", a + b - c),
+    ("(a +\n b) = c", Eq(a + b, c)),
+]
+
+LATEX = [
+    ("\\frac{1}{2} m l^2 \\dot{\\theta}^2", m * l**2 * D(theta) ** 2 / 2),
+    ("\\frac12 m", m / 2),
+    ("\\dfrac{g}{l}", g / l),
+    ("a \\cdot b", a * b),
+    ("a \\times b", a * b),
+    ("\\left( a + b \\right)^2", (a + b) ** 2),
+    ("\\left[ a + b \\right] c", (a + b) * c),
+    ("{a + b}^{2}", (a + b) ** 2),
+    ("m^{2}", m**2),
+    ("a \\cdot x^23", 3 * a * x**2),  # as in TeX: a superscript is one token
+    ("theta1 + \\theta_1", 2 * theta1),  # names in plain notation inside LaTeX
+    ("\\frac{1}{2} m l^2 thetadot^2", m * l**2 * D(theta) ** 2 / 2),
+    ("uv \\cdot 2", 2 * sympy.Symbol("u") * sympy.Symbol("v")),  # unknown letters: TeX reads each alone
+    ("m_{1}", m1),
+    ("m_1", m1),
+    ("\\sin\\theta + \\cos{\\phi}", sin(theta) + cos(phi)),
+    ("\\sqrt{\\frac{g}{l}}", sqrt(g / l)),
+    ("\\sqrt[3]{a}", a ** Rational(1, 3)),
+    ("\\pi", sympy.pi),
+    ("\\omega^2", omega**2),
+    ("mgl", m * g * l),
+    ("m_2l_2", m2 * l2),
+    ("\\frac{1}{2} m_2 l_2^2 \\dot\\theta_2^2", m2 * l2**2 * D(theta2) ** 2 / 2),
+    ("p_\\theta + p_{\\theta}", 2 * p_theta),
+    ("\\ddot{x} = -\\frac{k}{m} x", Eq(D(x, 2), -k / m * x)),
+    ("\\ddot\\theta_1 = a \\\\ \\ddot\\theta_2 = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
+    ("\\begin{aligned} a &= b \\\\ c &= d \\end{aligned}", (Eq(a, b), Eq(c, d))),
+    ("$\\frac{a}{b}$", a / b),
+    ("\\exp(a) + \\ln b", exp(a) + sympy.log(b)),
+    ("\\dot{\\theta}'", D(theta, 2)),
+    ("\\ell", l),
+]
+
+ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX
+
+
+@pytest.mark.parametrize(("text", "expected"), ACCEPTED, ids=[text for text, _ in ACCEPTED])
+def test_accepted_input_gives_its_sympy_object(text, expected):
+    result = parse_answer(text, coords=COORDS, known=KNOWN)
+    assert result.ok, str(result)
+    assert result.value == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [("a + b", "expression"), ("a = b", "equation"), ("a = b; c = d", "equations"), ("[a = b, c = d]", "equations")],
+)
+def test_kind_says_what_was_typed(text, kind):
+    assert parse_answer(text, known=KNOWN).kind == kind
+
+
+def test_e_is_a_symbol_when_the_problem_defines_one():
+    assert parse_answer("e^2", known=["e"]).value == sympy.Symbol("e") ** 2
+
+
+def test_known_symbols_keep_their_assumptions():
+    mass = sympy.Symbol("m", positive=True)
+    assert parse_answer("m", known=[mass]).value is mass
+
+
+def test_coordinates_given_as_functions_are_used_as_given():
+    q = sympy.Function("q")(t)
+    assert parse_answer("qdot", coords=[q]).value == sympy.Derivative(q, t)
+
+
+def test_juxtaposed_names_do_not_split_unless_every_piece_is_known():
+    assert parse_answer("mgl", known=["m", "g"]).value == sympy.Symbol("mgl")
+
+
+def test_the_whole_name_wins_over_a_split():
+    assert parse_answer("mgl", known=["m", "g", "l", "mgl"]).value == sympy.Symbol("mgl")
+
+
+def test_equations_keep_both_sides_unevaluated():
+    result = parse_answer("a = a", known=["a"])
+    assert result.value == Eq(a, a, evaluate=False)
+    assert isinstance(result.value, sympy.Eq)

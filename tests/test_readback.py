@@ -1,0 +1,51 @@
+"""How an answer is shown back: plain text, LaTeX and MathML, with dots over derivatives."""
+
+from __future__ import annotations
+
+import xml.dom.minidom
+
+import pytest
+
+from grader import parse_answer
+
+COORDS = ["theta", "theta_1", "theta_2", "x"]
+KNOWN = ["m", "g", "l", "m_1", "l_1", "p_theta"]
+
+READ_BACK = [
+    # (typed, as text, as LaTeX)
+    ("1/2 m l^2 thetadot^2", "l^2*m*θ̇^2/2", r"\frac{l^{2} m \dot{\theta}^{2}}{2}"),
+    ("theta1''", "θ̈₁", r"\ddot{\theta}_{1}"),
+    ("\\dot\\theta_2 + x'", "θ̇₂ + ẋ", r"\dot{\theta}_{2} + \dot{x}"),
+    ("mgl cos θ", "g*l*m*cos(θ)", r"g l m \cos{\left(\theta \right)}"),
+    ("p_θ + π", "p_θ + π", r"p_{\theta} + \pi"),
+    ("θ̈ = -(g/l) sin θ", "θ̈ = -g*sin(θ)/l", r"\ddot{\theta} = - \frac{g \sin{\left(\theta \right)}}{l}"),
+    ("x = 1; θ = 2", "x = 1; θ = 2", r"\begin{aligned}x = 1 \\ \theta = 2\end{aligned}"),
+    ("m₁ e^x", "m₁*exp(x)", r"m_{1} e^{x}"),
+]
+
+
+@pytest.mark.parametrize(("typed", "text", "latex"), READ_BACK)
+def test_read_back_as_text_and_latex(typed, text, latex):
+    result = parse_answer(typed, coords=COORDS, known=KNOWN)
+    assert result.read_as_text == text
+    assert result.read_as_latex == latex
+
+
+def test_mathml_puts_dots_over_derivatives_and_is_well_formed():
+    mathml = parse_answer("θ̇₁ + ẍ", coords=COORDS).read_as_mathml
+    document = xml.dom.minidom.parseString(mathml)
+    assert document.documentElement.tagName == "math"
+    overs = document.getElementsByTagName("mover")
+    assert sorted(over.lastChild.firstChild.data for over in overs) == ["\u00a8", "\u02d9"]
+    assert "<script" not in mathml
+
+
+def test_a_system_is_a_mathml_table_with_one_row_per_equation():
+    mathml = parse_answer("x = 1; θ = 2", coords=COORDS).read_as_mathml
+    document = xml.dom.minidom.parseString(mathml)
+    assert len(document.getElementsByTagName("mtr")) == 2
+
+
+def test_names_in_mathml_are_escaped_text_not_markup():
+    mathml = parse_answer("lt + gt + amp", known=[]).read_as_mathml
+    xml.dom.minidom.parseString(mathml)  # raises if a name broke the markup
