@@ -1,0 +1,193 @@
+"""``compare``: one answer against the expected one, for any kind, as a Verdict.
+
+Contents:
+    Kind               a kind of answer: its checker, its options and their defaults
+    KINDS              the closed registry, kind name → Kind
+    compare(...)       the public entry point
+
+``compare`` owns what every kind shares: reading the submitted answer, refusing
+symbols the problem does not define, the time limit, and turning whatever goes
+wrong on a student's input into "undecided" rather than an exception. The kind
+checkers only compare.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+
+import sympy
+
+from grader.check.deadline import CheckTimeout, time_limit
+from grader.check.expected import Expected, Outcome, prepare
+from grader.check.expression import check_expression
+from grader.check.feedback import say
+from grader.check.lagrangian import check_lagrangian
+from grader.check.motion import check_equation, check_equations
+from grader.check.numeric import NotCompilable
+from grader.check.scalar import check_choice, check_integer, check_number
+from grader.check.verdict import Verdict
+from grader.errors import AuthorError
+from grader.parse import ParsedAnswer, parse_answer
+from grader.parse.names import unicode_name
+
+__all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
+
+DEFAULT_TIMEOUT = 2.0
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A kind of answer.
+
+    Attributes:
+        name: as problem files and ``compare(kind=...)`` spell it.
+        check: the checker, ``(expected, submitted answer, deadline) -> Outcome``.
+        options: the options it accepts, with their defaults.
+        parsed: whether answers of this kind are mathematics read by ``parse_answer``.
+        shape: what the parsed answer must be (``expression``, ``equation``, ``equations``), if anything.
+    """
+
+    name: str
+    check: Callable
+    options: Mapping[str, object] = field(default_factory=dict)
+    parsed: bool = True
+    shape: str | None = None
+
+
+KINDS: dict[str, Kind] = {
+    kind.name: kind
+    for kind in (
+        Kind("expression", check_expression, {"up_to_constant": False}, shape="expression"),
+        Kind("equation", check_equation, shape="equation"),
+        Kind("equations", check_equations, shape="equations"),
+        Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5}, shape="expression"),
+        Kind("integer", check_integer, shape="expression"),
+        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0}, shape="expression"),
+        Kind("choice", check_choice, {"options": (), "multiple": False}, parsed=False),
+    )
+}
+
+# Whatever sympy or our arithmetic raises on a strange but well-formed answer is a
+# verdict nobody can trust: it goes to a person, never to the student as "wrong".
+_CHECK_FAILURES = (ArithmeticError, ValueError, TypeError, RecursionError, NotCompilable, MemoryError)
+
+
+def compare(
+    expected: str, submitted: str, *, kind: str = "expression", coords: Iterable[str] = (), **options
+) -> Verdict:
+    """Compare a submitted answer with the expected one.
+
+    Args:
+        expected: the reference answer, written by the problem's author.
+        submitted: the student's answer, untrusted.
+        kind: ``expression``, ``equation``, ``equations``, ``lagrangian``, ``integer``,
+            ``number`` or ``choice``.
+        coords: the generalized coordinates, functions of time.
+        **options: ``known`` (more symbols the problem defines), ``domains``
+            (``{"x": "real"}``; by default coordinates are real and other symbols
+            positive), ``timeout`` (seconds, default 2), and the kind's own
+            options (``up_to_constant``, ``rtol``/``atol``, ``options`` for choices…).
+
+    Returns:
+        A :class:`Verdict`. Nothing a student types makes this raise or hang.
+
+    Raises:
+        AuthorError: an unknown kind or option, or an expected answer that cannot be read.
+
+    >>> compare("-(g/l) sin(theta)", "-g sin θ / l", coords=["theta"]).status
+    'equivalent'
+    """
+    if kind not in KINDS:
+        raise AuthorError(f"unknown answer kind {kind!r}; the kinds are: {', '.join(KINDS)}")
+    spec = KINDS[kind]
+    known = tuple(options.pop("known", ()))
+    domains = tuple(sorted((options.pop("domains", None) or {}).items()))
+    timeout = float(options.pop("timeout", DEFAULT_TIMEOUT))
+    unknown = set(options) - set(spec.options)
+    if unknown:
+        allowed = ", ".join(sorted(spec.options)) or "none"
+        raise AuthorError(
+            f"option {', '.join(sorted(unknown))} does not apply to kind {kind!r} (its options: {allowed})"
+        )
+    settings = {**spec.options, **options}
+    frozen = tuple(sorted((key, _hashable(value)) for key, value in settings.items()))
+    prepared = prepare(expected, kind, tuple(coords), known, domains, frozen, parsed=spec.parsed)
+    if spec.parsed and spec.shape and prepared.parsed.kind != spec.shape and kind != "equation":
+        raise AuthorError(f"the expected answer of a {kind!r} part must be {spec.shape}, not {prepared.parsed.kind}")
+    return _judge(spec, prepared, submitted, timeout)
+
+
+def _hashable(value):
+    return tuple(value) if isinstance(value, list | tuple | set | frozenset) else value
+
+
+def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Verdict:
+    answer = None
+    if spec.parsed:
+        answer = parse_answer(submitted, coords=expected.setting.coords, known=sorted(expected.names))
+        if not answer.ok:
+            return Verdict("invalid", 0.0, (answer.message,), answer.pointer, "parse", "invalid")
+        answer = _unwrap_named(answer, spec)
+        early = _mismatch(spec, expected, answer)
+        if early:
+            return _verdict(early, answer)
+    try:
+        with time_limit(timeout) as deadline:
+            outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+    except CheckTimeout:
+        outcome = Outcome("undecided", 0.0, "undecided", method="timeout")
+    except _CHECK_FAILURES as failure:
+        outcome = Outcome("undecided", 0.0, "undecided", method=f"failed: {type(failure).__name__}")
+    return _verdict(outcome, answer)
+
+
+def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
+    feedback = [say(outcome.key, **outcome.details)] if outcome.key else []
+    feedback += [say(key, **details) for key, details in outcome.more]
+    diagnosis = None if outcome.status == "equivalent" else outcome.key
+    read_as = answer.read_as_text if answer is not None else ""
+    latex = answer.read_as_latex if answer is not None else ""
+    return Verdict(outcome.status, outcome.score, tuple(feedback), read_as, outcome.method, diagnosis, latex)
+
+
+def _unwrap_named(answer: ParsedAnswer, spec: Kind) -> ParsedAnswer:
+    """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` for an expression: the name is not the answer."""
+    value = answer.value
+    if (
+        spec.shape == "expression"
+        and isinstance(value, sympy.Eq)
+        and isinstance(value.lhs, sympy.Symbol)
+        and value.lhs not in value.rhs.free_symbols
+    ):
+        return ParsedAnswer(answer.text, value.rhs, "expression")
+    return answer
+
+
+def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome | None:
+    """What can be said before any comparison: undefined symbols, or the wrong shape of answer."""
+    items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
+    used = set().union(*(item.free_symbols for item in items))
+    undefined = sorted(symbol.name for symbol in used if symbol.name not in expected.names)
+    if undefined:
+        defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
+        return Outcome(
+            "not_equivalent", 0.0, "undefined_symbol",
+            {"names": _listing(undefined), "defined": expected.setting.describe(defined)}, method="symbols",
+        )  # fmt: skip
+    wanted, given = spec.shape, answer.kind
+    if wanted == "equation" and given == "expression":
+        return Outcome("not_equivalent", 0.0, "expected_equation", method="shape")
+    if wanted == "expression" and given != "expression":
+        return Outcome("not_equivalent", 0.0, "expected_expression", method="shape")
+    if wanted == "equations" and given != "equations" and len(expected.setting.coords) > 1:
+        count = len(expected.value) if isinstance(expected.value, tuple) else 1
+        if count > 1:
+            coords = expected.setting.describe(expected.setting.coords)
+            return Outcome("not_equivalent", 0.0, "expected_system", {"count": count, "coords": coords}, method="shape")
+    return None
+
+
+def _listing(names: list[str]) -> str:
+    shown = [f"`{unicode_name(name)}`" for name in names]
+    return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]

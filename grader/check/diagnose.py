@@ -1,0 +1,130 @@
+"""Naming the mistake: which term differs, and how it can be described without revealing it.
+
+Contents:
+    term_changes(expected, submitted, setting)    missing / extra / differing terms
+    describe_term(term, setting)                  "a velocity-dependent term", "a term in cos(θ₁ − θ₂)"
+    small_angle(expr, setting)                    sin u → u, cos u → 1 (and 1 − u²/2)
+    taylor(expr, setting, order)                  expansion about the equilibrium q = q̇ = q̈ = 0
+    symbolic_zero(expr, setting)                  sympy's last word, with the problem's assumptions
+
+Descriptions name the *kind* of term a student can look for in their own answer;
+they never print the expected term itself.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import sympy
+
+from grader.check.setting import Setting
+from grader.parse.readback import to_text
+
+__all__ = ["describe_term", "small_angle", "symbolic_zero", "taylor", "term_changes"]
+
+MAX_TERMS = 60  # beyond this, listing terms says nothing useful
+_TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
+
+
+def _terms(expr) -> dict:
+    """Expanded terms, keyed by their shape (the term without its numeric coefficient)."""
+    terms: dict = {}
+    for term in sympy.Add.make_args(sympy.expand(expr)):
+        coefficient, shape = term.as_coeff_Mul()
+        terms[shape] = terms.get(shape, 0) + coefficient
+    return {shape: c for shape, c in terms.items() if c != 0}
+
+
+def term_changes(expected, submitted, setting: Setting) -> list[tuple[str, str]]:
+    """How the submitted terms differ from the expected ones: [(key, description)].
+
+    Keys are ``missing_term``, ``extra_term`` and ``term_differs``. An empty list
+    means the comparison is not informative (too many terms, or none differ by shape).
+    """
+    expected_terms, submitted_terms = _terms(expected), _terms(submitted)
+    if len(expected_terms) > MAX_TERMS or len(submitted_terms) > MAX_TERMS:
+        return []
+    changes = []
+    for shape, coefficient in expected_terms.items():
+        if shape not in submitted_terms:
+            changes.append(("missing_term", describe_term(shape, setting)))
+        elif submitted_terms[shape] != coefficient:
+            how = "has the wrong sign" if submitted_terms[shape] == -coefficient else "has the wrong factor"
+            changes.append(("term_differs", f"{describe_term(shape, setting, definite=True)} {how}"))
+    for shape in submitted_terms:
+        if shape not in expected_terms:
+            changes.append(("extra_term", describe_term(shape, setting)))
+    return changes
+
+
+def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
+    """What kind of term this is, in words a student can act on.
+
+    >>> s = Setting.build(["theta_1", "theta_2"], ["m", "g", "l"])
+    >>> describe_term(sympy.Symbol("theta_1__1") ** 2 * sympy.Symbol("m"), s)
+    'a velocity-dependent term'
+    >>> describe_term(sympy.cos(sympy.Symbol("theta_1") - sympy.Symbol("theta_2")), s)
+    'a term in cos(θ₁ - θ₂)'
+    """
+    article = "the" if definite else "a"
+    symbols = term.free_symbols
+    velocities = {setting.velocity(q) for q in setting.coords}
+    accelerations = {setting.acceleration(q) for q in setting.coords}
+    trig = [f for f in term.atoms(*_TRIG) if f.args[0].free_symbols & set(setting.state.values())]
+    # coordinates keep their names as plain symbols, so to_text shows them as typed
+    within = f" in {to_text(min(trig, key=str))}" if trig else ""
+    if symbols & accelerations:
+        return f"{article} term with an acceleration{within}"
+    if symbols & velocities:
+        return f"{article} velocity-dependent term{within}"
+    if trig:
+        return f"{article} term{within}"
+    if sympy.Symbol("g") in symbols:
+        return f"{article} gravity term"
+    if not symbols & set(setting.state.values()):
+        return f"{article} constant term"
+    return f"{article} term without velocities"
+
+
+def small_angle(expr, setting: Setting) -> list:
+    """The small-angle forms of ``expr``: sin u → u, tan u → u, and cos u → 1 or 1 − u²/2."""
+    coordinates = {setting.state[(q, 0)] for q in setting.coords}
+
+    def involves(u) -> bool:
+        return bool(u.free_symbols & coordinates)
+
+    def replace(rules):
+        return expr.replace(
+            lambda e: isinstance(e, tuple(rules)) and involves(e.args[0]),
+            lambda e: rules[type(e)](e.args[0]),
+        )
+
+    linear = {sympy.sin: lambda u: u, sympy.tan: lambda u: u}
+    forms = [replace({**linear, sympy.cos: cosine}) for cosine in (lambda u: sympy.Integer(1), lambda u: 1 - u**2 / 2)]
+    return [form for form in forms if form != expr]
+
+
+def taylor(expr, setting: Setting, order: int):
+    """The expansion of ``expr`` to ``order`` about q = q̇ = q̈ = 0 (the equilibrium at the origin)."""
+    variables = sorted(expr.free_symbols & set(setting.state.values()), key=str)
+    at_zero = dict.fromkeys(variables, 0)
+    result = expr.subs(at_zero)
+    for degree in range(1, order + 1):
+        for combination in itertools.combinations_with_replacement(variables, degree):
+            derivative = sympy.diff(expr, *combination).subs(at_zero)
+            if derivative != 0:
+                multiplicity = sympy.Mul(*(sympy.factorial(combination.count(v)) for v in set(combination)))
+                result += derivative * sympy.Mul(*combination) / multiplicity
+    return result
+
+
+def symbolic_zero(expr, setting: Setting) -> bool:
+    """Whether sympy can show ``expr`` is zero, with the problem's domains as assumptions."""
+    assumed = {}
+    for symbol in expr.free_symbols:
+        domain = setting.domain(symbol)
+        flags = {"real": {"real": True}, "positive": {"positive": True}, "negative": {"negative": True}}.get(
+            domain, {"real": True}
+        )
+        assumed[symbol] = sympy.Symbol(symbol.name, **flags)
+    return sympy.simplify(expr.xreplace(assumed)) == 0

@@ -1,0 +1,136 @@
+"""The expected answer, read once and prepared for many comparisons.
+
+Contents:
+    Expected        the reference answer with its setting, parsed and in plain symbols
+    Outcome         what a kind's checker concludes, before it becomes a Verdict
+    prepare(...)    read and cache an expected answer (author errors raise here)
+
+Preparing costs far more than comparing: parsing, compiling evaluators, deriving
+equations of motion. ``prepare`` is cached, so a class of 300 students pays once
+per part; the kind checkers add what they derive to ``Expected.cache``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import sympy
+
+from grader.check.numeric import Compiled
+from grader.check.setting import Setting
+from grader.errors import ReferenceAnswerError
+from grader.parse import TIME, ParsedAnswer, parse_answer
+
+__all__ = ["Expected", "Outcome", "prepare"]
+
+
+@dataclass(frozen=True, eq=False)
+class Expected:
+    """A prepared reference answer.
+
+    Attributes:
+        text: as the author wrote it.
+        kind: the answer kind.
+        setting: the problem's coordinates, symbols and domains.
+        parsed: the parsed answer (``None`` for kinds that are not parsed, such as choice).
+        value: the parsed value in plain symbols (coordinates and derivatives as symbols).
+        names: every name the problem defines: coordinates, known symbols, the symbols
+            of the expected answer, and ``t``.
+        options: the kind's options.
+        cache: what checkers derive from this answer, kept for the next comparison.
+    """
+
+    text: str
+    kind: str
+    setting: Setting
+    parsed: ParsedAnswer | None
+    value: object
+    names: frozenset[str]
+    options: Mapping[str, object]
+    cache: dict = field(default_factory=dict, repr=False)
+
+    def option(self, name: str, default=None):
+        return self.options.get(name, default)
+
+    @property
+    def variables(self) -> tuple[sympy.Symbol, ...]:
+        """Every symbol an answer may contain here, in plain form, in a fixed order.
+
+        Submitted answers are evaluated over the same variables at the same points as
+        the expected one, so the expected values are computed once and remembered.
+        """
+        if "variables" not in self.cache:
+            parameters = {sympy.Symbol(name) for name in self.names - set(self.setting.coords)} - {TIME}
+            state = set(self.setting.state.values())
+            self.cache["variables"] = (*sorted(parameters | state, key=str), TIME)
+        return self.cache["variables"]
+
+    def compiled(self, key: str, expr) -> Compiled:
+        """An expression derived from the expected answer, compiled once over :attr:`variables`."""
+        cache_key = ("compiled", key)
+        if cache_key not in self.cache:
+            self.cache[cache_key] = Compiled(expr, self.variables, memo=True)
+        return self.cache[cache_key]
+
+    def points(self, count: int, *, salt: int = 0, group: int = 1) -> list[list[complex]]:
+        """Seeded sample points over :attr:`variables`, the same for every submission.
+
+        Runs of ``group`` points share the parameters' values (see :meth:`Setting.points`).
+        """
+        cache_key = ("points", count, salt, group)
+        if cache_key not in self.cache:
+            self.cache[cache_key] = self.setting.points(self.variables, count, salt=salt, group=group)
+        return self.cache[cache_key]
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """A checker's conclusion: status, credit, the feedback's key and details, and the method."""
+
+    status: str
+    score: float = 0.0
+    key: str | None = None
+    details: Mapping[str, object] = field(default_factory=dict)
+    method: str = "numeric"
+    more: tuple[tuple[str, Mapping[str, object]], ...] = ()
+
+
+def prepare(
+    text: str,
+    kind: str,
+    coords: tuple[str, ...] = (),
+    known: tuple[str, ...] = (),
+    domains: tuple[tuple[str, str], ...] = (),
+    options: tuple[tuple[str, object], ...] = (),
+    *,
+    parsed: bool = True,
+) -> Expected:
+    """The expected answer, read and cached.
+
+    Raises:
+        ReferenceAnswerError: when the expected answer cannot be read; the message
+            is addressed to the problem's author.
+    """
+    return _prepare(text, kind, coords, known, domains, options, parsed)
+
+
+@lru_cache(maxsize=1024)
+def _prepare(text, kind, coords, known, domains, options, parsed) -> Expected:
+    setting = Setting.build(coords, known, dict(domains))
+    if not parsed:
+        return Expected(text, kind, setting, None, text, frozenset(), dict(options))
+    answer = parse_answer(text, coords=setting.coords, known=setting.known)
+    if not answer.ok:
+        raise ReferenceAnswerError(
+            f"The expected answer {text!r} cannot be read: {answer.message}\n{answer.pointer}", refusal=answer
+        )
+    symbols = _free_symbols(answer.value)
+    names = frozenset(setting.coords) | frozenset(setting.known) | {s.name for s in symbols} | {TIME.name}
+    return Expected(text, kind, setting, answer, setting.plain(answer.value), names, dict(options))
+
+
+def _free_symbols(value) -> set[sympy.Symbol]:
+    items = value if isinstance(value, tuple) else (value,)
+    return set().union(*(item.free_symbols for item in items))

@@ -1,0 +1,102 @@
+"""The ``expression`` kind: equal for every admissible value of the symbols.
+
+Contents:
+    check_expression(expected, answer, deadline)   the kind's checker
+    same_values(expected, e, s, deadline)           the numeric test other kinds reuse
+
+Numbers first: both sides at ten seeded points inside the symbols' domains; a near
+miss is redone at 40 digits; too few defined points fall back to ``simplify``
+with the domains as assumptions. Then, when not equal, the diagnosis: sign,
+constant factor, small-angle form, and which term differs.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import sympy
+
+from grader.check.deadline import Deadline
+from grader.check.diagnose import small_angle, symbolic_zero, term_changes
+from grader.check.expected import Expected, Outcome
+from grader.check.numeric import Compiled
+from grader.check.sampling import (
+    GROUP,
+    POINTS,
+    Pair,
+    all_equal,
+    constant_difference,
+    constant_ratio,
+    evaluate_pairs,
+    nice_number,
+)
+from grader.parse import ParsedAnswer
+
+__all__ = ["check_expression", "diagnose_difference", "same_values"]
+
+
+def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "value") -> tuple[bool | None, list[Pair]]:
+    """Whether ``s`` equals ``e`` everywhere (None: cannot tell), and the evaluated pairs.
+
+    ``key`` names ``e`` among the expressions derived from the expected answer, for the cache.
+    """
+    points = expected.points(POINTS, group=GROUP)
+    pairs = evaluate_pairs(expected.compiled(key, e), Compiled(s, expected.variables), points, deadline)
+    return all_equal(pairs), pairs
+
+
+def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
+    submitted = expected.setting.plain(answer.value)
+    equal, pairs = same_values(expected, expected.value, submitted, deadline)
+    if equal:
+        return Outcome("equivalent", 1.0, "equivalent")
+    if expected.option("up_to_constant") and constant_difference(pairs):
+        return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
+    if equal is None:
+        deadline.check()
+        if symbolic_zero(submitted - expected.value, expected.setting):
+            return Outcome("equivalent", 1.0, "equivalent", method="symbolic")
+        return Outcome("undecided", 0.0, "undecided", method="numeric: too few defined points")
+    return diagnose_difference(expected, expected.value, submitted, pairs, deadline)
+
+
+def diagnose_difference(
+    expected: Expected,
+    e,
+    s,
+    pairs: list[Pair],
+    deadline: Deadline,
+    *,
+    key: str = "value",
+    approximations: Callable[[sympy.Expr], list] | None = None,
+) -> Outcome:
+    """A not-equivalent outcome for ``s`` against ``e``, naming the mistake where it can.
+
+    ``key`` names ``e`` among the expressions derived from the expected answer;
+    ``approximations`` gives the small-angle forms of an expression (by default
+    sin u → u, cos u → 1 or 1 − u²/2).
+    """
+    approximate = approximations or (lambda expr: small_angle(expr, expected.setting))
+    ratio = constant_ratio(pairs)
+    if ratio is not None:
+        if abs(ratio + 1) < 1e-9:
+            return Outcome("not_equivalent", 0.0, "sign")
+        factor = nice_number(1 / ratio)
+        if factor:
+            return Outcome("not_equivalent", 0.0, "factor", {"factor": factor})
+    deadline.check()
+    for number, form in enumerate(approximate(e)):
+        if same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")[0]:
+            return Outcome("not_equivalent", 0.0, "small_angle")
+    for form in approximate(s):
+        if same_values(expected, e, form, deadline, key=key)[0]:
+            return Outcome("not_equivalent", 0.0, "not_small_angle")
+    deadline.check()
+    changes = term_changes(e, s, expected.setting)
+    if 1 <= len(changes) <= 2:
+        (key, description), *rest = changes
+        return Outcome(
+            "not_equivalent", 0.0, key, {"description": description},
+            more=tuple((k, {"description": d}) for k, d in rest),
+        )  # fmt: skip
+    return Outcome("not_equivalent", 0.0, "wrong")

@@ -1,0 +1,53 @@
+"""Every sentence the checker says to a student, in one place.
+
+Contents:
+    FEEDBACK         diagnosis key → sentence template
+    say(key, **kw)   the sentence, filled in
+
+The sentences name the kind of mistake, never the expected answer itself.
+"""
+
+from __future__ import annotations
+
+__all__ = ["FEEDBACK", "say"]
+
+FEEDBACK: dict[str, str] = {
+    "equivalent": "Correct.",
+    "equivalent_up_to_constant": "Correct: it differs from the expected answer only by a constant, which is allowed here.",
+    "lagrangian_gauge": "Correct: your Lagrangian gives the same equations of motion.",
+    "sign": "The overall sign is wrong.",
+    "factor": "Your answer is off by a constant factor: missing a factor {factor}?",
+    "normalization": "Your Lagrangian gives the right equations of motion, but it is {factor} × (T − V); the convention L = T − V fixes the normalization.",
+    "v_minus_t": "Your Lagrangian has the opposite sign: it is V − T; the Lagrangian is L = T − V.",
+    "t_plus_v": "It looks like you wrote L = T + V; the Lagrangian is L = T − V.",
+    "missing_term": "A term is missing: {description}.",
+    "extra_term": "There is a term too many: {description}.",
+    "term_differs": "A term differs: {description}.",
+    "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",
+    "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",
+    "undefined_symbol": "Your answer uses {names}, which this problem does not define (it uses {defined}).",
+    "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
+    "expected_expression": "An expression is asked for here, but your answer is an equation.",
+    "expected_system": "A system of {count} equations is asked for here (one per coordinate: {coords}).",
+    "missing_equation": "The equation for {coords} is missing.",
+    "extra_equation": "You gave {given} equations; this system has {count} coordinates, so it needs exactly {count}.",
+    "wrong_equation": "Your equation for {coords} is not right; {right}.",
+    "wrong_equations": "Your equations do not determine the right accelerations for {coords}.",
+    "dependent_equations": "Your equations are not independent: they do not determine every acceleration.",
+    "trivial_equation": "Equation {index} holds for every motion, so it says nothing about this one.",
+    "not_equation_of_motion": "This should be an equation of motion, with the accelerations ({accelerations}) in it.",
+    "wrong_equation_single": "This equation does not say the same as the expected one.",
+    "wrong": "Not equivalent to the expected answer.",
+    "undecided": "This answer could not be checked automatically in time; it has been set aside for a person to grade.",
+    "not_a_number": "A number is asked for here; your answer contains {names}.",
+    "not_an_integer": "A whole number is asked for here.",
+    "out_of_tolerance": "Not within the accepted tolerance.",
+    "choice_unknown": "{labels} is not one of the options ({options}).",
+    "choice_count": "Choose {count}.",
+    "choice_wrong": "Not the right choice.",
+}
+
+
+def say(key: str, **details) -> str:
+    """The sentence for ``key``, with ``details`` filled in."""
+    return FEEDBACK[key].format(**details)

@@ -1,0 +1,137 @@
+"""The ``lagrangian`` kind: the same equations of motion, and the same normalization.
+
+Contents:
+    euler_lagrange(L, setting)                      d/dt ∂L/∂q̇ − ∂L/∂q, by the chain rule
+    check_lagrangian(expected, answer, deadline)    the kind's checker
+
+A Lagrangian is right up to an additive constant (another zero of the potential)
+or a total time derivative: both leave the equations of motion unchanged. The
+fast path catches the first without any calculus. Otherwise both sets of
+Euler–Lagrange expressions are evaluated at sample states: equal is full credit;
+a constant multiple k ≠ 1 has the right dynamics but not L = T − V, which earns
+the part's ``factor_credit``.
+"""
+
+from __future__ import annotations
+
+import sympy
+
+from grader.check.deadline import Deadline
+from grader.check.diagnose import taylor, term_changes
+from grader.check.expected import Expected, Outcome
+from grader.check.expression import same_values
+from grader.check.numeric import Closeness, Compiled, closeness
+from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
+from grader.check.setting import Setting
+from grader.parse import TIME, ParsedAnswer
+
+__all__ = ["check_lagrangian", "euler_lagrange"]
+
+
+def euler_lagrange(lagrangian, setting: Setting) -> list:
+    """The Euler–Lagrange expressions, one per coordinate, in plain symbols.
+
+    The total time derivative is taken by the chain rule on plain symbols, which is
+    several times faster than differentiating functions of time.
+    """
+    expressions = []
+    for q in setting.coords:
+        momentum = sympy.diff(lagrangian, setting.velocity(q))
+        total = sympy.diff(momentum, TIME)
+        for r in setting.coords:
+            total += sympy.diff(momentum, setting.state[(r, 0)]) * setting.velocity(r)
+            total += sympy.diff(momentum, setting.velocity(r)) * setting.acceleration(r)
+        expressions.append(total - sympy.diff(lagrangian, setting.state[(q, 0)]))
+    return expressions
+
+
+def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
+    lagrangian = expected.value
+    submitted = expected.setting.plain(answer.value)
+    equal, pairs = same_values(expected, lagrangian, submitted, deadline)
+    if equal:
+        return Outcome("equivalent", 1.0, "equivalent")
+    if constant_difference(pairs):
+        return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
+    deadline.check()
+    ratio, named = _dynamics_ratio(expected, submitted, deadline)
+    if ratio is not None:
+        credit = float(expected.option("factor_credit", 0.5))
+        if named and abs(ratio - 1) < 1e-9:
+            return Outcome("equivalent", 1.0, "lagrangian_gauge", method="euler-lagrange")
+        if named and abs(ratio + 1) < 1e-9:
+            return Outcome("not_equivalent", credit, "v_minus_t", method="euler-lagrange")
+        factor = (nice_number(ratio) if named else None) or "a constant multiple of"
+        return Outcome("not_equivalent", credit, "normalization", {"factor": factor}, "euler-lagrange")
+    return _diagnose(expected, lagrangian, submitted, deadline)
+
+
+def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[complex | None, bool]:
+    """(k, named) when the submitted equations of motion are k times the expected ones.
+
+    k may depend on the parameters (L/m is as good as 2L), so it is found afresh for
+    each draw of the parameters; ``named`` says whether it was the same number in all.
+    Returns (None, False) when the equations are not proportional.
+    """
+    if "euler-lagrange" not in expected.cache:
+        expected.cache["euler-lagrange"] = [
+            expected.compiled(f"euler-lagrange {i}", e)
+            for i, e in enumerate(euler_lagrange(expected.value, expected.setting))
+        ]
+    mine = expected.cache["euler-lagrange"]
+    theirs = [Compiled(e, expected.variables) for e in euler_lagrange(submitted, expected.setting)]
+    ratios: dict[int, complex] = {}
+    checked = 0
+    for number, point in enumerate(expected.points(POINTS, group=GROUP)):
+        deadline.check()
+        try:
+            values = [(f(point), g(point)) for f, g in zip(mine, theirs, strict=True)]
+        except UNDEFINED:
+            continue
+        scale = max(max(a[1], b[1]) for a, b in values)
+        group = number // GROUP
+        if group not in ratios:
+            (a, _), (b, _) = max(values, key=lambda pair: abs(pair[0][0]))
+            if closeness(a, 0, scale) is Closeness.EQUAL:
+                continue
+            if closeness(b, 0, scale) is Closeness.EQUAL:
+                return None, False
+            ratios[group] = b / a
+        ratio = ratios[group]
+        for (a, _), (b, _) in values:
+            if closeness(ratio * a, b, scale * max(1.0, abs(ratio))) is not Closeness.EQUAL:
+                return None, False
+        checked += 1
+    if checked < MIN_DEFINED:
+        return None, False
+    first, *others = ratios.values()
+    named = all(closeness(first, other, abs(first)) is Closeness.EQUAL for other in others)
+    return first, named
+
+
+def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> Outcome:
+    setting = expected.setting
+    at_rest = lagrangian.xreplace({setting.velocity(q): 0 for q in setting.coords})
+    candidates = (
+        ("t_plus_v", lagrangian - 2 * at_rest, "T+V"),  # T − V − 2(−V) = T + V, where T vanishes at rest
+        ("small_angle", taylor(lagrangian, setting, 2), "small angle"),
+    )
+    for key, form, name in candidates:
+        deadline.check()
+        _, pairs = same_values(expected, form, submitted, deadline, key=name)
+        if constant_difference(pairs):
+            return Outcome("not_equivalent", 0.0, key)
+    state = set(setting.state.values()) | {TIME}
+    changes = term_changes(_varying(lagrangian, state), _varying(submitted, state), setting)
+    if 1 <= len(changes) <= 2:
+        (key, description), *rest = changes
+        return Outcome(
+            "not_equivalent", 0.0, key, {"description": description},
+            more=tuple((k, {"description": d}) for k, d in rest),
+        )  # fmt: skip
+    return Outcome("not_equivalent", 0.0, "wrong")
+
+
+def _varying(expr, state: set):
+    """``expr`` without its constant terms, which do not change the motion."""
+    return sympy.Add(*(term for term in sympy.Add.make_args(sympy.expand(expr)) if term.free_symbols & state))

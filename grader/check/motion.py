@@ -1,0 +1,428 @@
+"""The ``equation`` and ``equations`` kinds: the same relation, the same motion.
+
+Contents:
+    check_equation(expected, answer, deadline)    one equation
+    check_equations(expected, answer, deadline)   a system of equations of motion
+
+An equation of motion is linear in the accelerations: Σₖ cₖ(q, q̇, t) q̈ₖ + b(q, q̇, t) = 0.
+At each sample state the coefficients are read off numerically, with no symbolic
+solving: b is the equation at q̈ = 0 and cₖ what a unit acceleration adds; a probe
+at other accelerations confirms the equation really is linear in them. Then
+
+* one equation is right when its coefficient vector (c, b) is a nonzero multiple
+  of the expected one at every state: multiplied through by anything, rearranged;
+* a system is right when it has one equation per coordinate, each is satisfied by
+  the accelerations the expected system implies, and together they determine the
+  accelerations: reordered, scaled, recombined, or solved for q̈ explicitly.
+
+An equation without accelerations (a constraint, a conserved quantity) is right
+when submitted/expected is, at fixed parameters, the same nonzero number
+whatever the state.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import sympy
+
+from grader.check.deadline import Deadline
+from grader.check.diagnose import taylor
+from grader.check.expected import Expected, Outcome
+from grader.check.expression import diagnose_difference, same_values
+from grader.check.numeric import Closeness, Compiled, closeness
+from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED
+from grader.parse import ParsedAnswer
+from grader.parse.names import unicode_name
+
+__all__ = ["check_equation", "check_equations"]
+
+_PROBE = (0.7, -1.3, 0.45, 1.9)  # accelerations at which linearity is confirmed
+_GROUPS, _STATES = 4, 3  # parameter draws × state draws for the ratio test
+
+
+def _as_zero(value) -> sympy.Expr:
+    return value.lhs - value.rhs if isinstance(value, sympy.Eq) else value
+
+
+def _equations(value) -> tuple:
+    return tuple(_as_zero(item) for item in (value if isinstance(value, tuple) else (value,)))
+
+
+class _Rows:
+    """Coefficient rows (c₁…cₙ, b) of equations at one state, and whether they are linear in q̈."""
+
+    def __init__(self, compiled: Sequence[Compiled], point, positions: Sequence[int], precise: bool):
+        def value(f, accelerations):
+            values = list(point)
+            for position, acceleration in zip(positions, accelerations, strict=True):
+                values[position] = acceleration
+            result, scale = f.precise(values) if precise else f(values)
+            self.scale = max(self.scale, scale)
+            return result
+
+        self.scale = 0.0
+        self.precise = precise
+        n = len(positions)
+        zero = [0] * n
+        self.rows, self.linear = [], Closeness.EQUAL
+        for f in compiled:
+            b = value(f, zero)
+            c = [value(f, [1 if k == j else 0 for k in range(n)]) - b for j in range(n)]
+            probe = _PROBE[:n]
+            predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
+            self.linear = _worst(self.linear, closeness(value(f, probe), predicted, self.scale, precise=precise))
+            self.rows.append([*c, b])
+
+    def close(self, a, b) -> Closeness:
+        return closeness(a, b, self.scale, precise=self.precise)
+
+
+def _worst(a: Closeness, b: Closeness) -> Closeness:
+    order = (Closeness.EQUAL, Closeness.UNSURE, Closeness.DIFFERENT)
+    return max(a, b, key=order.index)
+
+
+def _positions(expected: Expected) -> list[int]:
+    index = {symbol: i for i, symbol in enumerate(expected.variables)}
+    return [index[expected.setting.acceleration(q)] for q in expected.setting.coords]
+
+
+def _accelerations_in(expr, expected: Expected) -> list[str]:
+    return [q for q in expected.setting.coords if expected.setting.acceleration(q) in expr.free_symbols]
+
+
+def _at_each_state(expected: Expected, deadline: Deadline, judge) -> list[Closeness]:
+    """``judge(point, precise) -> Closeness`` at each sample state; unsure states are redone at 40 digits."""
+    results = []
+    for point in expected.points(POINTS, group=GROUP):
+        deadline.check()
+        try:
+            result = judge(point, False)
+            if result is Closeness.UNSURE:
+                result = judge(point, True)
+        except UNDEFINED:
+            continue
+        if result is not None:
+            results.append(result)
+    return results
+
+
+def _decided(results: list[Closeness]) -> bool | None:
+    if Closeness.DIFFERENT in results:
+        return False
+    if len(results) < MIN_DEFINED or Closeness.UNSURE in results:
+        return None
+    return True
+
+
+# -- one equation -----------------------------------------------------------------
+
+
+def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
+    (f,) = _equations(expected.value)
+    (g,) = _equations(expected.setting.plain(answer.value))
+    if not _accelerations_in(f, expected):
+        return _check_relation(expected, f, g, deadline)
+    if not _accelerations_in(g, expected):
+        names = ", ".join(unicode_name(q, 2) for q in _accelerations_in(f, expected))
+        return Outcome("not_equivalent", 0.0, "not_equation_of_motion", {"accelerations": names}, "accelerations")
+    expected_f = expected.compiled("equation", f)
+    submitted_g = Compiled(g, expected.variables)
+    positions = _positions(expected)
+
+    def proportional(point, precise):
+        mine = _Rows([expected_f], point, positions, precise)
+        theirs = _Rows([submitted_g], point, positions, precise)
+        if mine.linear is not Closeness.EQUAL:
+            return None  # the reference itself is not linear here: no information
+        if theirs.linear is not Closeness.EQUAL:
+            return theirs.linear
+        return _multiple(mine.rows[0], theirs.rows[0], max(mine.scale, theirs.scale), precise)
+
+    same = _decided(_at_each_state(expected, deadline, proportional))
+    if same:
+        return Outcome("equivalent", 1.0, "equivalent", method="accelerations")
+    if same is None:
+        return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
+    return _diagnose_motion(expected, f, g, deadline)
+
+
+def _multiple(expected_row, submitted_row, scale: float, precise: bool) -> Closeness:
+    """Whether ``submitted_row`` is a nonzero multiple of ``expected_row``."""
+    k = max(range(len(expected_row)), key=lambda j: abs(expected_row[j]))
+    if closeness(expected_row[k], 0, scale, precise=precise) is Closeness.EQUAL:
+        return None  # a degenerate state of the reference
+    factor = submitted_row[k] / expected_row[k]
+    if closeness(factor * expected_row[k], 0, scale, precise=precise) is Closeness.EQUAL:
+        return Closeness.DIFFERENT
+    worst = Closeness.EQUAL
+    for a, b in zip(expected_row, submitted_row, strict=True):
+        worst = _worst(worst, closeness(factor * a, b, scale * max(1.0, abs(factor)), precise=precise))
+    return worst
+
+
+def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
+    """Compare the two equations solved for the same acceleration, term by term."""
+    (coordinate, *_) = _accelerations_in(f, expected)
+    acceleration = expected.setting.acceleration(coordinate)
+    lead_f, lead_g = sympy.diff(f, acceleration), sympy.diff(g, acceleration)
+    if lead_g == 0:
+        return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+    key = "equation, normalized"
+    if key not in expected.cache:
+        expected.cache[key] = sympy.expand(f / lead_f)
+    normal_f, normal_g = expected.cache[key], sympy.expand(g / lead_g)
+    deadline.check()
+    _, pairs = same_values(expected, normal_f, normal_g, deadline, key=key)
+    outcome = diagnose_difference(
+        expected, normal_f, normal_g, pairs, deadline, key=key,
+        approximations=lambda expr: [taylor(expr, expected.setting, 1)],
+    )  # fmt: skip
+    if outcome.key in ("sign", "factor", "wrong"):
+        return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+    return Outcome(outcome.status, 0.0, outcome.key, outcome.details, "accelerations", outcome.more)
+
+
+def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
+    """An equation without accelerations: the same zero set.
+
+    First g = λ f with λ ≠ 0, where λ may depend on the parameters when the relation
+    involves the state (p_θ = m l² θ̇ ≡ θ̇ = p_θ/(m l²)), and must be a number when it
+    does not. Failing that, the zero sets are compared directly: ω² = g/l and
+    ω = √(g/l) have the same root ω > 0.
+    """
+    involves_state = any(expected.setting.is_state(symbol) for symbol in f.free_symbols)
+    group = _STATES if involves_state else _GROUPS * _STATES
+    expected_f = expected.compiled("relation", f)
+    submitted_g = Compiled(g, expected.variables)
+    results = []
+    ratios: dict[int, complex] = {}
+    for number, point in enumerate(expected.points(_GROUPS * _STATES, salt=1, group=_STATES)):
+        deadline.check()
+        try:
+            (a, scale_a), (b, scale_b) = expected_f(point), submitted_g(point)
+        except UNDEFINED:
+            continue
+        scale = max(scale_a, scale_b)
+        if closeness(a, 0, scale) is Closeness.EQUAL:
+            results.append(closeness(b, 0, scale))  # on the expected relation's zero set
+            continue
+        ratio = ratios.setdefault(number // group, b / a)
+        if closeness(ratio, 0, 1.0) is Closeness.EQUAL:
+            results.append(Closeness.DIFFERENT)
+        else:
+            results.append(closeness(ratio * a, b, scale * max(1.0, abs(ratio))))
+    if all(result is Closeness.EQUAL for result in results) and len(results) >= MIN_DEFINED:
+        return Outcome("equivalent", 1.0, "equivalent", method="ratio")
+    same = _same_roots(expected, expected_f, submitted_g, f.free_symbols & g.free_symbols, deadline)
+    if same:
+        return Outcome("equivalent", 1.0, "equivalent", method="roots")
+    if same is None and Closeness.DIFFERENT not in results:
+        return Outcome("undecided", 0.0, "undecided", method="ratio: too few defined points")
+    return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="ratio")
+
+
+_SCAN = {"positive": (0.01, 10.0), "negative": (-10.0, -0.01)}  # where roots are looked for
+
+
+def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: Deadline) -> bool | None:
+    """Whether f = 0 and g = 0 have the same real roots in one shared symbol, at sample points.
+
+    None when no root was found to compare.
+    """
+    if not shared:
+        return None
+    symbol = min(shared, key=lambda s: (not expected.setting.is_state(s), s.name))
+    position = expected.variables.index(symbol)
+    low, high = _SCAN.get(expected.setting.domain(symbol), (-10.0, 10.0))
+    grid = [low + (high - low) * i / 80 for i in range(81)]
+    found = 0
+    for point in expected.points(4, salt=2):
+        for one, other in ((f, g), (g, f)):
+            for root in _real_roots(one, point, position, grid, deadline):
+                values = list(point)
+                values[position] = complex(root)
+                try:
+                    value, scale = other(values)
+                except UNDEFINED:
+                    return None
+                if closeness(value, 0, max(scale, 1.0)) is Closeness.DIFFERENT:
+                    return False
+                found += 1
+    return True if found else None
+
+
+def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadline) -> list[float]:
+    """Roots of a real function of one variable on ``grid``: sign changes, refined by bisection."""
+
+    def at(x: float):
+        values = list(point)
+        values[position] = complex(x)
+        value, _ = function(values)
+        return value.real if abs(value.imag) <= 1e-9 * max(1.0, abs(value)) else None
+
+    roots = []
+    previous = None
+    for x in grid:
+        deadline.check()
+        try:
+            y = at(x)
+        except UNDEFINED:
+            y = None
+        if y is not None and previous is not None and previous[1] * y < 0:
+            a, b = previous[0], x
+            for _ in range(60):
+                middle = (a + b) / 2
+                try:
+                    ym = at(middle)
+                except UNDEFINED:
+                    break
+                if ym is None:
+                    break
+                a, b = (middle, b) if (ym > 0) == (previous[1] > 0) else (a, middle)
+            roots.append((a + b) / 2)
+        previous = (x, y) if y is not None else None
+    return roots
+
+
+# -- systems ----------------------------------------------------------------------
+
+
+@dataclass
+class _State:
+    """What one sample state says of a submitted system."""
+
+    verdicts: list[Closeness]  # per submitted equation: satisfied by the expected accelerations?
+    trivial: list[bool]  # per submitted equation: no acceleration in it at this state
+    independent: bool  # the submitted equations determine the accelerations
+    spanned: list[bool]  # per coordinate: its expected equation follows from the right submitted ones
+
+    @property
+    def unsure(self) -> bool:
+        return Closeness.UNSURE in self.verdicts
+
+
+def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
+    theirs = _equations(expected.setting.plain(answer.value))
+    expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(_equations(expected.value))]
+    submitted_gs = [Compiled(g, expected.variables) for g in theirs]
+    positions = _positions(expected)
+    states = []
+    for point in expected.points(POINTS, group=GROUP):
+        deadline.check()
+        try:
+            state = _system_state(expected_fs, submitted_gs, point, positions, precise=False)
+            if state is not None and state.unsure:
+                state = _system_state(expected_fs, submitted_gs, point, positions, precise=True)
+        except UNDEFINED:
+            continue
+        if state is not None:
+            states.append(state)
+    if len(states) < MIN_DEFINED:
+        return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
+    return _system_outcome(expected, states, len(theirs))
+
+
+def _system_state(expected_fs, submitted_gs, point, positions, *, precise: bool) -> _State | None:
+    n = len(positions)
+    reference = _Rows(expected_fs, point, positions, precise)
+    accelerations = _solve([row[:n] for row in reference.rows], [-row[n] for row in reference.rows])
+    if reference.linear is not Closeness.EQUAL or accelerations is None:
+        return None  # a degenerate state of the reference: it says nothing
+    submitted = _Rows(submitted_gs, point, positions, precise)
+    scale = max(reference.scale, submitted.scale)
+    verdicts, trivial = [], []
+    for row in submitted.rows:
+        size = sum(abs(c * a) for c, a in zip(row, accelerations, strict=False)) + abs(row[n])
+        residual = sum(c * a for c, a in zip(row, accelerations, strict=False)) + row[n]
+        verdict = closeness(residual, 0, max(scale, float(size)), precise=precise)
+        verdicts.append(_worst(verdict, submitted.linear))
+        trivial.append(all(closeness(c, 0, scale, precise=precise) is Closeness.EQUAL for c in row[:n]))
+    good = [row for row, verdict in zip(submitted.rows, verdicts, strict=True) if verdict is Closeness.EQUAL]
+    independent = _solve([row[:n] for row in submitted.rows], [-row[n] for row in submitted.rows]) is not None
+    spanned = [_in_span(good, row) for row in reference.rows]
+    return _State(verdicts, trivial, independent, spanned)
+
+
+def _system_outcome(expected: Expected, states: list[_State], given: int) -> Outcome:
+    coords, describe = expected.setting.coords, expected.setting.describe
+    n = len(coords)
+    right = [all(state.verdicts[j] is Closeness.EQUAL for state in states) for j in range(given)]
+    trivial = [all(state.trivial[j] for state in states) for j in range(given)]
+    unspanned = [coords[i] for i in range(n) if not all(state.spanned[i] for state in states)]
+    method = "accelerations"
+    if given > n:
+        return Outcome("not_equivalent", 0.0, "extra_equation", {"given": given, "count": n}, method)
+    if given < n:
+        return Outcome("not_equivalent", 0.0, "missing_equation", {"coords": _or(unspanned, describe)}, method)
+    if any(trivial):
+        return Outcome(
+            "not_equivalent", 0.0, "trivial_equation", {"text": f"equation {trivial.index(True) + 1}"}, method
+        )
+    if all(right):
+        if all(state.independent for state in states):
+            return Outcome("equivalent", 1.0, "equivalent", method=method)
+        return Outcome("not_equivalent", 0.0, "dependent_equations", method=method)
+    if any(right) and unspanned:
+        right_ones = [str(j + 1) for j, ok in enumerate(right) if ok]
+        rest = f"equation {right_ones[0]} is right" if len(right_ones) == 1 else "the others are right"
+        return Outcome(
+            "not_equivalent", 0.0, "wrong_equation", {"coords": _or(unspanned, describe), "right": rest}, method
+        )
+    return Outcome("not_equivalent", 0.0, "wrong_equations", {"coords": describe(coords)}, method)
+
+
+def _or(names: list[str], describe) -> str:
+    if len(names) <= 1:
+        return describe(names)
+    return "one of " + describe(names)
+
+
+def _solve(matrix, rhs):
+    """Gaussian elimination with partial pivoting; None when (numerically) singular."""
+    n = len(matrix)
+    if n == 0 or any(len(row) != n for row in matrix):
+        return None
+    a = [[*row, value] for row, value in zip(matrix, rhs, strict=True)]
+    norm = max(abs(x) for row in matrix for x in row) or 1
+    for col in range(n):
+        pivot = max(range(col, n), key=lambda r: abs(a[r][col]))
+        if abs(a[pivot][col]) <= 1e-12 * norm:
+            return None
+        a[col], a[pivot] = a[pivot], a[col]
+        for r in range(col + 1, n):
+            factor = a[r][col] / a[col][col]
+            for c in range(col, n + 1):
+                a[r][c] -= factor * a[col][c]
+    solution = [0] * n
+    for r in reversed(range(n)):
+        solution[r] = (a[r][n] - sum(a[r][c] * solution[c] for c in range(r + 1, n))) / a[r][r]
+    return solution
+
+
+def _rank(rows) -> int:
+    rows = [list(row) for row in rows]
+    if not rows:
+        return 0
+    norm = max((abs(x) for row in rows for x in row), default=0) or 1
+    rank, width = 0, len(rows[0])
+    for col in range(width):
+        pivot = max(range(rank, len(rows)), key=lambda r: abs(rows[r][col]), default=None)
+        if pivot is None or abs(rows[pivot][col]) <= 1e-9 * norm:
+            continue
+        rows[rank], rows[pivot] = rows[pivot], rows[rank]
+        for r in range(len(rows)):
+            if r != rank:
+                factor = rows[r][col] / rows[rank][col]
+                rows[r] = [x - factor * y for x, y in zip(rows[r], rows[rank], strict=True)]
+        rank += 1
+        if rank == len(rows):
+            break
+    return rank
+
+
+def _in_span(rows, row) -> bool:
+    """Whether ``row`` is a combination of ``rows`` (at this state)."""
+    return _rank([*rows, row]) == _rank(rows) if rows else False

@@ -1,0 +1,142 @@
+"""Evaluating two answers side by side at sample points, and what the numbers say.
+
+Contents:
+    Pair                      one point: both values and their common scale
+    evaluate_pairs(...)       both expressions at seeded points, near misses re-evaluated precisely
+    all_equal, constant_ratio, constant_difference   readings of a list of pairs
+    nice_number(x)            1/2, 2, 2π… for feedback, or None
+
+A point where either side is undefined (a division by zero, an overflow) is
+skipped; when too few points remain, the caller falls back to symbolic work or
+says "undecided".
+"""
+
+from __future__ import annotations
+
+import cmath
+from collections.abc import Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+
+import mpmath
+import sympy
+
+from grader.check.deadline import Deadline
+from grader.check.numeric import Closeness, Compiled, closeness
+
+__all__ = ["POINTS", "Pair", "all_equal", "constant_difference", "constant_ratio", "evaluate_pairs", "nice_number"]
+
+POINTS = 10  # sample points per comparison
+GROUP = 5  # points sharing their parameter values: two draws of the parameters, five states each
+MIN_DEFINED = 6  # fewer defined points than this cannot decide
+UNDEFINED = (ArithmeticError, ValueError, OverflowError, TypeError)
+
+
+@dataclass(frozen=True)
+class Pair:
+    """Both values at one point; ``group`` numbers the draw of parameter values it shares."""
+
+    expected: complex
+    submitted: complex
+    scale: float
+    precise: bool = False
+    group: int = 0
+
+    def closeness(self) -> Closeness:
+        return closeness(self.expected, self.submitted, self.scale, precise=self.precise)
+
+
+def evaluate_pairs(
+    expected: Compiled, submitted: Compiled, points: Sequence[Sequence[complex]], deadline: Deadline
+) -> list[Pair]:
+    """Both expressions at each point where both are defined; unsure points are redone at 40 digits."""
+    pairs = []
+    for number, point in enumerate(points):
+        deadline.check()
+        try:
+            a, scale_a = expected(point)
+            b, scale_b = submitted(point)
+        except UNDEFINED:
+            continue
+        if not (_finite(a) and _finite(b)):
+            continue
+        pair = Pair(a, b, max(scale_a, scale_b), group=number // GROUP)
+        if pair.closeness() is Closeness.UNSURE:
+            try:
+                a, scale_a = expected.precise(point)
+                b, scale_b = submitted.precise(point)
+                pair = Pair(a, b, max(scale_a, scale_b), precise=True, group=number // GROUP)
+            except UNDEFINED:
+                continue
+        pairs.append(pair)
+    return pairs
+
+
+def _finite(value) -> bool:
+    if isinstance(value, complex):
+        return cmath.isfinite(value)
+    return bool(mpmath.isfinite(value))
+
+
+def all_equal(pairs: Sequence[Pair]) -> bool | None:
+    """True when every point agrees, False when one clearly does not, None when too few points."""
+    if any(pair.closeness() is Closeness.DIFFERENT for pair in pairs):
+        return False
+    if len(pairs) < MIN_DEFINED:
+        return None
+    return True
+
+
+def constant_ratio(pairs: Sequence[Pair]) -> complex | None:
+    """The constant k with submitted = k·expected at every point, if there is one (k ≠ 0)."""
+    usable = [pair for pair in pairs if abs(pair.expected) > 1e-9 * pair.scale]
+    if len(usable) < MIN_DEFINED // 2:
+        return None
+    k = complex(usable[0].submitted / usable[0].expected)
+    if k == 0:
+        return None
+    for pair in pairs:
+        scaled = Pair(k * complex(pair.expected), complex(pair.submitted), pair.scale * max(1.0, abs(k)))
+        if scaled.closeness() is not Closeness.EQUAL:
+            return None
+    return k
+
+
+def constant_difference(pairs: Sequence[Pair]) -> bool:
+    """True when submitted − expected does not change along the motion.
+
+    It may depend on the parameters (m g l is a constant of the motion), so it is
+    compared within each group of points that share the parameters' values.
+    """
+    if len(pairs) < MIN_DEFINED:
+        return False
+    first: dict[int, complex] = {}
+    for pair in pairs:
+        difference = complex(pair.submitted - pair.expected)
+        reference = first.setdefault(pair.group, difference)
+        if closeness(difference, reference, pair.scale) is not Closeness.EQUAL:
+            return False
+    return True
+
+
+def nice_number(k: complex) -> str | None:
+    """A short exact form of ``k`` (1/2, 2, -3/4, 2π, π/2), or None when it has none.
+
+    >>> nice_number(0.5), nice_number(2 * 3.141592653589793), nice_number(0.123456789)
+    ('1/2', '2π', None)
+    """
+    if abs(k.imag) > 1e-9 * abs(k):
+        return None
+    value = k.real
+    for unit, suffix in ((1.0, ""), (float(sympy.pi), "π")):
+        fraction = Fraction(value / unit).limit_denominator(12)
+        if fraction != 0 and abs(float(fraction) * unit - value) <= 1e-9 * abs(value):
+            if suffix and fraction.denominator != 1:
+                numerator = (
+                    "" if fraction.numerator == 1 else "-" if fraction.numerator == -1 else str(fraction.numerator)
+                )
+                return f"{numerator}π/{fraction.denominator}"
+            if suffix:
+                return f"{'' if fraction.numerator == 1 else fraction.numerator}π"
+            return str(fraction)
+    return None

@@ -1,0 +1,81 @@
+"""The kinds that are not formulas of the motion: ``integer``, ``number``, ``choice``.
+
+Contents:
+    check_integer    a whole number, exactly (``6/2`` is 3)
+    check_number     a number within a tolerance: |submitted − expected| ≤ atol + rtol·|expected|
+    check_choice     one or several option labels, in any order and case
+    choice_labels    the labels in a typed choice answer
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from grader.check.deadline import Deadline
+from grader.check.expected import Expected, Outcome
+from grader.parse import ParsedAnswer
+
+__all__ = ["check_choice", "check_integer", "check_number", "choice_labels"]
+
+DIGITS = 30
+MAX_CHOICE_LENGTH = 200
+_LABEL = re.compile(r"[A-Za-z0-9]{1,20}")
+_SEPARATORS = re.compile(r"(?:\s*[,;/&]\s*|\s+and\s+|\s+)")
+
+
+def check_integer(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
+    value = sympy.nsimplify(answer.value) if answer.value.is_number else answer.value
+    if not (value.is_number and value.is_Integer):
+        return Outcome("not_equivalent", 0.0, "not_an_integer", method="exact")
+    equal = value == expected.parsed.value
+    return Outcome(
+        "equivalent" if equal else "not_equivalent", float(equal), "equivalent" if equal else "wrong", method="exact"
+    )
+
+
+def check_number(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
+    rtol, atol = float(expected.option("rtol")), float(expected.option("atol"))
+    target = complex(expected.parsed.value.evalf(DIGITS))
+    deadline.check()
+    value = complex(answer.value.evalf(DIGITS))
+    within = abs(value - target) <= atol + rtol * abs(target)
+    if within:
+        return Outcome("equivalent", 1.0, "equivalent", method=f"tolerance rtol={rtol:g} atol={atol:g}")
+    return Outcome("not_equivalent", 0.0, "out_of_tolerance", method=f"tolerance rtol={rtol:g} atol={atol:g}")
+
+
+def choice_labels(text: str) -> list[str] | None:
+    """The labels in ``text`` (``"a, C"`` → ``['a', 'c']``), or None when it is not a list of labels."""
+    stripped = text.strip().strip("[](){}").strip()
+    if not stripped or len(text) > MAX_CHOICE_LENGTH:
+        return None
+    labels = [label.lower() for label in _SEPARATORS.split(stripped) if label]
+    if not all(_LABEL.fullmatch(label) for label in labels):
+        return None
+    return labels
+
+
+def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outcome:
+    wanted = set(choice_labels(expected.text) or ())
+    options = [str(option).lower() for option in expected.option("options") or ()]
+    given = choice_labels(submitted) if isinstance(submitted, str) else None
+    if given is None:
+        return Outcome(
+            "invalid", 0.0, "choice_unknown", {"labels": "This", "options": ", ".join(options) or "?"}, "labels"
+        )
+    unknown = [label for label in given if options and label not in options]
+    if unknown:
+        return Outcome(
+            "invalid", 0.0, "choice_unknown", {"labels": ", ".join(unknown), "options": ", ".join(options)}, "labels"
+        )
+    if not expected.option("multiple") and len(set(given)) > 1:
+        return Outcome("not_equivalent", 0.0, "choice_count", {"count": "one option"}, "labels")
+    right = set(given) == wanted
+    return Outcome(
+        "equivalent" if right else "not_equivalent",
+        float(right),
+        "equivalent" if right else "choice_wrong",
+        method="labels",
+    )

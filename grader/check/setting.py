@@ -1,0 +1,125 @@
+"""The symbols of a problem, as the checker sees them.
+
+Contents:
+    Setting             coordinates, known symbols and their domains
+    Setting.plain(v)    an answer with q(t), q̇, q̈ replaced by plain real symbols
+    Setting.points(...) seeded sample points for a set of symbols
+
+The parser keeps coordinates as functions of time so that ``diff`` works; the
+checker evaluates numbers, so each coordinate and each of its derivatives becomes
+a plain symbol (``theta``, ``theta__1``, ``theta__2``: names no student can type,
+because the parser refuses ``__``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import sympy
+
+from grader.check.numeric import sample_points
+from grader.errors import AuthorError
+from grader.parse import TIME
+from grader.parse.names import canonical_name, unicode_name
+
+__all__ = ["DOMAINS", "Setting"]
+
+DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
+MAX_ORDER = 3
+
+
+@dataclass(frozen=True)
+class Setting:
+    """What a problem defines.
+
+    Attributes:
+        coords: canonical names of the generalized coordinates, in order.
+        known: canonical names of the other symbols (parameters).
+        domains: canonical name → domain, overriding the defaults (coordinates,
+            their derivatives and t are real; every other symbol is positive).
+        seed: seeds the sample points, so a verdict is the same on every run.
+    """
+
+    coords: tuple[str, ...]
+    known: tuple[str, ...] = ()
+    domains: Mapping[str, str] = field(default_factory=dict)
+    seed: int = 20261121
+
+    @classmethod
+    def build(cls, coords: Iterable[str] = (), known: Iterable[str] = (), domains: Mapping[str, str] | None = None):
+        """A setting from names in any spelling; raises :class:`AuthorError` for an unknown domain."""
+        domains = {canonical_name(name): domain for name, domain in (domains or {}).items()}
+        for name, domain in domains.items():
+            if domain not in DOMAINS:
+                raise AuthorError(f"domain of {name!r} is {domain!r}; allowed: {', '.join(DOMAINS)}")
+        return cls(tuple(canonical_name(q) for q in coords), tuple(canonical_name(k) for k in known), domains)
+
+    @cached_property
+    def functions(self) -> dict[str, sympy.Expr]:
+        """Coordinate name → the coordinate as a function of time, as the parser builds it."""
+        return {name: sympy.Function(name, real=True)(TIME) for name in self.coords}
+
+    @cached_property
+    def state(self) -> dict[tuple[str, int], sympy.Symbol]:
+        """(coordinate, order of derivative) → its plain symbol."""
+        return {
+            (name, order): sympy.Symbol(name if order == 0 else f"{name}__{order}")
+            for name in self.coords
+            for order in range(MAX_ORDER + 1)
+        }
+
+    @cached_property
+    def _replacements(self) -> dict:
+        replacements = {}
+        for (name, order), symbol in self.state.items():
+            q = self.functions[name]
+            replacements[q if order == 0 else sympy.Derivative(q, (TIME, order))] = symbol
+        return replacements
+
+    def plain(self, value):
+        """An answer's value with coordinates and their derivatives as plain symbols."""
+        # xreplace matches whole subtrees top-down, so θ̈ is replaced before the θ inside it.
+        if isinstance(value, tuple):
+            return tuple(self.plain(item) for item in value)
+        return value.xreplace(self._replacements)
+
+    def velocity(self, name: str) -> sympy.Symbol:
+        return self.state[(name, 1)]
+
+    def acceleration(self, name: str) -> sympy.Symbol:
+        return self.state[(name, 2)]
+
+    def is_state(self, symbol: sympy.Symbol) -> bool:
+        """Coordinates, their derivatives, and time: what varies along a motion."""
+        return symbol == TIME or symbol in self._state_symbols
+
+    @cached_property
+    def _state_symbols(self) -> frozenset:
+        return frozenset(self.state.values())
+
+    def domain(self, symbol: sympy.Symbol) -> str:
+        if self.is_state(symbol):
+            return self.domains.get(symbol.name, "real")
+        return self.domains.get(symbol.name, "positive")
+
+    def points(self, variables, count: int, *, salt: int = 0, group: int = 1) -> list[list[complex]]:
+        """``count`` sample points for ``variables`` (a sequence of symbols).
+
+        Consecutive runs of ``group`` points share their parameter values and differ
+        only in the state, so a test can ask whether something is constant along
+        the motion (an additive constant like m g l may depend on the parameters).
+        """
+        domains = {symbol: self.domain(symbol) for symbol in variables}
+        points = sample_points(variables, domains, count, self.seed + salt)
+        parameters = [i for i, symbol in enumerate(variables) if not self.is_state(symbol)]
+        for start in range(0, count, group):
+            for point in points[start + 1 : start + group]:
+                for i in parameters:
+                    point[i] = points[start][i]
+        return points
+
+    def describe(self, names: Iterable[str]) -> str:
+        """Names as a student reads them: ``m, l, g, θ``."""
+        return ", ".join(unicode_name(name) for name in names)
