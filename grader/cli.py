@@ -1,9 +1,11 @@
 """The ``grader`` command: a thin layer over the library, and the only code that prints or exits.
 
 Commands:
-    grader parse ANSWER [--coords q1,q2] [--known m,g,l] [--json]   how an answer is read
+    grader compare EXPECTED SUBMITTED [--kind K] [--coords q1,q2] [--json]   judge an answer
+    grader parse ANSWER [--coords q1,q2] [--known m,g,l] [--json]           how an answer is read
 
-Exit statuses: 0 success; 2 invalid input or usage error.
+Exit statuses: 0 equivalent (or read); 1 not equivalent; 2 invalid input or usage
+error; 3 undecided (set aside for a person).
 """
 
 from __future__ import annotations
@@ -12,11 +14,20 @@ import argparse
 import json
 import sys
 from collections.abc import Sequence
+from dataclasses import fields
 
-from grader import parse_answer
+from grader import KINDS, AuthorError, compare, parse_answer
 
 EXIT_OK = 0
+EXIT_WRONG = 1
 EXIT_INVALID = 2
+EXIT_UNDECIDED = 3
+_EXIT_BY_STATUS = {
+    "equivalent": EXIT_OK,
+    "not_equivalent": EXIT_WRONG,
+    "invalid": EXIT_INVALID,
+    "undecided": EXIT_UNDECIDED,
+}
 
 
 def _names(value: str) -> list[str]:
@@ -33,7 +44,45 @@ def _parser() -> argparse.ArgumentParser:
     parse.add_argument("--known", type=_names, default=[], help="other symbols the problem defines, e.g. m,g,l")
     parse.add_argument("--json", action="store_true", help="print JSON")
     parse.set_defaults(run=_run_parse)
+
+    judge = commands.add_parser(
+        "compare", help="judge a submitted answer against the expected one", description="Judge an answer."
+    )
+    judge.add_argument("expected", help="the reference answer")
+    judge.add_argument("submitted", help="the answer to judge")
+    judge.add_argument("--kind", choices=sorted(KINDS), default="expression", help="the kind of answer")
+    judge.add_argument("--coords", type=_names, default=[], help="generalized coordinates, e.g. theta1,theta2")
+    judge.add_argument("--known", type=_names, default=[], help="more symbols the problem defines")
+    judge.add_argument("--timeout", type=float, default=2.0, help="seconds before the verdict is 'undecided'")
+    judge.add_argument("--up-to-constant", action="store_true", help="expressions: allow an additive constant")
+    judge.add_argument("--json", action="store_true", help="print JSON")
+    judge.set_defaults(run=_run_compare)
     return parser
+
+
+def _run_compare(args: argparse.Namespace) -> int:
+    options = {"up_to_constant": True} if args.up_to_constant else {}
+    try:
+        verdict = compare(
+            args.expected, args.submitted, kind=args.kind, coords=args.coords, known=args.known,
+            timeout=args.timeout, **options,
+        )  # fmt: skip
+    except AuthorError as error:
+        print(f"grader compare: {error}", file=sys.stderr)
+        return EXIT_INVALID
+    if args.json:
+        record = {field.name: getattr(verdict, field.name) for field in fields(verdict) if field.name != "answer"}
+        record |= {"equivalent": verdict.equivalent, "read_as": verdict.read_as}
+        print(json.dumps(record, ensure_ascii=False, indent=2))
+    else:
+        print(f"{verdict.status.replace('_', ' ')} (score {verdict.score:g}, by {verdict.method})")
+        for sentence in verdict.feedback:
+            print(f"  {sentence}")
+        if verdict.status == "invalid":
+            print("\n".join(f"  {line}" for line in verdict.read_as.splitlines()))
+        else:
+            print(f"read as: {verdict.read_as}")
+    return _EXIT_BY_STATUS[verdict.status]
 
 
 def _run_parse(args: argparse.Namespace) -> int:

@@ -127,7 +127,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
     if spec.parsed:
         answer = parse_answer(submitted, coords=expected.setting.coords, known=sorted(expected.names))
         if not answer.ok:
-            return Verdict("invalid", 0.0, (answer.message,), answer.pointer, "parse", "invalid")
+            return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
         answer = _unwrap_named(answer, spec)
         early = _mismatch(spec, expected, answer)
         if early:
@@ -146,9 +146,7 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
     feedback = [say(outcome.key, **outcome.details)] if outcome.key else []
     feedback += [say(key, **details) for key, details in outcome.more]
     diagnosis = None if outcome.status == "equivalent" else outcome.key
-    read_as = answer.read_as_text if answer is not None else ""
-    latex = answer.read_as_latex if answer is not None else ""
-    return Verdict(outcome.status, outcome.score, tuple(feedback), read_as, outcome.method, diagnosis, latex)
+    return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer)
 
 
 def _unwrap_named(answer: ParsedAnswer, spec: Kind) -> ParsedAnswer:
@@ -168,6 +166,10 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
     """What can be said before any comparison: undefined symbols, or the wrong shape of answer."""
     items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
     used = set().union(*(item.free_symbols for item in items))
+    if spec.name in ("integer", "number") and used:
+        return Outcome(
+            "not_equivalent", 0.0, "not_a_number", {"names": _listing(sorted(s.name for s in used))}, "symbols"
+        )
     undefined = sorted(symbol.name for symbol in used if symbol.name not in expected.names)
     if undefined:
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))

@@ -20,7 +20,7 @@ import sympy
 from grader.check.setting import Setting
 from grader.parse.readback import to_text
 
-__all__ = ["describe_term", "small_angle", "symbolic_zero", "taylor", "term_changes"]
+__all__ = ["describe_term", "has_angle_functions", "small_angle", "symbolic_zero", "taylor", "term_changes"]
 
 MAX_TERMS = 60  # beyond this, listing terms says nothing useful
 _TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
@@ -84,6 +84,12 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
     if not symbols & set(setting.state.values()):
         return f"{article} constant term"
     return f"{article} term without velocities"
+
+
+def has_angle_functions(expr, setting: Setting) -> bool:
+    """Whether a trigonometric function of a coordinate occurs in ``expr``."""
+    coordinates = {setting.state[(q, 0)] for q in setting.coords}
+    return any(f.args[0].free_symbols & coordinates for f in expr.atoms(*_TRIG))
 
 
 def small_angle(expr, setting: Setting) -> list:

@@ -62,7 +62,7 @@ class Expected:
         the expected one, so the expected values are computed once and remembered.
         """
         if "variables" not in self.cache:
-            parameters = {sympy.Symbol(name) for name in self.names - set(self.setting.coords)} - {TIME}
+            parameters = {sympy.Symbol(name) for name in self.names - set(self.setting.coords) - {TIME.name}}
             state = set(self.setting.state.values())
             self.cache["variables"] = (*sorted(parameters | state, key=str), TIME)
         return self.cache["variables"]
@@ -73,6 +73,10 @@ class Expected:
         if cache_key not in self.cache:
             self.cache[cache_key] = Compiled(expr, self.variables, memo=True)
         return self.cache[cache_key]
+
+    def compile(self, expr) -> Compiled:
+        """A submitted expression (as parsed, or in plain symbols), compiled over :attr:`variables`."""
+        return Compiled(expr, self.variables, aliases=self.setting.aliases)
 
     def points(self, count: int, *, salt: int = 0, group: int = 1) -> list[list[complex]]:
         """Seeded sample points over :attr:`variables`, the same for every submission.

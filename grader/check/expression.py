@@ -17,9 +17,8 @@ from collections.abc import Callable
 import sympy
 
 from grader.check.deadline import Deadline
-from grader.check.diagnose import small_angle, symbolic_zero, term_changes
+from grader.check.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes
 from grader.check.expected import Expected, Outcome
-from grader.check.numeric import Compiled
 from grader.check.sampling import (
     GROUP,
     POINTS,
@@ -41,17 +40,17 @@ def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "val
     ``key`` names ``e`` among the expressions derived from the expected answer, for the cache.
     """
     points = expected.points(POINTS, group=GROUP)
-    pairs = evaluate_pairs(expected.compiled(key, e), Compiled(s, expected.variables), points, deadline)
+    pairs = evaluate_pairs(expected.compiled(key, e), expected.compile(s), points, deadline)
     return all_equal(pairs), pairs
 
 
 def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    submitted = expected.setting.plain(answer.value)
-    equal, pairs = same_values(expected, expected.value, submitted, deadline)
+    equal, pairs = same_values(expected, expected.value, answer.value, deadline)
     if equal:
         return Outcome("equivalent", 1.0, "equivalent")
     if expected.option("up_to_constant") and constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
+    submitted = expected.setting.plain(answer.value)
     if equal is None:
         deadline.check()
         if symbolic_zero(submitted - expected.value, expected.setting):
@@ -85,12 +84,17 @@ def diagnose_difference(
         if factor:
             return Outcome("not_equivalent", 0.0, "factor", {"factor": factor})
     deadline.check()
-    for number, form in enumerate(approximate(e)):
+    cache_key = ("approximations", key)
+    if cache_key not in expected.cache:
+        expected.cache[cache_key] = approximate(e)
+    for number, form in enumerate(expected.cache[cache_key]):
         if same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")[0]:
             return Outcome("not_equivalent", 0.0, "small_angle")
-    for form in approximate(s):
-        if same_values(expected, e, form, deadline, key=key)[0]:
-            return Outcome("not_equivalent", 0.0, "not_small_angle")
+    # Only an expected answer without trigonometry can be a small-angle form the student did not use.
+    if not has_angle_functions(e, expected.setting) and has_angle_functions(s, expected.setting):
+        for form in approximate(s):
+            if same_values(expected, e, form, deadline, key=key)[0]:
+                return Outcome("not_equivalent", 0.0, "not_small_angle")
     deadline.check()
     changes = term_changes(e, s, expected.setting)
     if 1 <= len(changes) <= 2:

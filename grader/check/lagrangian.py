@@ -20,7 +20,7 @@ from grader.check.deadline import Deadline
 from grader.check.diagnose import taylor, term_changes
 from grader.check.expected import Expected, Outcome
 from grader.check.expression import same_values
-from grader.check.numeric import Closeness, Compiled, closeness
+from grader.check.numeric import Closeness, closeness
 from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
 from grader.check.setting import Setting
 from grader.parse import TIME, ParsedAnswer
@@ -47,13 +47,13 @@ def euler_lagrange(lagrangian, setting: Setting) -> list:
 
 def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
     lagrangian = expected.value
-    submitted = expected.setting.plain(answer.value)
-    equal, pairs = same_values(expected, lagrangian, submitted, deadline)
+    equal, pairs = same_values(expected, lagrangian, answer.value, deadline)
     if equal:
         return Outcome("equivalent", 1.0, "equivalent")
     if constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
     deadline.check()
+    submitted = expected.setting.plain(answer.value)
     ratio, named = _dynamics_ratio(expected, submitted, deadline)
     if ratio is not None:
         credit = float(expected.option("factor_credit", 0.5))
@@ -79,7 +79,7 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
             for i, e in enumerate(euler_lagrange(expected.value, expected.setting))
         ]
     mine = expected.cache["euler-lagrange"]
-    theirs = [Compiled(e, expected.variables) for e in euler_lagrange(submitted, expected.setting)]
+    theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
     ratios: dict[int, complex] = {}
     checked = 0
     for number, point in enumerate(expected.points(POINTS, group=GROUP)):
@@ -112,9 +112,11 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
 def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> Outcome:
     setting = expected.setting
     at_rest = lagrangian.xreplace({setting.velocity(q): 0 for q in setting.coords})
+    if "small angle" not in expected.cache:
+        expected.cache["small angle"] = taylor(lagrangian, setting, 2)
     candidates = (
         ("t_plus_v", lagrangian - 2 * at_rest, "T+V"),  # T − V − 2(−V) = T + V, where T vanishes at rest
-        ("small_angle", taylor(lagrangian, setting, 2), "small angle"),
+        ("small_angle", expected.cache["small angle"], "small angle"),
     )
     for key, form, name in candidates:
         deadline.check()

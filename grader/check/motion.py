@@ -90,7 +90,10 @@ def _positions(expected: Expected) -> list[int]:
 
 
 def _accelerations_in(expr, expected: Expected) -> list[str]:
-    return [q for q in expected.setting.coords if expected.setting.acceleration(q) in expr.free_symbols]
+    """The coordinates whose acceleration occurs in ``expr`` (as parsed, or in plain symbols)."""
+    setting = expected.setting
+    present = expr.free_symbols | expr.atoms(sympy.Derivative)
+    return [q for q in setting.coords if setting.acceleration(q) in present or setting.node(q, 2) in present]
 
 
 def _at_each_state(expected: Expected, deadline: Deadline, judge) -> list[Closeness]:
@@ -122,14 +125,14 @@ def _decided(results: list[Closeness]) -> bool | None:
 
 def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
     (f,) = _equations(expected.value)
-    (g,) = _equations(expected.setting.plain(answer.value))
+    (g,) = _equations(answer.value)
     if not _accelerations_in(f, expected):
-        return _check_relation(expected, f, g, deadline)
+        return _check_relation(expected, f, expected.setting.plain(g), deadline)
     if not _accelerations_in(g, expected):
         names = ", ".join(unicode_name(q, 2) for q in _accelerations_in(f, expected))
         return Outcome("not_equivalent", 0.0, "not_equation_of_motion", {"accelerations": names}, "accelerations")
     expected_f = expected.compiled("equation", f)
-    submitted_g = Compiled(g, expected.variables)
+    submitted_g = expected.compile(g)
     positions = _positions(expected)
 
     def proportional(point, precise):
@@ -146,7 +149,7 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         return Outcome("equivalent", 1.0, "equivalent", method="accelerations")
     if same is None:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
-    return _diagnose_motion(expected, f, g, deadline)
+    return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
 
 
 def _multiple(expected_row, submitted_row, scale: float, precise: bool) -> Closeness:
@@ -196,7 +199,7 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     involves_state = any(expected.setting.is_state(symbol) for symbol in f.free_symbols)
     group = _STATES if involves_state else _GROUPS * _STATES
     expected_f = expected.compiled("relation", f)
-    submitted_g = Compiled(g, expected.variables)
+    submitted_g = expected.compile(g)
     results = []
     ratios: dict[int, complex] = {}
     for number, point in enumerate(expected.points(_GROUPS * _STATES, salt=1, group=_STATES)):
@@ -305,9 +308,9 @@ class _State:
 
 
 def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    theirs = _equations(expected.setting.plain(answer.value))
+    theirs = _equations(answer.value)
     expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(_equations(expected.value))]
-    submitted_gs = [Compiled(g, expected.variables) for g in theirs]
+    submitted_gs = [expected.compile(g) for g in theirs]
     positions = _positions(expected)
     states = []
     for point in expected.points(POINTS, group=GROUP):

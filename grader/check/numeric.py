@@ -27,6 +27,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import mpmath
 import sympy
+from sympy.core.function import AppliedUndef
 
 __all__ = ["Closeness", "Compiled", "NotCompilable", "closeness", "sample_points"]
 
@@ -89,9 +90,19 @@ class Compiled:
         NotCompilable: for an object outside the whitelist of the parser's functions.
     """
 
-    def __init__(self, expr: sympy.Expr, variables: Sequence[sympy.Symbol], *, memo: bool = False):
+    def __init__(
+        self,
+        expr: sympy.Expr,
+        variables: Sequence[sympy.Symbol],
+        *,
+        memo: bool = False,
+        aliases: Mapping[sympy.Expr, sympy.Symbol] | None = None,
+    ):
         self.expr = expr
         self.index = {symbol: i for i, symbol in enumerate(variables)}
+        # Aliases let an answer keep θ(t) and its derivatives: each is read as the variable it
+        # stands for, which spares rebuilding the whole expression in plain symbols first.
+        self.index |= {node: self.index[symbol] for node, symbol in (aliases or {}).items() if symbol in self.index}
         self._float = _compile(expr, self.index, _FLOAT)
         self._precise = None
         # A reference answer is evaluated at the same points for every submission: remember them.
@@ -127,9 +138,12 @@ class Compiled:
             return value, max(scale[0], float(abs(value)))
 
 
+_ALIASABLE = (sympy.Derivative, AppliedUndef)
+
+
 def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
     """Nested closures ``f(values, scale) -> value``; ``scale[0]`` collects the largest term."""
-    if expr.is_Symbol:
+    if expr.is_Symbol or isinstance(expr, _ALIASABLE):
         if expr not in index:
             raise NotCompilable(f"unknown symbol {expr}")
         position = index[expr]

@@ -70,20 +70,28 @@ class Setting:
             for order in range(MAX_ORDER + 1)
         }
 
+    @property
+    def aliases(self) -> dict:
+        """q(t), q̇(t), q̈(t)… → their plain symbols, for evaluating an answer as parsed."""
+        return self._replacements
+
     @cached_property
     def _replacements(self) -> dict:
-        replacements = {}
-        for (name, order), symbol in self.state.items():
-            q = self.functions[name]
-            replacements[q if order == 0 else sympy.Derivative(q, (TIME, order))] = symbol
-        return replacements
+        return {self.node(name, order): symbol for (name, order), symbol in self.state.items()}
 
     def plain(self, value):
         """An answer's value with coordinates and their derivatives as plain symbols."""
         # xreplace matches whole subtrees top-down, so θ̈ is replaced before the θ inside it.
         if isinstance(value, tuple):
             return tuple(self.plain(item) for item in value)
+        if isinstance(value, sympy.Eq):  # rebuilding an Eq would make sympy try to decide it
+            return sympy.Eq(self.plain(value.lhs), self.plain(value.rhs), evaluate=False)
         return value.xreplace(self._replacements)
+
+    def node(self, name: str, order: int) -> sympy.Expr:
+        """The coordinate, or its derivative of ``order``, as the parser builds it."""
+        q = self.functions[name]
+        return q if order == 0 else sympy.Derivative(q, (TIME, order))
 
     def velocity(self, name: str) -> sympy.Symbol:
         return self.state[(name, 1)]

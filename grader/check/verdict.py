@@ -24,20 +24,22 @@ class Verdict:
             (the answer could not be read).
         score: the credit earned, from 0 to 1.
         feedback: sentences for the student; they never reveal the expected answer.
-        read_as: the submitted answer as it was read, in one line of text ("" if invalid).
         method: how the verdict was reached (``"numeric"``, ``"accelerations"``, ``"symbolic"``…).
         diagnosis: a stable key for the kind of mistake (``"sign"``, ``"factor"``,
             ``"missing_term"``…), or ``None``; reports count answers by it.
-        read_as_latex: the same as ``read_as``, as LaTeX.
+        answer: the submitted answer as parsed (a ``ParsedAnswer``), the parser's
+            ``Refusal``, or ``None`` for kinds that are not parsed.
+
+    ``read_as`` (how the answer was read) is derived from ``answer`` when asked for:
+    printing costs more than judging, and a batch may not need it.
     """
 
     status: str
     score: float = 0.0
     feedback: tuple[str, ...] = ()
-    read_as: str = ""
     method: str = ""
     diagnosis: str | None = None
-    read_as_latex: str = field(default="", repr=False)
+    answer: object = field(default=None, repr=False, compare=False)
 
     def __post_init__(self):
         if self.status not in STATUSES:
@@ -49,6 +51,16 @@ class Verdict:
     def equivalent(self) -> bool:
         """True when the answer is right in full."""
         return self.status == "equivalent"
+
+    @property
+    def read_as(self) -> str:
+        """The submitted answer as it was read, in one line of text; for an answer that
+        could not be read, the line with a caret under the problem; "" when not parsed."""
+        if self.answer is None:
+            return ""
+        if self.answer.ok:
+            return self.answer.read_as_text
+        return self.answer.pointer
 
     @property
     def needs_person(self) -> bool:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from functools import cached_property
 
 import sympy
 
@@ -42,17 +43,17 @@ class ParsedAnswer:
 
     ok = True
 
-    @property
+    @cached_property
     def read_as_text(self) -> str:
         """How the answer was read, as one line of Unicode text."""
         return to_text(self.value)
 
-    @property
+    @cached_property
     def read_as_latex(self) -> str:
         """How the answer was read, as LaTeX."""
         return to_latex(self.value)
 
-    @property
+    @cached_property
     def read_as_mathml(self) -> str:
         """How the answer was read, as a MathML ``<math>`` element."""
         return to_mathml(self.value)

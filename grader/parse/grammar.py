@@ -26,6 +26,7 @@ import math
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import sympy
 
@@ -81,6 +82,10 @@ class Context:
             else:
                 known_map[symbol.name] = symbol
         return cls(coord_map, known_map)
+
+    @cached_property
+    def coordinate_set(self) -> frozenset:
+        return frozenset(self.coords.values())
 
     def describe_coords(self) -> str:
         return ", ".join(self.coords) or "it has none"
@@ -479,6 +484,8 @@ class _Parser:
     def lookup(self, canonical: str):
         """A name that means one thing here, or ``None``."""
         context = self.context
+        if canonical == "t":
+            return TIME  # the coordinates' time, even where a problem also lists t among its symbols
         if canonical in context.coords:
             return context.coords[canonical]
         if canonical in context.known:
@@ -486,8 +493,6 @@ class _Parser:
         derivative = split_derivative(canonical)
         if derivative and derivative[0] in context.coords:
             return _time_derivative(context.coords[derivative[0]], derivative[1])
-        if canonical == "t":
-            return TIME
         if canonical == "pi":
             return sympy.pi
         if canonical == "e":
@@ -576,7 +581,7 @@ def _digits(n: int) -> int:
 
 
 def _is_coordinate(value, context: Context) -> bool:
-    return any(value == q for q in context.coords.values())
+    return value in context.coordinate_set
 
 
 def _is_coordinate_or_derivative(value, context: Context) -> bool:

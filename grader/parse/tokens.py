@@ -104,6 +104,12 @@ _COMBINING_DOTS = {"\u0307": 1, "\u0308": 2}
 # [0-9], not \d: \d also matches ٣ and ², which are not numbers to us.
 _NUMBER = re.compile(r"([0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?")
 _DIGITS = frozenset("0123456789")
+_ASCII_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_LETTERS = re.compile(r"[A-Za-z]+")
+_SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+")
+_COMMAND_NAME = re.compile(r"\\([A-Za-z]+)")
+_COMMAND = re.compile(r"\\([A-Za-z]+\*?|.?)")
+_ENVIRONMENT = re.compile(r"\s*\{([A-Za-z*]+)\}")
 _ASSIGNMENTS = (":=", "==", "+=", "-=", "*=", "/=", "!=", "<=", ">=")
 # What a student might try that we can name, rather than calling it a bad character.
 _NAMED_REFUSALS = {"#": "comment", '"': "string", "`": "string"}
@@ -225,7 +231,7 @@ class _Tokenizer:
         """A name: letters, digits, underscores, Greek, subscripts; then dots and primes."""
         start, text = self.pos, self.text
         if self.latex:
-            run = re.compile(r"[A-Za-z]+").match(text, self.pos)
+            run = _LETTERS.match(text, self.pos)
             if run and run[0] in FUNCTION_NAMES:  # ``sin x`` typed inside LaTeX still means sine
                 self.pos = run.end()
                 self.tokens.append(Token("func", FUNCTION_NAMES[run[0]], start, self.pos))
@@ -233,12 +239,17 @@ class _Tokenizer:
         raw: list[str] = []
         dots = 0
         in_subscript = False  # inside a run of Unicode subscript digits, θ₁₂
+        if not self.latex:  # the common case, plain ASCII, without a character at a time
+            ascii_run = _ASCII_NAME.match(text, self.pos)
+            if ascii_run and not text.startswith("{", ascii_run.end()):
+                raw.append(ascii_run[0])
+                self.pos = ascii_run.end()
         while self.pos < len(text):
             c = text[self.pos]
             if c == "_" and raw and (self.latex or text.startswith("{", self.pos + 1)):
                 self._subscript(raw)
                 break
-            decomposed = unicodedata.normalize("NFD", c)
+            decomposed = c if c.isascii() else unicodedata.normalize("NFD", c)
             base, marks = decomposed[0], decomposed[1:]
             if base in GREEK_BY_LETTER:
                 raw.append(GREEK_BY_LETTER[base])
@@ -257,7 +268,7 @@ class _Tokenizer:
                     raise ParseFailure("bad_character", self.pos - 1, self.pos, char=c)
                 dots += sum(_COMBINING_DOTS[m] for m in marks)
                 # a dot ends the name, but its subscript may follow: θ̇₁, θ̇_1
-                match = re.compile(r"_?[0-9]+|[\u2080-\u2089]+").match(text, self.pos)
+                match = _SUBSCRIPT_AFTER_DOT.match(text, self.pos)
                 if match:
                     raw.append("_" + "".join(SUBSCRIPT_DIGITS.get(d, d) for d in match[0].lstrip("_")))
                     self.pos = match.end()
@@ -275,7 +286,7 @@ class _Tokenizer:
             inner = text[self.pos + 1 : close]
             self.pos = close + 1
         elif text.startswith("\\", self.pos):
-            match = re.compile(r"\\([A-Za-z]+)").match(text, self.pos)
+            match = _COMMAND_NAME.match(text, self.pos)
             inner = match[0] if match else text[self.pos : self.pos + 2]
             self.pos += len(inner)
         else:
@@ -308,7 +319,7 @@ class _Tokenizer:
 
     def _command(self) -> None:
         text, start = self.text, self.pos
-        match = re.compile(r"\\([A-Za-z]+\*?|.?)").match(text, self.pos)
+        match = _COMMAND.match(text, self.pos)
         command = match[1]
         self.pos = match.end()
         if command in ("", ",", ";", ":", "!", " "):
@@ -321,7 +332,7 @@ class _Tokenizer:
             if command in ("left", "right") and text.startswith(".", self.pos):
                 self.pos += 1
         elif command in ("begin", "end"):
-            env = re.compile(r"\s*\{([A-Za-z*]+)\}").match(text, self.pos)
+            env = _ENVIRONMENT.match(text, self.pos)
             if not env or env[1] not in _LATEX_ENVIRONMENTS:
                 raise ParseFailure("unknown_command", start, self.pos, name=command)
             self.pos = env.end()

@@ -1,0 +1,237 @@
+"""compare: its contract, each kind's rules, and the feedback students read.
+
+The physics tables (40+ pairs per kind) are in test_compare_pairs.py; here are
+the API, the options, the exact feedback sentences, and hostile answers.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare
+
+PENDULUM = {"coords": ["theta"], "known": ["m", "g", "l"]}
+L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
+EOM_PENDULUM = "m l^2 thetaddot + m g l sin(theta) = 0"
+DOUBLE = {"coords": ["theta1", "theta2"], "known": ["m1", "m2", "l1", "l2", "g"]}
+EOM_DOUBLE_1 = (
+    "(m1+m2) l1 theta1ddot + m2 l2 theta2ddot cos(theta1-theta2) + m2 l2 theta2dot^2 sin(theta1-theta2)"
+    " + (m1+m2) g sin(theta1) = 0"
+)
+EOM_DOUBLE_2 = (
+    "l2 theta2ddot + l1 theta1ddot cos(theta1-theta2) - l1 theta1dot^2 sin(theta1-theta2) + g sin(theta2) = 0"
+)
+EOM_DOUBLE = f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2}"
+
+
+def test_verdict_is_a_frozen_dataclass_with_the_documented_fields():
+    verdict = compare("2 m", "m + m", known=["m"])
+    assert dataclasses.is_dataclass(verdict)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        verdict.score = 0  # type: ignore[misc]
+    assert (verdict.status, verdict.equivalent, verdict.score) == ("equivalent", True, 1.0)
+    assert verdict.feedback == ("Correct.",)
+    assert verdict.read_as == "2*m"
+    assert verdict.method == "numeric"
+
+
+def test_every_kind_has_a_checker_and_options():
+    assert set(KINDS) == {"expression", "equation", "equations", "lagrangian", "integer", "number", "choice"}
+    for kind in KINDS.values():
+        assert callable(kind.check)
+
+
+def test_a_malformed_submission_is_invalid_with_the_parsers_message():
+    verdict = compare("sin(theta)", "sin(θ", **PENDULUM)
+    assert verdict.status == "invalid"
+    assert verdict.feedback == ("Unbalanced bracket: the `(` at position 4 is never closed.",)
+    assert verdict.read_as == "sin(θ\n   ^"
+
+
+def test_a_malformed_expected_answer_raises_for_the_author():
+    with pytest.raises(ReferenceAnswerError, match="The expected answer 'sin\\(theta' cannot be read"):
+        compare("sin(theta", "sin(theta)", **PENDULUM)
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: compare("x", "x", kind="vector"), "unknown answer kind 'vector'"),
+        (lambda: compare("x", "x", rtol=0.1), "option rtol does not apply to kind 'expression'"),
+        (lambda: compare("x", "x", domains={"x": "complex"}), "domain of 'x' is 'complex'"),
+        (lambda: compare("x = 1", "x", kind="expression"), "must be expression, not equation"),
+    ],
+)
+def test_author_mistakes_in_the_call_raise_author_error(call, message):
+    with pytest.raises(AuthorError, match=message):
+        call()
+
+
+def test_symbols_the_problem_does_not_define_are_named():
+    verdict = compare(L_PENDULUM, "1/2 m r^2 thetadot^2 + m g l cos(theta)", kind="lagrangian", **PENDULUM)
+    assert verdict.status == "not_equivalent"
+    assert verdict.feedback == ("Your answer uses `r`, which this problem does not define (it uses g, l, m, θ).",)
+    assert verdict.diagnosis == "undefined_symbol"
+
+
+def test_by_default_parameters_are_positive_and_coordinates_real():
+    assert compare("l", "sqrt(l^2)", known=["l"]).status == "equivalent"
+    assert compare("theta", "sqrt(theta^2)", coords=["theta"]).status == "not_equivalent"
+    assert compare("x", "sqrt(x^2)", known=["x"], domains={"x": "real"}).status == "not_equivalent"
+
+
+FEEDBACK = [
+    # (expected, submitted, kind, setting, diagnosis, feedback sentence)
+    ("1/2 m l^2 thetadot^2", "m l^2 thetadot^2", "expression", PENDULUM, "factor",
+     "Your answer is off by a constant factor: missing a factor 1/2?"),
+    ("1/2 m l^2 thetadot^2", "-1/2 m l^2 θ̇^2", "expression", PENDULUM, "sign", "The overall sign is wrong."),
+    (L_PENDULUM, "1/2 m l^2 θ̇^2 - m g l cos θ", "lagrangian", PENDULUM, "t_plus_v",
+     "It looks like you wrote L = T + V; the Lagrangian is L = T − V."),
+    (L_PENDULUM, "m l^2 θ̇^2 + 2 m g l cos θ", "lagrangian", PENDULUM, "normalization",
+     "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); "
+     "the convention L = T − V fixes the normalization."),
+    (L_PENDULUM, "-1/2 m l^2 θ̇^2 - m g l cos θ", "lagrangian", PENDULUM, "v_minus_t",
+     "Your Lagrangian has the opposite sign: it is V − T; the Lagrangian is L = T − V."),
+    (L_PENDULUM, "1/2 m l^2 θ̇^2", "lagrangian", PENDULUM, "missing_term", "A term is missing: a term in cos(θ)."),
+    (L_PENDULUM, "1/2 m l^2 θ̇^2 - 1/2 m g l θ^2", "lagrangian", PENDULUM, "small_angle",
+     "You used the small-angle approximation, but the full answer is asked for here."),
+    (EOM_PENDULUM, "θ̈ = -(g/l) θ", "equation", PENDULUM, "small_angle",
+     "You used the small-angle approximation, but the full answer is asked for here."),
+    (EOM_PENDULUM, "θ̈ = (g/l) sin θ", "equation", PENDULUM, "term_differs",
+     "A term differs: the term in sin(θ) has the wrong sign."),
+    (EOM_PENDULUM, "m l^2 θ̈ + m g l sin θ", "equation", PENDULUM, "expected_equation",
+     "An equation (with `=`) is asked for here, but your answer is an expression."),
+    ("sqrt(g/l)", "omega = sqrt(g/l) = 1", "expression", PENDULUM, None, None),
+    (EOM_DOUBLE, EOM_DOUBLE_1, "equations", DOUBLE, "expected_system",
+     "A system of 2 equations is asked for here (one per coordinate: θ₁, θ₂)."),
+    (EOM_DOUBLE, f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2.replace('+ g', '- g')}", "equations", DOUBLE, "wrong_equation",
+     "Your equation for θ₂ is not right; equation 1 is right."),
+    (EOM_DOUBLE, f"{EOM_DOUBLE_1}; {EOM_DOUBLE_1}", "equations", DOUBLE, "dependent_equations",
+     "Your equations are not independent: they do not determine every acceleration."),
+    (EOM_DOUBLE, f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2}; theta1 = 0", "equations", DOUBLE, "extra_equation",
+     "You gave 3 equations; this system has 2 coordinates, so it needs exactly 2."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "kind", "setting", "diagnosis", "sentence"), FEEDBACK)
+def test_feedback_names_the_mistake(expected, submitted, kind, setting, diagnosis, sentence):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    if diagnosis is None:  # a malformed answer: the parser speaks
+        assert verdict.status == "invalid"
+        return
+    assert verdict.status == "not_equivalent"
+    assert verdict.diagnosis == diagnosis
+    assert verdict.feedback[0] == sentence
+
+
+def test_feedback_never_contains_the_expected_answer():
+    for expected, submitted, kind, setting, _, _ in FEEDBACK:
+        verdict = compare(expected, submitted, kind=kind, **setting)
+        for sentence in verdict.feedback:
+            assert expected not in sentence
+
+
+def test_partial_credit_for_a_rescaled_lagrangian_is_the_parts_option():
+    verdict = compare(L_PENDULUM, "2 (" + L_PENDULUM + ")", kind="lagrangian", factor_credit=0.25, **PENDULUM)
+    assert (verdict.status, verdict.score) == ("not_equivalent", 0.25)
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        L_PENDULUM + " + 7",  # another zero of potential energy
+        L_PENDULUM + " - m g l",
+        L_PENDULUM + " + 2 θ θ̇",  # d/dt(θ²)
+        L_PENDULUM + " + m l θ̇ cos θ",  # d/dt(m l sin θ)
+        "L = " + L_PENDULUM,
+    ],
+)
+def test_a_lagrangian_is_right_up_to_a_constant_or_a_total_derivative(submitted):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score) == ("equivalent", 1.0)
+
+
+def test_up_to_constant_allows_another_zero_of_potential():
+    expected = "-m g l cos(theta)"
+    assert compare(expected, "m g l (1 - cos θ)", **PENDULUM).status == "not_equivalent"
+    assert compare(expected, "m g l (1 - cos θ)", up_to_constant=True, **PENDULUM).status == "equivalent"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status"),
+    [
+        ("omega^2 = g/l", "omega = sqrt(g/l)", "equivalent"),  # same positive root
+        ("omega = sqrt(g/l)", "omega = -sqrt(g/l)", "not_equivalent"),
+        ("p_theta = m l^2 thetadot", "thetadot = p_theta / (m l^2)", "equivalent"),
+        ("p_theta = m l^2 thetadot", "thetadot = p_theta / (m l)", "not_equivalent"),
+    ],
+)
+def test_equations_without_accelerations_compare_as_relations(expected, submitted, status):
+    known = [*PENDULUM["known"], "p_theta", "omega"]
+    assert compare(expected, submitted, kind="equation", coords=["theta"], known=known).status == status
+
+
+@pytest.mark.parametrize(
+    ("kind", "expected", "submitted", "options", "status"),
+    [
+        ("integer", "3", "3", {}, "equivalent"),
+        ("integer", "3", "6/2", {}, "equivalent"),
+        ("integer", "3", "4", {}, "not_equivalent"),
+        ("integer", "3", "3.5", {}, "not_equivalent"),
+        ("number", "2 pi", "6.2832", {"rtol": 1e-4}, "equivalent"),
+        ("number", "2 pi", "6.28", {"rtol": 1e-4}, "not_equivalent"),
+        ("number", "9.81", "9.8", {"atol": 0.05, "rtol": 0}, "equivalent"),
+        ("choice", "b", "B", {"options": ["a", "b", "c"]}, "equivalent"),
+        ("choice", "a, c", "c; a", {"options": ["a", "b", "c"], "multiple": True}, "equivalent"),
+        ("choice", "a, c", "a", {"options": ["a", "b", "c"], "multiple": True}, "not_equivalent"),
+        ("choice", "b", "d", {"options": ["a", "b", "c"]}, "invalid"),
+        ("choice", "b", "a, b", {"options": ["a", "b", "c"]}, "not_equivalent"),
+    ],
+)
+def test_scalar_kinds(kind, expected, submitted, options, status):
+    assert compare(expected, submitted, kind=kind, **options).status == status
+
+
+def test_a_number_part_refuses_symbols():
+    verdict = compare("3", "x", kind="integer")
+    assert verdict.diagnosis == "not_a_number"
+
+
+def test_out_of_time_is_undecided_and_flagged_for_a_person():
+    verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2", kind="lagrangian", timeout=1e-9, **PENDULUM)
+    assert verdict.status == "undecided"
+    assert verdict.needs_person
+    assert verdict.feedback == (
+        "This answer could not be checked automatically in time; it has been set aside for a person to grade.",
+    )
+
+
+def test_verdicts_are_deterministic():
+    first = [compare(e, s, kind=k, **setting) for e, s, k, setting, _, _ in FEEDBACK]
+    second = [compare(e, s, kind=k, **setting) for e, s, k, setting, _, _ in FEEDBACK]
+    assert first == second
+
+
+HOSTILE = [
+    "9^9^9^9",
+    "(a+b+c+d+e+f)^100",
+    "x" * 3000,
+    "__import__('os').system('true')",
+    "sin(" * 50 + "x" + ")" * 50,
+    "exp(exp(exp(exp(100))))",
+    "1/(theta - theta)",
+    "thetadot^100 * 10^100",
+    "\\frac{1}{0}",
+    "",
+]
+
+
+@pytest.mark.parametrize("kind", ["expression", "lagrangian", "equation"])
+@pytest.mark.parametrize("submitted", HOSTILE)
+def test_nothing_a_student_types_makes_compare_raise(kind, submitted):
+    expected = EOM_PENDULUM if kind == "equation" else L_PENDULUM
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert isinstance(verdict, Verdict)
+    assert verdict.status != "equivalent"
