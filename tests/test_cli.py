@@ -34,3 +34,41 @@ def test_usage_error_exits_2():
     with pytest.raises(SystemExit) as exit_info:
         main(["parse"])
     assert exit_info.value.code == 2
+
+
+L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
+COMPARE_EXITS = [
+    # (arguments, exit status, first line)
+    (["--kind", "equation", "--coords", "theta", "m l^2 thetaddot + m g l sin(theta) = 0", "θ̈ = -(g/l) sin θ"], 0,
+     "equivalent (score 1, by accelerations)"),
+    (["--kind", "lagrangian", "--coords", "theta", L_PENDULUM, "1/2 m l^2 θ̇^2 - m g l cos θ"], 1,
+     "not equivalent (score 0, by numeric)"),
+    (["x", "sin(x"], 2, "invalid (score 0, by parse)"),
+    (["--timeout", "1e-9", "--coords", "theta", "sin(theta)", "cos(theta)"], 3, "undecided (score 0, by timeout)"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("arguments", "status", "first_line"), COMPARE_EXITS)
+def test_compare_exit_statuses(capsys, arguments, status, first_line):
+    assert main(["compare", *arguments]) == status
+    assert capsys.readouterr().out.splitlines()[0] == first_line
+
+
+def test_compare_explains_the_mistake_and_shows_how_the_answer_was_read(capsys):
+    main(["compare", "--kind", "lagrangian", "--coords", "theta", "1/2 m l^2 thetadot^2 + m g l cos(theta)",
+          "1/2 m l^2 θ̇^2 - m g l cos θ"])  # fmt: skip
+    assert capsys.readouterr().out.splitlines()[1:] == [
+        "  It looks like you wrote L = T + V; the Lagrangian is L = T − V.",
+        "read as: -g*l*m*cos(θ) + l^2*m*θ̇^2/2",
+    ]
+
+
+def test_compare_json_has_the_verdict_fields(capsys):
+    main(["compare", "--json", "--known", "m", "2m", "m+m"])
+    record = json.loads(capsys.readouterr().out)
+    assert record["status"] == "equivalent" and record["equivalent"] is True and record["read_as"] == "2*m"
+
+
+def test_an_unreadable_expected_answer_is_a_usage_error_on_stderr(capsys):
+    assert main(["compare", "x +", "x"]) == 2
+    assert "The expected answer 'x +' cannot be read" in capsys.readouterr().err

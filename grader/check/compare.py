@@ -180,6 +180,8 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
     wanted, given = spec.shape, answer.kind
     if wanted == "equation" and given == "expression":
         return Outcome("not_equivalent", 0.0, "expected_equation", method="shape")
+    if wanted == "equation" and given == "equations":
+        return Outcome("not_equivalent", 0.0, "expected_one_equation", {"count": len(answer.value)}, method="shape")
     if wanted == "expression" and given != "expression":
         return Outcome("not_equivalent", 0.0, "expected_expression", method="shape")
     if wanted == "equations" and given != "equations" and len(expected.setting.coords) > 1:

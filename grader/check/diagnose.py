@@ -81,8 +81,10 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
         return f"{article} term{within}"
     if sympy.Symbol("g") in symbols:
         return f"{article} gravity term"
-    if not symbols & set(setting.state.values()):
+    if not symbols:
         return f"{article} constant term"
+    if not symbols & set(setting.state.values()):
+        return f"{article} term without coordinates or velocities"
     return f"{article} term without velocities"
 
 

@@ -15,10 +15,12 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import sympy
+from sympy.core.function import AppliedUndef
 
 from grader.check.deadline import Deadline
 from grader.check.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes
 from grader.check.expected import Expected, Outcome
+from grader.check.numeric import Closeness
 from grader.check.sampling import (
     GROUP,
     POINTS,
@@ -31,6 +33,8 @@ from grader.check.sampling import (
 )
 from grader.parse import ParsedAnswer
 
+_ALIASED = (sympy.Derivative, AppliedUndef)  # coordinates as parsed: not constants
+
 __all__ = ["check_expression", "diagnose_difference", "same_values"]
 
 
@@ -40,7 +44,16 @@ def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "val
     ``key`` names ``e`` among the expressions derived from the expected answer, for the cache.
     """
     points = expected.points(POINTS, group=GROUP)
-    pairs = evaluate_pairs(expected.compiled(key, e), expected.compile(s), points, deadline)
+    if not e.free_symbols and not s.free_symbols and not s.atoms(*_ALIASED):
+        # A constant: floats cannot tell 99999998/99999999 from 0.99999999; 40 digits can.
+        points = points[:1]
+        pairs = evaluate_pairs(expected.compiled(key, e), expected.compile(s), points, deadline, precise=True)
+        return (pairs[0].closeness() is Closeness.EQUAL if pairs else None), pairs
+    expected_c, submitted_c = expected.compiled(key, e), expected.compile(s)
+    pairs = evaluate_pairs(expected_c, submitted_c, points, deadline)
+    if all_equal(pairs) is None:  # many points outside the domain (x < 0 under √x): draw more
+        more = expected.points(4 * POINTS, salt=3, group=GROUP)
+        pairs += evaluate_pairs(expected_c, submitted_c, more, deadline)
     return all_equal(pairs), pairs
 
 

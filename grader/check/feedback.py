@@ -27,6 +27,7 @@ FEEDBACK: dict[str, str] = {
     "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",
     "undefined_symbol": "Your answer uses {names}, which this problem does not define (it uses {defined}).",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
+    "expected_one_equation": "One equation is asked for here; your answer has {count}.",
     "expected_expression": "An expression is asked for here, but your answer is an equation.",
     "expected_system": "A system of {count} equations is asked for here (one per coordinate: {coords}).",
     "missing_equation": "The equation for {coords} is missing.",

@@ -258,35 +258,56 @@ def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: 
 
 
 def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadline) -> list[float]:
-    """Roots of a real function of one variable on ``grid``: sign changes, refined by bisection."""
+    """Real roots of a function of one variable on ``grid``.
+
+    Sign changes are refined by bisection and kept only where the function really
+    vanishes (a pole changes sign too); a touching root such as that of (x − 2)² is
+    found as a local minimum of |f| that reaches zero.
+    """
 
     def at(x: float):
         values = list(point)
         values[position] = complex(x)
-        value, _ = function(values)
-        return value.real if abs(value.imag) <= 1e-9 * max(1.0, abs(value)) else None
-
-    roots = []
-    previous = None
-    for x in grid:
-        deadline.check()
         try:
-            y = at(x)
+            value, scale = function(values)
         except UNDEFINED:
-            y = None
-        if y is not None and previous is not None and previous[1] * y < 0:
-            a, b = previous[0], x
+            return None
+        if abs(value.imag) > 1e-9 * max(1.0, abs(value)):
+            return None
+        return value.real, scale
+
+    def vanishes(x: float) -> bool:
+        sample = at(x)
+        return sample is not None and closeness(sample[0], 0, max(sample[1], 1.0)) is Closeness.EQUAL
+
+    samples = [(x, at(x)) for x in grid]
+    roots: list[float] = []
+    for (x0, s0), (x1, s1), (x2, s2) in zip(samples, samples[1:], samples[2:], strict=False):
+        deadline.check()
+        if s0 is None or s1 is None:
+            continue
+        if s1[0] == 0:
+            roots.append(x1)
+        elif s0[0] * s1[0] < 0:
+            low, high = x0, x1
             for _ in range(60):
-                middle = (a + b) / 2
-                try:
-                    ym = at(middle)
-                except UNDEFINED:
+                middle = (low + high) / 2
+                sample = at(middle)
+                if sample is None:
                     break
-                if ym is None:
+                low, high = (middle, high) if (sample[0] > 0) == (s0[0] > 0) else (low, middle)
+            if vanishes((low + high) / 2):
+                roots.append((low + high) / 2)
+        elif s2 is not None and abs(s1[0]) < min(abs(s0[0]), abs(s2[0])) and s0[0] * s2[0] > 0:
+            low, high = x0, x2  # golden-section search for the minimum of |f|
+            for _ in range(80):
+                a, b = high - 0.618 * (high - low), low + 0.618 * (high - low)
+                fa, fb = at(a), at(b)
+                if fa is None or fb is None:
                     break
-                a, b = (middle, b) if (ym > 0) == (previous[1] > 0) else (a, middle)
-            roots.append((a + b) / 2)
-        previous = (x, y) if y is not None else None
+                low, high = (low, b) if abs(fa[0]) < abs(fb[0]) else (a, high)
+            if vanishes((low + high) / 2):
+                roots.append((low + high) / 2)
     return roots
 
 

@@ -2,7 +2,8 @@
 
 Contents:
     Compiled            an expression turned into nested closures, evaluated in
-                        complex floats or, for near misses, in 40-digit mpmath
+                        complex floats, for near misses in 40-digit mpmath, and
+                        exactly in fractions when it is a rational function
     NotCompilable       an expression holds something we cannot evaluate
     sample_points(...)  seeded random points inside the symbols' domains
     Closeness           EQUAL / DIFFERENT / UNSURE for two numbers and their scale
@@ -13,7 +14,7 @@ budget of a verdict. Closures over a variable index cost ~0.1 ms to build and
 ~2 µs per node to evaluate.
 
 Every evaluation also reports its *scale*: the largest magnitude seen among the
-terms of any sum. Two values that agree to 1e-10 of that scale are equal; one
+terms of any sum. Two values that agree to 1e-13 of that scale are equal; one
 cancelling ``1e3 - 1e3`` must not make 1e-13 of rounding look like a difference.
 """
 
@@ -24,6 +25,7 @@ import enum
 import math
 import random
 from collections.abc import Callable, Mapping, Sequence
+from fractions import Fraction
 
 import mpmath
 import sympy
@@ -49,14 +51,34 @@ def _cot(z):
     return 1 / cmath.tan(z)
 
 
+def _principal(function):
+    """``function`` on the principal branch, as sympy defines it.
+
+    Complex arithmetic leaves signed zeros (1/(-2+0j) is -0.5-0j), and cmath puts
+    a value with imaginary part -0.0 on the other side of a branch cut:
+    sqrt(-0.5-0j) is -0.707j where sympy's sqrt(-1/2) is +0.707j.
+    """
+
+    def on_branch(z):
+        return function(complex(z.real, 0.0) if z.imag == 0 else z)
+
+    return on_branch
+
+
+def _power(base, exponent):
+    if isinstance(base, complex) and base.imag == 0:
+        base = complex(base.real, 0.0)
+    return base**exponent
+
+
 _FLOAT = _Backend(
     number=lambda p, q: complex(p / q),
     functions={
         "sin": cmath.sin, "cos": cmath.cos, "tan": cmath.tan, "cot": _cot,
         "sec": lambda z: 1 / cmath.cos(z), "csc": lambda z: 1 / cmath.sin(z),
-        "asin": cmath.asin, "acos": cmath.acos, "atan": cmath.atan,
+        "asin": _principal(cmath.asin), "acos": _principal(cmath.acos), "atan": cmath.atan,
         "sinh": cmath.sinh, "cosh": cmath.cosh, "tanh": cmath.tanh,
-        "exp": cmath.exp, "log": cmath.log, "Abs": abs,
+        "exp": cmath.exp, "log": _principal(cmath.log), "Abs": abs,
         "sign": lambda z: 0 if z == 0 else z / abs(z), "re": lambda z: complex(z.real), "im": lambda z: complex(z.imag),
     },
     pi=lambda: complex(math.pi), e=lambda: complex(math.e),
@@ -77,6 +99,21 @@ _PRECISE = _Backend(
     },
     pi=lambda: +mpmath.pi, e=lambda: +mpmath.e,  # + fixes the value at the working precision
 )  # fmt: skip
+
+
+_ALIASABLE = (sympy.Derivative, AppliedUndef)
+_EXACT = _Backend(number=Fraction, functions={}, pi=None, e=None)
+
+
+def _is_rational_function(expr) -> bool:
+    """Only +, ×, integer powers, rationals and variables: exactly computable with fractions."""
+    if expr.is_Symbol or expr.is_Rational or isinstance(expr, _ALIASABLE):
+        return True
+    if expr.is_Add or expr.is_Mul:
+        return all(_is_rational_function(arg) for arg in expr.args)
+    if expr.is_Pow:
+        return expr.exp.is_Integer and _is_rational_function(expr.base)
+    return False
 
 
 class Compiled:
@@ -105,6 +142,7 @@ class Compiled:
         self.index |= {node: self.index[symbol] for node, symbol in (aliases or {}).items() if symbol in self.index}
         self._float = _compile(expr, self.index, _FLOAT)
         self._precise = None
+        self._exact = _compile(expr, self.index, _EXACT) if _is_rational_function(expr) else None
         # A reference answer is evaluated at the same points for every submission: remember them.
         self._memo: dict | None = {} if memo else None
 
@@ -128,17 +166,28 @@ class Compiled:
         value = self._float(values, scale)
         return value, max(scale[0], abs(value))
 
+    @property
+    def rational(self) -> bool:
+        """Whether :meth:`exact` can evaluate this expression."""
+        return self._exact is not None
+
+    def exact(self, values: Sequence[complex]) -> tuple[Fraction, float]:
+        """The exact value at real ``values``, for a rational function of the variables.
+
+        Floats cannot tell a degree-13 polynomial from one whose constant is off by one.
+        """
+        scale = [0.0]
+        value = self._exact([Fraction(v.real) for v in values], scale)
+        return value, max(scale[0], float(abs(value)))
+
     def precise(self, values: Sequence[complex]) -> tuple[object, float]:
         """The same at 40 digits, for values the float evaluation could not tell apart."""
-        if self._precise is None:
-            self._precise = _compile(self.expr, self.index, _PRECISE)
         with mpmath.workdps(PRECISE_DIGITS):
+            if self._precise is None:  # constants are fixed when compiled: at 40 digits too
+                self._precise = _compile(self.expr, self.index, _PRECISE)
             scale = [0.0]
             value = self._precise([mpmath.mpmathify(v) for v in values], scale)
             return value, max(scale[0], float(abs(value)))
-
-
-_ALIASABLE = (sympy.Derivative, AppliedUndef)
 
 
 def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
@@ -188,7 +237,7 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
         if expr.exp.is_Integer:
             n = int(expr.exp)
             return lambda values, scale: base(values, scale) ** n
-        return lambda values, scale: base(values, scale) ** exponent(values, scale)
+        return lambda values, scale: _power(base(values, scale), exponent(values, scale))
     name = type(expr).__name__
     if name in backend.functions and len(args) == 1:
         function, (argument,) = backend.functions[name], args
@@ -230,9 +279,10 @@ class Closeness(enum.Enum):
     UNSURE = "unsure"
 
 
-# Equal pairs differed by at most ~1e-14 of their scale in float; a 1e-9 added term must
-# not pass. Between the two bounds the float result cannot decide: re-evaluate precisely.
-FLOAT_EQUAL = 1e-10
+# Equal pairs differed by at most ~1e-14 of their scale in float; a term of 1e-9 of the
+# scale (or a constant off by one in a sum of billions) must not pass. Between the two
+# bounds the float result cannot decide: re-evaluate at 40 digits.
+FLOAT_EQUAL = 1e-13
 FLOAT_DIFFERENT = 1e-6
 PRECISE_EQUAL = 1e-25
 

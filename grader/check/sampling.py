@@ -47,10 +47,17 @@ class Pair:
 
 
 def evaluate_pairs(
-    expected: Compiled, submitted: Compiled, points: Sequence[Sequence[complex]], deadline: Deadline
+    expected: Compiled,
+    submitted: Compiled,
+    points: Sequence[Sequence[complex]],
+    deadline: Deadline,
+    *,
+    precise: bool = False,
 ) -> list[Pair]:
-    """Both expressions at each point where both are defined; unsure points are redone at 40 digits."""
+    """Both expressions at each point where both are defined; unsure points are redone at 40 digits
+    (all points, with ``precise``)."""
     pairs = []
+    exact = expected.rational and submitted.rational
     for number, point in enumerate(points):
         deadline.check()
         try:
@@ -60,8 +67,19 @@ def evaluate_pairs(
             continue
         if not (_finite(a) and _finite(b)):
             continue
+        if abs(a.imag) > 1e-12 * max(1.0, abs(a)):
+            # The points are real, so a complex value of the reference means this point is
+            # outside its real domain (√ or log of a negative): compare where it is defined.
+            continue
         pair = Pair(a, b, max(scale_a, scale_b), group=number // GROUP)
-        if pair.closeness() is Closeness.UNSURE:
+        if exact and a != b and pair.closeness() is Closeness.EQUAL:
+            exact = False  # once per comparison: enough to catch a difference floats cannot see
+            try:
+                (a, scale_a), (b, scale_b) = expected.exact(point), submitted.exact(point)
+            except UNDEFINED:
+                continue
+            pair = Pair(a, b, max(scale_a, scale_b), precise=True, group=number // GROUP)
+        elif precise or pair.closeness() is Closeness.UNSURE:
             try:
                 a, scale_a = expected.precise(point)
                 b, scale_b = submitted.precise(point)

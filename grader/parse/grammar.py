@@ -161,11 +161,12 @@ class _Parser:
         return tuple(item for _, item in items)
 
     def _is_bracketed_list(self) -> bool:
-        """``[eq1, eq2]``: a bracket spanning the whole answer with a comma at its top level."""
+        """``[eq1, eq2]`` or ``[eq]``: a bracket spanning the whole answer with a comma or an
+        ``=`` at its top level (otherwise it is only grouping, as in ``[a + b] c``)."""
         if not self.token.is_op("["):
             return False
         depth = 0
-        has_comma = False
+        is_list = False
         for j in range(self.i, len(self.tokens)):
             token = self.tokens[j]
             if token.kind == "op" and token.value in _OPENERS:
@@ -173,9 +174,9 @@ class _Parser:
             elif token.kind == "op" and token.value in _OPENERS.values():
                 depth -= 1
                 if depth == 0:
-                    return has_comma and self.tokens[j + 1].kind == "end"
-            elif depth == 1 and token.is_op(","):
-                has_comma = True
+                    return is_list and self.tokens[j + 1].kind == "end"
+            elif depth == 1 and token.is_op(",", "="):
+                is_list = True
         return False
 
     def list_of_items(self):
