@@ -22,6 +22,7 @@ token the whitelist accepted; numbers are exact rationals (``0.5`` is 1/2).
 
 from __future__ import annotations
 
+import cmath
 import math
 import re
 from collections.abc import Iterable
@@ -244,7 +245,9 @@ class _Parser:
             else:
                 break
             previous_was_number = self.tokens[self.i - 1].kind == "num"
-        return sympy.Mul(*factors)
+        product = sympy.Mul(*factors)
+        _check_size(product, self.tokens[self.i - 1])  # 9^99·9^99·… is within every limit but one
+        return product
 
     def signed(self):
         token = self.token
@@ -323,9 +326,12 @@ class _Parser:
         if token.kind == "op" and token.value in _OPENERS:
             return self.group()
         if token.kind in ("num", "name", "frac", "sqrt", "func"):
-            return self.primary()
+            self.deeper(owner)  # √√√…x nests as deeply as brackets do
+            value = self.primary()
+            self.depth -= 1
+            return value
         if token.kind == "end":
-            raise ParseFailure("missing_argument", owner.start, owner.end, name=self.source(owner))
+            raise ParseFailure("missing_arguments", owner.start, owner.end, name=self.source(owner))
         self.fail_here()
 
     def function(self, token: Token):
@@ -335,9 +341,12 @@ class _Parser:
         power = None
         if self.token.kind == "sup" or self.token.is_op("^"):
             power = self.function_power(token)
-        self.deeper(token)
+        bare = not (self.token.kind == "op" and self.token.value in _OPENERS)
+        if bare:  # a bracketed argument counts its own level
+            self.deeper(token)
         value = _apply(name, self.function_argument(token), token)
-        self.depth -= 1
+        if bare:
+            self.depth -= 1
         return value if power is None else _power(value, sympy.Integer(power), token)
 
     def function_power(self, function: Token) -> int:
@@ -407,6 +416,9 @@ class _Parser:
         self.depth -= 1
         if order > LIMITS.derivative_order:
             raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
+        # Each differentiation of a product multiplies its terms: bound size ** order.
+        if sympy.count_ops(target, visual=False) ** order > _DIFF_BUDGET:
+            raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
         return sympy.diff(target, TIME, order)
 
     # -- names -----------------------------------------------------------------
@@ -439,6 +451,8 @@ class _Parser:
         """Pieces of a split name, where a function piece takes the piece after it (``mglsintheta``)."""
         piece = pieces[i]
         if isinstance(piece, str):  # a function name
+            if i + 2 < len(pieces) and isinstance(pieces[i + 1], sympy.Integer) and not isinstance(pieces[i + 2], str):
+                return _apply(piece, pieces[i + 1] * pieces[i + 2], token), i + 3  # sin2θ is sin(2θ)
             if i + 1 < len(pieces):
                 argument, j = self.chain(pieces, i + 1, token)
                 return _apply(piece, argument, token), j
@@ -451,7 +465,8 @@ class _Parser:
         if (
             self.token.is_op("(")
             and t[self.i + 1].kind == "name"
-            and t[self.i + 1].value == Name("t")
+            and t[self.i + 1].value.raw == "t"
+            and not (t[self.i + 1].value.dots or t[self.i + 1].value.primes)
             and t[self.i + 2].is_op(")")
         ):
             self.i += 3
@@ -464,11 +479,18 @@ class _Parser:
             return [whole]
         if _GREEK_NAME.match(canonical):
             return [sympy.Symbol(canonical)]  # lambda is λ, never l·a·m·b·d·a
+        if canonical == "dt" and "d" not in self.context.known:
+            # d/dt, dθ/dt and \frac{d\theta}{dt} would otherwise be read as quotients, and the d's cancel.
+            raise ParseFailure("leibniz", token.start, token.end)
         pieces = self.split(name.raw, token)
         if pieces:
             return pieces
         if name.tex:
             return self.tex_letters(name.raw)
+        if self.token.is_op("(") and self.token.start == token.end and len(canonical) > 1 and not name.primes:
+            # eval(x), open(f), Integer(1): a call of something that is no function here
+            known = ", ".join(sorted(set(FUNCTION_NAMES)))
+            raise ParseFailure("unknown_function", token.start, token.end, name=self.source(token), known=known)
         return [sympy.Symbol(canonical)]
 
     def tex_letters(self, raw: str) -> list:
@@ -516,9 +538,16 @@ class _Parser:
                     continue  # an underscore joins a piece to the one before (m_l is m·l, once)
                 piece = raw[start:end].rstrip("_")
                 meaning = self._piece(piece)
-                if meaning is None:
-                    continue
                 candidates = [[*split, (piece, meaning)] for split in best[start]]
+                if meaning is None and piece.isdecimal():
+                    # a number inside a name only as a function's coefficient, as in sin2θ:
+                    # elsewhere m1 must stay m₁, never m·1
+                    meaning = sympy.Integer(piece)
+                    candidates = [
+                        [*split, (piece, meaning)] for split in best[start] if split and isinstance(split[-1][1], str)
+                    ]
+                if meaning is None or not candidates:
+                    continue
                 if best[end] is None or len(candidates[0]) < len(best[end][0]):
                     best[end] = candidates[:2]
                 elif len(candidates[0]) == len(best[end][0]):
@@ -548,6 +577,10 @@ def _time_derivative(coordinate, order: int):
 
 
 def _apply(name: str, argument, token: Token):
+    # sympy evaluates sin, abs or log of a constant numerically, and needs precision in
+    # proportion to its size: sin(exp(exp(100))) would never return.
+    if not argument.free_symbols and not _magnitude(argument) <= _MAX_MAGNITUDE:
+        raise ParseFailure("value_too_large", token.start, token.end)
     value = _FUNCTIONS[name](argument)
     if value.has(sympy.zoo, sympy.nan):
         raise ParseFailure("undefined_value", token.start, token.end)
@@ -565,16 +598,72 @@ def _power(base, exponent, token: Token):
                 raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
         if base == 0 and exponent.is_negative:
             raise ParseFailure("division_by_zero", token.start, token.end)
-    elif exponent.is_number and not exponent.has(sympy.Symbol):
-        # A numeric but unevaluated exponent (sqrt(2)^(9^9)...) is bounded by its float value.
-        magnitude = abs(complex(exponent.evalf(15)))
-        if not magnitude <= LIMITS.exponent:
-            raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
+    elif not exponent.free_symbols and not _magnitude(exponent) <= LIMITS.exponent:
+        # A numeric but unevaluated exponent (sqrt(2)^(9^9), x^exp(exp(100))) is bounded by
+        # its size, estimated in floats: sympy's evalf of such a tower never returns.
+        raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
     value = sympy.Pow(base, exponent)
     # sympy folds (x^a)^b into x^(ab): the folded exponent must be bounded too.
     if value.is_Pow and value.exp.is_Number and abs(value.exp) > LIMITS.exponent:
         raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
+    _check_size(value, token)
     return value
+
+
+_DIFF_BUDGET = 4000  # operations ** order: diff of 60 operations once, of 15 three times
+_MAX_MAGNITUDE = 1e300  # for constants that are not rational, just inside what a float holds
+
+
+def _check_size(value, token: Token) -> None:
+    """Refuse a constant too large to print or to evaluate: ((√2)^99)^99 has 146,000 digits."""
+    if value.free_symbols:
+        return
+    if value.is_Rational:
+        too_large = _digits(value.p) + _digits(value.q) > LIMITS.power_digits
+    else:
+        too_large = not _magnitude(value) <= _MAX_MAGNITUDE
+    if too_large:
+        raise ParseFailure("value_too_large", token.start, token.end)
+
+
+def _magnitude(value) -> float:
+    """An estimate of |value| for a constant, in floats: inf where it overflows.
+
+    Our own walk rather than evalf, which on exp(exp(exp(100))) asks for 10⁴³ bits.
+    """
+    try:
+        return abs(_float(value))
+    except (OverflowError, ValueError, ZeroDivisionError):
+        return math.inf
+
+
+_FLOAT_FUNCTIONS = {
+    "sin": cmath.sin, "cos": cmath.cos, "tan": cmath.tan, "cot": lambda z: 1 / cmath.tan(z),
+    "sec": lambda z: 1 / cmath.cos(z), "csc": lambda z: 1 / cmath.sin(z), "asin": cmath.asin,
+    "acos": cmath.acos, "atan": cmath.atan, "sinh": cmath.sinh, "cosh": cmath.cosh, "tanh": cmath.tanh,
+    "exp": cmath.exp, "log": cmath.log, "Abs": abs,
+}  # fmt: skip
+
+
+def _float(value) -> complex:
+    if value.is_Rational:
+        return complex(int(value.p) / int(value.q))
+    if value is sympy.pi:
+        return complex(math.pi)
+    if value is sympy.E:
+        return complex(math.e)
+    if value is sympy.I:
+        return 1j
+    if value.is_Add:
+        return sum(_float(arg) for arg in value.args)
+    if value.is_Mul:
+        return math.prod(_float(arg) for arg in value.args)
+    if value.is_Pow:
+        return _float(value.base) ** _float(value.exp)
+    function = _FLOAT_FUNCTIONS.get(type(value).__name__)
+    if function is None or len(value.args) != 1:
+        raise ValueError(f"no float estimate for {type(value).__name__}")
+    return complex(function(_float(value.args[0])))
 
 
 def _digits(n: int) -> int:

@@ -31,6 +31,9 @@ MESSAGES: dict[str, str] = {
     "too_deep": "Your answer is nested too deeply (more than {limit} levels).",
     "exponent_too_large": "This exponent is too large to handle (the limit is {limit}).",
     "number_too_large": "This number is too large to handle ({digits} digits; the limit is {limit}).",
+    "value_too_large": "This value is too large to handle.",
+    "diff_too_large": "This derivative is too large to work out here; differentiate by hand, or write it with θ̇ and θ̈.",
+    "missing_arguments": "`{name}` needs its arguments in braces, as in \\frac{{a}}{{b}} or \\sqrt{{x}}.",
     "name_too_long": "`{name}` is too long for a name (the limit is {limit} characters).",
     "bad_name": "`{name}` is not a name an answer can use: names are letters and digits, joined by single underscores.",
     "unknown_function": "`{name}` is not a function this grader knows. Known functions: {known}.",
@@ -40,6 +43,7 @@ MESSAGES: dict[str, str] = {
     "missing_argument": "`{name}` needs an argument, as in {name}(θ).",
     "derivative_of_constant": "`{name}` is written as a time derivative, but {base} is not a coordinate of this problem ({coords}).",
     "derivative_order": "Derivatives of order higher than 3 are not accepted here.",
+    "leibniz": "d/dt notation is not read here: write a time derivative as θ̇, theta' or diff(θ, t).",
     "diff_usage": "Write a time derivative as diff(θ, t) or diff(θ, t, 2).",
     "dot_usage": "\\{name} takes one coordinate, as in \\{name}{{\\theta}}.",
     "ambiguous_name": "`{name}` could be read as {first} or as {second}; put a space or `*` between the symbols.",
@@ -102,7 +106,13 @@ class Refusal:
 
 def refusal(code: str, text: str, start: int | None = None, end: int | None = None, **details) -> Refusal:
     """Build a :class:`Refusal`, with the message filled in from :data:`MESSAGES`."""
-    return Refusal(code, MESSAGES[code].format(**details), text, start, end)
+    shown = {key: _printable(value) if isinstance(value, str) else value for key, value in details.items()}
+    return Refusal(code, MESSAGES[code].format(**shown), text, start, end)
+
+
+def _printable(text: str) -> str:
+    """Control and formatting characters (ESC, U+202E…) named, not echoed into a terminal or page."""
+    return "".join(c if c.isprintable() else f"U+{ord(c):04X}" for c in text)
 
 
 class ParseFailure(Exception):

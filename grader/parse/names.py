@@ -117,7 +117,7 @@ def unicode_name(name: str, dots: int = 0) -> str:
     """
     base, _, sub = name.partition("_")
     text = GREEK_NAMES.get(base, base)
-    text += {0: "", 1: "\u0307", 2: "\u0308"}.get(dots, "")
+    text += {0: "", 1: "\u0307", 2: "\u0308", 3: "\u20db"}.get(dots, "")
     if sub:
         if sub.isdigit():
             text += "".join(_SUBSCRIPT_OUT[d] for d in sub)

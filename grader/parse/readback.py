@@ -24,6 +24,8 @@ __all__ = ["to_latex", "to_mathml", "to_text"]
 
 _MATHML_NS = "http://www.w3.org/1998/Math/MathML"
 _DOT_SUFFIX = {1: "dot", 2: "ddot", 3: "dddot"}
+# Name endings sympy's LaTeX printer turns into accents (see sympy.printing.latex.modifier_dict).
+_MODIFIERS = ("dot", "hat", "bar", "vec", "tilde", "prime", "check", "breve", "acute", "grave", "mathring")
 
 
 def _as_coordinate(expr) -> tuple[str, int] | None:
@@ -58,6 +60,13 @@ class _TextPrinter(StrPrinter):
     def _print_Pi(self, expr):
         return "π"
 
+    # Read back only what the parser reads: sqrt(-1), not I (a symbol here); abs, not Abs.
+    def _print_ImaginaryUnit(self, expr):
+        return "sqrt(-1)"
+
+    def _print_Abs(self, expr):
+        return f"abs({self._print(expr.args[0])})"
+
     def _print_Exp1(self, expr):
         return "e"
 
@@ -71,14 +80,24 @@ class _TextPrinter(StrPrinter):
 class _LatexPrinter(LatexPrinter):
     def _print_Derivative(self, expr):
         coordinate = _as_coordinate(expr)
-        return self._print(_dotted_symbol(*coordinate)) if coordinate else super()._print_Derivative(expr)
+        if coordinate:
+            return super()._print_Symbol(_dotted_symbol(*coordinate))
+        return super()._print_Derivative(expr)
 
     def _print_Function(self, expr, exp=None):
         coordinate = _as_coordinate(expr)
         if coordinate:
-            text = self._print(_dotted_symbol(*coordinate))
+            text = super()._print_Symbol(_dotted_symbol(*coordinate))
             return f"{text}^{{{exp}}}" if exp else text
         return super()._print_Function(expr, exp)
+
+    def _print_Symbol(self, expr, style="plain"):
+        # sympy would typeset a symbol named "thetadot" as θ̇; here only real derivatives get dots.
+        base = expr.name.partition("_")[0]
+        if base.endswith(_MODIFIERS):
+            escaped = expr.name.replace("_", "\\_")
+            return rf"\mathrm{{{escaped}}}"
+        return super()._print_Symbol(expr, style)
 
 
 class _MathMLPrinter(MathMLPresentationPrinter):

@@ -100,12 +100,13 @@ _OPERATORS = {
     "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}",
 }  # fmt: skip
 _PRIMES = {"'": 1, "\u2032": 1, "\u2033": 2}
-_COMBINING_DOTS = {"\u0307": 1, "\u0308": 2}
+_COMBINING_DOTS = {"\u0307": 1, "\u0308": 2, "\u20db": 3}
 # [0-9], not \d: \d also matches ٣ and ², which are not numbers to us.
 _NUMBER = re.compile(r"([0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?")
 _DIGITS = frozenset("0123456789")
 _ASCII_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _LETTERS = re.compile(r"[A-Za-z]+")
+_UNICODE_SUBSCRIPT = re.compile(r"[\u2080-\u2089]+")
 _SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+")
 _COMMAND_NAME = re.compile(r"\\([A-Za-z]+)")
 _COMMAND = re.compile(r"\\([A-Za-z]+\*?|.?)")
@@ -304,6 +305,10 @@ class _Tokenizer:
         while self.pos < len(self.text) and self.text[self.pos] in _PRIMES:
             primes += _PRIMES[self.text[self.pos]]
             self.pos += 1
+        subscript = _UNICODE_SUBSCRIPT.match(self.text, self.pos) if primes else None
+        if subscript and "_" not in raw:  # θ'₁ is θ₁'
+            raw += "_" + "".join(SUBSCRIPT_DIGITS[c] for c in subscript[0])
+            self.pos = subscript.end()
         if len(raw) > LIMITS.name:
             raise ParseFailure("name_too_long", start, end_of_name, name=raw[:20] + "…", limit=LIMITS.name)
         if "__" in raw or raw.endswith("_") or raw.startswith("_"):

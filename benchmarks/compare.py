@@ -1,0 +1,146 @@
+"""How fast and how right ``compare`` is, against sympy's own equality tests, in one run.
+
+Contents:
+    the pairs        tests/compare_pairs.py: derived verdicts over eight mechanics systems
+    our timing       median and p99 per verdict once the expected answer is prepared
+    baselines        the same pairs judged by ``simplify(a - b) == 0`` and by ``a.equals(b)``
+    output           a table of times, ratios and accuracy; wrong verdicts listed
+
+Run: ``python benchmarks/compare.py`` (``--quick`` runs the baselines on a sample only).
+Targets: median ≤ 2 ms, p99 ≤ 50 ms, ≥ 30× faster than the simplify baseline, no wrong verdict.
+
+The baselines get the same parsed sympy objects with the problem's assumptions
+(positive parameters, real coordinates); equations are compared as lhs − rhs and
+systems equation by equation, which is all they can do. They are given no time limit
+beyond a per-pair budget, past which their answer counts as "no verdict".
+"""
+
+from __future__ import annotations
+
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import sympy
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "tests"))
+
+from compare_pairs import PAIRS, SYSTEMS  # noqa: E402
+
+from grader import compare, parse_answer  # noqa: E402
+from grader.check.setting import Setting  # noqa: E402
+
+BASELINE_BUDGET = 5.0  # seconds per pair before a baseline's answer counts as no verdict
+
+
+def _setting(system: str) -> dict:
+    spec = SYSTEMS[system]
+    return {"coords": spec["coords"], "known": spec["known"], "domains": spec.get("domains")}
+
+
+def time_ours(pairs) -> tuple[list[float], list[tuple]]:
+    """Each pair's verdict time, after a first pass has prepared (cached) every expected answer."""
+    for system, kind, expected, submitted, _, _ in pairs:
+        compare(expected, submitted, kind=kind, **_setting(system))
+    times, wrong = [], []
+    for system, kind, expected, submitted, equivalent, note in pairs:
+        start = time.perf_counter()
+        verdict = compare(expected, submitted, kind=kind, **_setting(system))
+        times.append(time.perf_counter() - start)
+        if verdict.equivalent != equivalent:
+            wrong.append((system, kind, expected, submitted, equivalent, verdict.status, note))
+    return times, wrong
+
+
+def _plain_pair(system: str, expected: str, submitted: str):
+    """Both answers as sympy objects with the problem's assumptions, as a baseline would get them."""
+    spec = _setting(system)
+    setting = Setting.build(spec["coords"], spec["known"], spec["domains"])
+    first = parse_answer(expected, coords=spec["coords"], known=spec["known"])
+    names = sorted({s.name for s in _items_symbols(first.value)} | set(setting.known))
+    second = parse_answer(submitted, coords=spec["coords"], known=names)
+    values = [setting.plain(first.value), setting.plain(second.value)]
+    assumed = {}
+    for value in values:
+        for symbol in _items_symbols(value):
+            flags = {"real": True} if setting.domain(symbol) != "positive" else {"positive": True}
+            assumed[symbol] = sympy.Symbol(symbol.name, **flags)
+    return [_zeroed(value).xreplace(assumed) if not isinstance(value, tuple) else
+            tuple(_zeroed(v).xreplace(assumed) for v in value) for value in values]  # fmt: skip
+
+
+def _items_symbols(value) -> set:
+    items = value if isinstance(value, tuple) else (value,)
+    return set().union(*(item.free_symbols for item in items))
+
+
+def _zeroed(value):
+    return value.lhs - value.rhs if isinstance(value, sympy.Eq) else value
+
+
+def _baseline_verdict(method: str, a, b) -> bool | None:
+    if isinstance(a, tuple) or isinstance(b, tuple):
+        if not (isinstance(a, tuple) and isinstance(b, tuple)) or len(a) != len(b):
+            return False
+        return all(_baseline_verdict(method, x, y) for x, y in zip(a, b, strict=True))
+    if method == "simplify":
+        return sympy.simplify(a - b) == 0
+    return a.equals(b)
+
+
+def time_baseline(method: str, pairs) -> tuple[list[float], int, int]:
+    """Times, wrong verdicts and pairs with no verdict for one sympy method."""
+    times, wrong, undecided = [], 0, 0
+    for system, _, expected, submitted, equivalent, _ in pairs:
+        a, b = _plain_pair(system, expected, submitted)
+        start = time.perf_counter()
+        verdict = _baseline_verdict(method, a, b)
+        elapsed = time.perf_counter() - start
+        times.append(elapsed)
+        if verdict is None or elapsed > BASELINE_BUDGET:
+            undecided += 1
+        elif verdict != equivalent:
+            wrong += 1
+    return times, wrong, undecided
+
+
+def p99(times: list[float]) -> float:
+    ordered = sorted(times)
+    return ordered[min(len(ordered) - 1, int(0.99 * len(ordered)))]
+
+
+def main(argv: list[str]) -> int:
+    quick = "--quick" in argv
+    pairs = PAIRS
+    print(f"compare benchmark: {len(pairs)} pairs ({sum(p[4] for p in pairs)} equivalent)")
+    ours, wrong = time_ours(pairs)
+    rows = [("grader.compare", ours, len(wrong), 0)]
+    sample = pairs[::4] if quick else pairs
+    for method in ("simplify", "equals"):
+        times, bad, none = time_baseline(method, sample)
+        rows.append((f"sympy {method}" + (" (sample)" if quick else ""), times, bad, none))
+    print(f"{'method':28} {'median ms':>10} {'p99 ms':>9} {'max ms':>9} {'wrong':>6} {'no verdict':>11} {'ratio':>8}")
+    base = statistics.median(ours)
+    for name, times, bad, none in rows:
+        median = statistics.median(times)
+        print(
+            f"{name:28} {median * 1e3:10.2f} {p99(times) * 1e3:9.2f} {max(times) * 1e3:9.2f} {bad:6d} {none:11d}"
+            f" {median / base:7.1f}x"
+        )
+    by_kind: dict[str, list[float]] = {}
+    for (_, kind, *_), elapsed in zip(pairs, ours, strict=True):
+        by_kind.setdefault(kind, []).append(elapsed)
+    for kind, times in by_kind.items():
+        median = statistics.median(times)
+        print(f"  {kind:12} n={len(times):3d}  median {median * 1e3:6.2f} ms  p99 {p99(times) * 1e3:6.2f} ms")
+    print("targets: median <= 2 ms, p99 <= 50 ms, >= 30x faster than simplify, 0 wrong")
+    for item in wrong:
+        print("WRONG:", item)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

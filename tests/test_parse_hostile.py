@@ -1,0 +1,307 @@
+"""Hostile answers: whatever a student might type to break, stall or escape the parser.
+
+Contents:
+    HOSTILE              (text, refusal code) rows, grouped by the threat they stand for
+    test_hostile_input_is_refused_with_its_code
+    FORMERLY_ACCEPTED    inputs these tests found accepted, or hanging, and that are now refused
+    SHOWN                (text, exact message, exact pointer) for representative refusals
+    test_refusal_is_shown_exactly
+    test_non_text_input_is_refused / test_refusal_renders_as_text
+    LARGE_BUT_ALLOWED    answers near the limits that must be accepted and shown back
+    hang guard           turns "never returns" into a failure for inputs that once hung
+
+Every row must come back as a Refusal and never raise. Speed is measured by
+``benchmarks/parse.py``, never asserted here: test machines are too noisy for timings.
+The only clock in this file is the hang guard, which waits thousands of times longer
+than a parse takes and only exists to turn "never returns" into a failure.
+"""
+
+from __future__ import annotations
+
+import signal
+from contextlib import contextmanager
+
+import pytest
+
+from grader import Refusal, parse_answer
+
+COORDS = ["theta", "x"]
+KNOWN = ["m", "g", "l"]
+CAP = 2000  # grader.parse.tokens.LIMITS.length, spelled out so a change to it is noticed here
+
+
+def _nested(opener: str, closer: str, levels: int, core: str = "x") -> str:
+    return opener * levels + core + closer * levels
+
+
+HOSTILE = [
+    # -- size: the cap on the whole answer, and on its parts --------------------
+    ("x" * (CAP + 1), "too_long"),
+    ("1+" * (CAP // 2) + "1", "too_long"),
+    (" " * (CAP + 1), "too_long"),
+    ("a" * 41, "name_too_long"),
+    # -- nesting: brackets, and chains the grammar recurses on ------------------
+    (_nested("(", ")", 41), "too_deep"),
+    (_nested("[", "]", 41), "too_deep"),
+    (_nested("{", "}", 41), "too_deep"),
+    (_nested("(", ")", 999), "too_deep"),
+    ("(" * 1999 + "x", "too_deep"),  # too deep is noticed before never closed
+    ("-" * 41 + "x", "too_deep"),
+    ("-" * (CAP - 1) + "x", "too_deep"),
+    ("+-" * 30 + "x", "too_deep"),
+    ("x" + "^x" * 41, "too_deep"),
+    ("x" + "^x" * ((CAP - 1) // 2), "too_deep"),
+    (_nested("sin(", ")", 41), "too_deep"),
+    (_nested("sin(", ")", 399), "too_deep"),
+    ("sin " * 41 + "x", "too_deep"),
+    (_nested("\\frac{", "}{2}", 41), "too_deep"),
+    # -- numbers and powers too large to build ----------------------------------
+    ("9^9^9^9", "exponent_too_large"),
+    ("10^1000", "exponent_too_large"),
+    ("1e999999999", "exponent_too_large"),
+    ("x^(9^9)", "exponent_too_large"),
+    ("(x^50)^50", "exponent_too_large"),
+    ("x^101", "exponent_too_large"),
+    ("2^-1000", "exponent_too_large"),
+    ("x⁹⁹⁹", "exponent_too_large"),
+    ("e^(e^(e^(e^9)))", "exponent_too_large"),
+    ("sqrt(2)^(9^9)", "exponent_too_large"),
+    ("1234567890" * 4, "number_too_large"),
+    ("3.14159265358979323846264338327950288", "number_too_large"),
+    # -- code: attribute access, strings, lambdas, comments, assignments ---------
+    ("x.__class__", "attribute"),
+    ("().__class__", "attribute"),
+    ("os.system", "attribute"),
+    ("os.system('rm -rf /')", "attribute"),
+    ("'rm -rf /'", "string"),
+    ('"rm -rf /"', "string"),
+    ("`rm -rf /`", "string"),
+    ("getattr(x, '__class__')", "string"),
+    ("lambda x: x", "bad_character"),
+    ("lambda: 1", "bad_character"),
+    ("x # comment", "comment"),
+    ("#", "comment"),
+    ("x := 1", "assignment"),
+    ("x == 1", "assignment"),
+    ("x += 1", "assignment"),
+    ("x != 1", "assignment"),
+    ("__import__('os')", "bad_character"),
+    ("x[0] @ y", "bad_character"),
+    # -- brackets ---------------------------------------------------------------
+    ("sin(θ", "unclosed"),
+    ("((m g l)", "unclosed"),
+    ("x_{1", "unclosed"),
+    ("m g l)", "unopened"),
+    ("}", "unopened"),
+    ("(x]", "mismatched"),
+    ("[x}", "mismatched"),
+    # -- nothing to read --------------------------------------------------------
+    ("", "empty"),
+    ("   ", "empty"),
+    ("\n\t \r", "empty"),
+    ("\u00a0", "empty"),
+    # -- LaTeX that is not mathematics ------------------------------------------
+    ("\\input{/etc/passwd}", "unknown_command"),
+    ("\\def\\x{1}", "unknown_command"),
+    ("\\text{hello}", "unknown_command"),
+    ("\\immediate\\write18{rm -rf /}", "unknown_command"),
+    ("\\begin{verbatim}x\\end{verbatim}", "unknown_command"),
+    ("\\csname x\\endcsname", "unknown_command"),
+    # -- values that do not exist -----------------------------------------------
+    ("1/0", "division_by_zero"),
+    ("m/(l-l)", "division_by_zero"),
+    ("\\frac{1}{0}", "division_by_zero"),
+    ("0^-1", "division_by_zero"),
+    ("log(0)", "undefined_value"),
+    ("tan(pi/2)", "undefined_value"),
+    # -- characters outside the whitelist ---------------------------------------
+    ("x\x00", "bad_character"),
+    ("\x00", "bad_character"),
+    ("x\x1b[2J", "bad_character"),
+    ("\u202ex", "bad_character"),  # right-to-left override
+    ("x\u200b", "bad_character"),  # zero-width space
+    ("ｘ", "bad_character"),  # fullwidth x
+    ("x\ud800", "bad_character"),  # lone surrogate, as json.loads can produce
+    # -- derivatives beyond the limit -------------------------------------------
+    ("theta''''", "derivative_order"),
+    ("diff(theta, t, 99999999999999999999)", "derivative_order"),
+]
+
+
+def _row_id(text) -> str:
+    shown = ascii(text)
+    return shown if len(shown) <= 40 else f"{shown[:36]}…[{len(text)}]"
+
+
+def _refusal(text) -> Refusal:
+    result = parse_answer(text, coords=COORDS, known=KNOWN)
+    assert result.ok is False, f"accepted as {result.value!r}"
+    return result
+
+
+@pytest.mark.parametrize(("text", "code"), HOSTILE, ids=[_row_id(text) for text, _ in HOSTILE])
+def test_hostile_input_is_refused_with_its_code(text, code):
+    assert _refusal(text).code == code
+
+
+# -- found by these tests, once bugs, now refused ------------------------------------
+
+FORMERLY_ACCEPTED = [
+    ("eval(x)", "unknown_function"),  # calls of unknown functions were read as products
+    ("exec(x)", "unknown_function"),
+    ("open(f)", "unknown_function"),
+    ("Integer(1)", "unknown_function"),
+    ("getattr(x)", "unknown_function"),
+    ("(((2^(1/2))^99)^99)^99", "value_too_large"),  # a 146,000-digit power of a non-rational base
+    ("*".join(["9^99"] * 46), "value_too_large"),  # each factor within limits, the product 4,300 digits
+    ("√" * 41 + "x", "too_deep"),  # √ without brackets nests as brackets do
+    ("√" * (CAP - 1) + "x", "too_deep"),
+    ("x^exp(exp(exp(100)))", "value_too_large"),  # evalf of the exponent never returned
+    ("abs(sin(exp(exp(100))))", "value_too_large"),  # nor sympy's evaluation of sin of it
+    ("m + exp(exp(exp(100)))", "value_too_large"),  # nor the printer's ordering of the terms
+    ("\\frac{d\\theta}{dt}", "leibniz"),  # read as θ/t, the d's cancelling
+    ("d/dt(theta)", "leibniz"),
+]
+
+
+@pytest.mark.parametrize(("text", "code"), FORMERLY_ACCEPTED, ids=[_row_id(t) for t, _ in FORMERLY_ACCEPTED])
+def test_formerly_accepted_input_is_refused_with_its_code(text, code):
+    with _hang_guard(HANG_SECONDS):
+        assert _refusal(text).code == code
+
+
+# -- what the student reads ----------------------------------------------------
+
+SHOWN = [
+    # (text, message, pointer)
+    ("sin(θ", "Unbalanced bracket: the `(` at position 4 is never closed.", "sin(θ\n   ^"),
+    (
+        "m g l)",
+        "Unbalanced bracket: the `)` at position 6 has no matching opening bracket.",
+        "m g l)\n     ^",
+    ),
+    ("(x]", "The `(` at position 1 is closed by `]` at position 3.", "(x]\n  ^"),
+    (
+        "x.__class__",
+        "`.__class__` looks like attribute access in code; it cannot be part of an answer.",
+        "x.__class__\n ^^^^^^^^^^",
+    ),
+    (
+        "x := 1",
+        "`:=` is an assignment or a test in code; write an equation with a single `=`.",
+        "x := 1\n  ^^",
+    ),
+    ("m g l # ok", "`#` starts a comment in code; it cannot be part of an answer.", "m g l # ok\n      ^"),
+    ("getattr(x, 'a')", "Quotes are not allowed: an answer is mathematics, not text.", "getattr(x, 'a')\n           ^"),
+    ("9^9^9^9", "This exponent is too large to handle (the limit is 100).", "9^9^9^9\n   ^"),
+    (
+        "1234567890" * 4,
+        "This number is too large to handle (40 digits; the limit is 30).",
+        "1234567890" * 4 + "\n" + "^" * 40,
+    ),
+    ("\\input{x}", "`\\input` is not a LaTeX command this grader knows.", "\\input{x}\n^^^^^^"),
+    ("m/(l-l)", "This divides by zero.", "m/(l-l)\n ^"),
+    ("x" * (CAP + 1), f"Your answer is {CAP + 1} characters long; the limit is {CAP}.", ""),
+    ("   ", "Your answer is empty.", ""),
+    # A long line is shown as a window around the spot, so the caret stays on screen.
+    (
+        "m g l + " * 12 + "sin(θ",
+        "Unbalanced bracket: the `(` at position 100 is never closed.",
+        "… + m g l + m g l + m g l + sin(θ\n                               ^",
+    ),
+    # The caret is on the line with the mistake, not on the first line.
+    ("x = 1\ny = sin(θ", "Unbalanced bracket: the `(` at position 14 is never closed.", "y = sin(θ\n       ^"),
+]
+
+
+@pytest.mark.parametrize(("text", "message", "pointer"), SHOWN, ids=[_row_id(text) for text, _, _ in SHOWN])
+def test_refusal_is_shown_exactly(text, message, pointer):
+    refusal = _refusal(text)
+    assert refusal.message == message
+    assert refusal.pointer == pointer
+    assert str(refusal) == (f"{message}\n{pointer}" if pointer else message)
+
+
+NOT_TEXT = [None, b"sin(x)", bytearray(b"x"), 1, 1.5, ["x"], object()]
+
+
+@pytest.mark.parametrize("value", NOT_TEXT, ids=[type(value).__name__ for value in NOT_TEXT])
+def test_non_text_input_is_refused(value):
+    refusal = _refusal(value)
+    assert refusal.code == "unreadable"
+    assert refusal.message == "This answer could not be read as mathematics."
+
+
+@pytest.mark.parametrize(("text", "code"), HOSTILE, ids=[_row_id(text) for text, _ in HOSTILE])
+def test_refusal_renders_as_text(text, code):
+    refusal = _refusal(text)
+    rendered = str(refusal)
+    assert refusal.message and rendered.startswith(refusal.message)
+    if refusal.start is not None:
+        assert 0 <= refusal.start <= len(text) and refusal.end >= refusal.start
+        assert "^" in refusal.pointer.splitlines()[-1]
+
+
+# -- large but allowed: accepted, and can still be shown back ---------------------
+
+LARGE_BUT_ALLOWED = [
+    "+".join(["x"] * (CAP // 2)),
+    _nested("(", ")", 40),
+    "x" + "^x" * 40,
+    "-" * 40 + "x",
+    _nested("sin(", ")", 20),  # a call is two levels: the function and its bracket
+    "a" * 40,
+    " ".join(["theta'"] * 285),
+    "+".join(["\\frac{1}{2} m l^2 \\dot{\\theta}^2"] * 60),
+    "\n".join(["x'' = -g/l sin θ"] * 110),
+    "*".join(["9^99"] * 4),  # 380 digits: within the 400-digit cap, and printable
+]
+
+
+@pytest.mark.parametrize(
+    "text", LARGE_BUT_ALLOWED, ids=[_row_id(getattr(row, "values", [row])[0]) for row in LARGE_BUT_ALLOWED]
+)
+def test_large_answer_is_accepted_and_read_back(text):
+    assert len(text) <= CAP
+    answer = parse_answer(text, coords=COORDS, known=KNOWN)
+    assert answer.ok, str(answer)
+    for shown in (answer.read_as_text, answer.read_as_latex, answer.read_as_mathml):
+        assert isinstance(shown, str) and shown
+
+
+# -- hang guard ----------------------------------------------------------------
+# Inputs under 1000 characters once did not come back: sympy was asked to evaluate
+# e^(e^(e^100)) to 15 digits, or to expand a third derivative of a product of many
+# factors. The guard is not a speed test: it allows thousands of times what a parse
+# takes and only turns "never returns" into a failure.
+
+HANG_SECONDS = 3
+
+
+class _Hung(Exception):
+    pass
+
+
+@contextmanager
+def _hang_guard(seconds: float):
+    if not hasattr(signal, "setitimer"):
+        pytest.skip("needs POSIX interval timers")
+
+    def interrupt(signum, frame):
+        raise _Hung(f"did not return within {seconds} s")
+
+    previous = signal.signal(signal.SIGALRM, interrupt)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+_DIFF_OF_PRODUCT = "diff(" + "*".join(f"sin({i}theta)" for i in range(1, 60)) + ", t, 3)"
+
+
+def test_high_derivative_of_a_long_product_is_refused_quickly():
+    with _hang_guard(HANG_SECONDS):
+        assert _refusal(_DIFF_OF_PRODUCT).code == "diff_too_large"
