@@ -332,6 +332,18 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     theirs = _equations(answer.value)
     expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(_equations(expected.value))]
     submitted_gs = [expected.compile(g) for g in theirs]
+    states = _states(expected, expected_fs, submitted_gs, deadline)
+    if len(states) < MIN_DEFINED:
+        return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
+    outcome = _system_outcome(expected, states, len(theirs))
+    wrong = outcome.key in ("wrong_equation", "wrong_equations")
+    if wrong and _is_small_angle_system(expected, submitted_gs, deadline):
+        return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
+    return outcome
+
+
+def _states(expected: Expected, expected_fs, submitted_gs, deadline: Deadline) -> list[_State]:
+    """What each sample state says of the submitted system; unsure states are redone at 40 digits."""
     positions = _positions(expected)
     states = []
     for point in expected.points(POINTS, group=GROUP):
@@ -344,9 +356,22 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
             continue
         if state is not None:
             states.append(state)
-    if len(states) < MIN_DEFINED:
-        return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
-    return _system_outcome(expected, states, len(theirs))
+    return states
+
+
+def _is_small_angle_system(expected: Expected, submitted_gs, deadline: Deadline) -> bool:
+    """Whether the submitted system is the expected one linearized about q = q̇ = 0."""
+    if "equations, linearized" not in expected.cache:
+        linear = [taylor(f, expected.setting, 1) for f in _equations(expected.value)]
+        finite = not any(f.has(sympy.nan, sympy.zoo) for f in linear)
+        expected.cache["equations, linearized"] = (
+            [expected.compiled(f"equations, linearized {i}", f) for i, f in enumerate(linear)] if finite else None
+        )
+    linear_fs = expected.cache["equations, linearized"]
+    if linear_fs is None:
+        return False
+    states = _states(expected, linear_fs, submitted_gs, deadline)
+    return len(states) >= MIN_DEFINED and _system_outcome(expected, states, len(submitted_gs)).key == "equivalent"
 
 
 def _system_state(expected_fs, submitted_gs, point, positions, *, precise: bool) -> _State | None:
