@@ -27,7 +27,7 @@ import math
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import sympy
 
@@ -69,6 +69,14 @@ class Context:
     @classmethod
     def build(cls, coords: Iterable = (), known: Iterable = ()) -> Context:
         """A context from names (any spelling) or ready sympy objects."""
+        coords, known = tuple(coords), tuple(known)
+        try:
+            return _built(coords, known)
+        except TypeError:  # unhashable: built afresh
+            return cls._build(coords, known)
+
+    @classmethod
+    def _build(cls, coords: tuple, known: tuple) -> Context:
         coord_map = {}
         for coord in coords:
             if isinstance(coord, str):
@@ -92,6 +100,13 @@ class Context:
         return ", ".join(self.coords) or "it has none"
 
 
+@lru_cache(maxsize=256)
+def _built(coords: tuple, known: tuple) -> Context:
+    # A problem's context is the same for every answer to it; building it creates sympy
+    # function classes, which is slow and which sympy's own cache may have dropped.
+    return Context._build(coords, known)
+
+
 def parse_tokens(tokens: list[Token], context: Context, text: str):
     """An expression, an ``Eq``, or a tuple of ``Eq`` (a system), from the tokens of ``text``.
 
@@ -106,6 +121,7 @@ class _Parser:
         self.tokens, self.context, self.text = tokens, context, text
         self.i = 0
         self.depth = 0
+        self.splits: dict[str, list | None] = {}
 
     # -- cursor ----------------------------------------------------------------
 
@@ -416,6 +432,13 @@ class _Parser:
         self.depth -= 1
         if order > LIMITS.derivative_order:
             raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
+        if _is_coordinate(target, self.context):  # diff(θ, t): built directly, as θ̇ is
+            return _time_derivative(target, order)
+        if isinstance(target, sympy.Derivative) and _is_coordinate(target.expr, self.context):
+            total = order + target.derivative_count
+            if total > LIMITS.derivative_order:
+                raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
+            return _time_derivative(target.expr, total)
         # Each differentiation of a product multiplies its terms: bound size ** order.
         if sympy.count_ops(target, visual=False) ** order > _DIFF_BUDGET:
             raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
@@ -527,6 +550,11 @@ class _Parser:
 
         Returns ``None`` when no split exists; refuses a name with two equally short splits.
         """
+        if raw not in self.splits:  # an answer repeats its names: split each once
+            self.splits[raw] = self._split(raw, token)
+        return self.splits[raw]
+
+    def _split(self, raw: str, token: Token) -> list | None:
         n = len(raw)
         best: list[list | None] = [None] * (n + 1)  # best[i]: the fewest-piece splits of raw[:i]
         best[0] = [[]]
