@@ -35,7 +35,7 @@ from grader.parse import ParsedAnswer
 
 _ALIASED = (sympy.Derivative, AppliedUndef)  # coordinates as parsed: not constants
 
-__all__ = ["check_expression", "diagnose_difference", "same_values"]
+__all__ = ["check_expression", "diagnose_difference", "same_values", "term_outcome"]
 
 
 def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "value") -> tuple[bool | None, list[Pair]]:
@@ -114,11 +114,13 @@ def diagnose_difference(
             if not form.has(sympy.nan, sympy.zoo) and same_values(expected, e, form, deadline, key=key)[0]:
                 return Outcome("not_equivalent", 0.0, "not_small_angle")
     deadline.check()
-    changes = term_changes(e, s, expected.setting)
-    if 1 <= len(changes) <= 2:
-        (key, description), *rest = changes
-        return Outcome(
-            "not_equivalent", 0.0, key, {"description": description},
-            more=tuple((k, {"description": d}) for k, d in rest),
-        )  # fmt: skip
-    return Outcome("not_equivalent", 0.0, "wrong")
+    return term_outcome(term_changes(e, s, expected.setting))
+
+
+def term_outcome(changes: list[tuple[str, str]]) -> Outcome:
+    """Not equivalent, naming the differing terms when there are one or two (more says nothing)."""
+    if not 1 <= len(changes) <= 2:
+        return Outcome("not_equivalent", 0.0, "wrong")
+    (key, description), *rest = changes
+    more = tuple((other, {"description": text}) for other, text in rest)
+    return Outcome("not_equivalent", 0.0, key, {"description": description}, more=more)

@@ -19,7 +19,7 @@ import sympy
 from grader.check.deadline import Deadline
 from grader.check.diagnose import taylor, term_changes
 from grader.check.expected import Expected, Outcome
-from grader.check.expression import same_values
+from grader.check.expression import same_values, term_outcome
 from grader.check.numeric import Closeness, closeness
 from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
 from grader.check.setting import Setting
@@ -124,14 +124,7 @@ def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> 
         if constant_difference(pairs):
             return Outcome("not_equivalent", 0.0, key)
     state = set(setting.state.values()) | {TIME}
-    changes = term_changes(_varying(lagrangian, state), _varying(submitted, state), setting)
-    if 1 <= len(changes) <= 2:
-        (key, description), *rest = changes
-        return Outcome(
-            "not_equivalent", 0.0, key, {"description": description},
-            more=tuple((k, {"description": d}) for k, d in rest),
-        )  # fmt: skip
-    return Outcome("not_equivalent", 0.0, "wrong")
+    return term_outcome(term_changes(_varying(lagrangian, state), _varying(submitted, state), setting))
 
 
 def _varying(expr, state: set):

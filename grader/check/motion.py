@@ -245,16 +245,21 @@ def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: 
     for point in expected.points(4, salt=2):
         for one, other in ((f, g), (g, f)):
             for root in _real_roots(one, point, position, grid, deadline):
-                values = list(point)
-                values[position] = complex(root)
                 try:
-                    value, scale = other(values)
+                    value, scale = other(_moved(point, position, root))
                 except UNDEFINED:
                     return None
                 if closeness(value, 0, max(scale, 1.0)) is Closeness.DIFFERENT:
                     return False
                 found += 1
     return True if found else None
+
+
+def _moved(point, position: int, x: float) -> list:
+    """``point`` with one variable set to ``x``."""
+    values = list(point)
+    values[position] = complex(x)
+    return values
 
 
 def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadline) -> list[float]:
@@ -266,10 +271,8 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
     """
 
     def at(x: float):
-        values = list(point)
-        values[position] = complex(x)
         try:
-            value, scale = function(values)
+            value, scale = function(_moved(point, position, x))
         except UNDEFINED:
             return None
         if abs(value.imag) > 1e-9 * max(1.0, abs(value)):
