@@ -3,6 +3,8 @@
 Commands:
     grader compare EXPECTED SUBMITTED [--kind K] [--coords q1,q2] [--json]   judge an answer
     grader parse ANSWER [--coords q1,q2] [--known m,g,l] [--json]           how an answer is read
+    grader problems list | show ID [--answers]                             the problem bank
+    grader validate [PATH ...]                                             the bank tests itself
 
 Exit statuses: 0 equivalent (or read); 1 not equivalent; 2 invalid input or usage
 error; 3 undecided (set aside for a person).
@@ -15,8 +17,11 @@ import json
 import sys
 from collections.abc import Sequence
 from dataclasses import fields
+from pathlib import Path
 
 from grader import KINDS, AuthorError, compare, parse_answer
+from grader.bank import BankError, load_bank
+from grader.grade import expected_answer, validate_bank
 
 EXIT_OK = 0
 EXIT_WRONG = 1
@@ -57,7 +62,76 @@ def _parser() -> argparse.ArgumentParser:
     judge.add_argument("--up-to-constant", action="store_true", help="expressions: allow an additive constant")
     judge.add_argument("--json", action="store_true", help="print JSON")
     judge.set_defaults(run=_run_compare)
+
+    problems = commands.add_parser("problems", help="list the problem bank, or show a problem")
+    problems.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    which = problems.add_subparsers(dest="action", required=True, metavar="ACTION")
+    which.add_parser("list", help="id, title, seed items and points of every problem").set_defaults(run=_run_list)
+    show = which.add_parser("show", help="a problem's prompt and parts")
+    show.add_argument("id")
+    show.add_argument("--answers", action="store_true", help="also show the reference answers")
+    show.set_defaults(run=_run_show)
+
+    validate = commands.add_parser("validate", help="check the problem bank against itself")
+    validate.add_argument("paths", nargs="*", type=Path, help="files or folders (default: the bank)")
+    validate.set_defaults(run=_run_validate)
     return parser
+
+
+def _default_bank() -> Path:
+    """./problems when there is one, else the bank beside the installed package."""
+    here = Path("problems")
+    return here if here.is_dir() else Path(__file__).resolve().parent.parent / "problems"
+
+
+def _load(bank: Path):
+    try:
+        return load_bank(bank)
+    except BankError as error:
+        print(f"grader: {error}", file=sys.stderr)
+        return None
+
+
+def _run_list(args: argparse.Namespace) -> int:
+    problems = _load(args.bank)
+    if problems is None:
+        return EXIT_INVALID
+    rows = [(p.id, p.title, " ".join(p.seed), f"{p.points:g}") for p in problems.values()]
+    widths = [max(len(row[i]) for row in [("id", "title", "seed", "points"), *rows]) for i in range(4)]
+    for row in [("id", "title", "seed", "points"), *rows]:
+        print("  ".join(cell.ljust(width) for cell, width in zip(row, widths, strict=True)).rstrip())
+    return EXIT_OK
+
+
+def _run_show(args: argparse.Namespace) -> int:
+    problems = _load(args.bank)
+    if problems is None:
+        return EXIT_INVALID
+    problem = problems.get(args.id)
+    if problem is None:
+        print(f"grader: no problem {args.id!r} in {args.bank} (see: grader problems list)", file=sys.stderr)
+        return EXIT_INVALID
+    print(f"{problem.title} [{problem.id}] — seed {', '.join(problem.seed)}, {problem.points:g} points\n")
+    if problem.prompt:
+        print(problem.prompt.rstrip() + "\n")
+    for part in problem.parts:
+        print(f"({part.id}) {part.kind}, {part.points:g} points")
+        if part.prompt:
+            print(f"    {part.prompt.strip()}")
+        for label, text in part.choices.items():
+            print(f"      {label}) {text}")
+        if args.answers:
+            print(f"    answer: {expected_answer(problem, part)}")
+    return EXIT_OK
+
+
+def _run_validate(args: argparse.Namespace) -> int:
+    paths = args.paths or [_default_bank()]
+    problems, failures = validate_bank(paths)
+    for failure in failures:
+        print(failure)
+    print(f"{len(problems)} problems checked, {len(failures)} failures")
+    return EXIT_OK if not failures else EXIT_WRONG
 
 
 def _run_compare(args: argparse.Namespace) -> int:

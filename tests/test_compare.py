@@ -38,7 +38,7 @@ def test_verdict_is_a_frozen_dataclass_with_the_documented_fields():
 
 
 def test_every_kind_has_a_checker_and_options():
-    assert set(KINDS) == {"expression", "equation", "equations", "lagrangian", "integer", "number", "choice"}
+    assert set(KINDS) == {"expression", "equation", "equations", "lagrangian", "integer", "number", "choice", "text"}
     for kind in KINDS.values():
         assert callable(kind.check)
 

@@ -26,6 +26,7 @@ from grader.check.lagrangian import check_lagrangian
 from grader.check.motion import check_equation, check_equations
 from grader.check.numeric import NotCompilable
 from grader.check.scalar import check_choice, check_integer, check_number
+from grader.check.text import check_text
 from grader.check.verdict import Verdict
 from grader.errors import AuthorError
 from grader.parse import ParsedAnswer, parse_answer
@@ -65,6 +66,7 @@ KINDS: dict[str, Kind] = {
         Kind("integer", check_integer, shape="expression"),
         Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0}, shape="expression"),
         Kind("choice", check_choice, {"options": (), "multiple": False}, parsed=False),
+        Kind("text", check_text, {"rubric": ()}, parsed=False),
     )
 }
 
@@ -82,7 +84,7 @@ def compare(
         expected: the reference answer, written by the problem's author.
         submitted: the student's answer, untrusted.
         kind: ``expression``, ``equation``, ``equations``, ``lagrangian``, ``integer``,
-            ``number`` or ``choice``.
+            ``number``, ``choice`` or ``text`` (always ``undecided``: a rubric proposes a score).
         coords: the generalized coordinates, functions of time.
         **options: ``known`` (more symbols the problem defines), ``domains``
             (``{"x": "real"}``; by default coordinates are real and other symbols
@@ -113,13 +115,16 @@ def compare(
     settings = {**spec.options, **options}
     frozen = tuple(sorted((key, _hashable(value)) for key, value in settings.items()))
     prepared = prepare(expected, kind, tuple(coords), known, domains, frozen, parsed=spec.parsed)
-    if spec.parsed and spec.shape and prepared.parsed.kind != spec.shape and kind != "equation":
+    allowed = {spec.shape, "equation"} if spec.shape == "equations" else {spec.shape}  # one coordinate: one equation
+    if spec.parsed and spec.shape and prepared.parsed.kind not in allowed:
         raise AuthorError(f"the expected answer of a {kind!r} part must be {spec.shape}, not {prepared.parsed.kind}")
     return _judge(spec, prepared, submitted, timeout)
 
 
 def _hashable(value):
-    return tuple(value) if isinstance(value, list | tuple | set | frozenset) else value
+    if isinstance(value, list | tuple | set | frozenset):
+        return tuple(_hashable(item) for item in value)
+    return value
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Verdict:

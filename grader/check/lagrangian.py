@@ -18,14 +18,15 @@ import sympy
 
 from grader.check.deadline import Deadline
 from grader.check.diagnose import taylor, term_changes
-from grader.check.expected import Expected, Outcome
+from grader.check.expected import Expected, Outcome, prepare
 from grader.check.expression import same_values, term_outcome
 from grader.check.numeric import Closeness, closeness
 from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
 from grader.check.setting import Setting
 from grader.parse import TIME, ParsedAnswer
+from grader.parse.readback import to_text
 
-__all__ = ["check_lagrangian", "euler_lagrange"]
+__all__ = ["check_lagrangian", "equations_of_motion", "euler_lagrange"]
 
 
 def euler_lagrange(lagrangian, setting: Setting) -> list:
@@ -43,6 +44,18 @@ def euler_lagrange(lagrangian, setting: Setting) -> list:
             total += sympy.diff(momentum, setting.velocity(r)) * setting.acceleration(r)
         expressions.append(total - sympy.diff(lagrangian, setting.state[(q, 0)]))
     return expressions
+
+
+def equations_of_motion(lagrangian: str, *, coords, known=(), domains=None) -> str:
+    """The equations of motion of a Lagrangian, as answer-language text (``eq1 = 0; eq2 = 0``).
+
+    Raises:
+        ReferenceAnswerError: when the Lagrangian cannot be read.
+    """
+    expected = prepare(lagrangian, "lagrangian", tuple(coords), tuple(known), tuple(sorted((domains or {}).items())))
+    back = {symbol: node for node, symbol in expected.setting.aliases.items()}
+    equations = euler_lagrange(expected.value, expected.setting)
+    return "; ".join(f"{to_text(sympy.expand(e).xreplace(back))} = 0" for e in equations)
 
 
 def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:

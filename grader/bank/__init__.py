@@ -1,0 +1,43 @@
+"""The problem bank: problems and assignments as validated data.
+
+Contents:
+    load_problem, load_bank, load_assignment   read YAML files, errors addressed to authors
+    Problem, Part, Symbol, Mistake, RubricIdea, PartTest, Assignment, AssignmentItem
+    BankError                                  a file is wrong: file, line, problem, part, field
+    PART_KINDS, SCHEMA_VERSION                 what the format allows
+
+The format is documented for authors in docs/problem-format.md.
+"""
+
+from grader.bank.load import load_assignment, load_bank, load_problem, read_yaml
+from grader.bank.schema import (
+    PART_KINDS,
+    SCHEMA_VERSION,
+    Assignment,
+    AssignmentItem,
+    BankError,
+    Mistake,
+    Part,
+    PartTest,
+    Problem,
+    RubricIdea,
+    Symbol,
+)
+
+__all__ = [
+    "PART_KINDS",
+    "SCHEMA_VERSION",
+    "Assignment",
+    "AssignmentItem",
+    "BankError",
+    "Mistake",
+    "Part",
+    "PartTest",
+    "Problem",
+    "RubricIdea",
+    "Symbol",
+    "load_assignment",
+    "load_bank",
+    "load_problem",
+    "read_yaml",
+]

@@ -1,0 +1,80 @@
+"""One answer to one part of a bank problem: the reference, the options, the mistakes.
+
+Contents:
+    expected_answer(problem, part)                  the reference text (derived for derive_from)
+    grade_answer(problem, part, submitted, timeout) the Verdict a student gets
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from functools import lru_cache
+
+from grader.bank import Part, Problem
+from grader.check import DEFAULT_TIMEOUT, Verdict, compare
+from grader.check.lagrangian import equations_of_motion
+
+__all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
+
+
+def setting_of(problem: Problem) -> dict:
+    """The coordinates, known symbols and domains compare needs for this problem."""
+    domains = {s.name: s.domain for s in problem.coordinates if s.domain != "real"}
+    domains |= {s.name: s.domain for s in problem.parameters if s.domain != "positive"}
+    return {
+        "coords": [s.name for s in problem.coordinates],
+        "known": [s.name for s in problem.parameters],
+        "domains": domains,
+    }
+
+
+def expected_answer(problem: Problem, part: Part) -> str:
+    """The reference answer as text: typed, or derived from the Lagrangian part it names."""
+    if part.derive_from:
+        source = problem.part(part.derive_from)
+        return _derived(str(source.answer), **_frozen(setting_of(problem)))
+    if isinstance(part.answer, list):
+        return ", ".join(str(item) for item in part.answer)
+    return "" if part.answer is None else str(part.answer)
+
+
+@lru_cache(maxsize=256)
+def _derived(lagrangian: str, coords: tuple, known: tuple, domains: tuple) -> str:
+    return equations_of_motion(lagrangian, coords=coords, known=known, domains=dict(domains))
+
+
+def _frozen(setting: dict) -> dict:
+    return {
+        "coords": tuple(setting["coords"]),
+        "known": tuple(setting["known"]),
+        "domains": tuple(sorted(setting["domains"].items())),
+    }
+
+
+def part_options(part: Part) -> dict:
+    """The compare options a part implies: its own, and its choices or rubric."""
+    options = dict(part.options)
+    if part.kind == "choice":
+        options["options"] = tuple(part.choices)
+    if part.kind == "text":
+        options["rubric"] = tuple((idea.idea, idea.points, idea.phrasings) for idea in part.rubric)
+    return options
+
+
+def grade_answer(problem: Problem, part: Part, submitted: str, *, timeout: float = DEFAULT_TIMEOUT) -> Verdict:
+    """The verdict on ``submitted``: compared with the reference; when wrong, matched against the
+    part's anticipated mistakes, whose feedback and score replace the generic ones.
+
+    Raises:
+        AuthorError: when the part's reference answer or options are wrong (``grader validate`` finds these).
+    """
+    arguments = {"kind": part.kind, **setting_of(problem), "timeout": timeout, **part_options(part)}
+    verdict = compare(expected_answer(problem, part), submitted, **arguments)
+    if verdict.status != "not_equivalent" or not part.mistakes:
+        return verdict
+    for mistake in part.mistakes:
+        if compare(mistake.answer, submitted, **arguments).equivalent:
+            return dataclasses.replace(
+                verdict, score=mistake.score, feedback=(mistake.feedback,), diagnosis="mistake", method="mistake"
+            )
+    return verdict
