@@ -150,6 +150,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
 def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
     feedback = [say(outcome.key, **outcome.details)] if outcome.key else []
     feedback += [say(key, **details) for key, details in outcome.more]
+    feedback = list(dict.fromkeys(feedback))  # two terms described alike are one sentence
     diagnosis = None if outcome.status == "equivalent" else outcome.key
     return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer)
 

@@ -18,6 +18,7 @@ import itertools
 import sympy
 
 from grader.check.setting import Setting
+from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["describe_term", "has_angle_functions", "small_angle", "symbolic_zero", "taylor", "term_changes"]
@@ -85,7 +86,8 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
         return f"{article} constant term"
     if not symbols & set(setting.state.values()):
         return f"{article} term without coordinates or velocities"
-    return f"{article} term without velocities"
+    coordinates = sorted(symbol.name for symbol in symbols & set(setting.state.values()))
+    return f"{article} term in {', '.join(unicode_name(name) for name in coordinates)}"
 
 
 def has_angle_functions(expr, setting: Setting) -> bool:

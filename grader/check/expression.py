@@ -35,7 +35,7 @@ from grader.parse import ParsedAnswer
 
 _ALIASED = (sympy.Derivative, AppliedUndef)  # coordinates as parsed: not constants
 
-__all__ = ["check_expression", "diagnose_difference", "same_values", "term_outcome"]
+__all__ = ["check_expression", "diagnose_difference", "same_values", "term_outcome", "varying_part"]
 
 
 def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "value") -> tuple[bool | None, list[Pair]]:
@@ -114,11 +114,23 @@ def diagnose_difference(
             if not form.has(sympy.nan, sympy.zoo) and same_values(expected, e, form, deadline, key=key)[0]:
                 return Outcome("not_equivalent", 0.0, "not_small_angle")
     deadline.check()
+    if expected.option("up_to_constant"):  # a constant is allowed here: do not point at one
+        state = set(expected.setting.state.values())
+        e, s = varying_part(e, state), varying_part(s, state)
     return term_outcome(term_changes(e, s, expected.setting))
+
+
+def varying_part(expr, state: set):
+    """``expr`` without its terms that are constant along the motion."""
+    return sympy.Add(*(term for term in sympy.Add.make_args(sympy.expand(expr)) if term.free_symbols & state))
 
 
 def term_outcome(changes: list[tuple[str, str]]) -> Outcome:
     """Not equivalent, naming the differing terms when there are one or two (more says nothing)."""
+    if len(changes) == 2 and {key for key, _ in changes} == {"missing_term", "extra_term"}:
+        (_, first), (_, second) = changes
+        if first == second:  # sin²θ written sin θ: one term changed, not one lost and one gained
+            return Outcome("not_equivalent", 0.0, "term_differs", {"description": f"{first} is not right"})
     if not 1 <= len(changes) <= 2:
         return Outcome("not_equivalent", 0.0, "wrong")
     (key, description), *rest = changes

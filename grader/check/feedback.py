@@ -18,6 +18,7 @@ FEEDBACK: dict[str, str] = {
     "sign": "The overall sign is wrong.",
     "factor": "Your answer is off by a constant factor: missing a factor {factor}?",
     "normalization": "Your Lagrangian gives the right equations of motion, but it is {factor} × (T − V); the convention L = T − V fixes the normalization.",
+    "normalization_scaled": "Your Lagrangian gives the right equations of motion, but it is a constant multiple of T − V; the convention L = T − V fixes the normalization.",
     "v_minus_t": "Your Lagrangian has the opposite sign: it is V − T; the Lagrangian is L = T − V.",
     "t_plus_v": "It looks like you wrote L = T + V; the Lagrangian is L = T − V.",
     "missing_term": "A term is missing: {description}.",

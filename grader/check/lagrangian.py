@@ -19,7 +19,7 @@ import sympy
 from grader.check.deadline import Deadline
 from grader.check.diagnose import taylor, term_changes
 from grader.check.expected import Expected, Outcome, prepare
-from grader.check.expression import same_values, term_outcome
+from grader.check.expression import same_values, term_outcome, varying_part
 from grader.check.numeric import Closeness, closeness
 from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
 from grader.check.setting import Setting
@@ -74,7 +74,9 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
             return Outcome("equivalent", 1.0, "lagrangian_gauge", method="euler-lagrange")
         if named and abs(ratio + 1) < 1e-9:
             return Outcome("not_equivalent", credit, "v_minus_t", method="euler-lagrange")
-        factor = (nice_number(ratio) if named else None) or "a constant multiple of"
+        factor = nice_number(ratio) if named else None
+        if factor is None:
+            return Outcome("not_equivalent", credit, "normalization_scaled", method="euler-lagrange")
         return Outcome("not_equivalent", credit, "normalization", {"factor": factor}, "euler-lagrange")
     return _diagnose(expected, lagrangian, submitted, deadline)
 
@@ -137,9 +139,4 @@ def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> 
         if constant_difference(pairs):
             return Outcome("not_equivalent", 0.0, key)
     state = set(setting.state.values()) | {TIME}
-    return term_outcome(term_changes(_varying(lagrangian, state), _varying(submitted, state), setting))
-
-
-def _varying(expr, state: set):
-    """``expr`` without its constant terms, which do not change the motion."""
-    return sympy.Add(*(term for term in sympy.Add.make_args(sympy.expand(expr)) if term.free_symbols & state))
+    return term_outcome(term_changes(varying_part(lagrangian, state), varying_part(submitted, state), setting))

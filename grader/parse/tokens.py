@@ -99,6 +99,7 @@ _OPERATORS = {
     "\u00d7": "*", "\u2219": "*", "/": "/", "\u00f7": "/", "^": "^", "=": "=", ",": ",", ";": ";",
     "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}",
 }  # fmt: skip
+_VULGAR_FRACTIONS = {"½": "1/2", "⅓": "1/3", "⅔": "2/3", "¼": "1/4", "¾": "3/4", "⅕": "1/5", "⅛": "1/8"}
 _PRIMES = {"'": 1, "\u2032": 1, "\u2033": 2}
 _COMBINING_DOTS = {"\u0307": 1, "\u0308": 2, "\u20db": 3}
 # [0-9], not \d: \d also matches ٣ and ², which are not numbers to us.
@@ -167,6 +168,8 @@ class _Tokenizer:
                 raise ParseFailure("lone_point", self.pos, self.pos + 1)
             elif self._is_letter(c):
                 self._name()
+            elif c in _VULGAR_FRACTIONS:  # ½ m v²: a number, as 1/2 in brackets would be
+                self._emit("num", _VULGAR_FRACTIONS[c], 1)
             elif c in SUPERSCRIPTS:
                 self._superscript()
             elif c == "\u221a":  # √
