@@ -156,8 +156,11 @@ class Problem:
 
 @dataclass(frozen=True)
 class AssignmentItem:
+    """A problem of an assignment: which parts (all when empty) and, optionally, its weight in points."""
+
     problem: str
-    parts: tuple[str, ...] = ()  # empty: every part
+    parts: tuple[str, ...] = ()
+    points: float | None = None  # None: the parts' own points
 
 
 @dataclass(frozen=True)

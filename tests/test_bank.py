@@ -1,0 +1,139 @@
+"""The problem bank: every file loads and grades itself; broken files say what is wrong, and where.
+
+Fixtures in tests/broken_problems/ have one defect each, named by the defect; the message each
+must give is pinned here word for word, so a change of wording is a decision.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from grader import KINDS
+from grader.bank import PART_KINDS, load_assignment, load_bank
+from grader.grade import grade_answer, validate_bank
+
+ROOT = Path(__file__).resolve().parent.parent
+BANK = ROOT / "problems"
+BROKEN = Path(__file__).resolve().parent / "broken_problems"
+PROBLEM_FILES = sorted(path for path in BANK.glob("*.yaml"))
+
+BROKEN_MESSAGES = [
+    # (file, problem, part, message)
+    ("missing_schema_version", "", "", "line 1: missing field 'schema_version' (this grader reads schema_version 1)"),
+    ("wrong_schema_version", "", "", "line 1: schema_version is 2; this grader reads 1"),
+    ("not_yaml", "", "", "line 4: this is not valid YAML: expected ',' or ']', but got '<stream end>'"),
+    ("bad_seed_id", "bad_seed_id", "", "line 4: seed item 'X9' is not an id such as S1, L16, A3 or E5"),
+    ("id_does_not_match_file", "another-name", "",
+     "line 2: the problem id is 'another-name' but the file is named 'id_does_not_match_file.yaml'; make them match"),
+    ("unknown_kind", "unknown_kind", "lagrangian",
+     "line 14: field 'kind' is 'lagrangean'; allowed: integer, number, choice, expression, equation, equations,"
+     " lagrangian, text"),
+    ("misspelled_field", "misspelled_field", "lagrangian",
+     "line 16: unknown field 'anwser' in a part; allowed: answer, choices, derive_from, id, kind, mistakes, options,"
+     " points, prompt, rubric, tests"),
+    ("negative_points", "negative_points", "lagrangian", "line 15: field 'points' is -2; points must be more than 0"),
+    ("duplicate_part_id", "duplicate_part_id", "lagrangian",
+     "line 18: part id 'lagrangian' is used twice in this problem"),
+    ("derive_from_not_lagrangian", "derive_from_not_lagrangian", "motion",
+     "line 25: derive_from is 'energy'; it must name a lagrangian part of this problem (lagrangian)"),
+    ("option_not_for_kind", "option_not_for_kind", "energy",
+     "line 22: option 'rtol' does not apply to kind 'expression' (its options: up_to_constant)"),
+    ("choice_answer_not_in_choices", "choice_answer_not_in_choices", "cyclic",
+     "line 22: answer 'c' is not one of the choices (a, b)"),
+    ("text_without_rubric", "text_without_rubric", "explain",
+     "line 18: a text part needs a 'rubric': the ideas an answer must contain, with points and phrasings"),
+    ("unreadable_reference", "unreadable_reference", "lagrangian",
+     "The expected answer '1/2 m l^2 thetadot^2 + m g l cos(theta' cannot be read: Unbalanced bracket: the `(` at"
+     " position 33 is never closed.\n…2 m l^2 thetadot^2 + m g l cos(theta\n                               ^"),
+    ("mistake_equals_reference", "mistake_equals_reference", "lagrangian",
+     "mistake 'L = 1/2 m l^2 θ̇^2 + m g l cos θ + 3' is equivalent to the reference answer"),
+    ("test_gets_another_score", "test_gets_another_score", "lagrangian",
+     "test '1/2 m l^2 thetadot^2' gets 0, not 1 (not_equivalent: A term is missing: a term in cos(θ).)"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("name", "problem", "part", "message"), BROKEN_MESSAGES, ids=[row[0] for row in BROKEN_MESSAGES]
+)
+def test_a_broken_file_gets_a_message_for_its_author(name, problem, part, message):
+    path = BROKEN / f"{name}.yaml"
+    _, failures = validate_bank([path])
+    assert [(f.path, f.problem, f.part, f.message) for f in failures] == [(str(path), problem, part, message)]
+
+
+def test_every_broken_fixture_is_in_the_table():
+    assert sorted(path.stem for path in BROKEN.glob("*.yaml")) == sorted(row[0] for row in BROKEN_MESSAGES)
+
+
+def test_one_broken_file_does_not_stop_the_others_being_checked():
+    problems, failures = validate_bank([BROKEN / "not_yaml.yaml", BANK / "plane-pendulum.yaml"])
+    assert list(problems) == ["plane-pendulum"] and len(failures) == 1
+
+
+@pytest.mark.parametrize("path", PROBLEM_FILES, ids=[path.stem for path in PROBLEM_FILES])
+def test_each_bank_file_loads_and_grades_itself(path):
+    problems, failures = validate_bank([path])
+    assert [str(failure) for failure in failures] == []
+    assert list(problems) == [path.stem]
+
+
+def test_the_bank_validates_as_a_whole_with_its_assignments():
+    problems, failures = validate_bank([BANK])
+    assert [str(failure) for failure in failures] == []
+    assert len(problems) == len(PROBLEM_FILES)
+
+
+def test_the_bank_kinds_are_the_checkers_kinds():
+    assert set(PART_KINDS) == set(KINDS)
+    for kind, options in PART_KINDS.items():
+        # options the bank lets authors set are options the checker accepts (choices and rubrics come from fields)
+        assert options <= set(KINDS[kind].options) - {"options", "rubric"}, kind
+
+
+def test_every_kind_appears_in_the_bank():
+    used = {part.kind for problem in load_bank(BANK).values() for part in problem.parts}
+    assert used == set(KINDS)
+
+
+SEED_IDS = (
+    [f"S{i}" for i in range(1, 12)] + [f"L{i}" for i in range(1, 18)]
+    + [f"A{i}" for i in range(1, 6)] + [f"E{i}" for i in range(1, 6)]
+)  # fmt: skip
+
+
+def test_every_seed_item_is_covered():
+    covered = {item for problem in load_bank(BANK).values() for item in problem.seed}
+    assert len(SEED_IDS) == 38
+    assert sorted(set(SEED_IDS) - covered, key=lambda s: (s[0], int(s[1:]))) == []
+
+
+def test_the_review_assignment_covers_the_review_questions():
+    bank = load_bank(BANK)
+    assignment = load_assignment(BANK / "assignments" / "review.yaml", bank)
+    covered = {item for entry in assignment.items for item in bank[entry.problem].seed}
+    review = {item for item in SEED_IDS if re.fullmatch(r"[SL]\d+", item)}
+    assert review <= covered
+
+
+def test_a_listed_mistake_gives_its_feedback_and_score():
+    problem = load_bank(BANK)["plane-pendulum"]
+    part = problem.part("lagrangian")
+    verdict = grade_answer(problem, part, "1/2 m l^2 θ̇^2 - mgl cos θ")
+    assert verdict.score == part.mistakes[0].score
+    assert verdict.feedback == (part.mistakes[0].feedback,)
+    assert verdict.diagnosis == "mistake"
+
+
+def test_equations_of_motion_are_derived_from_the_lagrangian_part():
+    problem = load_bank(BANK)["plane-pendulum"]
+    assert grade_answer(problem, problem.part("motion"), "θ̈ = -(g/l) sin θ").equivalent
+    assert not grade_answer(problem, problem.part("motion"), "θ̈ = -(g/l) θ").equivalent
+
+
+def test_a_text_answer_always_waits_for_a_person_with_a_proposed_score():
+    problem = load_bank(BANK)["plane-pendulum"]
+    verdict = grade_answer(problem, problem.part("why-harmonic"), "Because of the small angle approximation.")
+    assert verdict.status == "undecided" and verdict.score == 0.5
