@@ -72,3 +72,31 @@ def test_compare_json_has_the_verdict_fields(capsys):
 def test_an_unreadable_expected_answer_is_a_usage_error_on_stderr(capsys):
     assert main(["compare", "x +", "x"]) == 2
     assert "The expected answer 'x +' cannot be read" in capsys.readouterr().err
+
+
+def test_problems_list_shows_id_title_seed_and_points(capsys):
+    assert main(["problems", "list"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].split() == ["id", "title", "seed", "points"]
+    pendulum = next(line for line in lines if line.startswith("plane-pendulum "))
+    assert "E3 A3" in pendulum
+
+
+def test_problems_show_hides_answers_unless_asked(capsys):
+    assert main(["problems", "show", "plane-pendulum"]) == 0
+    assert "answer:" not in capsys.readouterr().out
+    assert main(["problems", "show", "plane-pendulum", "--answers"]) == 0
+    assert "answer: 1/2 m l^2 thetadot^2 + m g l cos(theta)" in capsys.readouterr().out
+
+
+def test_problems_show_of_an_unknown_problem_is_a_usage_error(capsys):
+    assert main(["problems", "show", "no-such-problem"]) == 2
+    assert "no problem 'no-such-problem'" in capsys.readouterr().err
+
+
+def test_validate_exit_statuses(capsys):
+    assert main(["validate"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].endswith("problems checked, 0 failures")
+    broken = "tests/broken_problems/unknown_kind.yaml"
+    assert main(["validate", broken]) == 1
+    assert "field 'kind' is 'lagrangean'" in capsys.readouterr().out
