@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
 import sympy
+from sympy.core.function import AppliedUndef
 
 from grader.check.deadline import CheckTimeout, time_limit
 from grader.check.expected import Expected, Outcome, prepare
@@ -156,13 +157,13 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
 
 
 def _unwrap_named(answer: ParsedAnswer, spec: Kind) -> ParsedAnswer:
-    """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` for an expression: the name is not the answer."""
+    """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` or ``ẍ = …`` for an expression: the name is not the answer."""
     value = answer.value
     if (
         spec.shape == "expression"
         and isinstance(value, sympy.Eq)
-        and isinstance(value.lhs, sympy.Symbol)
-        and value.lhs not in value.rhs.free_symbols
+        and isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
+        and not value.rhs.has(value.lhs)
     ):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     return answer

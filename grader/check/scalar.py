@@ -62,9 +62,9 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     options = [str(option).lower() for option in expected.option("options") or ()]
     given = choice_labels(submitted) if isinstance(submitted, str) else None
     if given is None:
-        return Outcome(
-            "invalid", 0.0, "choice_unknown", {"labels": "This", "options": ", ".join(options) or "?"}, "labels"
-        )
+        shown = f"`{submitted.strip()[:40]}`" if isinstance(submitted, str) and submitted.strip() else "This"
+        details = {"labels": shown, "options": ", ".join(options) or "?"}
+        return Outcome("invalid", 0.0, "choice_unknown", details, "labels")
     unknown = [label for label in given if options and label not in options]
     if unknown:
         return Outcome(

@@ -60,6 +60,9 @@ class _TextPrinter(StrPrinter):
     def _print_Pi(self, expr):
         return "π"
 
+    def _print_Rational(self, expr):
+        return _decimal(expr) or super()._print_Rational(expr)
+
     # Read back only what the parser reads: sqrt(-1), not I (a symbol here); abs, not Abs.
     def _print_ImaginaryUnit(self, expr):
         return "sqrt(-1)"
@@ -109,23 +112,43 @@ class _MathMLPrinter(MathMLPresentationPrinter):
         coordinate = _as_coordinate(expr)
         return self._dotted(*coordinate) if coordinate else super()._print_Function(expr)
 
+    def parenthesize(self, item, level, strict=False):
+        if _as_coordinate(item):  # θ̇ is an atom, not (θ̇)
+            return self._print(item)
+        return super().parenthesize(item, level, strict)
+
+    def _print_Rational(self, e):
+        decimal = _decimal(e)
+        if decimal is None:
+            return super()._print_Rational(e)
+        element = self.dom.createElement("mn")
+        element.appendChild(self.dom.createTextNode(decimal))
+        return element
+
     def _dotted(self, name: str, dots: int):
         base, _, sub = name.partition("_")
-        element = self._print(sympy.Symbol(base))
         if dots:
-            over = self.dom.createElement("mover")
-            over.setAttribute("accent", "true")
-            mark = self.dom.createElement("mo")
-            mark.appendChild(self.dom.createTextNode({1: "\u02d9", 2: "\u00a8"}.get(dots, "\u20db")))
-            over.appendChild(element)
-            over.appendChild(mark)
-            element = over
+            # One <mi> with the combining dots: fonts place them over the letter, where an
+            # <mover> accent is drawn too small by some browsers.
+            element = self.dom.createElement("mi")
+            element.appendChild(self.dom.createTextNode(unicode_name(base, dots)))
+        else:
+            element = self._print(sympy.Symbol(base))
         if sub:
             subscripted = self.dom.createElement("msub")
             subscripted.appendChild(element)
             subscripted.appendChild(self._print(sympy.Symbol(sub)))
             element = subscripted
         return element
+
+
+def _decimal(number) -> str | None:
+    """A rational typed as a decimal, shown as one again: 2.0061, not 20061/10000."""
+    q = int(number.q)
+    if q == 1 or 10 ** (len(str(q)) - 1) != q:
+        return None
+    text = f"{abs(int(number.p)) // q}.{abs(int(number.p)) % q:0{len(str(q)) - 1}d}"
+    return ("-" if number.p < 0 else "") + text
 
 
 def _items(value) -> list:

@@ -127,6 +127,8 @@ _LATEX_FUNCTIONS = {name: name for name in FUNCTION_NAMES.values() if name not i
     "ln": "log",
 }
 _LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
+_LATEX_FONTS = {"mathcal", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
+_BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}")
 _LATEX_IGNORED = {"left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "quad", "qquad", "limits"}
 _LATEX_ENVIRONMENTS = {"aligned", "align", "align*", "gathered", "gather", "gather*", "split"}
 
@@ -359,6 +361,12 @@ class _Tokenizer:
             self._finish_name(start, "".join(raw), 0)
         elif command in ("dot", "ddot"):
             self._latex_dot(start, command)
+        elif command in _LATEX_FONTS:  # \mathcal{F}, \mathrm{d}: the letters, in another typeface
+            braced = _BRACED_LETTERS.match(text, self.pos)
+            if not braced:
+                raise ParseFailure("unknown_command", start, self.pos, name=command)
+            self.pos = braced.end()
+            self._finish_name(start, braced[1], 0)
         else:
             raise ParseFailure("unknown_command", start, self.pos, name=command)
 
