@@ -32,8 +32,8 @@ BROKEN_MESSAGES = [
      "line 14: field 'kind' is 'lagrangean'; allowed: integer, number, choice, expression, equation, equations,"
      " lagrangian, text"),
     ("misspelled_field", "misspelled_field", "lagrangian",
-     "line 16: unknown field 'anwser' in a part; allowed: answer, choices, derive_from, id, kind, mistakes, options,"
-     " points, prompt, rubric, tests"),
+     "line 16: unknown field 'anwser' in a part; allowed: answer, choices, derive_from, id, kind, method_credit,"
+     " mistakes, options, points, prompt, rubric, tests"),
     ("negative_points", "negative_points", "lagrangian", "line 15: field 'points' is -2; points must be more than 0"),
     ("duplicate_part_id", "duplicate_part_id", "lagrangian",
      "line 18: part id 'lagrangian' is used twice in this problem"),

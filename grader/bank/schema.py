@@ -126,6 +126,7 @@ class Part:
     mistakes: tuple[Mistake, ...] = ()
     rubric: tuple[RubricIdea, ...] = ()
     tests: tuple[PartTest, ...] = ()
+    method_credit: float = 0.5  # derive_from parts: equations right for the student's own wrong Lagrangian
 
 
 @dataclass(frozen=True)
@@ -310,6 +311,7 @@ _PART_FIELDS = {
     "mistakes",
     "rubric",
     "tests",
+    "method_credit",
 }
 
 
@@ -365,6 +367,8 @@ def _part(reader: _Reader, raw, location: tuple, taken: set[str]) -> Part:
         id=part_id, kind=kind, points=float(points), prompt=reader.get(data, location, "prompt", str, ""),
         answer=answer, derive_from=derive_from, options=options, choices={str(k): str(v) for k, v in choices.items()},
         mistakes=tuple(_mistakes(reader, data, location)), rubric=rubric, tests=tuple(_tests(reader, data, location)),
+        method_credit=float(reader.get(data, location, "method_credit", (int, float), 0.5, check=_score,
+                                       what="a share of the points, from 0 to 1")),
     )  # fmt: skip
 
 
@@ -420,10 +424,11 @@ def assignment_from_data(data, *, path: str = "", lines: Mapping[tuple, int] | N
     items = []
     for index, raw in enumerate(reader.get(top, (), "problems", list)):
         here = ("problems", index)
-        entry = reader.mapping(raw, here, {"problem", "parts"}, "an assignment item")
-        items.append(
-            AssignmentItem(reader.get(entry, here, "problem", str), tuple(reader.get(entry, here, "parts", list, [])))
-        )
+        entry = reader.mapping(raw, here, {"problem", "parts", "points"}, "an assignment item")
+        points = reader.get(entry, here, "points", (int, float), None, check=lambda p: p > 0, what="more than 0")
+        problem = reader.get(entry, here, "problem", str)
+        parts = tuple(reader.get(entry, here, "parts", list, []))
+        items.append(AssignmentItem(problem, parts, None if points is None else float(points)))
     return Assignment(
         id=reader.get(top, (), "id", str, check=_ID.fullmatch, what="use lower-case letters, digits, - and _"),
         title=reader.get(top, (), "title", str),
