@@ -5,9 +5,12 @@ Commands:
     grader parse ANSWER [--coords q1,q2] [--known m,g,l] [--json]           how an answer is read
     grader problems list | show ID [--answers]                             the problem bank
     grader validate [PATH ...]                                             the bank tests itself
+    grader grade SUBMISSIONS --assignment A --out DIR [--jobs N] [--only ID] grade a class
+    grader export DIR --to canvas|moodle|gradescope                        LMS imports
 
-Exit statuses: 0 equivalent (or read); 1 not equivalent; 2 invalid input or usage
-error; 3 undecided (set aside for a person).
+Exit statuses: 0 equivalent (or read, or all graded); 1 not equivalent (or validation
+failures); 2 invalid input or usage error; 3 undecided (set aside for a person); 4 some
+submissions could not be graded (listed).
 """
 
 from __future__ import annotations
@@ -19,14 +22,19 @@ from collections.abc import Sequence
 from dataclasses import fields
 from pathlib import Path
 
-from grader import KINDS, AuthorError, compare, parse_answer
-from grader.bank import BankError, load_bank
+from tqdm import tqdm
+
+from grader import KINDS, AuthorError, GraderError, compare, parse_answer
+from grader.bank import BankError, load_assignment, load_bank
 from grader.grade import expected_answer, validate_bank
+from grader.grade.batch import assignment_parts
+from grader.run import EXPORTS, export_grades, grade_assignment
 
 EXIT_OK = 0
 EXIT_WRONG = 1
 EXIT_INVALID = 2
 EXIT_UNDECIDED = 3
+EXIT_SOME_FAILED = 4
 _EXIT_BY_STATUS = {
     "equivalent": EXIT_OK,
     "not_equivalent": EXIT_WRONG,
@@ -75,7 +83,92 @@ def _parser() -> argparse.ArgumentParser:
     validate = commands.add_parser("validate", help="check the problem bank against itself")
     validate.add_argument("paths", nargs="*", type=Path, help="files or folders (default: the bank)")
     validate.set_defaults(run=_run_validate)
+
+    grade = commands.add_parser("grade", help="grade a class's submissions for an assignment")
+    grade.add_argument("submissions", type=Path, help="a wide CSV (id, name, email, problem.part…) or a folder")
+    grade.add_argument("--assignment", required=True, help="an assignment id (problems/assignments/ID.yaml) or file")
+    grade.add_argument("--out", type=Path, required=True, help="the folder to write results into")
+    grade.add_argument("--jobs", type=int, default=None, help="worker processes (default: the machine's cores)")
+    grade.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
+    grade.add_argument("--only", metavar="STUDENT", help="regrade one student, keeping everyone else's results")
+    grade.add_argument("--overrides", type=Path, help="CSV of a person's scores: student, part, points, comment")
+    grade.add_argument("--reveal", action="store_true", help="show reference answers in the students' reports")
+    grade.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    grade.set_defaults(run=_run_grade)
+
+    export = commands.add_parser("export", help="write an LMS import of graded results")
+    export.add_argument("out", type=Path, help="the folder grader grade wrote")
+    export.add_argument("--to", choices=EXPORTS, required=True)
+    export.add_argument("--assignment", required=True, help="the assignment id or file")
+    export.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    export.set_defaults(run=_run_export)
     return parser
+
+
+def _assignment(args: argparse.Namespace):
+    """The bank and the assignment, or None after saying what is wrong."""
+    bank = _load(args.bank)
+    if bank is None:
+        return None, None
+    path = Path(args.assignment)
+    if not path.suffix:
+        path = args.bank / "assignments" / f"{args.assignment}.yaml"
+    try:
+        return bank, load_assignment(path, bank)
+    except BankError as error:
+        print(f"grader: {error}", file=sys.stderr)
+        return None, None
+
+
+def _run_grade(args: argparse.Namespace) -> int:
+    bank, assignment = _assignment(args)
+    if assignment is None:
+        return EXIT_INVALID
+    bar = {}
+
+    def start(total: int) -> None:
+        if sys.stderr.isatty():  # a progress bar on a terminal, quiet logs otherwise
+            bar["bar"] = tqdm(total=total, unit="student", file=sys.stderr)
+
+    def advance(done: int) -> None:
+        if "bar" in bar:
+            bar["bar"].update(done)
+
+    try:
+        summary = grade_assignment(
+            args.submissions, assignment, bank, args.out, jobs=args.jobs, timeout=args.timeout, only=args.only,
+            overrides=args.overrides, reveal=args.reveal, progress=advance, on_start=start,
+        )  # fmt: skip
+    except GraderError as error:
+        print(f"grader grade: {error}", file=sys.stderr)
+        return EXIT_INVALID
+    finally:
+        if "bar" in bar:
+            bar["bar"].close()
+    for issue in summary.issues:
+        print(f"input: {issue}", file=sys.stderr)
+    graded = sum(grade.status == "graded" for grade in summary.grades)
+    print(f"graded {graded} of {len(summary.grades)} students into {summary.out}/")
+    print(f"  gradebook: {summary.out / 'gradebook.csv'}   summary: {summary.out / 'summary.html'}")
+    print(f"  reports: {summary.out / 'reports'}/   for a person to look at: {summary.review_count} answers in "
+          f"{summary.out / 'review.csv'}")  # fmt: skip
+    for failure in summary.failed:
+        print(f"  could not be graded: {failure}")
+    return EXIT_SOME_FAILED if summary.failed or summary.issues else EXIT_OK
+
+
+def _run_export(args: argparse.Namespace) -> int:
+    bank, assignment = _assignment(args)
+    if assignment is None:
+        return EXIT_INVALID
+    max_score = sum(points for *_, points in assignment_parts(assignment, bank))
+    try:
+        written = export_grades(args.out, args.to, assignment=assignment, max_score=max_score)
+    except GraderError as error:
+        print(f"grader export: {error}", file=sys.stderr)
+        return EXIT_INVALID
+    print(f"wrote {len(written)} file(s): {written[0] if len(written) == 1 else written[0].parent.parent}")
+    return EXIT_OK
 
 
 def _default_bank() -> Path:

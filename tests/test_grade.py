@@ -1,0 +1,194 @@
+"""Batch grading: reading submissions, grading a class, a person's scores, and what is written out."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from grader.bank import load_assignment, load_bank
+from grader.export import (
+    apply_overrides,
+    canvas_csv,
+    grade_from_json,
+    gradebook_csv,
+    moodle_csv,
+    result_json,
+    write_atomic,
+)
+from grader.grade import batch
+from grader.grade.batch import assignment_parts, grade_class, grade_submission
+from grader.grade.results import PartGrade, Student, SubmissionGrade
+from grader.grade.submissions import Submission, read_submissions
+from grader.run import file_name
+
+ROOT = Path(__file__).resolve().parent.parent
+BANK = load_bank(ROOT / "problems")
+REVIEW = load_assignment(ROOT / "problems" / "assignments" / "review.yaml", BANK)
+PENDULUM_L = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
+
+
+def _pendulum_only(tmp_path: Path):
+    path = tmp_path / "a.yaml"
+    path.write_text("schema_version: 1\nid: a\ntitle: Pendulum\nproblems:\n  - problem: plane-pendulum\n")
+    return load_assignment(path, BANK)
+
+
+def test_a_wide_csv_is_read_and_its_problems_reported_by_row(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_text(
+        "id,name,email,plane-pendulum.lagrangian,plane-pendulum.nonsense\n"
+        's1,"Núñez, María",m@x.org,' + PENDULUM_L + ",x\n"
+        "s2,Bob,b@x.org,,\n"
+        "s1,Again,a@x.org,x,y\n"
+        ",No Id,n@x.org,x,y\n"
+        "s3,Extra,e@x.org,x,y,z\n",
+        encoding="utf-8",
+    )
+    submissions, issues = read_submissions(path, ["plane-pendulum.lagrangian"])
+    assert [s.student.id for s in submissions] == ["s1", "s2"]
+    assert submissions[0].student.name == "Núñez, María"
+    assert submissions[0].answers == {"plane-pendulum.lagrangian": PENDULUM_L}
+    assert [str(issue) for issue in issues] == [
+        f"{path}, row 1, column 5: unknown column 'plane-pendulum.nonsense': not a part of this assignment",
+        f"{path}, row 5: the row has no student id; row skipped",
+        f"{path}, row 6: the row has 6 cells but the header 5; row skipped",
+        f"{path}, row 4: student 's1' also appears at {path}, row 2; the first one is graded",
+    ]
+
+
+def test_a_folder_of_answer_files_is_read(tmp_path):
+    (tmp_path / "s1.yaml").write_text(f"id: s1\nname: Ann\nanswers:\n  plane-pendulum.lagrangian: '{PENDULUM_L}'\n")
+    (tmp_path / "s2.json").write_text(json.dumps({"id": "s2", "answers": {"plane-pendulum.nope": "1"}}))
+    (tmp_path / "s3.yaml").write_text("id: [unclosed\n")
+    submissions, issues = read_submissions(tmp_path, ["plane-pendulum.lagrangian"])
+    assert [s.student.id for s in submissions] == ["s1", "s2"]
+    assert "unknown part 'plane-pendulum.nope'" in str(issues[0])
+    assert str(issues[1]).startswith(f"{tmp_path / 's3.yaml'}: cannot be read")
+
+
+def test_grading_one_submission_gives_every_part_of_the_assignment(tmp_path):
+    assignment = _pendulum_only(tmp_path)
+    grade = grade_submission(Submission(Student("s1"), {"plane-pendulum.lagrangian": PENDULUM_L}), assignment, BANK)
+    by_key = {part.key: part for part in grade.parts}
+    assert list(by_key) == [f"plane-pendulum.{p.id}" for p in BANK["plane-pendulum"].parts]
+    assert by_key["plane-pendulum.lagrangian"].status == "equivalent"
+    assert by_key["plane-pendulum.lagrangian"].auto_score == 4
+    assert by_key["plane-pendulum.motion"].status == "blank"
+    assert grade.score == 4 and grade.max_score == BANK["plane-pendulum"].points
+
+
+def test_equations_right_for_the_students_own_wrong_lagrangian_earn_method_credit(tmp_path):
+    assignment = _pendulum_only(tmp_path)
+    answers = {
+        "plane-pendulum.lagrangian": "1/2 m l^2 thetadot^2 - m g l cos(theta)",  # T + V
+        "plane-pendulum.motion": "m l^2 thetaddot - m g l sin(theta) = 0",  # what T + V implies
+    }
+    motion = next(
+        p for p in grade_submission(Submission(Student("s"), answers), assignment, BANK).parts if p.part == "motion"
+    )
+    assert (motion.auto_score, motion.method) == (1.5, "error carried forward")
+    assert motion.feedback == (
+        "Your equations follow correctly from your own Lagrangian, which is not right: method credit.",
+    )
+
+
+def test_assignment_points_weight_a_problem(tmp_path):
+    path = tmp_path / "a.yaml"
+    item = "{problem: plane-pendulum, parts: [lagrangian, motion], points: 14}"
+    path.write_text(f"schema_version: 1\nid: a\ntitle: A\nproblems:\n  - {item}\n")
+    parts = assignment_parts(load_assignment(path, BANK), BANK)
+    assert [(part.id, points) for _, part, points in parts] == [("lagrangian", 8.0), ("motion", 6.0)]
+
+
+def _dies_for_s2(submission, assignment, bank, *, timeout):
+    if submission.student.id == "s2":
+        os._exit(3)  # a worker killed mid-task, as by the kernel's OOM killer
+    return SubmissionGrade(submission.student, ())
+
+
+def test_a_worker_that_dies_costs_only_its_own_submission(monkeypatch):
+    monkeypatch.setattr(batch, "grade_submission", _dies_for_s2)
+    submissions = [Submission(Student(f"s{i}")) for i in range(1, 6)]
+    grades = grade_class(submissions, REVIEW, BANK, jobs=2)
+    assert [(g.student.id, g.status) for g in grades] == [
+        ("s1", "graded"), ("s2", "error"), ("s3", "graded"), ("s4", "graded"), ("s5", "graded"),
+    ]  # fmt: skip
+    assert grades[1].message == "could not be graded: the grading process stopped"
+
+
+def test_an_exception_while_grading_is_that_students_result(monkeypatch):
+    def explode(submission, assignment, bank, *, timeout):
+        raise RuntimeError("boom")
+
+    monkeypatch.setattr(batch, "grade_submission", explode)
+    (grade,) = grade_class([Submission(Student("s1"))], REVIEW, BANK, jobs=1)
+    assert (grade.status, grade.message) == ("error", "could not be graded: RuntimeError: boom")
+
+
+def _grades():
+    parts = (
+        PartGrade("p", "a", 2.0, "x", "equivalent", 2.0),
+        PartGrade("p", "b", 3.0, "y", "undecided", 1.0, ("A person will read this answer.",)),
+    )
+    return [
+        SubmissionGrade(Student("s1", "O'Brien, Pat", "pat@x.org"), parts),
+        SubmissionGrade(Student("s2", "Lee", "lee@x.org"), (), status="error", message="could not be graded"),
+    ]
+
+
+def test_the_gradebook_has_a_points_possible_row_first_and_quotes_names():
+    rows = list(csv.reader(io.StringIO(gradebook_csv(_grades(), [("p.a", 2.0), ("p.b", 3.0)]))))
+    assert rows[0] == ["id", "name", "email", "p.a", "p.b", "total", "max", "percent", "status"]
+    assert rows[1] == ["Points Possible", "", "", "2.0", "3.0", "5.0", "5.0", "100.0", ""]
+    assert rows[2] == ["s1", "O'Brien, Pat", "pat@x.org", "2.0", "1.0", "3.0", "5.0", "60.0", "graded"]
+    assert rows[3][0] == "s2" and rows[3][-1] == "error"
+
+
+def test_overrides_keep_the_automatic_score_beside_the_persons():
+    grades, unmatched = apply_overrides(_grades(), {("s1", "p.b"): (3.0, "good argument"), ("s9", "p.a"): (1.0, "")})
+    part = grades[0].parts[1]
+    assert (part.auto_score, part.manual_score, part.final_score, part.comment) == (1.0, 3.0, 3.0, "good argument")
+    assert grades[0].score == 5.0
+    assert unmatched == ["override for s9, p.a matches no graded part"]
+
+
+def test_results_json_has_gradescopes_shape_and_reads_back():
+    text = result_json(_grades()[0])
+    record = json.loads(text)
+    assert (record["score"], record["max_score"]) == (3.0, 5.0)
+    assert record["tests"][1] == {"name": "p.b", "score": 1.0, "max_score": 3.0, "status": "failed",
+                                  "output": "A person will read this answer."}  # fmt: skip
+    assert grade_from_json(text) == _grades()[0]
+
+
+def test_canvas_import_has_its_identity_columns_and_a_points_possible_row():
+    rows = list(
+        csv.reader(io.StringIO(canvas_csv(_grades(), assignment="Review", assignment_id="review", max_score=5)))
+    )
+    assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "Review (review)"]
+    assert rows[1] == ["    Points Possible", "", "", "", "", "5.00"]
+    assert rows[2] == ["O'Brien, Pat", "", "s1", "pat@x.org", "", "3.00"]
+
+
+def test_moodle_import_has_an_identity_a_grade_and_a_feedback_column():
+    rows = list(csv.reader(io.StringIO(moodle_csv(_grades(), assignment="Review"))))
+    assert rows[0] == ["Email address", "Assignment: Review", "Feedback: Review"]
+    assert rows[1] == ["pat@x.org", "3.0", "3.00 / 5.00"]
+
+
+@pytest.mark.parametrize("student_id", ["../../etc/passwd", "a/b", ".hidden", "con", "x" * 300, "s 1"])
+def test_a_student_id_never_escapes_the_output_folder(student_id):
+    name = file_name(student_id)
+    assert "/" not in name and not name.startswith(".") and len(name) < 80
+    assert file_name(student_id) == name  # stable across runs
+
+
+def test_an_atomic_write_leaves_no_temporary_file(tmp_path):
+    target = write_atomic(tmp_path / "deep" / "file.csv", "a,b\n")
+    assert target.read_text() == "a,b\n"
+    assert [p.name for p in target.parent.iterdir()] == ["file.csv"]
