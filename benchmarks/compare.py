@@ -32,7 +32,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 from compare_pairs import PAIRS, SYSTEMS  # noqa: E402
 
 from grader import compare, parse_answer  # noqa: E402
-from grader.check.setting import Setting  # noqa: E402
+from grader.judge.setting import Setting  # noqa: E402
 
 BASELINE_BUDGET = 5.0  # seconds per pair before a baseline's answer counts as no verdict
 

@@ -25,7 +25,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from grader import KINDS, AuthorError, GraderError, compare, parse_answer
-from grader.bank import BankError, load_assignment, load_bank
+from grader.bank import BankError, default_bank_path, load_assignment, load_bank
 from grader.grade import expected_answer, validate_bank
 from grader.grade.batch import assignment_parts
 from grader.run import EXPORTS, export_grades, grade_assignment
@@ -172,9 +172,7 @@ def _run_export(args: argparse.Namespace) -> int:
 
 
 def _default_bank() -> Path:
-    """./problems when there is one, else the bank beside the installed package."""
-    here = Path("problems")
-    return here if here.is_dir() else Path(__file__).resolve().parent.parent / "problems"
+    return default_bank_path()
 
 
 def _load(bank: Path):

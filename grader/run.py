@@ -24,7 +24,6 @@ from pathlib import Path
 import pandas
 
 from grader.bank import Assignment, Problem
-from grader.check import DEFAULT_TIMEOUT
 from grader.errors import GraderError
 from grader.export import (
     apply_overrides,
@@ -42,6 +41,7 @@ from grader.export import columns as c
 from grader.grade.batch import assignment_parts, grade_class
 from grader.grade.results import SubmissionGrade
 from grader.grade.submissions import read_submissions
+from grader.judge import DEFAULT_TIMEOUT
 from grader.report import render_student_report, render_summary
 
 __all__ = ["EXPORTS", "RunSummary", "export_grades", "file_name", "grade_assignment"]

@@ -9,7 +9,7 @@ Contents:
 The format is documented for authors in docs/problem-format.md.
 """
 
-from grader.bank.load import load_assignment, load_bank, load_problem, read_yaml
+from grader.bank.load import default_bank_path, load_assignment, load_bank, load_problem, read_yaml
 from grader.bank.schema import (
     PART_KINDS,
     SCHEMA_VERSION,
@@ -36,6 +36,7 @@ __all__ = [
     "Problem",
     "RubricIdea",
     "Symbol",
+    "default_bank_path",
     "load_assignment",
     "load_bank",
     "load_problem",

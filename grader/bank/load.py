@@ -15,7 +15,7 @@ import yaml
 
 from grader.bank.schema import Assignment, BankError, Problem, assignment_from_data, problem_from_data
 
-__all__ = ["load_assignment", "load_bank", "load_problem", "read_yaml"]
+__all__ = ["default_bank_path", "load_assignment", "load_bank", "load_problem", "read_yaml"]
 
 MAX_FILE_BYTES = 1_000_000  # a problem is a page, not a data dump
 
@@ -60,6 +60,12 @@ def _index(node, location: tuple, lines: dict) -> None:
     elif isinstance(node, yaml.SequenceNode):
         for index, item in enumerate(node.value):
             _index(item, (*location, index), lines)
+
+
+def default_bank_path() -> Path:
+    """./problems when there is one, else the bank beside the installed package."""
+    here = Path("problems")
+    return here if here.is_dir() else Path(__file__).resolve().parents[2] / "problems"
 
 
 def load_problem(path: str | Path) -> Problem:

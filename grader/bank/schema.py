@@ -39,7 +39,7 @@ __all__ = [
 ]
 
 SCHEMA_VERSION = 1
-# The kinds a part may have, and the options each takes (grader.check.KINDS has the same
+# The kinds a part may have, and the options each takes (grader.judge.KINDS has the same
 # answer kinds; a test keeps the two in step, since the bank may not import the checker).
 PART_KINDS: dict[str, frozenset[str]] = {
     "integer": frozenset(),

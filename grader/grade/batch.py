@@ -21,13 +21,13 @@ import resource
 from collections.abc import Callable, Sequence
 
 from grader.bank import Assignment, Part, Problem
-from grader.check import DEFAULT_TIMEOUT, compare
-from grader.check.deadline import CheckTimeout, time_limit
-from grader.check.lagrangian import equations_of_motion
 from grader.errors import AuthorError
 from grader.grade.part import grade_answer, setting_of
 from grader.grade.results import PartGrade, SubmissionGrade
 from grader.grade.submissions import Submission
+from grader.judge import DEFAULT_TIMEOUT, compare
+from grader.judge.deadline import CheckTimeout, time_limit
+from grader.judge.lagrangian import equations_of_motion
 from grader.parse import parse_answer
 
 __all__ = ["assignment_parts", "grade_class", "grade_submission"]

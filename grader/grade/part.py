@@ -11,8 +11,8 @@ import dataclasses
 from functools import lru_cache
 
 from grader.bank import Part, Problem
-from grader.check import DEFAULT_TIMEOUT, Verdict, compare
-from grader.check.lagrangian import equations_of_motion
+from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
+from grader.judge.lagrangian import equations_of_motion
 
 __all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
 

@@ -13,9 +13,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from grader.bank import BankError, Part, Problem, load_assignment, load_problem
-from grader.check import compare
 from grader.errors import AuthorError
 from grader.grade.part import expected_answer, grade_answer, part_options, setting_of
+from grader.judge import compare
 
 __all__ = ["Failure", "validate_bank", "validate_problem"]
 

@@ -19,17 +19,17 @@ from dataclasses import dataclass, field
 import sympy
 from sympy.core.function import AppliedUndef
 
-from grader.check.deadline import CheckTimeout, time_limit
-from grader.check.expected import Expected, Outcome, prepare
-from grader.check.expression import check_expression
-from grader.check.feedback import say
-from grader.check.lagrangian import check_lagrangian
-from grader.check.motion import check_equation, check_equations
-from grader.check.numeric import NotCompilable
-from grader.check.scalar import check_choice, check_integer, check_number
-from grader.check.text import check_text
-from grader.check.verdict import Verdict
 from grader.errors import AuthorError
+from grader.judge.deadline import CheckTimeout, time_limit
+from grader.judge.expected import Expected, Outcome, prepare
+from grader.judge.expression import check_expression
+from grader.judge.feedback import say
+from grader.judge.lagrangian import check_lagrangian
+from grader.judge.motion import check_equation, check_equations
+from grader.judge.numeric import NotCompilable
+from grader.judge.scalar import check_choice, check_integer, check_number
+from grader.judge.text import check_text
+from grader.judge.verdict import Verdict
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.names import unicode_name
 

@@ -27,12 +27,12 @@ from dataclasses import dataclass
 
 import sympy
 
-from grader.check.deadline import Deadline
-from grader.check.diagnose import taylor
-from grader.check.expected import Expected, Outcome
-from grader.check.expression import diagnose_difference, same_values
-from grader.check.numeric import Closeness, Compiled, closeness
-from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED
+from grader.judge.deadline import Deadline
+from grader.judge.diagnose import taylor
+from grader.judge.expected import Expected, Outcome
+from grader.judge.expression import diagnose_difference, same_values
+from grader.judge.numeric import Closeness, Compiled, closeness
+from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
 

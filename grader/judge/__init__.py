@@ -12,7 +12,7 @@ kinds' checkers; ``numeric`` and ``sampling`` (fast evaluation at seeded points)
 limits), ``setting`` and ``expected`` (the problem's symbols, the prepared reference).
 """
 
-from grader.check.compare import DEFAULT_TIMEOUT, KINDS, Kind, compare
-from grader.check.verdict import STATUSES, Verdict
+from grader.judge.compare import DEFAULT_TIMEOUT, KINDS, Kind, compare
+from grader.judge.verdict import STATUSES, Verdict
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "STATUSES", "Kind", "Verdict", "compare"]

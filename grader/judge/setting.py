@@ -19,8 +19,8 @@ from functools import cached_property
 
 import sympy
 
-from grader.check.numeric import sample_points
 from grader.errors import AuthorError
+from grader.judge.numeric import sample_points
 from grader.parse import TIME
 from grader.parse.names import canonical_name, unicode_name
 

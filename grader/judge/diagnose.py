@@ -17,7 +17,7 @@ import itertools
 
 import sympy
 
-from grader.check.setting import Setting
+from grader.judge.setting import Setting
 from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 

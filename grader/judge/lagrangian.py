@@ -16,13 +16,13 @@ from __future__ import annotations
 
 import sympy
 
-from grader.check.deadline import Deadline
-from grader.check.diagnose import taylor, term_changes
-from grader.check.expected import Expected, Outcome, prepare
-from grader.check.expression import same_values, term_outcome, varying_part
-from grader.check.numeric import Closeness, closeness
-from grader.check.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
-from grader.check.setting import Setting
+from grader.judge.deadline import Deadline
+from grader.judge.diagnose import taylor, term_changes
+from grader.judge.expected import Expected, Outcome, prepare
+from grader.judge.expression import same_values, term_outcome, varying_part
+from grader.judge.numeric import Closeness, closeness
+from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
+from grader.judge.setting import Setting
 from grader.parse import TIME, ParsedAnswer
 from grader.parse.readback import to_text
 

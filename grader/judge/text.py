@@ -13,8 +13,8 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from grader.check.deadline import Deadline
-from grader.check.expected import Expected, Outcome
+from grader.judge.deadline import Deadline
+from grader.judge.expected import Expected, Outcome
 
 __all__ = ["MAX_TEXT_LENGTH", "check_text", "rubric_score"]
 

@@ -13,8 +13,8 @@ import re
 
 import sympy
 
-from grader.check.deadline import Deadline
-from grader.check.expected import Expected, Outcome
+from grader.judge.deadline import Deadline
+from grader.judge.expected import Expected, Outcome
 from grader.parse import ParsedAnswer
 
 __all__ = ["check_choice", "check_integer", "check_number", "choice_labels"]

@@ -17,11 +17,11 @@ from collections.abc import Callable
 import sympy
 from sympy.core.function import AppliedUndef
 
-from grader.check.deadline import Deadline
-from grader.check.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes
-from grader.check.expected import Expected, Outcome
-from grader.check.numeric import Closeness
-from grader.check.sampling import (
+from grader.judge.deadline import Deadline
+from grader.judge.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes
+from grader.judge.expected import Expected, Outcome
+from grader.judge.numeric import Closeness
+from grader.judge.sampling import (
     GROUP,
     POINTS,
     Pair,

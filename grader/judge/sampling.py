@@ -21,8 +21,8 @@ from fractions import Fraction
 import mpmath
 import sympy
 
-from grader.check.deadline import Deadline
-from grader.check.numeric import Closeness, Compiled, closeness
+from grader.judge.deadline import Deadline
+from grader.judge.numeric import Closeness, Compiled, closeness
 
 __all__ = ["POINTS", "Pair", "all_equal", "constant_difference", "constant_ratio", "evaluate_pairs", "nice_number"]
 

@@ -18,9 +18,9 @@ from functools import lru_cache
 
 import sympy
 
-from grader.check.numeric import Compiled
-from grader.check.setting import Setting
 from grader.errors import ReferenceAnswerError
+from grader.judge.numeric import Compiled
+from grader.judge.setting import Setting
 from grader.parse import TIME, ParsedAnswer, parse_answer
 
 __all__ = ["Expected", "Outcome", "prepare"]
