@@ -131,6 +131,20 @@ DERIVATIVES = [
     ("diff(x^2, t)", 2 * x * D(x)),
 ]
 
+LEIBNIZ = [
+    ("d/dt(theta)", D(theta)),
+    ("dθ/dt", D(theta)),
+    ("d^2x/dt^2", D(x, 2)),
+    ("d²x/dt²", D(x, 2)),
+    ("m dx/dt", m * D(x)),
+    ("d theta / d t", D(theta)),
+    ("d/dt (m l^2 thetadot) = 0", Eq(m * l**2 * D(theta, 2), 0)),
+    ("\\frac{d\\theta}{dt}", D(theta)),
+    ("\\frac{d^2 x}{dt^2}", D(x, 2)),
+    ("\\frac{d}{dt}\\left(m l^2 \\dot\\theta\\right) + m g l \\sin\\theta = 0",
+     Eq(m * l**2 * D(theta, 2) + m * g * l * sin(theta), 0)),
+]  # fmt: skip
+
 SPLITTING = [
     ("mgl", m * g * l),
     ("mgl cos θ", m * g * l * cos(theta)),
@@ -209,6 +223,18 @@ def test_accepted_input_gives_its_sympy_object(text, expected):
 )
 def test_kind_says_what_was_typed(text, kind):
     assert parse_answer(text, known=KNOWN).kind == kind
+
+
+@pytest.mark.parametrize(("text", "expected"), LEIBNIZ, ids=[text for text, _ in LEIBNIZ])
+def test_leibniz_notation_is_a_time_derivative(text, expected):
+    # Only where the problem does not itself define a symbol d, as KNOWN does.
+    result = parse_answer(text, coords=COORDS, known=[name for name in KNOWN if name != "d"])
+    assert result.ok, str(result)
+    assert result.value == expected
+
+
+def test_d_and_dt_are_symbols_when_the_problem_defines_them():
+    assert parse_answer("d/dt x", known=["d"], coords=["x"]).value == x / t  # d·x/(d·t): the problem said d
 
 
 def test_e_is_a_symbol_when_the_problem_defines_one():

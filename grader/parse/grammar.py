@@ -46,7 +46,7 @@ _FUNCTIONS = {
     "log": sympy.log, "sqrt": sympy.sqrt, "abs": sympy.Abs,
 }  # fmt: skip
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
-_STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt")
+_STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt", "deriv")
 _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
 _GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
 # One TeX symbol: a spelled-out Greek letter (from θ typed inside a run) or one letter,
@@ -118,7 +118,7 @@ def parse_tokens(tokens: list[Token], context: Context, text: str):
 
 class _Parser:
     def __init__(self, tokens: list[Token], context: Context, text: str):
-        self.tokens, self.context, self.text = tokens, context, text
+        self.tokens, self.context, self.text = _leibniz(tokens, context), context, text
         self.i = 0
         self.depth = 0
         self.splits: dict[str, list | None] = {}
@@ -311,6 +311,9 @@ class _Parser:
         if token.kind == "func":
             self.advance()
             return self.function(token)
+        if token.kind == "deriv":
+            self.advance()
+            return self.leibniz(token)
         if token.kind == "frac":
             self.advance()
             numerator = self.argument(token)
@@ -430,6 +433,19 @@ class _Parser:
             raise ParseFailure("diff_usage", token.start, self.token.end)
         self.advance()
         self.depth -= 1
+        return self.differentiate(target, order, token)
+
+    def leibniz(self, token: Token):
+        """``d/dt (…)``, ``\\frac{d}{dt}\\left(…\\right)``, ``dθ/dt``, ``\\frac{d^2x}{dt^2}``: the time derivative
+        of the factor that follows (rewritten to this token by :func:`_leibniz`)."""
+        if self.token.kind == "end":
+            raise ParseFailure("missing_argument", token.start, token.end, name=self.source(token))
+        self.deeper(token)
+        target = self.factor()
+        self.depth -= 1
+        return self.differentiate(target, token.value, token)
+
+    def differentiate(self, target, order: int, token: Token):
         if order > LIMITS.derivative_order:
             raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
         if _is_coordinate(target, self.context):  # diff(θ, t): built directly, as θ̇ is
@@ -597,6 +613,119 @@ class _Parser:
         if piece == "e" and "e" not in self.context.known:
             return None  # m e is more likely a typo than m times Euler's number
         return self.lookup(canonical_name(piece))
+
+
+def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
+    """Leibniz's notation rewritten to one ``deriv`` token (its value the order) before the target.
+
+    ``d/dt``, ``\\frac{d}{dt}``, ``dθ/dt``, ``d²x/dt²``, ``\\frac{d\\theta}{dt}``, ``\\frac{d^2 x}{dt^2}``;
+    not where the problem itself defines d or dt as symbols.
+    """
+    if {"d", "dt"} & set(context.known):
+        return tokens
+    out: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        found = _leibniz_at(tokens, i)
+        if found is None:
+            out.append(tokens[i])
+            i += 1
+            continue
+        order, target, end = found
+        out.append(Token("deriv", order, tokens[i].start, tokens[end - 1].end))
+        out += target
+        i = end
+    return out
+
+
+def _is_raw(token: Token, raw: str) -> bool:
+    return token.kind == "name" and token.value.raw == raw and not (token.value.dots or token.value.primes)
+
+
+def _after_dt(tokens: list[Token], i: int) -> int | None:
+    """The index after ``dt`` (or ``d t``) at ``i``, or None."""
+    if i < len(tokens) and _is_raw(tokens[i], "dt"):
+        return i + 1
+    if i + 1 < len(tokens) and _is_raw(tokens[i], "d") and _is_raw(tokens[i + 1], "t"):
+        return i + 2
+    return None
+
+
+def _order(tokens: list[Token], i: int) -> tuple[int, int]:
+    """(order, next index) of an optional power after d or dt: ^2, ^{2}, ²."""
+    if i < len(tokens) and tokens[i].kind == "sup":
+        return int(tokens[i].value), i + 1
+    if i + 1 < len(tokens) and tokens[i].is_op("^") and tokens[i + 1].kind == "num" and tokens[i + 1].value.isdecimal():
+        return int(tokens[i + 1].value), i + 2
+    if (
+        i + 3 < len(tokens) and tokens[i].is_op("^") and tokens[i + 1].is_op("{")
+        and tokens[i + 2].kind == "num" and tokens[i + 3].is_op("}")
+    ):  # fmt: skip
+        return int(tokens[i + 2].value), i + 4
+    return 1, i
+
+
+def _numerator(tokens: list[Token]) -> tuple[int, list[Token]] | None:
+    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x`` or ``d\\theta``, else None."""
+    if not tokens or tokens[0].kind != "name" or tokens[0].value.dots or tokens[0].value.primes:
+        return None
+    first = tokens[0]
+    if first.value.raw == "d":
+        order, rest = _order(tokens, 1)
+        return order, tokens[rest:]
+    if first.value.raw.startswith("d") and len(tokens) == 1:  # dθ, dx: one name
+        name = Name(first.value.raw[1:], tex=first.value.tex)
+        return 1, [Token("name", name, first.start + 1, first.end)]
+    return None
+
+
+def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | None:
+    token = tokens[i]
+    if token.kind == "frac" and i + 1 < len(tokens) and tokens[i + 1].is_op("{"):
+        numerator_end = _closing(tokens, i + 1)
+        if numerator_end is None or not tokens[numerator_end + 1].is_op("{"):
+            return None
+        denominator_end = _closing(tokens, numerator_end + 1)
+        if denominator_end is None:
+            return None
+        numerator = _numerator(tokens[i + 2 : numerator_end])
+        denominator = tokens[numerator_end + 2 : denominator_end]
+        after_dt = _after_dt(denominator, 0)
+        if numerator is None or after_dt is None:
+            return None
+        order, rest = _order(denominator, after_dt)
+        if rest != len(denominator) or order != numerator[0]:
+            return None
+        target = numerator[1]
+        if target:
+            opener, closer = Token("op", "(", token.start, token.start), Token("op", ")", token.end, token.end)
+            target = [opener, *target, closer]
+        return order, target, denominator_end + 1
+    numerator_end = i + 1
+    while numerator_end < len(tokens) and not tokens[numerator_end].is_op("/") and numerator_end - i < 5:
+        numerator_end += 1
+    after_dt = _after_dt(tokens, numerator_end + 1) if numerator_end < len(tokens) - 1 else None
+    if after_dt is None:
+        return None
+    numerator = _numerator(tokens[i:numerator_end])
+    if numerator is None:
+        return None
+    order, end = _order(tokens, after_dt)
+    if order != numerator[0]:
+        return None
+    return order, numerator[1], end
+
+
+def _closing(tokens: list[Token], i: int) -> int | None:
+    depth = 0
+    for j in range(i, len(tokens)):
+        if tokens[j].is_op("{", "(", "["):
+            depth += 1
+        elif tokens[j].is_op("}", ")", "]"):
+            depth -= 1
+            if depth == 0:
+                return j
+    return None
 
 
 def _time_derivative(coordinate, order: int):

@@ -43,7 +43,7 @@ MESSAGES: dict[str, str] = {
     "missing_argument": "`{name}` needs an argument, as in {name}(θ).",
     "derivative_of_constant": "`{name}` is written as a time derivative, but {base} is not a coordinate of this problem ({coords}).",
     "derivative_order": "Derivatives of order higher than 3 are not accepted here.",
-    "leibniz": "d/dt notation is not read here: write a time derivative as θ̇, theta' or diff(θ, t).",
+    "leibniz": "`dt` here is not part of a derivative this grader can read: write dθ/dt, d/dt(…), θ̇ or diff(θ, t).",
     "diff_usage": "Write a time derivative as diff(θ, t) or diff(θ, t, 2).",
     "dot_usage": "\\{name} takes one coordinate, as in \\{name}{{\\theta}}.",
     "ambiguous_name": "`{name}` could be read as {first} or as {second}; put a space or `*` between the symbols.",

@@ -81,7 +81,8 @@ class Token:
     Kinds: ``num`` (value: digit string), ``name`` (value: :class:`Name`), ``func``
     (value: canonical function name, or ``diff``), ``op`` (value: one of
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
-    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``end``.
+    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``end``; the
+    grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
     """
 
     kind: str
