@@ -142,7 +142,8 @@ class Compiled:
         self.index |= {node: self.index[symbol] for node, symbol in (aliases or {}).items() if symbol in self.index}
         self._float = _compile(expr, self.index, _FLOAT)
         self._precise = None
-        self._exact = _compile(expr, self.index, _EXACT) if _is_rational_function(expr) else None
+        self._rational = _is_rational_function(expr)
+        self._exact = None  # compiled when first needed: most comparisons never need it
         # A reference answer is evaluated at the same points for every submission: remember them.
         self._memo: dict | None = {} if memo else None
 
@@ -169,7 +170,7 @@ class Compiled:
     @property
     def rational(self) -> bool:
         """Whether :meth:`exact` can evaluate this expression."""
-        return self._exact is not None
+        return self._rational
 
     def exact(self, values: Sequence[complex]) -> tuple[Fraction, float]:
         """The exact value at real ``values``, for a rational function of the variables.
@@ -177,6 +178,8 @@ class Compiled:
         Floats cannot tell a degree-13 polynomial from one whose constant is off by one.
         """
         scale = [0.0]
+        if self._exact is None:
+            self._exact = _compile(self.expr, self.index, _EXACT)
         value = self._exact([Fraction(v.real) for v in values], scale)
         return value, max(scale[0], float(abs(value)))
 
