@@ -127,13 +127,17 @@ class _MathMLPrinter(MathMLPresentationPrinter):
 
     def _dotted(self, name: str, dots: int):
         base, _, sub = name.partition("_")
+        element = self._print(sympy.Symbol(base))
         if dots:
-            # One <mi> with the combining dots: fonts place them over the letter, where an
-            # <mover> accent is drawn too small by some browsers.
-            element = self.dom.createElement("mi")
-            element.appendChild(self.dom.createTextNode(unicode_name(base, dots)))
-        else:
-            element = self._print(sympy.Symbol(base))
+            # An accent over the letter, as MathML means it: a combining dot inside the <mi>
+            # is dropped by math fonts (DejaVu Math TeX Gyre draws θ̇ as a bare θ).
+            over = self.dom.createElement("mover")
+            over.setAttribute("accent", "true")
+            mark = self.dom.createElement("mo")
+            mark.appendChild(self.dom.createTextNode({1: "\u02d9", 2: "\u00a8"}.get(dots, "\u20db")))
+            over.appendChild(element)
+            over.appendChild(mark)
+            element = over
         if sub:
             subscripted = self.dom.createElement("msub")
             subscripted.appendChild(element)
@@ -143,12 +147,17 @@ class _MathMLPrinter(MathMLPresentationPrinter):
 
 
 def _decimal(number) -> str | None:
-    """A rational typed as a decimal, shown as one again: 2.0061, not 20061/10000."""
-    q = int(number.q)
-    if q == 1 or 10 ** (len(str(q)) - 1) != q:
+    """A rational typed as a decimal, shown as one again: 2.006, not 1003/500.
+
+    >>> _decimal(sympy.Rational(1003, 500)), _decimal(sympy.Rational(-1, 8)), _decimal(sympy.Rational(1, 3))
+    ('2.006', '-0.125', None)
+    """
+    p, q = abs(int(number.p)), int(number.q)
+    places = next((k for k in range(1, 31) if 10**k % q == 0), None)  # q = 2^a 5^b: a terminating decimal
+    if q == 1 or places is None:
         return None
-    text = f"{abs(int(number.p)) // q}.{abs(int(number.p)) % q:0{len(str(q)) - 1}d}"
-    return ("-" if number.p < 0 else "") + text
+    scaled = p * (10**places // q)
+    return ("-" if number.p < 0 else "") + f"{scaled // 10**places}.{scaled % 10**places:0{places}d}"
 
 
 def _items(value) -> list:

@@ -197,7 +197,7 @@ class WrongAnswer:
     Attributes:
         answer: the answer normalized: how it was read, else as typed with spaces collapsed.
         example: one of the answers as typed (the first seen), since a reading can look unlike
-            what students typed (6.28 is read as 157/25).
+            what students typed (2 m g l cos θ is read as 2*g*l*m*cos(θ)).
         count: students who gave it.
         diagnosis: the kind of mistake it triggered (the most frequent, should it vary), or None.
         feedback: the first feedback sentence it got, or "".
