@@ -7,6 +7,8 @@ Commands:
     grader validate [PATH ...]                                             the bank tests itself
     grader grade SUBMISSIONS --assignment A --out DIR [--jobs N] [--only ID] grade a class
     grader export DIR --to canvas|moodle|gradescope                        LMS imports
+    grader check PROBLEM.PART ANSWER | --answers FILE [--assignment A]     a student checks answers
+    grader serve [--assignment A] [--port P] [--log FILE]                  the self-check web page
 
 Exit statuses: 0 equivalent (or read, or all graded); 1 not equivalent (or validation
 failures); 2 invalid input or usage error; 3 undecided (set aside for a person); 4 some
@@ -22,13 +24,16 @@ from collections.abc import Sequence
 from dataclasses import fields
 from pathlib import Path
 
+import yaml
 from tqdm import tqdm
 
 from grader import KINDS, AuthorError, GraderError, compare, parse_answer
 from grader.bank import BankError, default_bank_path, load_assignment, load_bank
 from grader.grade import expected_answer, validate_bank
 from grader.grade.batch import assignment_parts
+from grader.grade.selfcheck import check, find_part
 from grader.run import EXPORTS, export_grades, grade_assignment
+from grader.serve import make_server
 
 EXIT_OK = 0
 EXIT_WRONG = 1
@@ -102,6 +107,26 @@ def _parser() -> argparse.ArgumentParser:
     export.add_argument("--assignment", required=True, help="the assignment id or file")
     export.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
     export.set_defaults(run=_run_export)
+
+    checker = commands.add_parser(
+        "check", help="check answers to bank parts, as a student would", description="Check answers to bank parts."
+    )
+    checker.add_argument("part", nargs="?", help="problem.part, e.g. plane-pendulum.lagrangian")
+    checker.add_argument("answer", nargs="?", help="the answer")
+    checker.add_argument("--answers", type=Path, help="a YAML mapping of problem.part to answer")
+    checker.add_argument("--assignment", help="with --answers: list the assignment's parts left unanswered")
+    checker.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
+    checker.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    checker.set_defaults(run=_run_check)
+
+    serve = commands.add_parser("serve", help="a local web page where students check their answers")
+    serve.add_argument("--assignment", help="an assignment id or file (default: every problem of the bank)")
+    serve.add_argument("--host", default="127.0.0.1", help="the address to listen on (default: %(default)s)")
+    serve.add_argument("--port", type=int, default=8000, help="the port (default: %(default)s; 0 picks a free one)")
+    serve.add_argument("--log", type=Path, default=Path("attempts.jsonl"), help="attempts log (default: %(default)s)")
+    serve.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
+    serve.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    serve.set_defaults(run=_run_serve)
     return parser
 
 
@@ -168,6 +193,82 @@ def _run_export(args: argparse.Namespace) -> int:
         print(f"grader export: {error}", file=sys.stderr)
         return EXIT_INVALID
     print(f"wrote {len(written)} file(s): {written[0] if len(written) == 1 else written[0].parent.parent}")
+    return EXIT_OK
+
+
+def _run_check(args: argparse.Namespace) -> int:
+    if args.answers is None and (args.part is None or args.answer is None or args.assignment):
+        print("grader check: give PROBLEM.PART ANSWER, or --answers FILE [--assignment A]", file=sys.stderr)
+        return EXIT_INVALID
+    if args.answers is not None and args.part is not None:
+        print("grader check: give either PROBLEM.PART ANSWER or --answers FILE, not both", file=sys.stderr)
+        return EXIT_INVALID
+    bank, assignment = _assignment(args) if args.assignment else (_load(args.bank), None)
+    if bank is None:
+        return EXIT_INVALID
+    answers = {args.part: args.answer} if args.answers is None else _read_answers(args.answers)
+    if answers is None:
+        return EXIT_INVALID
+    try:
+        for key in answers:
+            find_part(key, bank)
+    except GraderError as error:
+        print(f"grader check: {error}", file=sys.stderr)
+        return EXIT_INVALID
+    results = [check(key, answer, bank=bank, timeout=args.timeout) for key, answer in answers.items()]
+    print("\n".join(str(result) for result in results))
+    missing = [] if assignment is None else [
+        f"{problem.id}.{part.id}" for problem, part, _ in assignment_parts(assignment, bank)
+        if f"{problem.id}.{part.id}" not in answers
+    ]  # fmt: skip
+    for key in missing:
+        print(f"– {key}: not answered")
+    if any(result.status == "invalid" for result in results):
+        return EXIT_INVALID
+    return EXIT_OK if all(result.right for result in results) and not missing else EXIT_WRONG
+
+
+def _read_answers(path: Path) -> dict[str, str] | None:
+    """problem.part → answer from a student's YAML file, or None after saying what is wrong."""
+    try:
+        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
+        print(f"grader check: cannot read {path}: {error}", file=sys.stderr)
+        return None
+    if not isinstance(data, dict):
+        print(f"grader check: {path} must map problem.part to an answer", file=sys.stderr)
+        return None
+    answers = {}
+    for key, value in data.items():
+        if isinstance(value, list) and all(isinstance(item, str | int) for item in value):
+            value = ", ".join(str(item) for item in value)  # a multiple choice written as a YAML list
+        if isinstance(value, dict | list) or value is None:
+            print(f"grader check: {path}: the answer to {key} must be text", file=sys.stderr)
+            return None
+        answers[str(key)] = str(value)
+    return answers
+
+
+def _run_serve(args: argparse.Namespace) -> int:
+    bank, assignment = _assignment(args) if args.assignment else (_load(args.bank), None)
+    if bank is None:
+        return EXIT_INVALID
+    try:
+        server = make_server(
+            bank=bank, assignment=assignment, host=args.host, port=args.port, log_path=args.log, timeout=args.timeout
+        )
+    except OSError as error:
+        print(f"grader serve: cannot start: {error}", file=sys.stderr)
+        return EXIT_INVALID
+    print(f"Self-check page on {server.url} — attempts are logged to {args.log}; Ctrl-C stops.", flush=True)
+    if args.host not in ("127.0.0.1", "localhost", "::1"):
+        print(f"  listening on {args.host}: other computers can reach this page", flush=True)
+    try:
+        server.serve_forever()
+    except KeyboardInterrupt:
+        print("\nstopped")
+    finally:
+        server.server_close()
     return EXIT_OK
 
 

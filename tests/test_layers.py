@@ -1,7 +1,7 @@
 """Modules import only what lies upstream of them.
 
 The flow is problem bank → parse → judge (checking answers) → grade → report / export, then ``run``
-(grading a class end to end) and the CLI on top; ``grader.errors`` is below
+(grading a class end to end) and ``serve`` (the self-check page), and the CLI on top; ``grader.errors`` is below
 everything, and ``grader/__init__.py`` is the flat public face that may gather
 from all of them.
 """
@@ -16,7 +16,7 @@ import pytest
 PACKAGE = Path(__file__).resolve().parent.parent / "grader"
 LAYERS = {
     "errors": 0, "bank": 1, "parse": 2, "judge": 3, "grade": 4,
-    "report": 5, "export": 5, "run": 6, "cli": 7, "__main__": 8,
+    "report": 5, "export": 5, "run": 6, "serve": 6, "cli": 7, "__main__": 8,
 }  # fmt: skip
 MODULES = sorted(path for path in PACKAGE.rglob("*.py") if path != PACKAGE / "__init__.py")
 

@@ -1,0 +1,137 @@
+"""The self-check page end to end, in a real headless browser (Debian's chromium and chromedriver).
+
+Typing shows how the answer is read (MathML, fetched as the student types), Check shows the
+verdict and the hint, and the page runs under its own Content-Security-Policy without an error.
+Skipped only when the browser or its driver is not installed (``apt-get install chromium
+chromium-driver``; .ci/run installs them in CI).
+"""
+
+from __future__ import annotations
+
+import json
+import threading
+from pathlib import Path
+
+import pytest
+
+CHROMIUM = Path("/usr/bin/chromium")
+CHROMEDRIVER = Path("/usr/bin/chromedriver")
+if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
+    pytest.skip(
+        f"needs {CHROMIUM} and {CHROMEDRIVER} (apt-get install chromium chromium-driver)", allow_module_level=True
+    )
+
+from selenium import webdriver  # noqa: E402  (after the skip: nothing to drive without a browser)
+from selenium.webdriver.common.by import By  # noqa: E402
+from selenium.webdriver.support import expected_conditions  # noqa: E402
+from selenium.webdriver.support.ui import WebDriverWait  # noqa: E402
+
+from grader.bank import load_assignment, load_bank  # noqa: E402
+from grader.serve import make_server  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+BANK = load_bank(ROOT / "problems")
+REVIEW = load_assignment(ROOT / "problems" / "assignments" / "review.yaml", BANK)
+KEY = "plane-pendulum.lagrangian"
+SIGN_HINT = "Check the sign of the potential energy; with θ from the downward vertical the bob is lowest at θ = 0."
+
+
+@pytest.fixture(scope="module")
+def server(tmp_path_factory):
+    log = tmp_path_factory.mktemp("browser") / "attempts.jsonl"
+    server = make_server(bank=BANK, assignment=REVIEW, log_path=log)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    yield server
+    server.shutdown()
+    server.server_close()
+
+
+@pytest.fixture(scope="module")
+def browser():
+    options = webdriver.ChromeOptions()
+    options.binary_location = str(CHROMIUM)
+    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                     "--window-size=1200,900"):  # fmt: skip
+        options.add_argument(argument)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    driver = webdriver.Chrome(service=webdriver.ChromeService(executable_path=str(CHROMEDRIVER)), options=options)
+    yield driver
+    driver.quit()
+
+
+def _part(driver):
+    return driver.find_element(By.CSS_SELECTOR, f'article.part[data-part="{KEY}"]')
+
+
+def _type(driver, text: str) -> None:
+    box = driver.find_element(By.ID, f"answer-{KEY}")
+    box.clear()
+    box.send_keys(text)
+
+
+def _check(driver, status: str):
+    """Click Check and wait for a verdict of ``status``; the result element."""
+    part = _part(driver)
+    part.find_element(By.CSS_SELECTOR, "button.check").click()
+    selector = f'article.part[data-part="{KEY}"] .result.{status}'
+    return WebDriverWait(driver, 20).until(
+        expected_conditions.visibility_of_element_located((By.CSS_SELECTOR, selector))
+    )
+
+
+def test_type_preview_check_and_hint(server, browser):
+    browser.get(server.url)
+    assert browser.title == "Self-check — Review questions — the Lagrangian formulation"
+    browser.find_element(By.ID, "student").send_keys("ada")
+
+    _type(browser, "1/2 m l^2 thetadot^2 + m g l cos(theta)")
+    preview = f'article.part[data-part="{KEY}"] .preview math'
+    WebDriverWait(browser, 20).until(expected_conditions.presence_of_element_located((By.CSS_SELECTOR, preview)))
+    assert _part(browser).find_element(By.CSS_SELECTOR, ".preview .caption").text == "READ AS"
+
+    result = _check(browser, "equivalent")
+    assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "✔\nright"
+    assert result.find_elements(By.CSS_SELECTOR, ".read math")
+    assert not result.find_elements(By.CSS_SELECTOR, "ul.hints li")
+
+    _type(browser, "1/2 m l^2 thetadot^2 - m g l cos(theta)")
+    result = _check(browser, "not_equivalent")
+    assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "✘\nnot right"
+    assert [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")] == [SIGN_HINT]
+
+    lines = server.attempts.path.read_text(encoding="utf-8").splitlines()
+    assert [(r["student"], r["part"], r["status"]) for r in map(json.loads, lines)] == [
+        ("ada", KEY, "equivalent"),
+        ("ada", KEY, "not_equivalent"),
+    ]
+
+
+def test_an_unreadable_answer_is_pointed_at(server, browser):
+    browser.get(server.url)
+    _type(browser, "sin(theta")
+    refusal = f'article.part[data-part="{KEY}"] .preview div.refusal'
+    message = WebDriverWait(browser, 20).until(
+        expected_conditions.presence_of_element_located((By.CSS_SELECTOR, refusal))
+    )
+    assert message.text == "Unbalanced bracket: the `(` at position 4 is never closed."
+    result = _check(browser, "invalid")
+    assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "invalid\ncould not be read"
+    assert result.find_element(By.CSS_SELECTOR, ".read pre").text == "sin(theta\n   ^"
+
+
+def test_hostile_text_stays_text(server, browser):
+    browser.get(server.url)
+    _type(browser, "<img src=x onerror=document.title='owned'>")
+    result = _check(browser, "invalid")
+    assert not result.find_elements(By.TAG_NAME, "img")
+    assert browser.title.startswith("Self-check")
+
+
+def test_the_page_runs_without_errors(server, browser):
+    # A CSP violation or a script error shows in the console.
+    browser.get(server.url)
+    _type(browser, "m g l")
+    _check(browser, "not_equivalent")
+    problems = [entry for entry in browser.get_log("browser") if entry["level"] == "SEVERE"]
+    problems = [entry for entry in problems if "favicon.ico" not in entry["message"]]
+    assert problems == []
