@@ -269,8 +269,9 @@ def case(row: dict) -> Case:
     if row["test"] == "SysEquiv":
         # An author writes one equation without brackets; the student's text stays as typed.
         (only,) = items(expected) or [expected]
-        expected = only if "=" in only else expected
-        kind = "equation"
+        expected = only
+        # A teacher's "[1]" is no equation: an expression part, which a student's equation does not answer.
+        kind = "equation" if "=" in only else "expression"
     else:
         kind = "equation" if "=" in expected else "expression"
     return Case(row, expected, submitted, kind, *target(row))
