@@ -53,7 +53,11 @@ def _names(value: str) -> list[str]:
 
 
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="grader", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(
+        prog="grader",
+        description="Grades answers in analytical mechanics: reads them, judges them, grades a class, and lets"
+        " students check their answers first.",
+    )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     parse = commands.add_parser("parse", help="show how an answer is read", description="Show how an answer is read.")
