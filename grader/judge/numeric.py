@@ -219,11 +219,16 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
     if expr.is_Add:
 
         def add(values, scale):
-            terms = [f(values, scale) for f in args]
-            largest = max(abs(term) for term in terms)
+            total, largest = 0, 0.0
+            for f in args:
+                term = f(values, scale)
+                total += term
+                size = abs(term)
+                if size > largest:
+                    largest = size
             if largest > scale[0]:
                 scale[0] = float(largest)
-            return sum(terms)
+            return total
 
         return add
     if expr.is_Mul:

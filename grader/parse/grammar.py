@@ -621,8 +621,8 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
     ``d/dt``, ``\\frac{d}{dt}``, ``dθ/dt``, ``d²x/dt²``, ``\\frac{d\\theta}{dt}``, ``\\frac{d^2 x}{dt^2}``;
     not where the problem itself defines d or dt as symbols.
     """
-    if {"d", "dt"} & set(context.known):
-        return tokens
+    if {"d", "dt"} & set(context.known) or not any(_is_raw(token, "dt") or _is_raw(token, "t") for token in tokens):
+        return tokens  # no dt (nor d t) anywhere: nothing to rewrite
     out: list[Token] = []
     i = 0
     while i < len(tokens):
