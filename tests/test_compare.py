@@ -9,6 +9,8 @@ from __future__ import annotations
 import dataclasses
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare
 
@@ -235,3 +237,28 @@ def test_nothing_a_student_types_makes_compare_raise(kind, submitted):
     verdict = compare(expected, submitted, kind=kind, **PENDULUM)
     assert isinstance(verdict, Verdict)
     assert verdict.status != "equivalent"
+
+
+def test_an_equation_that_holds_for_every_motion_is_named():
+    verdict = compare(EOM_DOUBLE, f"{EOM_DOUBLE_1}; theta1 = theta1", kind="equations", **DOUBLE)
+    assert verdict.feedback == ("Equation 2 holds for every motion, so it says nothing about this one.",)
+
+
+def test_an_expression_for_a_one_coordinate_system_is_told_an_equation_is_asked():
+    verdict = compare(EOM_PENDULUM, "theta", kind="equations", **PENDULUM)
+    assert verdict.diagnosis == "expected_equation"
+
+
+_PIECES = ["theta", "thetadot", "θ̈", "m", "g", "l", "sin", "(", ")", "+", "-", "*", "/", "^", "2", "1/2", "=", ";",
+           "\\frac{", "}{", "}", "\\dot\\theta", "x", "d/dt", "[", "]", ",", "9^9", " "]  # fmt: skip
+
+
+@settings(max_examples=150, deadline=None)
+@given(text=st.lists(st.sampled_from(_PIECES), max_size=14).map("".join))
+@pytest.mark.parametrize(
+    ("expected", "kind"),
+    [(L_PENDULUM, "lagrangian"), (EOM_PENDULUM, "equation"), (EOM_PENDULUM, "equations"), ("sqrt(g/l)", "expression")],
+)
+def test_no_answer_glued_from_answer_pieces_makes_compare_raise(expected, kind, text):
+    # Found this way: a one-coordinate system answered with a bare expression raised KeyError.
+    assert isinstance(compare(expected, text, kind=kind, **PENDULUM), Verdict)

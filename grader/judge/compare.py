@@ -185,7 +185,7 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
             {"names": _listing(undefined), "defined": expected.setting.describe(defined)}, method="symbols",
         )  # fmt: skip
     wanted, given = spec.shape, answer.kind
-    if wanted == "equation" and given == "expression":
+    if wanted in ("equation", "equations") and given == "expression":
         return Outcome("not_equivalent", 0.0, "expected_equation", method="shape")
     if wanted == "equation" and given == "equations":
         return Outcome("not_equivalent", 0.0, "expected_one_equation", {"count": len(answer.value)}, method="shape")

@@ -410,9 +410,7 @@ def _system_outcome(expected: Expected, states: list[_State], given: int) -> Out
     if given < n:
         return Outcome("not_equivalent", 0.0, "missing_equation", {"coords": _or(unspanned, describe)}, method)
     if any(trivial):
-        return Outcome(
-            "not_equivalent", 0.0, "trivial_equation", {"text": f"equation {trivial.index(True) + 1}"}, method
-        )
+        return Outcome("not_equivalent", 0.0, "trivial_equation", {"index": trivial.index(True) + 1}, method)
     if all(right):
         if all(state.independent for state in states):
             return Outcome("equivalent", 1.0, "equivalent", method=method)
