@@ -81,7 +81,7 @@ def _parser() -> argparse.ArgumentParser:
     judge.set_defaults(run=_run_compare)
 
     problems = commands.add_parser("problems", help="list the problem bank, or show a problem")
-    problems.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    _add_bank_option(problems)
     which = problems.add_subparsers(dest="action", required=True, metavar="ACTION")
     which.add_parser("list", help="id, title, seed items and points of every problem").set_defaults(run=_run_list)
     show = which.add_parser("show", help="a problem's prompt and parts")
@@ -102,14 +102,14 @@ def _parser() -> argparse.ArgumentParser:
     grade.add_argument("--only", metavar="STUDENT", help="regrade one student, keeping everyone else's results")
     grade.add_argument("--overrides", type=Path, help="CSV of a person's scores: student, part, points, comment")
     grade.add_argument("--reveal", action="store_true", help="show reference answers in the students' reports")
-    grade.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    _add_bank_option(grade)
     grade.set_defaults(run=_run_grade)
 
     export = commands.add_parser("export", help="write an LMS import of graded results")
     export.add_argument("out", type=Path, help="the folder grader grade wrote")
     export.add_argument("--to", choices=EXPORTS, required=True)
     export.add_argument("--assignment", required=True, help="the assignment id or file")
-    export.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    _add_bank_option(export)
     export.set_defaults(run=_run_export)
 
     checker = commands.add_parser(
@@ -120,7 +120,7 @@ def _parser() -> argparse.ArgumentParser:
     checker.add_argument("--answers", type=Path, help="a YAML mapping of problem.part to answer")
     checker.add_argument("--assignment", help="with --answers: list the assignment's parts left unanswered")
     checker.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
-    checker.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    _add_bank_option(checker)
     checker.set_defaults(run=_run_check)
 
     serve = commands.add_parser("serve", help="a local web page where students check their answers")
@@ -129,7 +129,7 @@ def _parser() -> argparse.ArgumentParser:
     serve.add_argument("--port", type=int, default=8000, help="the port (default: %(default)s; 0 picks a free one)")
     serve.add_argument("--log", type=Path, default=Path("attempts.jsonl"), help="attempts log (default: %(default)s)")
     serve.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
-    serve.add_argument("--bank", type=Path, default=_default_bank(), help="the bank's folder (default: %(default)s)")
+    _add_bank_option(serve)
     serve.set_defaults(run=_run_serve)
     return parser
 
@@ -276,8 +276,10 @@ def _run_serve(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _default_bank() -> Path:
-    return default_bank_path()
+def _add_bank_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--bank", type=Path, default=default_bank_path(), help="the bank's folder (default: %(default)s)"
+    )
 
 
 def _load(bank: Path):
@@ -322,7 +324,7 @@ def _run_show(args: argparse.Namespace) -> int:
 
 
 def _run_validate(args: argparse.Namespace) -> int:
-    paths = args.paths or [_default_bank()]
+    paths = args.paths or [default_bank_path()]
     problems, failures = validate_bank(paths)
     for failure in failures:
         print(failure)

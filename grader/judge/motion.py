@@ -63,7 +63,6 @@ class _Rows:
             return result
 
         self.scale = 0.0
-        self.precise = precise
         n = len(positions)
         zero = [0] * n
         self.rows, self.linear = [], Closeness.EQUAL
@@ -74,9 +73,6 @@ class _Rows:
             predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
             self.linear = _worst(self.linear, closeness(value(f, probe), predicted, self.scale, precise=precise))
             self.rows.append([*c, b])
-
-    def close(self, a, b) -> Closeness:
-        return closeness(a, b, self.scale, precise=self.precise)
 
 
 def _worst(a: Closeness, b: Closeness) -> Closeness:
