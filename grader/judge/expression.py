@@ -15,7 +15,6 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import sympy
-from sympy.core.function import AppliedUndef
 
 from grader.judge.deadline import Deadline
 from grader.judge.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes
@@ -33,8 +32,6 @@ from grader.judge.sampling import (
 )
 from grader.parse import ParsedAnswer
 
-_ALIASED = (sympy.Derivative, AppliedUndef)  # coordinates as parsed: not constants
-
 __all__ = ["check_expression", "diagnose_difference", "same_values", "term_outcome", "varying_part"]
 
 
@@ -44,12 +41,11 @@ def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "val
     ``key`` names ``e`` among the expressions derived from the expected answer, for the cache.
     """
     points = expected.points(POINTS, group=GROUP)
-    if not e.free_symbols and not s.free_symbols and not s.atoms(*_ALIASED):
-        # A constant: floats cannot tell 99999998/99999999 from 0.99999999; 40 digits can.
-        points = points[:1]
-        pairs = evaluate_pairs(expected.compiled(key, e), expected.compile(s), points, deadline, precise=True)
-        return (pairs[0].closeness() is Closeness.EQUAL if pairs else None), pairs
     expected_c, submitted_c = expected.compiled(key, e), expected.compile(s)
+    if expected_c.constant and submitted_c.constant:
+        # A constant: floats cannot tell 99999998/99999999 from 0.99999999; 40 digits can.
+        pairs = evaluate_pairs(expected_c, submitted_c, points[:1], deadline, precise=True)
+        return (pairs[0].closeness() is Closeness.EQUAL if pairs else None), pairs
     pairs = evaluate_pairs(expected_c, submitted_c, points, deadline)
     for salt, count in ((3, 4 * POINTS), (4, 20 * POINTS)):
         if all_equal(pairs) is not None:

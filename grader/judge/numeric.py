@@ -26,6 +26,7 @@ import math
 import random
 from collections.abc import Callable, Mapping, Sequence
 from fractions import Fraction
+from functools import cached_property
 
 import mpmath
 import sympy
@@ -166,6 +167,11 @@ class Compiled:
         scale = [0.0]
         value = self._float(values, scale)
         return value, max(scale[0], abs(value))
+
+    @cached_property
+    def constant(self) -> bool:
+        """Whether the expression depends on no variable (a reference's is asked on every comparison)."""
+        return not self.expr.free_symbols and not self.expr.atoms(*_ALIASABLE)
 
     @property
     def rational(self) -> bool:
