@@ -16,6 +16,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
 
+import numpy as np
 import sympy
 
 from grader.errors import ReferenceAnswerError
@@ -78,14 +79,17 @@ class Expected:
         """A submitted expression (as parsed, or in plain symbols), compiled over :attr:`variables`."""
         return Compiled(expr, self.variables, aliases=self.setting.aliases)
 
-    def points(self, count: int, *, salt: int = 0, group: int = 1) -> list[list[complex]]:
-        """Seeded sample points over :attr:`variables`, the same for every submission.
+    def points(self, count: int, *, salt: int = 0, group: int = 1) -> np.ndarray:
+        """Seeded sample points over :attr:`variables`, the same for every submission: an array
+        of ``count`` rows, one value per variable (``.tolist()`` for one point as Python numbers).
 
         Runs of ``group`` points share the parameters' values (see :meth:`Setting.points`).
         """
         cache_key = ("points", count, salt, group)
         if cache_key not in self.cache:
-            self.cache[cache_key] = self.setting.points(self.variables, count, salt=salt, group=group)
+            points = np.array(self.setting.points(self.variables, count, salt=salt, group=group), complex)
+            points.flags.writeable = False
+            self.cache[cache_key] = points
         return self.cache[cache_key]
 
 

@@ -14,6 +14,8 @@ the part's ``factor_credit``.
 
 from __future__ import annotations
 
+import math
+
 import sympy
 
 from grader.judge.deadline import Deadline
@@ -21,7 +23,7 @@ from grader.judge.diagnose import taylor, term_changes
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import same_values, term_outcome, varying_part
 from grader.judge.numeric import Closeness, closeness
-from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED, constant_difference, nice_number
+from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, constant_difference, nice_number
 from grader.judge.setting import Setting
 from grader.parse import TIME, ParsedAnswer
 from grader.parse.readback import to_text
@@ -97,23 +99,28 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
     theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
     ratios: dict[int, complex] = {}
     checked = 0
-    for number, point in enumerate(expected.points(POINTS, group=GROUP)):
-        deadline.check()
-        try:
-            values = [(f(point), g(point)) for f, g in zip(mine, theirs, strict=True)]
-        except UNDEFINED:
-            continue
-        scale = max(max(a[1], b[1]) for a, b in values)
+    deadline.check()
+    points = expected.points(POINTS, group=GROUP)
+    evaluated = [(f.many(points), g.many(points)) for f, g in zip(mine, theirs, strict=True)]
+    columns = [
+        list(zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True))
+        for (a, scale_a), (b, scale_b) in evaluated
+    ]
+    for number in range(len(points)):
+        values = [column[number] for column in columns]  # per coordinate: (mine, its scale, theirs, its scale)
+        if not all(math.isfinite(scale_a + scale_b) for _, scale_a, _, scale_b in values):
+            continue  # undefined here
+        scale = max(max(scale_a, scale_b) for _, scale_a, _, scale_b in values)
         group = number // GROUP
         if group not in ratios:
-            (a, _), (b, _) = max(values, key=lambda pair: abs(pair[0][0]))
+            a, _, b, _ = max(values, key=lambda value: abs(value[0]))
             if closeness(a, 0, scale) is Closeness.EQUAL:
                 continue
             if closeness(b, 0, scale) is Closeness.EQUAL:
                 return None, False
             ratios[group] = b / a
         ratio = ratios[group]
-        for (a, _), (b, _) in values:
+        for a, _, b, _ in values:
             if closeness(ratio * a, b, scale * max(1.0, abs(ratio))) is not Closeness.EQUAL:
                 return None, False
         checked += 1

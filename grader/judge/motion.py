@@ -22,17 +22,19 @@ whatever the state.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
 from grader.judge.diagnose import taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
-from grader.judge.numeric import Closeness, Compiled, closeness
-from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, UNDEFINED
+from grader.judge.numeric import UNDEFINED, Closeness, Compiled, closeness
+from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
 
@@ -51,28 +53,30 @@ def _equations(value) -> tuple:
 
 
 class _Rows:
-    """Coefficient rows (c₁…cₙ, b) of equations at one state, and whether they are linear in q̈."""
+    """Coefficient rows (c₁…cₙ, b) of equations at one state, and whether they are linear in q̈.
 
-    def __init__(self, compiled: Sequence[Compiled], point, positions: Sequence[int], precise: bool):
-        def value(f, accelerations):
-            values = list(point)
-            for position, acceleration in zip(positions, accelerations, strict=True):
-                values[position] = acceleration
-            result, scale = f.precise(values) if precise else f(values)
-            self.scale = max(self.scale, scale)
-            return result
+    Built from each equation's values at the acceleration settings of :func:`_settings`
+    (q̈ = 0, each unit q̈ₖ, the probe) and the largest scale among them.
+    """
 
-        self.scale = 0.0
-        n = len(positions)
-        zero = [0] * n
+    def __init__(self, samples: Sequence[tuple[Sequence, float]], precise: bool):
+        self.scale = max((scale for _, scale in samples), default=0.0)
         self.rows, self.linear = [], Closeness.EQUAL
-        for f in compiled:
-            b = value(f, zero)
-            c = [value(f, [1 if k == j else 0 for k in range(n)]) - b for j in range(n)]
-            probe = _PROBE[:n]
-            predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
-            self.linear = _worst(self.linear, closeness(value(f, probe), predicted, self.scale, precise=precise))
+        for values in (values for values, _ in samples):
+            b, *units, probed = values
+            c = [unit - b for unit in units]
+            predicted = b + sum(ck * pk for ck, pk in zip(c, _probe(len(c)), strict=True))
+            self.linear = _worst(self.linear, closeness(probed, predicted, self.scale, precise=precise))
             self.rows.append([*c, b])
+
+
+def _probe(n: int) -> list[float]:
+    return [_PROBE[k % len(_PROBE)] * (1 + k // len(_PROBE)) for k in range(n)]
+
+
+def _settings(n: int) -> list[list[float]]:
+    """The accelerations each equation is evaluated at: zero, each unit vector, the probe."""
+    return [[0.0] * n, *([float(k == j) for k in range(n)] for j in range(n)), _probe(n)]
 
 
 def _worst(a: Closeness, b: Closeness) -> Closeness:
@@ -92,15 +96,69 @@ def _accelerations_in(expr, expected: Expected) -> list[str]:
     return [q for q in setting.coords if setting.acceleration(q) in present or setting.node(q, 2) in present]
 
 
-def _at_each_state(expected: Expected, deadline: Deadline, judge) -> list[Closeness]:
-    """``judge(point, precise) -> Closeness`` at each sample state; unsure states are redone at 40 digits."""
+def _accelerated_states(expected: Expected) -> np.ndarray:
+    """Every sample state at each acceleration setting, one row per (state, setting), state-major."""
+    if "accelerated states" not in expected.cache:
+        positions = _positions(expected)
+        settings = np.array(_settings(len(positions)), complex)
+        points = expected.points(POINTS, group=GROUP)
+        batch = np.repeat(points, len(settings), axis=0)
+        batch[:, positions] = np.tile(settings, (len(points), 1))
+        batch.flags.writeable = False
+        expected.cache["accelerated states"] = batch
+    return expected.cache["accelerated states"]
+
+
+def _float_rows(expected: Expected, system: Sequence[Compiled]) -> list[_Rows | None]:
+    """The rows of a system at each sample state, in floats; None where it is undefined."""
+    batch = _accelerated_states(expected)
+    width = len(_positions(expected)) + 2
+    evaluated = []
+    for f in system:
+        values, scales = f.many(batch)
+        evaluated.append((values.reshape(-1, width).tolist(), scales.reshape(-1, width).max(axis=1).tolist()))
+    rows = []
+    for number in range(len(batch) // width):
+        samples = [(values[number], scales[number]) for values, scales in evaluated]
+        defined = all(math.isfinite(scale) for _, scale in samples)
+        rows.append(_Rows(samples, precise=False) if defined else None)
+    return rows
+
+
+def _precise_rows(expected: Expected, system: Sequence[Compiled], point: list) -> _Rows:
+    """The rows of a system at one state, at 40 digits; raises where it is undefined."""
+    positions = _positions(expected)
+    samples = []
+    for f in system:
+        values, scale = [], 0.0
+        for accelerations in _settings(len(positions)):
+            moved = list(point)
+            for position, acceleration in zip(positions, accelerations, strict=True):
+                moved[position] = complex(acceleration)
+            value, size = f.precise(moved)
+            values.append(value)
+            scale = max(scale, size)
+        samples.append((values, scale))
+    return _Rows(samples, precise=True)
+
+
+def _at_each_state(expected: Expected, systems: Sequence[Sequence[Compiled]], deadline: Deadline, judge, unsure):
+    """``judge(rows of each system, precise)`` at each sample state where every system is defined.
+
+    Where ``unsure(result)``, the state is judged again on rows evaluated at 40 digits;
+    results that are None (the state says nothing) are dropped.
+    """
+    floats = [_float_rows(expected, system) for system in systems]
     results = []
-    for point in expected.points(POINTS, group=GROUP):
+    for number, point in enumerate(expected.points(POINTS, group=GROUP)):
         deadline.check()
+        rows = [per_state[number] for per_state in floats]
+        if None in rows:
+            continue
         try:
-            result = judge(point, False)
-            if result is Closeness.UNSURE:
-                result = judge(point, True)
+            result = judge(rows, False)
+            if unsure(result):
+                result = judge([_precise_rows(expected, system, point.tolist()) for system in systems], True)
         except UNDEFINED:
             continue
         if result is not None:
@@ -129,23 +187,26 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         return Outcome("not_equivalent", 0.0, "not_equation_of_motion", {"accelerations": names}, "accelerations")
     expected_f = expected.compiled("equation", f)
     submitted_g = expected.compile(g)
-    positions = _positions(expected)
 
-    def proportional(point, precise):
-        mine = _Rows([expected_f], point, positions, precise)
-        theirs = _Rows([submitted_g], point, positions, precise)
+    def proportional(rows, precise):
+        mine, theirs = rows
         if mine.linear is not Closeness.EQUAL:
             return None  # the reference itself is not linear here: no information
         if theirs.linear is not Closeness.EQUAL:
             return theirs.linear
         return _multiple(mine.rows[0], theirs.rows[0], max(mine.scale, theirs.scale), precise)
 
-    same = _decided(_at_each_state(expected, deadline, proportional))
+    results = _at_each_state(expected, ([expected_f], [submitted_g]), deadline, proportional, _is_unsure)
+    same = _decided(results)
     if same:
         return Outcome("equivalent", 1.0, "equivalent", method="accelerations")
     if same is None:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
+
+
+def _is_unsure(result) -> bool:
+    return result is Closeness.UNSURE
 
 
 def _multiple(expected_row, submitted_row, scale: float, precise: bool) -> Closeness:
@@ -196,14 +257,13 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     group = _STATES if involves_state else _GROUPS * _STATES
     expected_f = expected.compiled("relation", f)
     submitted_g = expected.compile(g)
+    deadline.check()
+    points = expected.points(_GROUPS * _STATES, salt=1, group=_STATES)
     results = []
     ratios: dict[int, complex] = {}
-    for number, point in enumerate(expected.points(_GROUPS * _STATES, salt=1, group=_STATES)):
-        deadline.check()
-        try:
-            (a, scale_a), (b, scale_b) = expected_f(point), submitted_g(point)
-        except UNDEFINED:
-            continue
+    for number, (a, scale_a, b, scale_b) in enumerate(_side_by_side(expected_f, submitted_g, points)):
+        if not math.isfinite(scale_a + scale_b):
+            continue  # undefined here
         scale = max(scale_a, scale_b)
         if closeness(a, 0, scale) is Closeness.EQUAL:
             results.append(closeness(b, 0, scale))  # on the expected relation's zero set
@@ -223,6 +283,12 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="ratio")
 
 
+def _side_by_side(f: Compiled, g: Compiled, points: np.ndarray):
+    """(f, its scale, g, its scale) at each point, as Python numbers; the scales are NaN where undefined."""
+    (a, scale_a), (b, scale_b) = f.many(points), g.many(points)
+    return zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True)
+
+
 _SCAN = {"positive": (0.01, 10.0), "negative": (-10.0, -0.01)}  # where roots are looked for
 
 
@@ -238,7 +304,7 @@ def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: 
     low, high = _SCAN.get(expected.setting.domain(symbol), (-10.0, 10.0))
     grid = [low + (high - low) * i / 80 for i in range(81)]
     found = 0
-    for point in expected.points(4, salt=2):
+    for point in expected.points(4, salt=2).tolist():
         for one, other in ((f, g), (g, f)):
             for root in _real_roots(one, point, position, grid, deadline):
                 try:
@@ -279,7 +345,13 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
         sample = at(x)
         return sample is not None and closeness(sample[0], 0, max(sample[1], 1.0)) is Closeness.EQUAL
 
-    samples = [(x, at(x)) for x in grid]
+    batch = np.array([point] * len(grid), complex)
+    batch[:, position] = grid
+    values, scales = function.many(batch)
+    samples = [
+        (x, (value.real, scale) if math.isfinite(scale) and abs(value.imag) <= 1e-9 * max(1.0, abs(value)) else None)
+        for x, value, scale in zip(grid, values.tolist(), scales.tolist(), strict=True)
+    ]
     roots: list[float] = []
     for (x0, s0), (x1, s1), (x2, s2) in zip(samples, samples[1:], samples[2:], strict=False):
         deadline.check()
@@ -343,19 +415,11 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
 
 def _states(expected: Expected, expected_fs, submitted_gs, deadline: Deadline) -> list[_State]:
     """What each sample state says of the submitted system; unsure states are redone at 40 digits."""
-    positions = _positions(expected)
-    states = []
-    for point in expected.points(POINTS, group=GROUP):
-        deadline.check()
-        try:
-            state = _system_state(expected_fs, submitted_gs, point, positions, precise=False)
-            if state is not None and state.unsure:
-                state = _system_state(expected_fs, submitted_gs, point, positions, precise=True)
-        except UNDEFINED:
-            continue
-        if state is not None:
-            states.append(state)
-    return states
+    return _at_each_state(expected, (expected_fs, submitted_gs), deadline, _system_state, _state_unsure)
+
+
+def _state_unsure(state: _State | None) -> bool:
+    return state is not None and state.unsure
 
 
 def _is_small_angle_system(expected: Expected, submitted_gs, deadline: Deadline) -> bool:
@@ -373,13 +437,12 @@ def _is_small_angle_system(expected: Expected, submitted_gs, deadline: Deadline)
     return len(states) >= MIN_DEFINED and _system_outcome(expected, states, len(submitted_gs)).key == "equivalent"
 
 
-def _system_state(expected_fs, submitted_gs, point, positions, *, precise: bool) -> _State | None:
-    n = len(positions)
-    reference = _Rows(expected_fs, point, positions, precise)
+def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
+    reference, submitted = rows
+    n = len(reference.rows[0]) - 1
     accelerations = _solve([row[:n] for row in reference.rows], [-row[n] for row in reference.rows])
     if reference.linear is not Closeness.EQUAL or accelerations is None:
         return None  # a degenerate state of the reference: it says nothing
-    submitted = _Rows(submitted_gs, point, positions, precise)
     scale = max(reference.scale, submitted.scale)
     verdicts, trivial = [], []
     for row in submitted.rows:

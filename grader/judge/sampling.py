@@ -19,17 +19,17 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 import mpmath
+import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.numeric import Closeness, Compiled, closeness
+from grader.judge.numeric import UNDEFINED, Closeness, Compiled, closeness
 
 __all__ = ["POINTS", "Pair", "all_equal", "constant_difference", "constant_ratio", "evaluate_pairs", "nice_number"]
 
 POINTS = 10  # sample points per comparison
 GROUP = 5  # points sharing their parameter values: two draws of the parameters, five states each
 MIN_DEFINED = 6  # fewer defined points than this cannot decide
-UNDEFINED = (ArithmeticError, ValueError, OverflowError, TypeError)
 
 
 @dataclass(frozen=True)
@@ -49,23 +49,21 @@ class Pair:
 def evaluate_pairs(
     expected: Compiled,
     submitted: Compiled,
-    points: Sequence[Sequence[complex]],
+    points: np.ndarray,
     deadline: Deadline,
     *,
     precise: bool = False,
 ) -> list[Pair]:
     """Both expressions at each point where both are defined; unsure points are redone at 40 digits
     (all points, with ``precise``)."""
+    deadline.check()
     pairs = []
     exact = expected.rational and submitted.rational
-    for number, point in enumerate(points):
-        deadline.check()
-        try:
-            a, scale_a = expected(point)
-            b, scale_b = submitted(point)
-        except UNDEFINED:
-            continue
-        if not (_finite(a) and _finite(b)):
+    values_a, scales_a = expected.many(points)
+    values_b, scales_b = submitted.many(points)
+    rows = zip(values_a.tolist(), scales_a.tolist(), values_b.tolist(), scales_b.tolist(), strict=True)
+    for number, (a, scale_a, b, scale_b) in enumerate(rows):
+        if not (cmath.isfinite(a) and cmath.isfinite(b)):
             continue
         if abs(a.imag) > 1e-12 * max(1.0, abs(a)):
             # The points are real, so a complex value of the reference means this point is
@@ -74,18 +72,23 @@ def evaluate_pairs(
         pair = Pair(a, b, max(scale_a, scale_b), group=number // GROUP)
         if exact and a != b and pair.closeness() is Closeness.EQUAL:
             exact = False  # once per comparison: enough to catch a difference floats cannot see
+            point = points[number].tolist()
             try:
                 (a, scale_a), (b, scale_b) = expected.exact(point), submitted.exact(point)
             except UNDEFINED:
                 continue
             pair = Pair(a, b, max(scale_a, scale_b), precise=True, group=number // GROUP)
         elif precise or pair.closeness() is Closeness.UNSURE:
+            deadline.check()
+            point = points[number].tolist()
             try:
                 a, scale_a = expected.precise(point)
                 b, scale_b = submitted.precise(point)
-                pair = Pair(a, b, max(scale_a, scale_b), precise=True, group=number // GROUP)
             except UNDEFINED:
                 continue
+            if not (_finite(a) and _finite(b)):
+                continue
+            pair = Pair(a, b, max(scale_a, scale_b), precise=True, group=number // GROUP)
         pairs.append(pair)
     return pairs
 
