@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
@@ -89,25 +90,31 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
     k may depend on the parameters (L/m is as good as 2L), so it is found afresh for
     each draw of the parameters; ``named`` says whether it was the same number in all.
     Returns (None, False) when the equations are not proportional.
+
+    The equations are evaluated by forward-mode differentiation (:func:`_dynamics`);
+    where rounding leaves a state unsure, they are derived symbolically and evaluated again.
     """
-    if "euler-lagrange" not in expected.cache:
-        expected.cache["euler-lagrange"] = [
-            expected.compiled(f"euler-lagrange {i}", e)
-            for i, e in enumerate(euler_lagrange(expected.value, expected.setting))
-        ]
-    mine = expected.cache["euler-lagrange"]
-    theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
-    ratios: dict[int, complex] = {}
-    checked = 0
     deadline.check()
-    points = expected.points(POINTS, group=GROUP)
-    evaluated = [(f.many(points), g.many(points)) for f, g in zip(mine, theirs, strict=True)]
-    columns = [
-        list(zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True))
-        for (a, scale_a), (b, scale_b) in evaluated
-    ]
-    for number in range(len(points)):
-        values = [column[number] for column in columns]  # per coordinate: (mine, its scale, theirs, its scale)
+    proportional = _proportional(_dynamics(expected, expected.value, submitted))
+    if proportional is Closeness.UNSURE:
+        deadline.check()
+        proportional = _proportional(_symbolic_dynamics(expected, submitted))
+    if proportional in (None, Closeness.UNSURE):
+        return None, False
+    first, *others = proportional.values()
+    named = all(closeness(first, other, abs(first)) is Closeness.EQUAL for other in others)
+    return first, named
+
+
+def _proportional(columns: list[list[tuple]]):
+    """The ratio in each group of points (a dict), None when the equations are not proportional,
+    or Closeness.UNSURE when floats cannot tell.
+
+    ``columns`` holds, per coordinate and per point, (expected, its scale, submitted, its scale).
+    """
+    ratios: dict[int, complex] = {}
+    checked, unsure = 0, False
+    for number, values in enumerate(zip(*columns, strict=True)):
         if not all(math.isfinite(scale_a + scale_b) for _, scale_a, _, scale_b in values):
             continue  # undefined here
         scale = max(max(scale_a, scale_b) for _, scale_a, _, scale_b in values)
@@ -117,18 +124,86 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
             if closeness(a, 0, scale) is Closeness.EQUAL:
                 continue
             if closeness(b, 0, scale) is Closeness.EQUAL:
-                return None, False
+                return None
             ratios[group] = b / a
         ratio = ratios[group]
         for a, _, b, _ in values:
-            if closeness(ratio * a, b, scale * max(1.0, abs(ratio))) is not Closeness.EQUAL:
-                return None, False
+            same = closeness(ratio * a, b, scale * max(1.0, abs(ratio)))
+            if same is Closeness.DIFFERENT:
+                return None
+            unsure |= same is Closeness.UNSURE
         checked += 1
-    if checked < MIN_DEFINED:
-        return None, False
-    first, *others = ratios.values()
-    named = all(closeness(first, other, abs(first)) is Closeness.EQUAL for other in others)
-    return first, named
+    if unsure:
+        return Closeness.UNSURE
+    return ratios if checked >= MIN_DEFINED else None
+
+
+def _dynamics(expected: Expected, reference, submitted) -> list[list[tuple]]:
+    """Both sets of Euler–Lagrange expressions at the sample states, as :func:`_proportional` reads them.
+
+    Only the momenta ∂L/∂q̇ are derived symbolically. d/dt ∂L/∂q̇ is the momentum's
+    derivative along the motion (q̇, q̈ and 1 for q, q̇ and t) and ∂L/∂q the Lagrangian's
+    along q, both by forward-mode differentiation at all points at once.
+    """
+    setting = expected.setting
+    if "momenta" not in expected.cache:
+        expected.cache["momenta"] = [
+            expected.compiled(f"momentum {i}", sympy.diff(reference, setting.velocity(q)))
+            for i, q in enumerate(setting.coords)
+        ]
+    theirs = [expected.compile(sympy.diff(submitted, setting.velocity(q))) for q in setting.coords]
+    sides = (
+        (expected.compiled("value", reference), expected.cache["momenta"]),
+        (expected.compile(submitted), theirs),
+    )
+    points, along, units = _directions(expected)
+    columns = []
+    for i in range(len(setting.coords)):
+        evaluated = []
+        for lagrangian, momenta in sides:
+            (dp, dp_scale), (dl, dl_scale) = (
+                momenta[i].derivative(points, along),
+                lagrangian.derivative(points, units[i]),
+            )
+            scale = np.maximum(np.maximum(dp_scale, dl_scale), np.maximum(np.abs(dp), np.abs(dl)))
+            evaluated += [(dp - dl).tolist(), scale.tolist()]
+        columns.append(list(zip(*evaluated, strict=True)))
+    return columns
+
+
+def _directions(expected: Expected) -> tuple[np.ndarray, np.ndarray, list[np.ndarray]]:
+    """The sample states, the direction of motion at each (q̇ for q, q̈ for q̇, 1 for t), and the
+    unit direction of each coordinate."""
+    if "directions" not in expected.cache:
+        points = expected.points(POINTS, group=GROUP)
+        setting, index = expected.setting, {symbol: i for i, symbol in enumerate(expected.variables)}
+        along, units = np.zeros_like(points), []
+        along[:, index[TIME]] = 1
+        for q in setting.coords:
+            position, velocity = index[setting.state[(q, 0)]], index[setting.velocity(q)]
+            along[:, position] = points[:, velocity]
+            along[:, velocity] = points[:, index[setting.acceleration(q)]]
+            unit = np.zeros_like(points)
+            unit[:, position] = 1
+            units.append(unit)
+        expected.cache["directions"] = (points, along, units)
+    return expected.cache["directions"]
+
+
+def _symbolic_dynamics(expected: Expected, submitted) -> list[list[tuple]]:
+    """Both sets of Euler–Lagrange expressions derived symbolically, at the sample states."""
+    if "euler-lagrange" not in expected.cache:
+        expected.cache["euler-lagrange"] = [
+            expected.compiled(f"euler-lagrange {i}", e)
+            for i, e in enumerate(euler_lagrange(expected.value, expected.setting))
+        ]
+    theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
+    points = expected.points(POINTS, group=GROUP)
+    columns = []
+    for f, g in zip(expected.cache["euler-lagrange"], theirs, strict=True):
+        (a, scale_a), (b, scale_b) = f.many(points), g.many(points)
+        columns.append(list(zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True)))
+    return columns
 
 
 def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> Outcome:

@@ -179,6 +179,7 @@ class Compiled:
         self.index |= {node: self.index[symbol] for node, symbol in (aliases or {}).items() if symbol in self.index}
         self._float = None  # each evaluator is compiled when first needed
         self._vector = None
+        self._dual = None
         self._precise = None
         self._rational = _is_rational_function(expr)
         self._exact = None  # compiled when first needed: most comparisons never need it
@@ -219,23 +220,38 @@ class Compiled:
     def _many(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         if self._vector is None:
             self._vector = _compile(self.expr, self.index, _VECTOR)
-        count, scale = len(points), [0.0]
-        try:
-            with np.errstate(all="raise", under="ignore"):
-                value = np.broadcast_to(np.asarray(self._vector(np.ascontiguousarray(points.T), scale), complex), count)
-                scales = np.maximum(scale[0], np.abs(value))
-            if np.isfinite(value).all() and np.isfinite(scales).all():
-                return value, scales
-        except (FloatingPointError, *UNDEFINED):
-            pass
-        # Somewhere in the batch a value is undefined: find where, one point at a time.
-        values, scales = np.full(count, complex("nan+nanj")), np.full(count, math.nan)
-        for number, point in enumerate(points.tolist()):
-            try:
-                values[number], scales[number] = self._evaluate(point)
-            except UNDEFINED:
-                continue
-        return values, scales
+
+        def evaluate(rows):
+            scale = [0.0]
+            value = np.broadcast_to(np.asarray(self._vector(rows.T, scale), complex), len(rows))
+            return value, np.maximum(scale[0], np.abs(value))
+
+        return _row_by_row_if_undefined(evaluate, np.ascontiguousarray(points))
+
+    def derivative(self, points: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The derivative at every row of ``points`` along the same row of ``directions``, and its
+        scale (the largest term summed into it); NaN where undefined.
+
+        Forward-mode differentiation: one pass over dual numbers, exact but for rounding.
+        """
+        if self._memo is None:
+            return self._derivative(points, directions)
+        key = ("derivative", points.shape, points.tobytes(), directions.tobytes())
+        if key not in self._memo:
+            self._memo[key] = self._derivative(points, directions)
+        return self._memo[key]
+
+    def _derivative(self, points: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        if self._dual is None:
+            self._dual = _compile_dual(self.expr, self.index)
+
+        def evaluate(rows, along):
+            scale = [0.0]
+            _, slope = self._dual(rows.T, along.T, scale)
+            slope = np.broadcast_to(np.asarray(slope, complex), len(rows))
+            return slope, np.maximum(scale[0], np.abs(slope))
+
+        return _row_by_row_if_undefined(evaluate, np.ascontiguousarray(points), np.ascontiguousarray(directions))
 
     @cached_property
     def constant(self) -> bool:
@@ -346,6 +362,124 @@ def _vector_node(expr, args):
         return add
     base, exponent = args
     return lambda values, scale: np.power(_on_branch(base(values, scale)), exponent(values, scale))
+
+
+def _row_by_row_if_undefined(evaluate, *arrays: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``evaluate(*arrays) -> (values, scales)`` on all rows at once.
+
+    When a value somewhere divides by zero, overflows or is not finite, each row is
+    evaluated alone and the rows where that happens are NaN.
+    """
+    try:
+        with np.errstate(all="raise", under="ignore"):
+            values, scales = evaluate(*arrays)
+        if np.isfinite(values).all() and np.isfinite(scales).all():
+            return values, scales
+    except (FloatingPointError, *UNDEFINED):
+        pass
+    count = len(arrays[0])
+    values, scales = np.full(count, complex("nan+nanj")), np.full(count, math.nan)
+    for row in range(count):
+        try:
+            with np.errstate(all="raise", under="ignore"):
+                value, scale = evaluate(*(array[row : row + 1] for array in arrays))
+        except (FloatingPointError, *UNDEFINED):
+            continue
+        if np.isfinite(value).all() and np.isfinite(scale).all():
+            values[row], scales[row] = value[0], scale[0]
+    return values, scales
+
+
+# Derivatives of the functions the parser accepts, for forward-mode differentiation.
+_SLOPES = {
+    "sin": np.cos, "cos": lambda z: -np.sin(z), "tan": lambda z: 1 / np.cos(z) ** 2,
+    "cot": lambda z: -1 / np.sin(z) ** 2, "sec": lambda z: np.sin(z) / np.cos(z) ** 2,
+    "csc": lambda z: -np.cos(z) / np.sin(z) ** 2,
+    "asin": lambda z: 1 / np.sqrt(_on_branch(1 - z * z)), "acos": lambda z: -1 / np.sqrt(_on_branch(1 - z * z)),
+    "atan": lambda z: 1 / (1 + z * z), "sinh": np.cosh, "cosh": np.sinh, "tanh": lambda z: 1 / np.cosh(z) ** 2,
+    "exp": np.exp, "log": lambda z: 1 / z, "sign": lambda z: 0 * z,
+}  # fmt: skip
+
+
+def _compile_dual(expr, index: Mapping[sympy.Symbol, int]):
+    """Closures ``f(values, directions, scale) -> (value, derivative)`` over numpy arrays
+    (one row per variable); ``scale[0]`` collects the largest term summed into a derivative."""
+    if expr.is_Symbol or isinstance(expr, _ALIASABLE):
+        if expr not in index:
+            raise NotCompilable(f"unknown symbol {expr}")
+        position = index[expr]
+        return lambda values, directions, scale: (values[position], directions[position])
+    if not expr.args or expr.is_Rational:
+        value = _compile(expr, index, _VECTOR)
+        return lambda values, directions, scale: (value(values, scale), 0j)
+    args = [_compile_dual(arg, index) for arg in expr.args]
+    if expr.is_Add:
+
+        def add(values, directions, scale):
+            total, slope = 0, 0
+            for f in args:
+                value, derivative = f(values, directions, scale)
+                total, slope = total + value, slope + derivative
+                scale[0] = np.maximum(scale[0], np.abs(derivative))
+            return total, slope
+
+        return add
+    if expr.is_Mul:
+
+        def mul(values, directions, scale):
+            product, slope = 1, 0
+            for f in args:
+                value, derivative = f(values, directions, scale)
+                earlier, this = slope * value, product * derivative  # the product rule's two terms
+                scale[0] = np.maximum(scale[0], np.maximum(np.abs(earlier), np.abs(this)))
+                product, slope = product * value, earlier + this
+            return product, slope
+
+        return mul
+    if expr.is_Pow:
+        (base, exponent), constant_exponent = args, not (expr.exp.free_symbols or expr.exp.atoms(*_ALIASABLE))
+
+        if expr.exp.is_Integer:
+            n = int(expr.exp)
+
+            def integer_power(values, directions, scale):
+                b, db = base(values, directions, scale)
+                return b**n, n * b ** (n - 1) * db
+
+            return integer_power
+
+        def power(values, directions, scale):
+            (b, db), (e, de) = base(values, directions, scale), exponent(values, directions, scale)
+            b = _on_branch(b)
+            value = np.power(b, e)
+            if constant_exponent:
+                return value, e * np.power(b, e - 1) * db
+            return value, value * (de * np.log(b) + e * db / b)
+
+        return power
+    name = type(expr).__name__
+    if name == "Abs":
+        (argument,) = args
+
+        def absolute(values, directions, scale):
+            z, dz = argument(values, directions, scale)
+            size = np.abs(z)
+            return size + 0j, (z.real * dz.real + z.imag * dz.imag) / size + 0j
+
+        return absolute
+    if name in ("re", "im"):
+        (argument,) = args
+        part = (lambda z: z.real + 0j) if name == "re" else (lambda z: z.imag + 0j)
+        return lambda values, directions, scale: tuple(map(part, argument(values, directions, scale)))
+    if name in _SLOPES and len(args) == 1:
+        function, slope, (argument,) = _VECTOR.functions[name], _SLOPES[name], args
+
+        def apply(values, directions, scale):
+            z, dz = argument(values, directions, scale)
+            return function(z), slope(z) * dz
+
+        return apply
+    raise NotCompilable(f"cannot differentiate {name}")
 
 
 def sample_points(

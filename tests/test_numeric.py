@@ -1,0 +1,105 @@
+"""The numeric evaluator: many points at once, derivatives, and undefined points.
+
+Each test compares two independent routes to the same number: the numpy batch
+with the scalar closures, forward-mode derivatives with sympy's ``diff``, and the
+Lagrangian's numeric equations of motion with the symbolic Euler–Lagrange ones.
+"""
+
+from __future__ import annotations
+
+import cmath
+
+import numpy as np
+import pytest
+import sympy
+
+from grader.judge.expected import prepare
+from grader.judge.lagrangian import _dynamics, _symbolic_dynamics
+from grader.judge.numeric import UNDEFINED, Compiled, sample_points
+
+x, y, z = sympy.symbols("x y z", real=True)
+VARIABLES = (x, y, z)
+
+EXPRESSIONS = [
+    x**2 * y - 3 * z + sympy.Rational(1, 7),
+    sympy.sin(x) * sympy.cos(y) + sympy.tan(z) - sympy.cot(x * y),
+    sympy.sec(x) + sympy.csc(y + 1),
+    sympy.asin(x / 4) + sympy.acos(y / 5) + sympy.atan(z),
+    sympy.sinh(x) * sympy.cosh(y) / (1 + sympy.tanh(z) ** 2),
+    sympy.exp(-x * y) * sympy.log(z**2 + 1),
+    sympy.sqrt(x**2 + y**2 + z**2) ** 3 - x ** sympy.Rational(2, 3),
+    sympy.Abs(x - y) * z + y**z,
+    sympy.pi * x + sympy.E ** (y / 3) + sympy.sqrt(2) * z,
+    1 / (x**2 + 1) ** 4 - (y - z) ** -2,
+    x * sympy.sin(x * sympy.cos(y * sympy.exp(z))),
+]
+
+
+def _points(count: int = 12, seed: int = 7) -> np.ndarray:
+    domains = dict.fromkeys(VARIABLES, "real")
+    return np.array(sample_points(VARIABLES, domains, count, seed), complex)
+
+
+@pytest.mark.parametrize("expr", EXPRESSIONS, ids=str)
+def test_a_batch_agrees_with_point_by_point_evaluation(expr):
+    compiled, points = Compiled(expr, VARIABLES), _points()
+    values, scales = compiled.many(points)
+    for point, value, scale in zip(points.tolist(), values.tolist(), scales.tolist(), strict=True):
+        try:
+            expected, expected_scale = compiled(point)
+        except UNDEFINED:
+            assert cmath.isnan(value)
+            continue
+        assert abs(value - expected) <= 1e-13 * expected_scale
+        assert scale == pytest.approx(expected_scale, rel=1e-12)
+
+
+def test_only_the_undefined_point_of_a_batch_is_undefined():
+    points = _points(6)
+    singular = points.copy()
+    singular[2, 0] = singular[2, 1]  # x = y there: 1/(x − y) divides by zero
+    values, scales = Compiled(1 / (x - y) + z, VARIABLES).many(singular)
+    assert [cmath.isnan(value) for value in values.tolist()] == [False, False, True, False, False, False]
+    assert np.isnan(scales[2]) and np.isfinite(np.delete(scales, 2)).all()
+
+
+def test_an_overflow_is_undefined_not_infinite():
+    huge = np.array([[800 + 0j, 1 + 0j, 1 + 0j], [1 + 0j, 1 + 0j, 1 + 0j]])
+    values, _ = Compiled(sympy.exp(x) * y - sympy.exp(x) * z + sympy.exp(x**2), VARIABLES).many(huge)
+    assert cmath.isnan(values[0]) and cmath.isfinite(values[1])
+
+
+@pytest.mark.parametrize("expr", EXPRESSIONS, ids=str)
+def test_forward_mode_derivatives_agree_with_sympy(expr):
+    points = _points()
+    directions = np.array(sample_points(VARIABLES, dict.fromkeys(VARIABLES, "real"), len(points), 99), complex)
+    slopes, scales = Compiled(expr, VARIABLES).derivative(points, directions)
+    gradient = [Compiled(sympy.diff(expr, v), VARIABLES).many(points)[0] for v in VARIABLES]
+    expected = sum(directions[:, i] * gradient[i] for i in range(len(VARIABLES)))
+    defined = np.isfinite(expected) & np.isfinite(slopes)
+    assert defined.sum() >= len(points) // 2
+    assert np.all(np.abs(slopes - expected)[defined] <= 1e-11 * np.maximum(scales[defined], 1.0))
+
+
+LAGRANGIANS = [
+    ("double pendulum", "1/2 (m1+m2) l1^2 theta1'^2 + 1/2 m2 l2^2 theta2'^2"
+     " + m2 l1 l2 theta1' theta2' cos(theta1-theta2) + (m1+m2) g l1 cos(theta1) + m2 g l2 cos(theta2)",
+     ("theta1", "theta2"), ("m1", "m2", "l1", "l2", "g")),
+    ("spherical pendulum", "1/2 m l^2 (theta'^2 + sin(theta)^2 phi'^2) + m g l cos(theta)", ("theta", "phi"),
+     ("m", "l", "g")),
+    ("driven hoop", "1/2 m R^2 (theta'^2 + w^2 sin(theta)^2) + m g R cos(theta) + t x^2", ("theta",),
+     ("m", "R", "g", "w", "x")),
+    ("damped, time-dependent", "exp(k t) (1/2 m x'^2 - 1/2 c x^2) + sqrt(x'^2 + 1)"
+     " + x^4 log(t^2 + 2) / (x'^2 + 3)", ("x",),
+     ("m", "c", "k")),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("name", "lagrangian", "coords", "known"), LAGRANGIANS, ids=[row[0] for row in LAGRANGIANS])
+def test_numeric_equations_of_motion_agree_with_euler_lagrange(name, lagrangian, coords, known):
+    expected = prepare(lagrangian, "lagrangian", coords, known, (), (("factor_credit", 0.5),))
+    numeric = _dynamics(expected, expected.value, expected.value)
+    symbolic = _symbolic_dynamics(expected, expected.value)
+    for by_numbers, by_symbols in zip(numeric, symbolic, strict=True):
+        for (a, scale, _, _), (b, _, _, _) in zip(by_numbers, by_symbols, strict=True):
+            assert abs(a - b) <= 1e-12 * scale, name
