@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import sympy
@@ -69,6 +70,12 @@ class _Rows:
             self.linear = _worst(self.linear, closeness(probed, predicted, self.scale, precise=precise))
             self.rows.append([*c, b])
 
+    @cached_property
+    def accelerations(self) -> list | None:
+        """The accelerations these equations determine, if they do (None when singular)."""
+        n = len(self.rows[0]) - 1 if self.rows else 0
+        return _solve([row[:n] for row in self.rows], [-row[n] for row in self.rows])
+
 
 def _probe(n: int) -> list[float]:
     return [_PROBE[k % len(_PROBE)] * (1 + k // len(_PROBE)) for k in range(n)]
@@ -109,8 +116,15 @@ def _accelerated_states(expected: Expected) -> np.ndarray:
     return expected.cache["accelerated states"]
 
 
-def _float_rows(expected: Expected, system: Sequence[Compiled]) -> list[_Rows | None]:
-    """The rows of a system at each sample state, in floats; None where it is undefined."""
+def _float_rows(expected: Expected, system: Sequence[Compiled], *, reference: bool = False) -> list[_Rows | None]:
+    """The rows of a system at each sample state, in floats; None where it is undefined.
+
+    A ``reference`` system is compiled from the expected answer and kept in its cache (so
+    its identity is stable): its rows are the same for every submission and kept too.
+    """
+    key = ("rows", tuple(id(f) for f in system))
+    if reference and key in expected.cache:
+        return expected.cache[key]
     batch = _accelerated_states(expected)
     width = len(_positions(expected)) + 2
     evaluated = []
@@ -122,6 +136,8 @@ def _float_rows(expected: Expected, system: Sequence[Compiled]) -> list[_Rows | 
         samples = [(values[number], scales[number]) for values, scales in evaluated]
         defined = all(math.isfinite(scale) for _, scale in samples)
         rows.append(_Rows(samples, precise=False) if defined else None)
+    if reference:
+        expected.cache[key] = rows
     return rows
 
 
@@ -145,10 +161,12 @@ def _precise_rows(expected: Expected, system: Sequence[Compiled], point: list) -
 def _at_each_state(expected: Expected, systems: Sequence[Sequence[Compiled]], deadline: Deadline, judge, unsure):
     """``judge(rows of each system, precise)`` at each sample state where every system is defined.
 
+    The first system is the reference, compiled from the expected answer.
+
     Where ``unsure(result)``, the state is judged again on rows evaluated at 40 digits;
     results that are None (the state says nothing) are dropped.
     """
-    floats = [_float_rows(expected, system) for system in systems]
+    floats = [_float_rows(expected, system, reference=number == 0) for number, system in enumerate(systems)]
     results = []
     for number, point in enumerate(expected.points(POINTS, group=GROUP)):
         deadline.check()
@@ -392,11 +410,18 @@ class _State:
     verdicts: list[Closeness]  # per submitted equation: satisfied by the expected accelerations?
     trivial: list[bool]  # per submitted equation: no acceleration in it at this state
     independent: bool  # the submitted equations determine the accelerations
-    spanned: list[bool]  # per coordinate: its expected equation follows from the right submitted ones
+    good: list[list]  # the rows of the submitted equations that are satisfied
+    reference: list[list]  # the rows of the expected equations
 
     @property
     def unsure(self) -> bool:
         return Closeness.UNSURE in self.verdicts
+
+    @cached_property
+    def spanned(self) -> list[bool]:
+        """Per coordinate: whether its expected equation follows from the right submitted ones.
+        Only feedback on a wrong system asks, so it is worked out only then."""
+        return [_in_span(self.good, row) for row in self.reference]
 
 
 def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
@@ -440,7 +465,7 @@ def _is_small_angle_system(expected: Expected, submitted_gs, deadline: Deadline)
 def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
     reference, submitted = rows
     n = len(reference.rows[0]) - 1
-    accelerations = _solve([row[:n] for row in reference.rows], [-row[n] for row in reference.rows])
+    accelerations = reference.accelerations
     if reference.linear is not Closeness.EQUAL or accelerations is None:
         return None  # a degenerate state of the reference: it says nothing
     scale = max(reference.scale, submitted.scale)
@@ -453,8 +478,7 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
         trivial.append(all(closeness(c, 0, scale, precise=precise) is Closeness.EQUAL for c in row[:n]))
     good = [row for row, verdict in zip(submitted.rows, verdicts, strict=True) if verdict is Closeness.EQUAL]
     independent = _solve([row[:n] for row in submitted.rows], [-row[n] for row in submitted.rows]) is not None
-    spanned = [_in_span(good, row) for row in reference.rows]
-    return _State(verdicts, trivial, independent, spanned)
+    return _State(verdicts, trivial, independent, good, reference.rows)
 
 
 def _system_outcome(expected: Expected, states: list[_State], given: int) -> Outcome:
