@@ -2,7 +2,8 @@
 
 Contents:
     the pairs        tests/compare_pairs.py: derived verdicts over eight mechanics systems
-    our timing       median and p99 per verdict once the expected answer is prepared
+    our timing       median and p99 per verdict once the expected answer is prepared, each
+                     submitted answer new to sympy's cache (as a student's answer is)
     baselines        the same pairs judged by ``simplify(a - b) == 0`` and by ``a.equals(b)``, given the answers
                      already parsed; our time is also split into reading and judging
     output           a table of times, ratios and accuracy; wrong verdicts listed
@@ -24,6 +25,7 @@ import time
 from pathlib import Path
 
 import sympy
+from sympy.core.cache import clear_cache
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
@@ -43,21 +45,30 @@ def _setting(system: str) -> dict:
 
 
 def time_ours(pairs) -> tuple[list[float], list[float], list[tuple]]:
-    """Each pair's verdict time, after a first pass has prepared (cached) every expected answer,
-    and the time of reading the submitted answer alone (part of the verdict's time)."""
+    """Each pair's verdict time, and the time of reading its submitted answer alone.
+
+    A first pass prepares (caches) every expected answer, including what feedback on a
+    wrong answer derives from it. sympy's cache is then emptied, so each submitted answer
+    is new to the process, as a student's is: it was seen in the first pass, and without
+    this the timed pass would find its sympy objects already built.
+    """
     for system, kind, expected, submitted, _, _ in pairs:
         compare(expected, submitted, kind=kind, **_setting(system))
-    times, reading, wrong = [], [], []
+    clear_cache()
+    times, wrong = [], []
     for system, kind, expected, submitted, equivalent, note in pairs:
         start = time.perf_counter()
         verdict = compare(expected, submitted, kind=kind, **_setting(system))
         times.append(time.perf_counter() - start)
+        if verdict.equivalent != equivalent or not verdict.feedback:
+            wrong.append((system, kind, expected, submitted, equivalent, verdict.status, note))
+    clear_cache()
+    reading = []
+    for system, _, _, submitted, _, _ in pairs:
         spec = _setting(system)
         start = time.perf_counter()
         parse_answer(submitted, coords=spec["coords"], known=spec["known"])
         reading.append(time.perf_counter() - start)
-        if verdict.equivalent != equivalent:
-            wrong.append((system, kind, expected, submitted, equivalent, verdict.status, note))
     return times, reading, wrong
 
 
@@ -100,8 +111,9 @@ def _baseline_verdict(method: str, a, b) -> bool | None:
 def time_baseline(method: str, pairs) -> tuple[list[float], int, int]:
     """Times, wrong verdicts and pairs with no verdict for one sympy method."""
     times, wrong, undecided = [], 0, 0
-    for system, _, expected, submitted, equivalent, _ in pairs:
-        a, b = _plain_pair(system, expected, submitted)
+    plain = [_plain_pair(system, expected, submitted) for system, _, expected, submitted, _, _ in pairs]
+    clear_cache()  # as for ours: no pair's sympy objects are left from an earlier pass
+    for (a, b), (_, _, _, _, equivalent, _) in zip(plain, pairs, strict=True):
         start = time.perf_counter()
         verdict = _baseline_verdict(method, a, b)
         elapsed = time.perf_counter() - start
