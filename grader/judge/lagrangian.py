@@ -141,52 +141,52 @@ def _proportional(columns: list[list[tuple]]):
 def _dynamics(expected: Expected, reference, submitted) -> list[list[tuple]]:
     """Both sets of Euler–Lagrange expressions at the sample states, as :func:`_proportional` reads them.
 
-    Only the momenta ∂L/∂q̇ are derived symbolically. d/dt ∂L/∂q̇ is the momentum's
-    derivative along the motion (q̇, q̈ and 1 for q, q̇ and t) and ∂L/∂q the Lagrangian's
-    along q, both by forward-mode differentiation at all points at once.
+    No calculus on symbols: d/dt ∂L/∂q̇ is the mixed second derivative of L along q̇ and
+    along the motion (q̇, q̈ and 1 for q, q̇ and t), and ∂L/∂q its derivative along q,
+    all by forward-mode differentiation at every state at once.
     """
-    setting = expected.setting
-    if "momenta" not in expected.cache:
-        expected.cache["momenta"] = [
-            expected.compiled(f"momentum {i}", sympy.diff(reference, setting.velocity(q)))
-            for i, q in enumerate(setting.coords)
-        ]
-    theirs = [expected.compile(sympy.diff(submitted, setting.velocity(q))) for q in setting.coords]
-    sides = (
-        (expected.compiled("value", reference), expected.cache["momenta"]),
-        (expected.compile(submitted), theirs),
-    )
-    points, along, units = _directions(expected)
+    points, first, second = _directions(expected)
+    n, count = len(expected.setting.coords), len(expected.points(POINTS, group=GROUP))
+    sides = []
+    for lagrangian in (expected.compiled("value", reference), expected.compile(submitted)):
+        slope, mixed, scale = lagrangian.derivatives(points, first, second)
+        # rows: for each coordinate, the states with (q̇, motion), then with (q, nothing)
+        for i in range(n):
+            along = slice(i * count, (i + 1) * count)
+            across = slice((n + i) * count, (n + i + 1) * count)
+            value = mixed[along] - slope[across]
+            sides.append((value.tolist(), np.maximum(scale[along], scale[across]).tolist()))
     columns = []
-    for i in range(len(setting.coords)):
-        evaluated = []
-        for lagrangian, momenta in sides:
-            (dp, dp_scale), (dl, dl_scale) = (
-                momenta[i].derivative(points, along),
-                lagrangian.derivative(points, units[i]),
-            )
-            scale = np.maximum(np.maximum(dp_scale, dl_scale), np.maximum(np.abs(dp), np.abs(dl)))
-            evaluated += [(dp - dl).tolist(), scale.tolist()]
-        columns.append(list(zip(*evaluated, strict=True)))
+    for i in range(n):
+        (a, scale_a), (b, scale_b) = sides[i], sides[n + i]
+        columns.append(list(zip(a, scale_a, b, scale_b, strict=True)))
     return columns
 
 
-def _directions(expected: Expected) -> tuple[np.ndarray, np.ndarray, list[np.ndarray]]:
-    """The sample states, the direction of motion at each (q̇ for q, q̈ for q̇, 1 for t), and the
-    unit direction of each coordinate."""
+def _directions(expected: Expected) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The sample states, repeated once per coordinate with the directions that give d/dt ∂L/∂q̇
+    (first q̇, second the motion: q̇ for q, q̈ for q̇, 1 for t), then once more with those that
+    give ∂L/∂q (first q, second none)."""
     if "directions" not in expected.cache:
         points = expected.points(POINTS, group=GROUP)
         setting, index = expected.setting, {symbol: i for i, symbol in enumerate(expected.variables)}
-        along, units = np.zeros_like(points), []
-        along[:, index[TIME]] = 1
+        motion = np.zeros_like(points)
+        motion[:, index[TIME]] = 1
         for q in setting.coords:
             position, velocity = index[setting.state[(q, 0)]], index[setting.velocity(q)]
-            along[:, position] = points[:, velocity]
-            along[:, velocity] = points[:, index[setting.acceleration(q)]]
-            unit = np.zeros_like(points)
-            unit[:, position] = 1
-            units.append(unit)
-        expected.cache["directions"] = (points, along, units)
+            motion[:, position] = points[:, velocity]
+            motion[:, velocity] = points[:, index[setting.acceleration(q)]]
+        firsts, seconds = [], []
+        for symbols, along in (([setting.velocity(q) for q in setting.coords], motion),
+                               ([setting.state[(q, 0)] for q in setting.coords], np.zeros_like(points))):  # fmt: skip
+            for symbol in symbols:
+                unit = np.zeros_like(points)
+                unit[:, index[symbol]] = 1
+                firsts.append(unit)
+                seconds.append(along)
+        n = len(setting.coords)
+        batch = np.concatenate([points] * 2 * n)
+        expected.cache["directions"] = (batch, np.concatenate(firsts), np.concatenate(seconds))
     return expected.cache["directions"]
 
 

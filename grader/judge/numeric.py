@@ -179,7 +179,7 @@ class Compiled:
         self.index |= {node: self.index[symbol] for node, symbol in (aliases or {}).items() if symbol in self.index}
         self._float = None  # each evaluator is compiled when first needed
         self._vector = None
-        self._dual = None
+        self._jet = None
         self._precise = None
         self._rational = _is_rational_function(expr)
         self._exact = None  # compiled when first needed: most comparisons never need it
@@ -228,30 +228,35 @@ class Compiled:
 
         return _row_by_row_if_undefined(evaluate, np.ascontiguousarray(points))
 
-    def derivative(self, points: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The derivative at every row of ``points`` along the same row of ``directions``, and its
-        scale (the largest term summed into it); NaN where undefined.
+    def derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, ...]:
+        """At every row of ``points``: the derivative along the same row of ``first``, the mixed second
+        derivative along ``first`` and ``second``, and the scale of both (the largest term summed
+        into either); NaN where undefined.
 
-        Forward-mode differentiation: one pass over dual numbers, exact but for rounding.
+        Forward-mode differentiation: one pass over hyper-dual numbers a + b ε₁ + c ε₂ + d ε₁ε₂
+        (ε₁² = ε₂² = 0), exact but for rounding.
         """
         if self._memo is None:
-            return self._derivative(points, directions)
-        key = ("derivative", points.shape, points.tobytes(), directions.tobytes())
+            return self._derivatives(points, first, second)
+        key = ("derivatives", points.shape, points.tobytes(), first.tobytes(), second.tobytes())
         if key not in self._memo:
-            self._memo[key] = self._derivative(points, directions)
+            self._memo[key] = self._derivatives(points, first, second)
         return self._memo[key]
 
-    def _derivative(self, points: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        if self._dual is None:
-            self._dual = _compile_dual(self.expr, self.index)
+    def _derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, ...]:
+        if self._jet is None:
+            self._jet = _compile_jet(self.expr, self.index)
 
-        def evaluate(rows, along):
+        def evaluate(rows, one, two):
             scale = [0.0]
-            _, slope = self._dual(rows.T, along.T, scale)
-            slope = np.broadcast_to(np.asarray(slope, complex), len(rows))
-            return slope, np.maximum(scale[0], np.abs(slope))
+            _, slope, _, mixed = self._jet(rows.T, one.T, two.T, scale)
+            slope, mixed = (np.broadcast_to(np.asarray(part, complex), len(rows)) for part in (slope, mixed))
+            size = np.maximum(scale[0], np.maximum(np.abs(slope), np.abs(mixed)))
+            return np.stack([slope, mixed]), size
 
-        return _row_by_row_if_undefined(evaluate, np.ascontiguousarray(points), np.ascontiguousarray(directions))
+        arrays = (np.ascontiguousarray(array) for array in (points, first, second))
+        (slope, mixed), scale = _row_by_row_if_undefined(evaluate, *arrays, parts=2)
+        return slope, mixed, scale
 
     @cached_property
     def constant(self) -> bool:
@@ -364,11 +369,12 @@ def _vector_node(expr, args):
     return lambda values, scale: np.power(_on_branch(base(values, scale)), exponent(values, scale))
 
 
-def _row_by_row_if_undefined(evaluate, *arrays: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _row_by_row_if_undefined(evaluate, *arrays: np.ndarray, parts: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """``evaluate(*arrays) -> (values, scales)`` on all rows at once.
 
-    When a value somewhere divides by zero, overflows or is not finite, each row is
-    evaluated alone and the rows where that happens are NaN.
+    ``values`` is one value per row, or with ``parts``, that many stacked. When a value
+    somewhere divides by zero, overflows or is not finite, each row is evaluated alone
+    and the rows where that happens are NaN.
     """
     try:
         with np.errstate(all="raise", under="ignore"):
@@ -378,7 +384,8 @@ def _row_by_row_if_undefined(evaluate, *arrays: np.ndarray) -> tuple[np.ndarray,
     except (FloatingPointError, *UNDEFINED):
         pass
     count = len(arrays[0])
-    values, scales = np.full(count, complex("nan+nanj")), np.full(count, math.nan)
+    values = np.full((parts, count) if parts else count, complex("nan+nanj"))
+    scales = np.full(count, math.nan)
     for row in range(count):
         try:
             with np.errstate(all="raise", under="ignore"):
@@ -386,100 +393,125 @@ def _row_by_row_if_undefined(evaluate, *arrays: np.ndarray) -> tuple[np.ndarray,
         except (FloatingPointError, *UNDEFINED):
             continue
         if np.isfinite(value).all() and np.isfinite(scale).all():
-            values[row], scales[row] = value[0], scale[0]
+            values[..., row], scales[row] = value[..., 0], scale[0]
     return values, scales
 
 
-# Derivatives of the functions the parser accepts, for forward-mode differentiation.
+# The first and second derivatives of the functions the parser accepts, for forward-mode
+# differentiation: name → z ↦ (f′(z), f″(z)).
 _SLOPES = {
-    "sin": np.cos, "cos": lambda z: -np.sin(z), "tan": lambda z: 1 / np.cos(z) ** 2,
-    "cot": lambda z: -1 / np.sin(z) ** 2, "sec": lambda z: np.sin(z) / np.cos(z) ** 2,
-    "csc": lambda z: -np.cos(z) / np.sin(z) ** 2,
-    "asin": lambda z: 1 / np.sqrt(_on_branch(1 - z * z)), "acos": lambda z: -1 / np.sqrt(_on_branch(1 - z * z)),
-    "atan": lambda z: 1 / (1 + z * z), "sinh": np.cosh, "cosh": np.sinh, "tanh": lambda z: 1 / np.cosh(z) ** 2,
-    "exp": np.exp, "log": lambda z: 1 / z, "sign": lambda z: 0 * z,
-}  # fmt: skip
+    "sin": lambda z: (np.cos(z), -np.sin(z)),
+    "cos": lambda z: (-np.sin(z), -np.cos(z)),
+    "tan": lambda z: (1 / np.cos(z) ** 2, 2 * np.tan(z) / np.cos(z) ** 2),
+    "cot": lambda z: (-1 / np.sin(z) ** 2, 2 * np.cos(z) / np.sin(z) ** 3),
+    "sec": lambda z: (np.sin(z) / np.cos(z) ** 2, (1 + np.sin(z) ** 2) / np.cos(z) ** 3),
+    "csc": lambda z: (-np.cos(z) / np.sin(z) ** 2, (1 + np.cos(z) ** 2) / np.sin(z) ** 3),
+    "asin": lambda z: (_root(1 - z * z) ** -1, z * _root(1 - z * z) ** -3),
+    "acos": lambda z: (-(_root(1 - z * z) ** -1), -z * _root(1 - z * z) ** -3),
+    "atan": lambda z: (1 / (1 + z * z), -2 * z / (1 + z * z) ** 2),
+    "sinh": lambda z: (np.cosh(z), np.sinh(z)),
+    "cosh": lambda z: (np.sinh(z), np.cosh(z)),
+    "tanh": lambda z: (1 / np.cosh(z) ** 2, -2 * np.tanh(z) / np.cosh(z) ** 2),
+    "exp": lambda z: (np.exp(z), np.exp(z)),
+    "log": lambda z: (1 / z, -1 / (z * z)),
+    "sign": lambda z: (0 * z, 0 * z),
+}
 
 
-def _compile_dual(expr, index: Mapping[sympy.Symbol, int]):
-    """Closures ``f(values, directions, scale) -> (value, derivative)`` over numpy arrays
-    (one row per variable); ``scale[0]`` collects the largest term summed into a derivative."""
+def _root(z):
+    return np.sqrt(_on_branch(z))
+
+
+def _chain(function, slopes, jet):
+    """f(a + b ε₁ + c ε₂ + d ε₁ε₂) = f(a) + f′(a) b ε₁ + f′(a) c ε₂ + (f′(a) d + f″(a) b c) ε₁ε₂."""
+    a, b, c, d = jet
+    first, second = slopes(a)
+    return function(a), first * b, first * c, first * d + second * b * c
+
+
+def _compile_jet(expr, index: Mapping[sympy.Symbol, int]):
+    """Closures ``f(values, first, second, scale) -> (a, b, c, d)`` over numpy arrays (one row per
+    variable): the value, its derivatives along ``first`` and ``second``, and the mixed one.
+    ``scale[0]`` collects the largest term summed into a first or mixed derivative."""
     if expr.is_Symbol or isinstance(expr, _ALIASABLE):
         if expr not in index:
             raise NotCompilable(f"unknown symbol {expr}")
         position = index[expr]
-        return lambda values, directions, scale: (values[position], directions[position])
+        return lambda values, first, second, scale: (values[position], first[position], second[position], 0j)
     if not expr.args or expr.is_Rational:
         value = _compile(expr, index, _VECTOR)
-        return lambda values, directions, scale: (value(values, scale), 0j)
-    args = [_compile_dual(arg, index) for arg in expr.args]
+        return lambda values, first, second, scale: (value(values, scale), 0j, 0j, 0j)
+    args = [_compile_jet(arg, index) for arg in expr.args]
     if expr.is_Add:
 
-        def add(values, directions, scale):
-            total, slope = 0, 0
+        def add(values, first, second, scale):
+            total = [0, 0, 0, 0]
             for f in args:
-                value, derivative = f(values, directions, scale)
-                total, slope = total + value, slope + derivative
-                scale[0] = np.maximum(scale[0], np.abs(derivative))
-            return total, slope
+                jet = f(values, first, second, scale)
+                total = [t + part for t, part in zip(total, jet, strict=True)]
+                scale[0] = np.maximum(scale[0], np.maximum(np.abs(jet[1]), np.abs(jet[3])))
+            return tuple(total)
 
         return add
     if expr.is_Mul:
 
-        def mul(values, directions, scale):
-            product, slope = 1, 0
-            for f in args:
-                value, derivative = f(values, directions, scale)
-                earlier, this = slope * value, product * derivative  # the product rule's two terms
-                scale[0] = np.maximum(scale[0], np.maximum(np.abs(earlier), np.abs(this)))
-                product, slope = product * value, earlier + this
-            return product, slope
+        def mul(values, first, second, scale):
+            a, b, c, d = args[0](values, first, second, scale)
+            for f in args[1:]:
+                a2, b2, c2, d2 = f(values, first, second, scale)
+                terms = (a * d2, b * c2, c * b2, d * a2)  # the product rule, mixed part
+                scale[0] = np.maximum(scale[0], np.maximum(np.abs(a * b2), np.abs(b * a2)))
+                scale[0] = np.maximum(scale[0], np.maximum(np.abs(terms[0]), np.abs(terms[3])))
+                a, b, c, d = a * a2, a * b2 + b * a2, a * c2 + c * a2, sum(terms)
+            return a, b, c, d
 
         return mul
     if expr.is_Pow:
-        (base, exponent), constant_exponent = args, not (expr.exp.free_symbols or expr.exp.atoms(*_ALIASABLE))
+        base, exponent = args
+        if not (expr.exp.free_symbols or expr.exp.atoms(*_ALIASABLE)):  # a constant power: the chain rule
+            e = complex(expr.exp) if not expr.exp.is_Integer else int(expr.exp)
 
-        if expr.exp.is_Integer:
-            n = int(expr.exp)
+            def constant_power(values, first, second, scale):
+                a, b, c, d = base(values, first, second, scale)
+                if not isinstance(e, int):
+                    a = _on_branch(a)
+                return _chain(lambda z: z**e, lambda z: (e * z ** (e - 1), e * (e - 1) * z ** (e - 2)), (a, b, c, d))
 
-            def integer_power(values, directions, scale):
-                b, db = base(values, directions, scale)
-                return b**n, n * b ** (n - 1) * db
+            return constant_power
+        exp, log = _VECTOR.functions["exp"], _VECTOR.functions["log"]
 
-            return integer_power
-
-        def power(values, directions, scale):
-            (b, db), (e, de) = base(values, directions, scale), exponent(values, directions, scale)
-            b = _on_branch(b)
-            value = np.power(b, e)
-            if constant_exponent:
-                return value, e * np.power(b, e - 1) * db
-            return value, value * (de * np.log(b) + e * db / b)
+        def power(values, first, second, scale):  # b^e = exp(e log b)
+            logarithm = _chain(log, _SLOPES["log"], base(values, first, second, scale))
+            product = _mul_jets(exponent(values, first, second, scale), logarithm)
+            return _chain(exp, _SLOPES["exp"], product)
 
         return power
     name = type(expr).__name__
-    if name == "Abs":
+    if name in ("Abs", "re", "im"):
         (argument,) = args
+        part = {"Abs": None, "re": lambda z: z.real + 0j, "im": lambda z: z.imag + 0j}[name]
+        if part:
+            return lambda values, first, second, scale: tuple(map(part, argument(values, first, second, scale)))
 
-        def absolute(values, directions, scale):
-            z, dz = argument(values, directions, scale)
-            size = np.abs(z)
-            return size + 0j, (z.real * dz.real + z.imag * dz.imag) / size + 0j
+        def absolute(values, first, second, scale):  # |z| = z·sign(z) on the real line, away from 0
+            jet = argument(values, first, second, scale)
+            sign = np.sign(jet[0].real) + 0j
+            if np.any(sign == 0) or np.any(jet[0].imag != 0):
+                raise FloatingPointError("|z| is not differentiable here")
+            return tuple(sign * part for part in jet)
 
         return absolute
-    if name in ("re", "im"):
-        (argument,) = args
-        part = (lambda z: z.real + 0j) if name == "re" else (lambda z: z.imag + 0j)
-        return lambda values, directions, scale: tuple(map(part, argument(values, directions, scale)))
     if name in _SLOPES and len(args) == 1:
-        function, slope, (argument,) = _VECTOR.functions[name], _SLOPES[name], args
-
-        def apply(values, directions, scale):
-            z, dz = argument(values, directions, scale)
-            return function(z), slope(z) * dz
-
-        return apply
+        function, slopes, (argument,) = _VECTOR.functions[name], _SLOPES[name], args
+        return lambda values, first, second, scale: _chain(function, slopes, argument(values, first, second, scale))
     raise NotCompilable(f"cannot differentiate {name}")
+
+
+def _mul_jets(x, y):
+    """The product of two hyper-dual numbers (a, b, c, d)."""
+    a1, b1, c1, d1 = x
+    a2, b2, c2, d2 = y
+    return a1 * a2, a1 * b2 + b1 * a2, a1 * c2 + c1 * a2, a1 * d2 + b1 * c2 + c1 * b2 + d1 * a2
 
 
 def sample_points(
