@@ -736,7 +736,7 @@ def _time_derivative(coordinate, order: int):
 def _apply(name: str, argument, token: Token):
     # sympy evaluates sin, abs or log of a constant numerically, and needs precision in
     # proportion to its size: sin(exp(exp(100))) would never return.
-    if not argument.free_symbols and not _magnitude(argument) <= _MAX_MAGNITUDE:
+    if argument.is_number and not _magnitude(argument) <= _MAX_MAGNITUDE:
         raise ParseFailure("value_too_large", token.start, token.end)
     value = _FUNCTIONS[name](argument)
     if value.has(sympy.zoo, sympy.nan):
@@ -755,7 +755,7 @@ def _power(base, exponent, token: Token):
                 raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
         if base == 0 and exponent.is_negative:
             raise ParseFailure("division_by_zero", token.start, token.end)
-    elif not exponent.free_symbols and not _magnitude(exponent) <= LIMITS.exponent:
+    elif exponent.is_number and not _magnitude(exponent) <= LIMITS.exponent:
         # A numeric but unevaluated exponent (sqrt(2)^(9^9), x^exp(exp(100))) is bounded by
         # its size, estimated in floats: sympy's evalf of such a tower never returns.
         raise ParseFailure("exponent_too_large", token.start, token.end, limit=LIMITS.exponent)
@@ -773,7 +773,7 @@ _MAX_MAGNITUDE = 1e300  # for constants that are not rational, just inside what 
 
 def _check_size(value, token: Token) -> None:
     """Refuse a constant too large to print or to evaluate: ((√2)^99)^99 has 146,000 digits."""
-    if value.free_symbols:
+    if not value.is_number:  # a constant: is_number stops at the first symbol, free_symbols walks all
         return
     if value.is_Rational:
         too_large = _digits(value.p) + _digits(value.q) > LIMITS.power_digits
