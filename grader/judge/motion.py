@@ -486,10 +486,13 @@ def _system_outcome(expected: Expected, states: list[_State], given: int) -> Out
     n = len(coords)
     right = [all(state.verdicts[j] is Closeness.EQUAL for state in states) for j in range(given)]
     trivial = [all(state.trivial[j] for state in states) for j in range(given)]
-    unspanned = [coords[i] for i in range(n) if not all(state.spanned[i] for state in states)]
     method = "accelerations"
     if given > n:
         return Outcome("not_equivalent", 0.0, "extra_equation", {"given": given, "count": n}, method)
+    wrong_or_short = given < n or not all(right)  # only then is it asked which coordinate's equation is off
+    unspanned = (
+        [q for i, q in enumerate(coords) if not all(state.spanned[i] for state in states)] if wrong_or_short else []
+    )
     if given < n:
         return Outcome("not_equivalent", 0.0, "missing_equation", {"coords": _or(unspanned, describe)}, method)
     if any(trivial):
