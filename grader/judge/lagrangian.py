@@ -1,7 +1,7 @@
 """The ``lagrangian`` kind: the same equations of motion, and the same normalization.
 
 Contents:
-    euler_lagrange(L, setting)                      d/dt ∂L/∂q̇ − ∂L/∂q, by the chain rule
+    euler_lagrange(L, setting)                      d/dt ∂L/∂q̇ − ∂L/∂q, symbolically by the chain rule
     check_lagrangian(expected, answer, deadline)    the kind's checker
 
 A Lagrangian is right up to an additive constant (another zero of the potential)
@@ -9,7 +9,9 @@ or a total time derivative: both leave the equations of motion unchanged. The
 fast path catches the first without any calculus. Otherwise both sets of
 Euler–Lagrange expressions are evaluated at sample states: equal is full credit;
 a constant multiple k ≠ 1 has the right dynamics but not L = T − V, which earns
-the part's ``factor_credit``.
+the part's ``factor_credit``. They are evaluated by forward-mode differentiation
+(no sympy ``diff``, which costs milliseconds on an answer it has not seen), with
+the symbolic equations as the judge where rounding leaves a state unsure.
 """
 
 from __future__ import annotations

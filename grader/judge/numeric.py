@@ -3,8 +3,9 @@
 Contents:
     Compiled            an expression turned into nested closures, evaluated in
                         complex floats (at one point, or at many at once with
-                        numpy), for near misses in 40-digit mpmath, and exactly
-                        in fractions when it is a rational function
+                        numpy), for near misses in 40-digit mpmath, exactly
+                        in fractions when it is a rational function, and with
+                        its first and mixed second derivatives (hyper-dual numbers)
     NotCompilable       an expression holds something we cannot evaluate
     sample_points(...)  seeded random points inside the symbols' domains
     Closeness           EQUAL / DIFFERENT / UNSURE for two numbers and their scale
