@@ -182,7 +182,6 @@ class Compiled:
         self._vector = None
         self._jet = None
         self._precise = None
-        self._rational = _is_rational_function(expr)
         self._exact = None  # compiled when first needed: most comparisons never need it
         # A reference answer is evaluated at the same points for every submission: remember them.
         self._memo: dict | None = {} if memo else None
@@ -264,10 +263,10 @@ class Compiled:
         """Whether the expression depends on no variable (a reference's is asked on every comparison)."""
         return not self.expr.free_symbols and not self.expr.atoms(*_ALIASABLE)
 
-    @property
+    @cached_property
     def rational(self) -> bool:
         """Whether :meth:`exact` can evaluate this expression."""
-        return self._rational
+        return _is_rational_function(self.expr)
 
     def exact(self, values: Sequence[complex]) -> tuple[Fraction, float]:
         """The exact value at real ``values``, for a rational function of the variables.
