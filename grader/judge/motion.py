@@ -63,7 +63,7 @@ class _Rows:
     def __init__(self, samples: Sequence[tuple[Sequence, float]], precise: bool):
         self.scale = max((scale for _, scale in samples), default=0.0)
         self.rows, self.linear = [], Closeness.EQUAL
-        for values in (values for values, _ in samples):
+        for values, _ in samples:
             b, *units, probed = values
             c = [unit - b for unit in units]
             predicted = b + sum(ck * pk for ck, pk in zip(c, _probe(len(c)), strict=True))
