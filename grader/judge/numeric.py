@@ -208,14 +208,17 @@ class Compiled:
         value = self._float(values, scale)
         return value, max(scale[0], abs(value))
 
+    def _remembered(self, key: tuple, compute):
+        """``compute()``, kept under ``key`` when this is a reference answer's (``memo``)."""
+        if self._memo is None:
+            return compute()
+        if key not in self._memo:
+            self._memo[key] = compute()
+        return self._memo[key]
+
     def many(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Values and scales at every row of ``points`` (count × variables); NaN where undefined."""
-        if self._memo is None:
-            return self._many(points)
-        key = ("many", points.shape, points.tobytes())
-        if key not in self._memo:
-            self._memo[key] = self._many(points)
-        return self._memo[key]
+        return self._remembered(("many", points.shape, points.tobytes()), lambda: self._many(points))
 
     def _many(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         if self._vector is None:
@@ -236,12 +239,8 @@ class Compiled:
         Forward-mode differentiation: one pass over hyper-dual numbers a + b ε₁ + c ε₂ + d ε₁ε₂
         (ε₁² = ε₂² = 0), exact but for rounding.
         """
-        if self._memo is None:
-            return self._derivatives(points, first, second)
         key = ("derivatives", points.shape, points.tobytes(), first.tobytes(), second.tobytes())
-        if key not in self._memo:
-            self._memo[key] = self._derivatives(points, first, second)
-        return self._memo[key]
+        return self._remembered(key, lambda: self._derivatives(points, first, second))
 
     def _derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, ...]:
         if self._jet is None:
@@ -456,42 +455,43 @@ def _compile_jet(expr, index: Mapping[sympy.Symbol, int]):
     if expr.is_Mul:
 
         def mul(values, first, second, scale):
-            a, b, c, d = args[0](values, first, second, scale)
+            jet = args[0](values, first, second, scale)
             for f in args[1:]:
-                a2, b2, c2, d2 = f(values, first, second, scale)
-                terms = (a * d2, b * c2, c * b2, d * a2)  # the product rule, mixed part
-                scale[0] = np.maximum(scale[0], np.maximum(np.abs(a * b2), np.abs(b * a2)))
-                scale[0] = np.maximum(scale[0], np.maximum(np.abs(terms[0]), np.abs(terms[3])))
-                a, b, c, d = a * a2, a * b2 + b * a2, a * c2 + c * a2, sum(terms)
-            return a, b, c, d
+                jet = _mul_jets(jet, f(values, first, second, scale), scale)
+            return jet
 
         return mul
     if expr.is_Pow:
         base, exponent = args
         if not (expr.exp.free_symbols or expr.exp.atoms(*_ALIASABLE)):  # a constant power: the chain rule
-            e = complex(expr.exp) if not expr.exp.is_Integer else int(expr.exp)
+            e = int(expr.exp) if expr.exp.is_Integer else complex(expr.exp)
+            on_branch = _on_branch if isinstance(e, complex) else (lambda z: z)
+
+            def power_of(z):
+                return z**e
+
+            def slopes(z):
+                return e * z ** (e - 1), e * (e - 1) * z ** (e - 2)
 
             def constant_power(values, first, second, scale):
                 a, b, c, d = base(values, first, second, scale)
-                if not isinstance(e, int):
-                    a = _on_branch(a)
-                return _chain(lambda z: z**e, lambda z: (e * z ** (e - 1), e * (e - 1) * z ** (e - 2)), (a, b, c, d))
+                return _chain(power_of, slopes, (on_branch(a), b, c, d))
 
             return constant_power
         exp, log = _VECTOR.functions["exp"], _VECTOR.functions["log"]
 
         def power(values, first, second, scale):  # b^e = exp(e log b)
             logarithm = _chain(log, _SLOPES["log"], base(values, first, second, scale))
-            product = _mul_jets(exponent(values, first, second, scale), logarithm)
-            return _chain(exp, _SLOPES["exp"], product)
+            return _chain(exp, _SLOPES["exp"], _mul_jets(exponent(values, first, second, scale), logarithm))
 
         return power
     name = type(expr).__name__
-    if name in ("Abs", "re", "im"):
+    if name in ("re", "im"):
         (argument,) = args
-        part = {"Abs": None, "re": lambda z: z.real + 0j, "im": lambda z: z.imag + 0j}[name]
-        if part:
-            return lambda values, first, second, scale: tuple(map(part, argument(values, first, second, scale)))
+        part = (lambda z: z.real + 0j) if name == "re" else (lambda z: z.imag + 0j)
+        return lambda values, first, second, scale: tuple(map(part, argument(values, first, second, scale)))
+    if name == "Abs":
+        (argument,) = args
 
         def absolute(values, first, second, scale):  # |z| = z·sign(z) on the real line, away from 0
             jet = argument(values, first, second, scale)
@@ -507,11 +507,16 @@ def _compile_jet(expr, index: Mapping[sympy.Symbol, int]):
     raise NotCompilable(f"cannot differentiate {name}")
 
 
-def _mul_jets(x, y):
-    """The product of two hyper-dual numbers (a, b, c, d)."""
+def _mul_jets(x, y, scale: list | None = None):
+    """The product of two hyper-dual numbers (a, b, c, d), by the product rule; ``scale[0]``,
+    when given, collects the largest term of its first and mixed parts."""
     a1, b1, c1, d1 = x
     a2, b2, c2, d2 = y
-    return a1 * a2, a1 * b2 + b1 * a2, a1 * c2 + c1 * a2, a1 * d2 + b1 * c2 + c1 * b2 + d1 * a2
+    first, mixed = (a1 * b2, b1 * a2), (a1 * d2, b1 * c2, c1 * b2, d1 * a2)
+    if scale is not None:
+        for term in (*first, mixed[0], mixed[3]):
+            scale[0] = np.maximum(scale[0], np.abs(term))
+    return a1 * a2, first[0] + first[1], a1 * c2 + c1 * a2, sum(mixed)
 
 
 def sample_points(
