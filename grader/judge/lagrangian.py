@@ -25,8 +25,8 @@ from grader.judge.deadline import Deadline
 from grader.judge.diagnose import taylor, term_changes
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import same_values, term_outcome, varying_part
-from grader.judge.numeric import Closeness, closeness
-from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, constant_difference, nice_number
+from grader.judge.numeric import Closeness, Compiled, closeness
+from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, constant_difference, nice_number, side_by_side
 from grader.judge.setting import Setting
 from grader.parse import TIME, ParsedAnswer
 from grader.parse.readback import to_text
@@ -97,7 +97,7 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
     where rounding leaves a state unsure, they are derived symbolically and evaluated again.
     """
     deadline.check()
-    proportional = _proportional(_dynamics(expected, expected.value, submitted))
+    proportional = _proportional(_dynamics(expected, submitted))
     if proportional is Closeness.UNSURE:
         deadline.check()
         proportional = _proportional(_symbolic_dynamics(expected, submitted))
@@ -140,7 +140,7 @@ def _proportional(columns: list[list[tuple]]):
     return ratios if checked >= MIN_DEFINED else None
 
 
-def _dynamics(expected: Expected, reference, submitted) -> list[list[tuple]]:
+def _dynamics(expected: Expected, submitted) -> list[list[tuple]]:
     """Both sets of Euler–Lagrange expressions at the sample states, as :func:`_proportional` reads them.
 
     No calculus on symbols: d/dt ∂L/∂q̇ is the mixed second derivative of L along q̇ and
@@ -148,21 +148,23 @@ def _dynamics(expected: Expected, reference, submitted) -> list[list[tuple]]:
     all by forward-mode differentiation at every state at once.
     """
     points, first, second = _directions(expected)
-    n, count = len(expected.setting.coords), len(expected.points(POINTS, group=GROUP))
-    sides = []
-    for lagrangian in (expected.compiled("value", reference), expected.compile(submitted)):
+    n = len(expected.setting.coords)
+    count = len(points) // (2 * n)  # rows: per coordinate the states along (q̇, motion), then along q
+
+    def euler_lagrange_at(lagrangian: Compiled) -> list[tuple[list, list]]:
         slope, mixed, scale = lagrangian.derivatives(points, first, second)
-        # rows: for each coordinate, the states with (q̇, motion), then with (q, nothing)
+        expressions = []
         for i in range(n):
-            along = slice(i * count, (i + 1) * count)
-            across = slice((n + i) * count, (n + i + 1) * count)
-            value = mixed[along] - slope[across]
-            sides.append((value.tolist(), np.maximum(scale[along], scale[across]).tolist()))
-    columns = []
-    for i in range(n):
-        (a, scale_a), (b, scale_b) = sides[i], sides[n + i]
-        columns.append(list(zip(a, scale_a, b, scale_b, strict=True)))
-    return columns
+            along, across = slice(i * count, (i + 1) * count), slice((n + i) * count, (n + i + 1) * count)
+            values = mixed[along] - slope[across]
+            expressions.append((values.tolist(), np.maximum(scale[along], scale[across]).tolist()))
+        return expressions
+
+    mine = euler_lagrange_at(expected.compiled("value", expected.value))
+    theirs = euler_lagrange_at(expected.compile(submitted))
+    return [
+        list(zip(a, scale_a, b, scale_b, strict=True)) for (a, scale_a), (b, scale_b) in zip(mine, theirs, strict=True)
+    ]
 
 
 def _directions(expected: Expected) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -201,11 +203,7 @@ def _symbolic_dynamics(expected: Expected, submitted) -> list[list[tuple]]:
         ]
     theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
     points = expected.points(POINTS, group=GROUP)
-    columns = []
-    for f, g in zip(expected.cache["euler-lagrange"], theirs, strict=True):
-        (a, scale_a), (b, scale_b) = f.many(points), g.many(points)
-        columns.append(list(zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True)))
-    return columns
+    return [side_by_side(f, g, points) for f, g in zip(expected.cache["euler-lagrange"], theirs, strict=True)]
 
 
 def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> Outcome:

@@ -35,7 +35,7 @@ from grader.judge.diagnose import taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
 from grader.judge.numeric import UNDEFINED, Closeness, Compiled, closeness
-from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS
+from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, side_by_side
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
 
@@ -279,7 +279,7 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     points = expected.points(_GROUPS * _STATES, salt=1, group=_STATES)
     results = []
     ratios: dict[int, complex] = {}
-    for number, (a, scale_a, b, scale_b) in enumerate(_side_by_side(expected_f, submitted_g, points)):
+    for number, (a, scale_a, b, scale_b) in enumerate(side_by_side(expected_f, submitted_g, points)):
         if not math.isfinite(scale_a + scale_b):
             continue  # undefined here
         scale = max(scale_a, scale_b)
@@ -299,12 +299,6 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     if same is None and Closeness.DIFFERENT not in results:
         return Outcome("undecided", 0.0, "undecided", method="ratio: too few defined points")
     return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="ratio")
-
-
-def _side_by_side(f: Compiled, g: Compiled, points: np.ndarray):
-    """(f, its scale, g, its scale) at each point, as Python numbers; the scales are NaN where undefined."""
-    (a, scale_a), (b, scale_b) = f.many(points), g.many(points)
-    return zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True)
 
 
 _SCAN = {"positive": (0.01, 10.0), "negative": (-10.0, -0.01)}  # where roots are looked for

@@ -3,6 +3,7 @@
 Contents:
     Pair                      one point: both values and their common scale
     evaluate_pairs(...)       both expressions at seeded points, near misses re-evaluated precisely
+    side_by_side(f, g, points)  both expressions' values and scales at each point, in one numpy pass
     all_equal, constant_ratio, constant_difference   readings of a list of pairs
     nice_number(x)            1/2, 2, 2π… for feedback, or None
 
@@ -25,7 +26,16 @@ import sympy
 from grader.judge.deadline import Deadline
 from grader.judge.numeric import UNDEFINED, Closeness, Compiled, closeness
 
-__all__ = ["POINTS", "Pair", "all_equal", "constant_difference", "constant_ratio", "evaluate_pairs", "nice_number"]
+__all__ = [
+    "POINTS",
+    "Pair",
+    "all_equal",
+    "constant_difference",
+    "constant_ratio",
+    "evaluate_pairs",
+    "nice_number",
+    "side_by_side",
+]
 
 POINTS = 10  # sample points per comparison
 GROUP = 5  # points sharing their parameter values: two draws of the parameters, five states each
@@ -59,10 +69,7 @@ def evaluate_pairs(
     deadline.check()
     pairs = []
     exact = expected.rational and submitted.rational
-    values_a, scales_a = expected.many(points)
-    values_b, scales_b = submitted.many(points)
-    rows = zip(values_a.tolist(), scales_a.tolist(), values_b.tolist(), scales_b.tolist(), strict=True)
-    for number, (a, scale_a, b, scale_b) in enumerate(rows):
+    for number, (a, scale_a, b, scale_b) in enumerate(side_by_side(expected, submitted, points)):
         if not (cmath.isfinite(a) and cmath.isfinite(b)):
             continue
         if abs(a.imag) > 1e-12 * max(1.0, abs(a)):
@@ -91,6 +98,12 @@ def evaluate_pairs(
             pair = Pair(a, b, max(scale_a, scale_b), precise=True, group=number // GROUP)
         pairs.append(pair)
     return pairs
+
+
+def side_by_side(f: Compiled, g: Compiled, points: np.ndarray) -> list[tuple[complex, float, complex, float]]:
+    """(f, its scale, g, its scale) at each point, as Python numbers; NaN where undefined."""
+    (a, scale_a), (b, scale_b) = f.many(points), g.many(points)
+    return list(zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True))
 
 
 def _finite(value) -> bool:
