@@ -1,7 +1,8 @@
 """Naming the mistake: which term differs, and how it can be described without revealing it.
 
 Contents:
-    term_changes(expected, submitted, setting)    missing / extra / differing terms
+    terms(expr, varying=, expanded=)              an expression's terms, keyed by shape
+    term_changes(expected, submitted, setting)    missing / extra / differing terms, from two such
     describe_term(term, setting)                  "a velocity-dependent term", "a term in cos(θ₁ − θ₂)"
     small_angle(expr, setting)                    sin u → u, cos u → 1 (and 1 − u²/2)
     taylor(expr, setting, order)                  expansion about the equilibrium q = q̇ = q̈ = 0
@@ -21,28 +22,34 @@ from grader.judge.setting import Setting
 from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 
-__all__ = ["describe_term", "has_angle_functions", "small_angle", "symbolic_zero", "taylor", "term_changes"]
+__all__ = ["describe_term", "has_angle_functions", "small_angle", "symbolic_zero", "taylor", "term_changes", "terms"]
 
 MAX_TERMS = 60  # beyond this, listing terms says nothing useful
 _TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
 
 
-def _terms(expr) -> dict:
-    """Expanded terms, keyed by their shape (the term without its numeric coefficient)."""
-    terms: dict = {}
-    for term in sympy.Add.make_args(sympy.expand(expr)):
+def terms(expr, *, varying: set | None = None, expanded: bool = False) -> dict:
+    """The terms of ``expr`` expanded, keyed by their shape (the term without its numeric coefficient).
+
+    With ``varying`` (a set of symbols), only the terms that involve one of them: what a
+    constant the answer may add does not hide. ``expanded`` says ``expr`` already is.
+    """
+    collected: dict = {}
+    for term in sympy.Add.make_args(expr if expanded else sympy.expand(expr)):
+        if varying is not None and not term.free_symbols & varying:
+            continue
         coefficient, shape = term.as_coeff_Mul()
-        terms[shape] = terms.get(shape, 0) + coefficient
-    return {shape: c for shape, c in terms.items() if c != 0}
+        collected[shape] = collected.get(shape, 0) + coefficient
+    return {shape: c for shape, c in collected.items() if c != 0}
 
 
-def term_changes(expected, submitted, setting: Setting) -> list[tuple[str, str]]:
-    """How the submitted terms differ from the expected ones: [(key, description)].
+def term_changes(expected_terms: dict, submitted_terms: dict, setting: Setting) -> list[tuple[str, str]]:
+    """How the submitted terms differ from the expected ones (each as :func:`terms` gives them):
+    [(key, description)].
 
     Keys are ``missing_term``, ``extra_term`` and ``term_differs``. An empty list
     means the comparison is not informative (too many terms, or none differ by shape).
     """
-    expected_terms, submitted_terms = _terms(expected), _terms(submitted)
     if len(expected_terms) > MAX_TERMS or len(submitted_terms) > MAX_TERMS:
         return []
     changes = []

@@ -17,7 +17,7 @@ from collections.abc import Callable
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes
+from grader.judge.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes, terms
 from grader.judge.expected import Expected, Outcome
 from grader.judge.numeric import Closeness
 from grader.judge.sampling import (
@@ -32,7 +32,7 @@ from grader.judge.sampling import (
 )
 from grader.parse import ParsedAnswer
 
-__all__ = ["check_expression", "diagnose_difference", "same_values", "term_outcome", "varying_part"]
+__all__ = ["check_expression", "diagnose_difference", "expected_terms", "same_values", "term_outcome"]
 
 
 def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "value") -> tuple[bool | None, list[Pair]]:
@@ -80,12 +80,13 @@ def diagnose_difference(
     *,
     key: str = "value",
     approximations: Callable[[sympy.Expr], list] | None = None,
+    expanded: bool = False,
 ) -> Outcome:
     """A not-equivalent outcome for ``s`` against ``e``, naming the mistake where it can.
 
     ``key`` names ``e`` among the expressions derived from the expected answer;
     ``approximations`` gives the small-angle forms of an expression (by default
-    sin u → u, cos u → 1 or 1 − u²/2).
+    sin u → u, cos u → 1 or 1 − u²/2); ``expanded`` says ``s`` is already expanded.
     """
     approximate = approximations or (lambda expr: small_angle(expr, expected.setting))
     ratio = constant_ratio(pairs)
@@ -110,15 +111,19 @@ def diagnose_difference(
             if not form.has(sympy.nan, sympy.zoo) and same_values(expected, e, form, deadline, key=key)[0]:
                 return Outcome("not_equivalent", 0.0, "not_small_angle")
     deadline.check()
-    if expected.option("up_to_constant"):  # a constant is allowed here: do not point at one
-        state = set(expected.setting.state.values())
-        e, s = varying_part(e, state), varying_part(s, state)
-    return term_outcome(term_changes(e, s, expected.setting))
+    # where a constant is allowed, do not point at one
+    varying = set(expected.setting.state.values()) if expected.option("up_to_constant") else None
+    submitted_terms = terms(s, varying=varying, expanded=expanded)
+    return term_outcome(term_changes(expected_terms(expected, key, e, varying), submitted_terms, expected.setting))
 
 
-def varying_part(expr, state: set):
-    """``expr`` without its terms that are constant along the motion."""
-    return sympy.Add(*(term for term in sympy.Add.make_args(sympy.expand(expr)) if term.free_symbols & state))
+def expected_terms(expected: Expected, key: str, e, varying: set | None = None) -> dict:
+    """The terms of ``e`` (named ``key`` among the expected answer's expressions), as
+    :func:`~grader.judge.diagnose.terms` gives them, expanded once for every submission."""
+    cache_key = ("terms", key, varying is not None)
+    if cache_key not in expected.cache:
+        expected.cache[cache_key] = terms(e, varying=varying)
+    return expected.cache[cache_key]
 
 
 def term_outcome(changes: list[tuple[str, str]]) -> Outcome:

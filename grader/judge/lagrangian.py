@@ -22,9 +22,9 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import taylor, term_changes
+from grader.judge.diagnose import taylor, term_changes, terms
 from grader.judge.expected import Expected, Outcome, prepare
-from grader.judge.expression import same_values, term_outcome, varying_part
+from grader.judge.expression import expected_terms, same_values, term_outcome
 from grader.judge.numeric import Closeness, Compiled, closeness
 from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, constant_difference, nice_number, side_by_side
 from grader.judge.setting import Setting
@@ -220,5 +220,7 @@ def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> 
         _, pairs = same_values(expected, form, submitted, deadline, key=name)
         if constant_difference(pairs):
             return Outcome("not_equivalent", 0.0, key)
+    # the terms that vary along the motion: another zero of the potential is no mistake
     state = set(setting.state.values()) | {TIME}
-    return term_outcome(term_changes(varying_part(lagrangian, state), varying_part(submitted, state), setting))
+    submitted_terms = terms(submitted, varying=state)
+    return term_outcome(term_changes(expected_terms(expected, "value", lagrangian, state), submitted_terms, setting))

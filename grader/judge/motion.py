@@ -256,7 +256,7 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     _, pairs = same_values(expected, normal_f, normal_g, deadline, key=key)
     outcome = diagnose_difference(
         expected, normal_f, normal_g, pairs, deadline, key=key,
-        approximations=lambda expr: [taylor(expr, expected.setting, 1)],
+        approximations=lambda expr: [taylor(expr, expected.setting, 1)], expanded=True,
     )  # fmt: skip
     if outcome.key in ("sign", "factor", "wrong"):
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
