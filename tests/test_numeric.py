@@ -26,6 +26,8 @@ EXPRESSIONS = [
     sympy.sec(x) + sympy.csc(y + 1),
     sympy.asin(x / 4) + sympy.acos(y / 5) + sympy.atan(z),
     sympy.sinh(x) * sympy.cosh(y) / (1 + sympy.tanh(z) ** 2),
+    sympy.coth(x) + sympy.sech(y) * sympy.csch(z),
+    sympy.asinh(x) * sympy.atanh(y / 4) + sympy.acosh(z**2 + 2),
     sympy.exp(-x * y) * sympy.log(z**2 + 1),
     sympy.sqrt(x**2 + y**2 + z**2) ** 3 - x ** sympy.Rational(2, 3),
     sympy.Abs(x - y) * z + y**z,

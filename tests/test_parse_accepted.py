@@ -60,6 +60,11 @@ FUNCTIONS = [
     ("asin(a) + arcsin(b)", sympy.asin(a) + sympy.asin(b)),
     ("acos(a) + arccos(b) + atan(c) + arctan(d)", sympy.acos(a) + sympy.acos(b) + sympy.atan(c) + sympy.atan(d)),
     ("sinh(a) cosh(b) tanh(c)", sympy.sinh(a) * sympy.cosh(b) * sympy.tanh(c)),
+    ("coth(a) + sech(b) + \\csch c", sympy.coth(a) + sympy.sech(b) + sympy.csch(c)),
+    ("asinh(a) + arsinh(b) + arccosh(c)", sympy.asinh(a) + sympy.asinh(b) + sympy.acosh(c)),
+    ("atanh(a) + artanh(b) + arctanh(c)", sympy.atanh(a) + sympy.atanh(b) + sympy.atanh(c)),
+    # sympy writes the tangent of an imaginary number with tanh, its arctangent with atanh: both readable
+    ("atan(log(-1))", sympy.I * sympy.atanh(sympy.pi)),
     ("exp(a) + log(b) + ln(c)", exp(a) + sympy.log(b) + sympy.log(c)),
     ("sqrt(g/l)", sqrt(g / l)),
     ("abs(a - b)", sympy.Abs(a - b)),

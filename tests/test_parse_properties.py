@@ -94,7 +94,7 @@ TOKENS = [
     "m", "g", "l", "k", "x", "e", "t", "pi", "mgl", "theta", "θ", "θ̇", "θ̈", "θ₁", "theta1", "theta_1",
     "theta1dot", "thetadot", "thetaddot", "theta'", "theta''", "x'", "phi", "φ̇", "p_theta", "m_1", "l_2", "lambda",
     # functions
-    "sin", "cos", "tan", "exp", "log", "ln", "sqrt", "abs", "asin", "arctan", "sinh", "diff", "√",
+    "sin", "cos", "tan", "exp", "log", "ln", "sqrt", "abs", "asin", "arctan", "sinh", "atanh", "coth", "diff", "√",
     # LaTeX
     "\\frac", "\\dot{", "\\ddot", "\\theta", "\\phi_1", "\\sqrt", "\\sqrt[3]", "\\cdot", "\\left(", "\\right)",
     "\\sin", "\\pi", "\\\\", "\\begin{aligned}", "\\end{aligned}", "&", "_{", "^{",
@@ -126,7 +126,7 @@ ROUND_TRIP_CONTEXTS = {
 
 numbers = st.sampled_from(["1", "2", "3", "10", "0.5", "1.25", "1/2", "3/4"])
 exponents = st.sampled_from(["2", "3", "-1", "-2", "(1/2)", "(-3/2)", "²", "³"])
-functions = st.sampled_from(["sin", "cos", "tan", "exp", "log", "sqrt", "sinh", "atan"])
+functions = st.sampled_from(["sin", "cos", "tan", "exp", "log", "sqrt", "sinh", "atan", "asinh", "coth"])
 
 
 def _expressions(names):

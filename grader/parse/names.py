@@ -55,6 +55,8 @@ FUNCTION_NAMES: dict[str, str] = {
     "sin": "sin", "cos": "cos", "tan": "tan", "cot": "cot", "sec": "sec", "csc": "csc",
     "asin": "asin", "arcsin": "asin", "acos": "acos", "arccos": "acos",
     "atan": "atan", "arctan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
+    "coth": "coth", "sech": "sech", "csch": "csch", "asinh": "asinh", "arsinh": "asinh", "arcsinh": "asinh",
+    "acosh": "acosh", "arcosh": "acosh", "arccosh": "acosh", "atanh": "atanh", "artanh": "atanh", "arctanh": "atanh",
     "exp": "exp", "log": "log", "ln": "log", "sqrt": "sqrt", "abs": "abs",
 }  # fmt: skip
 

@@ -121,7 +121,10 @@ _LATEX_NAMES = {name: name for name in set(GREEK_BY_LETTER.values())} | {
     "varphi": "phi", "vartheta": "theta", "varepsilon": "epsilon", "varrho": "rho",
     "varsigma": "sigma", "varpi": "pi", "ell": "l",
 }  # fmt: skip
-_LATEX_FUNCTIONS = {name: name for name in FUNCTION_NAMES.values() if name not in ("asin", "acos", "atan")} | {
+# LaTeX has \arcsin but no \asin, and no command at all for the inverse hyperbolic functions.
+_LATEX_FUNCTIONS = {
+    name: name for name in FUNCTION_NAMES.values() if name not in ("asin", "acos", "atan", "asinh", "acosh", "atanh")
+} | {
     "arcsin": "asin",
     "arccos": "acos",
     "arctan": "atan",
