@@ -66,6 +66,7 @@ class Context:
 
     coords: dict[str, sympy.Expr] = field(default_factory=dict)
     known: dict[str, sympy.Symbol] = field(default_factory=dict)
+    _derivatives: dict = field(default_factory=dict, repr=False, compare=False)
 
     @classmethod
     def build(cls, coords: Iterable = (), known: Iterable = ()) -> Context:
@@ -96,6 +97,14 @@ class Context:
     @cached_property
     def coordinate_set(self) -> frozenset:
         return frozenset(self.coords.values())
+
+    def derivative(self, coordinate: sympy.Expr, order: int) -> sympy.Expr:
+        """A coordinate's time derivative of ``order``, built once for the problem: a sympy
+        ``Derivative`` is slow to build, and every θ̇ of every answer needs one."""
+        key = (coordinate, order)
+        if key not in self._derivatives:
+            self._derivatives[key] = sympy.Derivative(coordinate, (TIME, order))
+        return self._derivatives[key]
 
     def describe_coords(self) -> str:
         return ", ".join(self.coords) or "it has none"
@@ -450,12 +459,12 @@ class _Parser:
         if order > LIMITS.derivative_order:
             raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
         if _is_coordinate(target, self.context):  # diff(θ, t): built directly, as θ̇ is
-            return _time_derivative(target, order)
+            return self.context.derivative(target, order)
         if isinstance(target, sympy.Derivative) and _is_coordinate(target.expr, self.context):
             total = order + target.derivative_count
             if total > LIMITS.derivative_order:
                 raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
-            return _time_derivative(target.expr, total)
+            return self.context.derivative(target.expr, total)
         # Each differentiation of a product multiplies its terms: bound size ** order.
         if sympy.count_ops(target, visual=False) ** order > _DIFF_BUDGET:
             raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
@@ -478,7 +487,7 @@ class _Parser:
                 )  # fmt: skip
             if order > LIMITS.derivative_order:
                 raise ParseFailure("derivative_order", token.start, token.end)
-            pieces[-1] = _time_derivative(last, order)
+            pieces[-1] = self.context.derivative(last, order)
         if len(pieces) == 1 and _is_coordinate_or_derivative(pieces[0], self.context):
             self._skip_time_argument()
         values, i = [], 0
@@ -555,7 +564,7 @@ class _Parser:
             return context.known[canonical]
         derivative = split_derivative(canonical)
         if derivative and derivative[0] in context.coords:
-            return _time_derivative(context.coords[derivative[0]], derivative[1])
+            return context.derivative(context.coords[derivative[0]], derivative[1])
         if canonical == "pi":
             return sympy.pi
         if canonical == "e":
@@ -727,11 +736,6 @@ def _closing(tokens: list[Token], i: int) -> int | None:
             if depth == 0:
                 return j
     return None
-
-
-def _time_derivative(coordinate, order: int):
-    # Built directly: sympy.diff would spend half the parse re-deriving what we know.
-    return sympy.Derivative(coordinate, (TIME, order))
 
 
 def _apply(name: str, argument, token: Token):
