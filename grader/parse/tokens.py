@@ -130,6 +130,7 @@ _LATEX_FUNCTIONS = {
     "arctan": "atan",
     "ln": "log",
 }
+_CALLABLE = FUNCTION_NAMES | {"diff": "diff"}  # names followed by an argument in plain notation
 _LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
 _LATEX_FONTS = {"mathcal", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}")
@@ -322,8 +323,8 @@ class _Tokenizer:
             raise ParseFailure("name_too_long", start, end_of_name, name=raw[:20] + "…", limit=LIMITS.name)
         if "__" in raw or raw.endswith("_") or raw.startswith("_"):
             raise ParseFailure("bad_name", start, end_of_name, name=self.text[start:end_of_name])
-        if not self.latex and not dots and not primes and raw in FUNCTION_NAMES | {"diff": "diff"}:
-            self.tokens.append(Token("func", FUNCTION_NAMES.get(raw, raw), start, self.pos))
+        if not self.latex and not dots and not primes and raw in _CALLABLE:
+            self.tokens.append(Token("func", _CALLABLE[raw], start, self.pos))
         elif self.latex and not dots and not primes and raw in FUNCTION_NAMES:
             self.tokens.append(Token("func", FUNCTION_NAMES[raw], start, self.pos))
         else:
