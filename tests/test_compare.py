@@ -176,6 +176,30 @@ def test_equations_without_accelerations_compare_as_relations(expected, submitte
 
 
 @pytest.mark.parametrize(
+    ("expected", "submitted", "status"),
+    [
+        # a critically damped oscillator's characteristic equation has a double root
+        ("s^2 + 2 gamma s + gamma^2 = 0", "s = -gamma", "not_equivalent"),
+        ("s^2 + 2 gamma s + gamma^2 = 0", "(s + gamma)^2 (s^2 + 1) = 0", "equivalent"),  # the same roots, as often
+        ("s = -gamma", "(s + gamma)^3 = 0", "not_equivalent"),
+        ("s^3 = -gamma^3", "s = -gamma", "equivalent"),  # s³ + γ³ = (s + γ)(s² − γs + γ²): one simple real root
+        ("s = gamma", "sqrt(s) = sqrt(gamma)", "equivalent"),  # √ is one-to-one; √s − √γ vanishes simply at γ
+    ],
+)
+def test_relations_have_the_same_roots_each_as_often(expected, submitted, status):
+    verdict = compare(expected, submitted, kind="equation", known=["s", "gamma"], domains={"s": "real"})
+    assert verdict.status == status, verdict
+
+
+def test_a_lost_double_root_is_named_without_giving_the_root():
+    verdict = compare("(s + gamma)^2 = 0", "s = -gamma", kind="equation", known=["s", "gamma"], domains={"s": "real"})
+    assert verdict.diagnosis == "root_multiplicity"
+    assert "not each as often" in verdict.feedback[0] and "gamma" not in verdict.feedback[0]
+    wrong_root = compare("(s + gamma)^2 = 0", "s = gamma", kind="equation", known=["s", "gamma"], domains={"s": "real"})
+    assert wrong_root.diagnosis == "wrong_equation_single"
+
+
+@pytest.mark.parametrize(
     ("kind", "expected", "submitted", "options", "status"),
     [
         ("integer", "3", "3", {}, "equivalent"),

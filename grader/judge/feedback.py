@@ -39,6 +39,10 @@ FEEDBACK: dict[str, str] = {
     "trivial_equation": "Equation {index} holds for every motion, so it says nothing about this one.",
     "not_equation_of_motion": "This should be an equation of motion, with the accelerations ({accelerations}) in it.",
     "wrong_equation_single": "This equation does not say the same as the expected one.",
+    "root_multiplicity": (
+        "Your equation holds for the same values, but not each as often: a repeated root,"
+        " as in (x − a)² = 0, says more than x = a."
+    ),
     "wrong": "Not equivalent to the expected answer.",
     "undecided": "This answer could not be checked automatically in time; it has been set aside for a person to grade.",
     "not_a_number": "A number is asked for here; your answer contains {names}.",

@@ -22,6 +22,7 @@ whatever the state.
 
 from __future__ import annotations
 
+import enum
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -286,12 +287,13 @@ def _solved(g, acceleration):
 
 
 def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
-    """An equation without accelerations: the same zero set.
+    """An equation without accelerations: the same roots, each as often.
 
     First g = λ f with λ ≠ 0, where λ may depend on the parameters when the relation
     involves the state (p_θ = m l² θ̇ ≡ θ̇ = p_θ/(m l²)), and must be a number when it
-    does not. Failing that, the zero sets are compared directly: ω² = g/l and
-    ω = √(g/l) have the same root ω > 0.
+    does not. Failing that, the roots are compared directly: ω² = g/l and ω = √(g/l)
+    have the same simple root ω > 0, while (s + γ)² = 0 has a double root that s = −γ
+    lacks (a critically damped oscillator's characteristic equation).
     """
     involves_state = any(expected.setting.is_state(symbol) for symbol in f.free_symbols)
     group = _STATES if involves_state else _GROUPS * _STATES
@@ -316,8 +318,10 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     if all(result is Closeness.EQUAL for result in results) and len(results) >= MIN_DEFINED:
         return Outcome("equivalent", 1.0, "equivalent", method="ratio")
     same = _same_roots(expected, expected_f, submitted_g, f.free_symbols & g.free_symbols, deadline)
-    if same:
+    if same is _Roots.SAME:
         return Outcome("equivalent", 1.0, "equivalent", method="roots")
+    if same is _Roots.MULTIPLICITY:
+        return Outcome("not_equivalent", 0.0, "root_multiplicity", method="roots")
     if same is None and Closeness.DIFFERENT not in results:
         return Outcome("undecided", 0.0, "undecided", method="ratio: too few defined points")
     return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="ratio")
@@ -326,8 +330,15 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
 _SCAN = {"positive": (0.01, 10.0), "negative": (-10.0, -0.01)}  # where roots are looked for
 
 
-def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: Deadline) -> bool | None:
-    """Whether f = 0 and g = 0 have the same real roots in one shared symbol, at sample points.
+class _Roots(enum.Enum):
+    SAME = "the same roots, each as often"
+    DIFFERENT = "a root of one is no root of the other"
+    MULTIPLICITY = "the same roots, not each as often"
+
+
+def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: Deadline) -> _Roots | None:
+    """Whether f = 0 and g = 0 have the same real roots in one shared symbol, each of the
+    same multiplicity (order of vanishing), at sample points.
 
     None when no root was found to compare.
     """
@@ -337,7 +348,7 @@ def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: 
     position = expected.variables.index(symbol)
     low, high = _SCAN.get(expected.setting.domain(symbol), (-10.0, 10.0))
     grid = [low + (high - low) * i / 80 for i in range(81)]
-    found = 0
+    found, multiplicity = 0, False
     for point in expected.points(4, salt=2).tolist():
         for one, other in ((f, g), (g, f)):
             for root in _real_roots(one, point, position, grid, deadline):
@@ -346,9 +357,34 @@ def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: 
                 except UNDEFINED:
                     return None
                 if closeness(value, 0, max(scale, 1.0)) is Closeness.DIFFERENT:
-                    return False
+                    return _Roots.DIFFERENT
+                orders = [_order(function, point, position, root) for function in (one, other)]
+                if None not in orders and abs(orders[0] - orders[1]) > 0.25:
+                    multiplicity = True
                 found += 1
-    return True if found else None
+    if not found:
+        return None
+    return _Roots.MULTIPLICITY if multiplicity else _Roots.SAME
+
+
+def _order(function: Compiled, point, position: int, root: float) -> float | None:
+    """The order to which ``function`` vanishes at ``root``: 1 for x − 2, 2 for (x − 2)², ½ for √x.
+
+    |f(r + h)| ∝ hᵏ near the root, so halving h divides it by 2ᵏ; measured on each side
+    where f is defined and real there, and averaged. None where neither side is.
+    """
+    h = 1e-3 * max(1.0, abs(root))
+    orders = []
+    for step in (h, -h):
+        try:
+            far, _ = function(_moved(point, position, root + step))
+            near, _ = function(_moved(point, position, root + step / 2))
+        except UNDEFINED:
+            continue
+        if far == 0 or near == 0 or abs(far.imag) > 1e-9 * abs(far) or abs(near.imag) > 1e-9 * abs(near):
+            continue
+        orders.append(math.log2(abs(far) / abs(near)))
+    return sum(orders) / len(orders) if orders else None
 
 
 def _moved(point, position: int, x: float) -> list:
