@@ -13,6 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare
+from grader.judge.expected import prepare
 
 PENDULUM = {"coords": ["theta"], "known": ["m", "g", "l"]}
 L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
@@ -189,6 +190,20 @@ def test_equations_without_accelerations_compare_as_relations(expected, submitte
 def test_relations_have_the_same_roots_each_as_often(expected, submitted, status):
     verdict = compare(expected, submitted, kind="equation", known=["s", "gamma"], domains={"s": "real"})
     assert verdict.status == status, verdict
+
+
+def test_searching_a_students_roots_does_not_grow_the_prepared_reference():
+    # A server keeps prepared answers for its lifetime: what one submission evaluates there
+    # must not stay behind (the roots searched for differ with every answer).
+    setting = {"kind": "equation", "known": ["s", "gamma"], "domains": {"s": "real"}}
+    compare("(s + gamma)^2 = 0", "s = -gamma", **setting)
+    reference = prepare("(s + gamma)^2 = 0", "equation", (), ("s", "gamma"), (("s", "real"),))
+    compiled = reference.cache[("compiled", "relation")]
+    remembered = len(compiled._memo)
+    for k in range(2, 8):  # an extra root, and the same root found through another function
+        compare("(s + gamma)^2 = 0", f"(s + gamma)^2 (s + {k} gamma) = 0", **setting)
+        compare("(s + gamma)^2 = 0", f"(s + gamma)^2 (s^2 + {k}) = 0", **setting)
+    assert len(compiled._memo) == remembered
 
 
 def test_a_lost_double_root_is_named_without_giving_the_root():

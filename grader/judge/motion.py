@@ -353,7 +353,7 @@ def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: 
         for one, other in ((f, g), (g, f)):
             for root in _real_roots(one, point, position, grid, deadline):
                 try:
-                    value, scale = other(_moved(point, position, root))
+                    value, scale = other.at(_moved(point, position, root))
                 except UNDEFINED:
                     return None
                 if closeness(value, 0, max(scale, 1.0)) is Closeness.DIFFERENT:
@@ -377,8 +377,8 @@ def _order(function: Compiled, point, position: int, root: float) -> float | Non
     orders = []
     for step in (h, -h):
         try:
-            far, _ = function(_moved(point, position, root + step))
-            near, _ = function(_moved(point, position, root + step / 2))
+            far, _ = function.at(_moved(point, position, root + step))
+            near, _ = function.at(_moved(point, position, root + step / 2))
         except UNDEFINED:
             continue
         if far == 0 or near == 0 or abs(far.imag) > 1e-9 * abs(far) or abs(near.imag) > 1e-9 * abs(near):
@@ -404,7 +404,7 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
 
     def at(x: float):
         try:
-            value, scale = function(_moved(point, position, x))
+            value, scale = function.at(_moved(point, position, x))
         except UNDEFINED:
             return None
         if abs(value.imag) > 1e-9 * max(1.0, abs(value)):

@@ -193,21 +193,27 @@ class Compiled:
         self._memo: dict | None = {} if memo else None
 
     def __call__(self, values: Sequence[complex]) -> tuple[complex, float]:
-        """The value and its scale at ``values``; raises ArithmeticError/ValueError where undefined."""
+        """The value and its scale at ``values``; raises ArithmeticError/ValueError where undefined.
+
+        A reference answer's values are remembered: call this at the seeded sample points,
+        which are the same for every submission, and :meth:`at` anywhere else.
+        """
         if self._memo is not None:
             key = tuple(values)
             if key not in self._memo:
                 try:
-                    self._memo[key] = self._evaluate(values)
+                    self._memo[key] = self.at(values)
                 except UNDEFINED as undefined:
                     self._memo[key] = undefined
             result = self._memo[key]
             if isinstance(result, Exception):
                 raise result
             return result
-        return self._evaluate(values)
+        return self.at(values)
 
-    def _evaluate(self, values: Sequence[complex]) -> tuple[complex, float]:
+    def at(self, values: Sequence[complex]) -> tuple[complex, float]:
+        """The same, never remembered: for points that depend on a submission (a root being
+        searched for), which would otherwise grow a reference's memory with every answer."""
         if self._float is None:
             self._float = _compile(self.expr, self.index, _FLOAT)
         scale = [0.0]
