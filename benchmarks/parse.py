@@ -144,6 +144,7 @@ def adversarial() -> list[tuple[str, str, tuple]]:
         ("999 juxtaposed names", " ".join(["m g l"] * 333), PENDULUM),
         ("20 nested brackets, 47 times", "+".join(["(" * 20 + "x" + ")" * 20] * 47), none),
         ("40 nested brackets", "(" * 40 + "x" + ")" * 40, none),
+        ("x^x^…^x, 8 levels (the limit)", "x" + "^x" * 8, none),
         ("x^x^…^x, 40 levels", "x" + "^x" * 40, none),
         ("sin(sin(…)), 20 levels", "sin(" * 20 + "θ" + ")" * 20, PENDULUM),
         ("46 names of 40 letters", " + ".join(["a" * 40] * 46), none),

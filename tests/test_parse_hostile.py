@@ -49,8 +49,10 @@ HOSTILE = [
     ("-" * 41 + "x", "too_deep"),
     ("-" * (CAP - 1) + "x", "too_deep"),
     ("+-" * 30 + "x", "too_deep"),
-    ("x" + "^x" * 41, "too_deep"),
-    ("x" + "^x" * ((CAP - 1) // 2), "too_deep"),
+    ("x" + "^x" * 41, "powers_too_deep"),
+    ("x" + "^x" * ((CAP - 1) // 2), "powers_too_deep"),
+    ("x" + "^x" * 9, "powers_too_deep"),  # LIMITS.powers is 8: x^x^…^x costs the square of its height
+    ("e^(x^(y^(z^(x^(y^(z^(x^(y^2))))))))", "powers_too_deep"),
     (_nested("sin(", ")", 41), "too_deep"),
     (_nested("sin(", ")", 399), "too_deep"),
     ("sin " * 41 + "x", "too_deep"),
@@ -142,6 +144,10 @@ def _refusal(text) -> Refusal:
 @pytest.mark.parametrize(("text", "code"), HOSTILE, ids=[_row_id(text) for text, _ in HOSTILE])
 def test_hostile_input_is_refused_with_its_code(text, code):
     assert _refusal(text).code == code
+
+
+def test_powers_beside_each_other_are_not_nested():
+    assert parse_answer("e^(-(t/tau)^2) + (x^2)^3^2", known=["tau", "x"]).ok  # beside each other, not nested
 
 
 # -- found by these tests, once bugs, now refused ------------------------------------
@@ -247,7 +253,7 @@ def test_refusal_renders_as_text(text, code):
 LARGE_BUT_ALLOWED = [
     "+".join(["x"] * (CAP // 2)),
     _nested("(", ")", 40),
-    "x" + "^x" * 40,
+    "x" + "^x" * 8,  # LIMITS.powers
     "-" * 40 + "x",
     _nested("sin(", ")", 20),  # a call is two levels: the function and its bracket
     "a" * 40,

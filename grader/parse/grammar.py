@@ -131,6 +131,7 @@ class _Parser:
         self.tokens, self.context, self.text = _leibniz(tokens, context), context, text
         self.i = 0
         self.depth = 0
+        self.powers = 0  # exponents open around the cursor, as in x^(y^(z…))
         self.splits: dict[str, list | None] = {}
 
     # -- cursor ----------------------------------------------------------------
@@ -304,7 +305,11 @@ class _Parser:
         if token.is_op("^"):
             self.advance()
             self.deeper(token)
+            self.powers += 1
+            if self.powers > LIMITS.powers:
+                raise ParseFailure("powers_too_deep", token.start, token.end, limit=LIMITS.powers)
             exponent = self.signed()
+            self.powers -= 1
             self.depth -= 1
             return _power(base, exponent, token)
         return base

@@ -29,6 +29,7 @@ MESSAGES: dict[str, str] = {
     "unopened": "Unbalanced bracket: the `{close}` at position {position} has no matching opening bracket.",
     "mismatched": "The `{open}` at position {open_position} is closed by `{close}` at position {position}.",
     "too_deep": "Your answer is nested too deeply (more than {limit} levels).",
+    "powers_too_deep": "Exponents are nested too deeply here: more than {limit} powers, each in the exponent of the last.",
     "exponent_too_large": "This exponent is too large to handle (the limit is {limit}).",
     "number_too_large": "This number is too large to handle ({digits} digits; the limit is {limit}).",
     "value_too_large": "This value is too large to handle.",

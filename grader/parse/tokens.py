@@ -48,6 +48,7 @@ class Limits:
 
     length: int = 2000  # characters in an answer
     depth: int = 40  # nested brackets, function calls and signs
+    powers: int = 8  # a power in an exponent in an exponent…: sympy's cost grows with the square of the height
     digits: int = 30  # digits in one number
     exponent: int = 100  # magnitude of a numeric exponent
     power_digits: int = 400  # digits of an evaluated numeric power
