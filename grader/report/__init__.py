@@ -7,7 +7,7 @@ Contents:
     class_counts, score_histogram, common_wrong_answers, review_queue   the summary's other numbers
 
 Functions return text; writing it to files is the caller's (the CLI's) work.
-Templates live in the repository's ``templates/`` folder.
+Templates live in the repository's ``templates/`` folder, which an installed wheel carries as ``grader/templates``.
 """
 
 from grader.report.analysis import (

@@ -43,7 +43,15 @@ from grader.report.charts import histogram_chart, share_chart
 
 __all__ = ["STATUS_LABELS", "TEMPLATES", "StatusLabel", "render_student_report", "render_summary"]
 
-TEMPLATES = Path(__file__).resolve().parents[2] / "templates"
+
+def _templates() -> Path:
+    """The templates: the repository's ``templates/`` in a checkout (or an editable install),
+    the package's ``templates`` folder where a wheel put them."""
+    checkout = Path(__file__).resolve().parents[2] / "templates"
+    return checkout if checkout.is_dir() else Path(__file__).resolve().parents[1] / "templates"
+
+
+TEMPLATES = _templates()
 MATH_KINDS = ("expression", "equation", "equations", "lagrangian")
 LOW_DISCRIMINATION = 0.2  # a common rule of thumb: below it, a part barely separates strong from weak
 
