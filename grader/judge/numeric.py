@@ -25,7 +25,6 @@ cancelling ``1e3 - 1e3`` must not make 1e-13 of rounding look like a difference.
 
 from __future__ import annotations
 
-import cmath
 import enum
 import math
 import random
@@ -37,6 +36,8 @@ import mpmath
 import numpy as np
 import sympy
 from sympy.core.function import AppliedUndef
+
+from grader.parse.functions import COMPLEX
 
 __all__ = ["UNDEFINED", "Closeness", "Compiled", "NotCompilable", "closeness", "sample_points"]
 
@@ -57,24 +58,6 @@ class _Backend:
         self.number, self.functions, self.pi, self.e, self.vector = number, functions, pi, e, vector
 
 
-def _cot(z):
-    return 1 / cmath.tan(z)
-
-
-def _principal(function):
-    """``function`` on the principal branch, as sympy defines it.
-
-    Complex arithmetic leaves signed zeros (1/(-2+0j) is -0.5-0j), and cmath puts
-    a value with imaginary part -0.0 on the other side of a branch cut:
-    sqrt(-0.5-0j) is -0.707j where sympy's sqrt(-1/2) is +0.707j.
-    """
-
-    def on_branch(z):
-        return function(complex(z.real, 0.0) if z.imag == 0 else z)
-
-    return on_branch
-
-
 def _power(base, exponent):
     if isinstance(base, complex) and base.imag == 0:
         base = complex(base.real, 0.0)
@@ -84,13 +67,7 @@ def _power(base, exponent):
 _FLOAT = _Backend(
     number=lambda p, q: complex(p / q),
     functions={
-        "sin": cmath.sin, "cos": cmath.cos, "tan": cmath.tan, "cot": _cot,
-        "sec": lambda z: 1 / cmath.cos(z), "csc": lambda z: 1 / cmath.sin(z),
-        "asin": _principal(cmath.asin), "acos": _principal(cmath.acos), "atan": cmath.atan,
-        "sinh": cmath.sinh, "cosh": cmath.cosh, "tanh": cmath.tanh,
-        "coth": lambda z: 1 / cmath.tanh(z), "sech": lambda z: 1 / cmath.cosh(z), "csch": lambda z: 1 / cmath.sinh(z),
-        "asinh": _principal(cmath.asinh), "acosh": _principal(cmath.acosh), "atanh": _principal(cmath.atanh),
-        "exp": cmath.exp, "log": _principal(cmath.log), "Abs": abs,
+        **COMPLEX,
         "sign": lambda z: 0 if z == 0 else z / abs(z), "re": lambda z: complex(z.real), "im": lambda z: complex(z.imag),
     },
     pi=lambda: complex(math.pi), e=lambda: complex(math.e),
@@ -98,7 +75,7 @@ _FLOAT = _Backend(
 
 
 def _on_branch(z):
-    """The array's real values with imaginary part +0.0: see :func:`_principal`."""
+    """The array's real values with imaginary part +0.0: see :func:`grader.parse.functions.principal`."""
     return np.where(z.imag == 0, z.real + 0j, z)
 
 

@@ -22,7 +22,6 @@ token the whitelist accepted; numbers are exact rationals (``0.5`` is 1/2).
 
 from __future__ import annotations
 
-import cmath
 import math
 import re
 from collections.abc import Iterable
@@ -31,6 +30,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
+from grader.parse.functions import COMPLEX, SYMPY
 from grader.parse.messages import ParseFailure
 from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, canonical_name, split_derivative
 from grader.parse.tokens import LIMITS, Name, Token
@@ -39,13 +39,6 @@ __all__ = ["TIME", "Context", "parse_tokens"]
 
 TIME = sympy.Symbol("t", real=True)
 
-_FUNCTIONS = {
-    "sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "cot": sympy.cot, "sec": sympy.sec,
-    "csc": sympy.csc, "asin": sympy.asin, "acos": sympy.acos, "atan": sympy.atan,
-    "sinh": sympy.sinh, "cosh": sympy.cosh, "tanh": sympy.tanh, "coth": sympy.coth, "sech": sympy.sech,
-    "csch": sympy.csch, "asinh": sympy.asinh, "acosh": sympy.acosh, "atanh": sympy.atanh, "exp": sympy.exp,
-    "log": sympy.log, "sqrt": sympy.sqrt, "abs": sympy.Abs,
-}  # fmt: skip
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
 _STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt", "deriv")
 _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
@@ -748,7 +741,7 @@ def _apply(name: str, argument, token: Token):
     # proportion to its size: sin(exp(exp(100))) would never return.
     if argument.is_number and not _magnitude(argument) <= _MAX_MAGNITUDE:
         raise ParseFailure("value_too_large", token.start, token.end)
-    value = _FUNCTIONS[name](argument)
+    value = SYMPY[name](argument)
     if value.has(sympy.zoo, sympy.nan):
         raise ParseFailure("undefined_value", token.start, token.end)
     return value
@@ -804,15 +797,6 @@ def _magnitude(value) -> float:
         return math.inf
 
 
-_FLOAT_FUNCTIONS = {
-    "sin": cmath.sin, "cos": cmath.cos, "tan": cmath.tan, "cot": lambda z: 1 / cmath.tan(z),
-    "sec": lambda z: 1 / cmath.cos(z), "csc": lambda z: 1 / cmath.sin(z), "asin": cmath.asin,
-    "acos": cmath.acos, "atan": cmath.atan, "sinh": cmath.sinh, "cosh": cmath.cosh, "tanh": cmath.tanh,
-    "coth": lambda z: 1 / cmath.tanh(z), "sech": lambda z: 1 / cmath.cosh(z), "csch": lambda z: 1 / cmath.sinh(z),
-    "asinh": cmath.asinh, "acosh": cmath.acosh, "atanh": cmath.atanh, "exp": cmath.exp, "log": cmath.log, "Abs": abs,
-}  # fmt: skip
-
-
 def _float(value) -> complex:
     if value.is_Rational:
         return complex(int(value.p) / int(value.q))
@@ -828,7 +812,7 @@ def _float(value) -> complex:
         return math.prod(_float(arg) for arg in value.args)
     if value.is_Pow:
         return _float(value.base) ** _float(value.exp)
-    function = _FLOAT_FUNCTIONS.get(type(value).__name__)
+    function = COMPLEX.get(type(value).__name__)
     if function is None or len(value.args) != 1:
         raise ValueError(f"no float estimate for {type(value).__name__}")
     return complex(function(_float(value.args[0])))
