@@ -192,6 +192,27 @@ def test_relations_have_the_same_roots_each_as_often(expected, submitted, status
     assert verdict.status == status, verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("yddot = 10^12 g; xddot = m", "equivalent"),
+        ("xddot = 2 m; yddot = 10^12 g", "not_equivalent"),  # the small equation is judged on its own scale
+        ("xddot = m + 10^-3 m; yddot = 10^12 g", "not_equivalent"),
+    ],
+)
+def test_each_equation_of_a_system_is_judged_on_its_own_scale(submitted, status):
+    verdict = compare("xddot = m; yddot = 10^12 g", submitted, kind="equations", coords=["x", "y"], known=["m", "g"])
+    assert verdict.status == status, verdict
+
+
+def test_an_equation_with_an_acceleration_is_never_called_trivial():
+    # beside e^30 ≈ 10¹³ the coefficient 1 of ÿ is within rounding of zero; it is still there
+    verdict = compare(
+        "xddot = m; yddot = exp(30)", "yddot = exp(30); xddot = m", kind="equations", coords=["x", "y"], known=["m"]
+    )
+    assert verdict.status == "equivalent", verdict
+
+
 def test_searching_a_students_roots_does_not_grow_the_prepared_reference():
     # A server keeps prepared answers for its lifetime: what one submission evaluates there
     # must not stay behind (the roots searched for differ with every answer).

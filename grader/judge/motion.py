@@ -58,17 +58,19 @@ class _Rows:
     """Coefficient rows (c₁…cₙ, b) of equations at one state, and whether they are linear in q̈.
 
     Built from each equation's values at the acceleration settings of :func:`_settings`
-    (q̈ = 0, each unit q̈ₖ, the probe) and the largest scale among them.
+    (q̈ = 0, each unit q̈ₖ, the probe) and each equation's scale there. Each equation is
+    judged on its own scale: in ẍ = m, ÿ = 10¹³ g the first must not look like zero.
     """
 
     def __init__(self, samples: Sequence[tuple[Sequence, float]], precise: bool):
-        self.scale = max((scale for _, scale in samples), default=0.0)
+        self.scales = [scale for _, scale in samples]
+        self.scale = max(self.scales, default=0.0)
         self.rows, self.linear = [], Closeness.EQUAL
-        for values, _ in samples:
+        for values, scale in samples:
             b, *units, probed = values
             c = [unit - b for unit in units]
             predicted = b + sum(ck * pk for ck, pk in zip(c, _probe(len(c)), strict=True))
-            self.linear = _worst(self.linear, closeness(probed, predicted, self.scale, precise=precise))
+            self.linear = _worst(self.linear, closeness(probed, predicted, scale, precise=precise))
             self.rows.append([*c, b])
 
     @cached_property
@@ -76,6 +78,20 @@ class _Rows:
         """The accelerations these equations determine, if they do (None when singular)."""
         n = len(self.rows[0]) - 1 if self.rows else 0
         return _solve([row[:n] for row in self.rows], [-row[n] for row in self.rows])
+
+    @cached_property
+    def uncertainty(self) -> list[float]:
+        """How large each acceleration's rounding can be: |A⁻¹| times the equations' scales.
+
+        Where the equations are coupled, an acceleration inherits the scale of every
+        equation it is solved from; where they are not, only its own.
+        """
+        n = len(self.rows[0]) - 1
+        matrix = [row[:n] for row in self.rows]
+        columns = [_solve(matrix, [float(i == j) for i in range(n)]) for j in range(n)]
+        if any(column is None for column in columns):
+            return [self.scale] * n
+        return [sum(abs(columns[i][k]) * self.scales[i] for i in range(n)) for k in range(n)]
 
 
 def _probe(n: int) -> list[float]:
@@ -483,9 +499,10 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     states = _states(expected, expected_fs, submitted_gs, deadline)
     if len(states) < MIN_DEFINED:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
-    outcome = _system_outcome(expected, states, len(theirs))
+    moving = [bool(_accelerations_in(g, expected)) for g in theirs]
+    outcome = _system_outcome(expected, states, moving)
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
-    if wrong and _is_small_angle_system(expected, submitted_gs, deadline):
+    if wrong and _is_small_angle_system(expected, submitted_gs, moving, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
     return outcome
 
@@ -499,7 +516,7 @@ def _state_unsure(state: _State | None) -> bool:
     return state is not None and state.unsure
 
 
-def _is_small_angle_system(expected: Expected, submitted_gs, deadline: Deadline) -> bool:
+def _is_small_angle_system(expected: Expected, submitted_gs, moving: list[bool], deadline: Deadline) -> bool:
     """Whether the submitted system is the expected one linearized about q = q̇ = 0."""
     if "equations, linearized" not in expected.cache:
         linear = [taylor(f, expected.setting, 1) for f in _equations(expected.value)]
@@ -511,7 +528,7 @@ def _is_small_angle_system(expected: Expected, submitted_gs, deadline: Deadline)
     if linear_fs is None:
         return False
     states = _states(expected, linear_fs, submitted_gs, deadline)
-    return len(states) >= MIN_DEFINED and _system_outcome(expected, states, len(submitted_gs)).key == "equivalent"
+    return len(states) >= MIN_DEFINED and _system_outcome(expected, states, moving).key == "equivalent"
 
 
 def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
@@ -520,12 +537,13 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
     accelerations = reference.accelerations
     if reference.linear is not Closeness.EQUAL or accelerations is None:
         return None  # a degenerate state of the reference: it says nothing
-    scale = max(reference.scale, submitted.scale)
     verdicts, trivial = [], []
-    for row in submitted.rows:
+    for row, scale in zip(submitted.rows, submitted.scales, strict=True):
+        # the residual's rounding: the row's own terms, and what the accelerations carry in
         size = sum(abs(c * a) for c, a in zip(row, accelerations, strict=False)) + abs(row[n])
+        inherited = sum(abs(c) * u for c, u in zip(row, reference.uncertainty, strict=False))
         residual = sum(c * a for c, a in zip(row, accelerations, strict=False)) + row[n]
-        verdict = closeness(residual, 0, max(scale, float(size)), precise=precise)
+        verdict = closeness(residual, 0, max(scale, float(size), float(inherited)), precise=precise)
         verdicts.append(_worst(verdict, submitted.linear))
         trivial.append(all(closeness(c, 0, scale, precise=precise) is Closeness.EQUAL for c in row[:n]))
     good = [row for row, verdict in zip(submitted.rows, verdicts, strict=True) if verdict is Closeness.EQUAL]
@@ -533,11 +551,13 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
     return _State(verdicts, trivial, independent, good, reference.rows)
 
 
-def _system_outcome(expected: Expected, states: list[_State], given: int) -> Outcome:
+def _system_outcome(expected: Expected, states: list[_State], moving: list[bool]) -> Outcome:
+    """The verdict on a submitted system; ``moving`` says which of its equations contain an
+    acceleration at all (its coefficient can look like rounding beside a huge constant)."""
     coords, describe = expected.setting.coords, expected.setting.describe
-    n = len(coords)
+    n, given = len(coords), len(moving)
     right = [all(state.verdicts[j] is Closeness.EQUAL for state in states) for j in range(given)]
-    trivial = [all(state.trivial[j] for state in states) for j in range(given)]
+    trivial = [not moving[j] and all(state.trivial[j] for state in states) for j in range(given)]
     method = "accelerations"
     if given > n:
         return Outcome("not_equivalent", 0.0, "extra_equation", {"given": given, "count": n}, method)
@@ -591,7 +611,8 @@ def _solve(matrix, rhs):
 
 
 def _rank(rows) -> int:
-    rows = [list(row) for row in rows]
+    # each row on its own scale first: ẍ − m = 0 beside ÿ − 10¹³ g = 0 is no zero row
+    rows = [[x / (max(abs(y) for y in row) or 1) for x in row] for row in rows]
     if not rows:
         return 0
     norm = max((abs(x) for row in rows for x in row), default=0) or 1
