@@ -499,10 +499,9 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     states = _states(expected, expected_fs, submitted_gs, deadline)
     if len(states) < MIN_DEFINED:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
-    moving = [bool(_accelerations_in(g, expected)) for g in theirs]
-    outcome = _system_outcome(expected, states, moving)
+    outcome = _system_outcome(expected, states, theirs)
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
-    if wrong and _is_small_angle_system(expected, submitted_gs, moving, deadline):
+    if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
     return outcome
 
@@ -516,7 +515,7 @@ def _state_unsure(state: _State | None) -> bool:
     return state is not None and state.unsure
 
 
-def _is_small_angle_system(expected: Expected, submitted_gs, moving: list[bool], deadline: Deadline) -> bool:
+def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: Deadline) -> bool:
     """Whether the submitted system is the expected one linearized about q = q̇ = 0."""
     if "equations, linearized" not in expected.cache:
         linear = [taylor(f, expected.setting, 1) for f in _equations(expected.value)]
@@ -528,7 +527,7 @@ def _is_small_angle_system(expected: Expected, submitted_gs, moving: list[bool],
     if linear_fs is None:
         return False
     states = _states(expected, linear_fs, submitted_gs, deadline)
-    return len(states) >= MIN_DEFINED and _system_outcome(expected, states, moving).key == "equivalent"
+    return len(states) >= MIN_DEFINED and _system_outcome(expected, states, theirs).key == "equivalent"
 
 
 def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
@@ -551,13 +550,16 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
     return _State(verdicts, trivial, independent, good, reference.rows)
 
 
-def _system_outcome(expected: Expected, states: list[_State], moving: list[bool]) -> Outcome:
-    """The verdict on a submitted system; ``moving`` says which of its equations contain an
-    acceleration at all (its coefficient can look like rounding beside a huge constant)."""
+def _system_outcome(expected: Expected, states: list[_State], theirs: Sequence) -> Outcome:
+    """The verdict on the submitted system ``theirs`` (its equations as expressions = 0)."""
     coords, describe = expected.setting.coords, expected.setting.describe
-    n, given = len(coords), len(moving)
+    n, given = len(coords), len(theirs)
     right = [all(state.verdicts[j] is Closeness.EQUAL for state in states) for j in range(given)]
-    trivial = [not moving[j] and all(state.trivial[j] for state in states) for j in range(given)]
+    # An equation with an acceleration in it is not trivial, even where its coefficient looks
+    # like rounding beside a huge constant (ÿ = e³⁰); only those that look trivial are read.
+    trivial = [
+        all(state.trivial[j] for state in states) and not _accelerations_in(theirs[j], expected) for j in range(given)
+    ]
     method = "accelerations"
     if given > n:
         return Outcome("not_equivalent", 0.0, "extra_equation", {"given": given, "count": n}, method)
