@@ -227,6 +227,12 @@ class _Reader:
             self.fail((*location, key), f"field {key!r} is {value!r}; {what}")
         return value
 
+    def entries(self, data: dict, location: tuple, key: str, allowed: set[str], name: str, default=...):
+        """Each mapping in the list field ``key``, with where it stands: (location, fields)."""
+        for index, raw in enumerate(self.get(data, location, key, list, default)):
+            here = (*location, key, index)
+            yield here, self.mapping(raw, here, allowed, name)
+
 
 def problem_from_data(data, *, path: str = "", lines: Mapping[tuple, int] | None = None) -> Problem:
     """A validated :class:`Problem` from plain data (as read from YAML).
@@ -377,9 +383,7 @@ def _score(value) -> bool:
 
 
 def _mistakes(reader: _Reader, data: dict, location: tuple):
-    for index, raw in enumerate(reader.get(data, location, "mistakes", list, [])):
-        here = (*location, "mistakes", index)
-        item = reader.mapping(raw, here, {"answer", "feedback", "score"}, "a mistake")
+    for here, item in reader.entries(data, location, "mistakes", {"answer", "feedback", "score"}, "a mistake", []):
         yield Mistake(
             answer=str(reader.get(item, here, "answer", (str, int, float))),
             feedback=reader.get(item, here, "feedback", str, what="what the student is told"),
@@ -388,9 +392,7 @@ def _mistakes(reader: _Reader, data: dict, location: tuple):
 
 
 def _rubric(reader: _Reader, data: dict, location: tuple):
-    for index, raw in enumerate(reader.get(data, location, "rubric", list, [])):
-        here = (*location, "rubric", index)
-        item = reader.mapping(raw, here, {"idea", "points", "phrasings"}, "a rubric idea")
+    for here, item in reader.entries(data, location, "rubric", {"idea", "points", "phrasings"}, "a rubric idea", []):
         phrasings = reader.get(item, here, "phrasings", list, what="the words that show the idea")
         if not phrasings or not all(isinstance(p, str) and p.strip() for p in phrasings):
             reader.fail((*here, "phrasings"), "phrasings must be a non-empty list of words or phrases")
@@ -402,9 +404,7 @@ def _rubric(reader: _Reader, data: dict, location: tuple):
 
 
 def _tests(reader: _Reader, data: dict, location: tuple):
-    for index, raw in enumerate(reader.get(data, location, "tests", list, [])):
-        here = (*location, "tests", index)
-        item = reader.mapping(raw, here, {"answer", "score", "feedback_contains"}, "a test")
+    for here, item in reader.entries(data, location, "tests", {"answer", "score", "feedback_contains"}, "a test", []):
         yield PartTest(
             answer=str(reader.get(item, here, "answer", (str, int, float))),
             score=float(reader.get(item, here, "score", (int, float), check=_score, what="a score is from 0 to 1")),
@@ -422,9 +422,7 @@ def assignment_from_data(data, *, path: str = "", lines: Mapping[tuple, int] | N
     if due is not None and not isinstance(due, datetime.date):
         reader.fail(("due",), f"due must be a date such as 2026-12-01, not {due!r}")
     items = []
-    for index, raw in enumerate(reader.get(top, (), "problems", list)):
-        here = ("problems", index)
-        entry = reader.mapping(raw, here, {"problem", "parts", "points"}, "an assignment item")
+    for here, entry in reader.entries(top, (), "problems", {"problem", "parts", "points"}, "an assignment item"):
         points = reader.get(entry, here, "points", (int, float), None, check=lambda p: p > 0, what="more than 0")
         problem = reader.get(entry, here, "problem", str)
         parts = tuple(reader.get(entry, here, "parts", list, []))
