@@ -21,17 +21,14 @@ if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
         f"needs {CHROMIUM} and {CHROMEDRIVER} (apt-get install chromium chromium-driver)", allow_module_level=True
     )
 
+from course import BANK, REVIEW  # noqa: E402
 from selenium import webdriver  # noqa: E402  (after the skip: nothing to drive without a browser)
 from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.support import expected_conditions  # noqa: E402
 from selenium.webdriver.support.ui import WebDriverWait  # noqa: E402
 
-from grader.bank import load_assignment, load_bank  # noqa: E402
 from grader.serve import make_server  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
-BANK = load_bank(ROOT / "problems")
-REVIEW = load_assignment(ROOT / "problems" / "assignments" / "review.yaml", BANK)
 KEY = "plane-pendulum.lagrangian"
 SIGN_HINT = "Check the sign of the potential energy; with θ from the downward vertical the bob is lowest at θ = 0."
 

@@ -9,8 +9,9 @@ import os
 from pathlib import Path
 
 import pytest
+from course import BANK, REVIEW
 
-from grader.bank import load_assignment, load_bank
+from grader.bank import load_assignment
 from grader.export import (
     apply_overrides,
     canvas_csv,
@@ -26,9 +27,6 @@ from grader.grade.results import PartGrade, Student, SubmissionGrade
 from grader.grade.submissions import Submission, read_submissions
 from grader.run import file_name
 
-ROOT = Path(__file__).resolve().parent.parent
-BANK = load_bank(ROOT / "problems")
-REVIEW = load_assignment(ROOT / "problems" / "assignments" / "review.yaml", BANK)
 PENDULUM_L = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
 
 

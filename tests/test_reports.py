@@ -12,11 +12,10 @@ import math
 import re
 from collections import Counter
 from html.parser import HTMLParser
-from pathlib import Path
 
 import pytest
+from course import BANK, REVIEW, ROOT
 
-from grader.bank import load_assignment, load_bank
 from grader.grade.batch import grade_submission
 from grader.grade.part import expected_answer, setting_of
 from grader.grade.results import PartGrade, Student, SubmissionGrade
@@ -31,10 +30,6 @@ from grader.report import (
     review_queue,
     score_histogram,
 )
-
-ROOT = Path(__file__).resolve().parent.parent
-BANK = load_bank(ROOT / "problems")
-REVIEW = load_assignment(ROOT / "problems" / "assignments" / "review.yaml", BANK)
 
 SCRIPT = "<script>alert(1)</script>"
 TEMPLATE_INJECTION = "{{ 7*7 }}"

@@ -7,14 +7,12 @@ import re
 from pathlib import Path
 
 import pytest
+from course import BANK
 
 from grader import CheckResult, check, compare, parse_answer
-from grader.bank import load_bank
 from grader.cli import main
 from grader.grade.part import expected_answer, part_options, setting_of
 
-ROOT = Path(__file__).resolve().parent.parent
-BANK = load_bank(ROOT / "problems")
 LAGRANGIAN = "plane-pendulum.lagrangian"
 RIGHT = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
 SIGN_HINT = "Check the sign of the potential energy; with θ from the downward vertical the bob is lowest at θ = 0."

@@ -16,21 +16,17 @@ import sys
 import threading
 import urllib.error
 import urllib.request
-from pathlib import Path
 
 import pytest
+from course import BANK, REVIEW, ROOT
 
 import grader.serve.app
-from grader.bank import load_assignment, load_bank
 from grader.cli import main
 from grader.errors import GraderError
 from grader.grade.part import expected_answer
 from grader.grade.selfcheck import find_part
 from grader.serve import LIMITS, make_server, problem_views, render_page
 
-ROOT = Path(__file__).resolve().parent.parent
-BANK = load_bank(ROOT / "problems")
-REVIEW = load_assignment(ROOT / "problems" / "assignments" / "review.yaml", BANK)
 LAGRANGIAN = "plane-pendulum.lagrangian"
 CSP = "default-src 'self'; script-src 'self' 'unsafe-inline'; style-src 'unsafe-inline'"
 SEEN: list[str] = []  # every response body, for the last test
