@@ -205,6 +205,29 @@ def test_each_equation_of_a_system_is_judged_on_its_own_scale(submitted, status)
     assert verdict.status == status, verdict
 
 
+@pytest.mark.parametrize(
+    ("kind", "expected", "submitted", "status"),
+    [
+        # stiff springs in numbers: accelerations in the thousands beside unit coefficients
+        ("equations", "xddot = -3000 x + y; yddot = 2000 (x - y)",
+         "0.001 xddot + 3 x - 0.001 y = 0; yddot/2000 = x - y", "equivalent"),
+        ("equations", "xddot = -3000 x + y; yddot = 2000 (x - y)",
+         "0.001 xddot + 3 x - 0.0011 y = 0; yddot/2000 = x - y", "not_equivalent"),
+        ("equation", "xddot = -2*10^6 x + 3*10^6 sin(x)", "10^-3 xddot + 2000 x - 3000 sin(x) = 0", "equivalent"),
+        # multiplied through, the acceleration's coefficient is 10¹² times smaller than the rest
+        ("equations", "xddot = m; yddot = 10^12 g", "m xddot = m m; l yddot - l 10^12 g = 0", "equivalent"),
+        ("equations", "xddot = m; yddot = exp(-10 m x)", "m xddot = m m; l yddot - l exp(-10 m x) = 0", "equivalent"),
+        ("equation", "yddot = 10^12 g", "l yddot - l 10^12 g = 0", "equivalent"),
+        # off by 1 in 10¹²: floats cannot tell, 40 digits can
+        ("equations", "xddot = m; yddot = 10^12 g", "m xddot = m m; l yddot - l 10^12 g = 1", "not_equivalent"),
+        ("equation", "yddot = 10^12 g", "l yddot - l 10^12 g - 1 = 0", "not_equivalent"),
+    ],
+)  # fmt: skip
+def test_accelerations_far_larger_than_their_coefficients(kind, expected, submitted, status):
+    verdict = compare(expected, submitted, kind=kind, coords=["x", "y"], known=["m", "g", "l"])
+    assert verdict.status == status, verdict
+
+
 def test_an_equation_with_an_acceleration_is_never_called_trivial():
     # beside e^30 ≈ 10¹³ the coefficient 1 of ÿ is within rounding of zero; it is still there
     verdict = compare(

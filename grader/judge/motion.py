@@ -6,8 +6,11 @@ Contents:
 
 An equation of motion is linear in the accelerations: Σₖ cₖ(q, q̇, t) q̈ₖ + b(q, q̇, t) = 0.
 At each sample state the coefficients are read off numerically, with no symbolic
-solving: b is the equation at q̈ = 0 and cₖ what a unit acceleration adds; a probe
-at other accelerations confirms the equation really is linear in them. Then
+solving: b is the equation at q̈ = 0 and cₖ what a step in q̈ₖ adds, divided by the
+step; a probe at other accelerations confirms the equation really is linear in them.
+The step is as large as the reference's accelerations at that state (a power of two):
+with a unit step, ÿ = 10⁴ g would leave cₖ only the digits that survive 10⁴ − (10⁴ − 1).
+Then
 
 * one equation is right when its coefficient vector (c, b) is a nonzero multiple
   of the expected one at every state: multiplied through by anything, rearranged;
@@ -28,6 +31,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
+import mpmath
 import numpy as np
 import sympy
 
@@ -35,7 +39,7 @@ from grader.judge.deadline import Deadline
 from grader.judge.diagnose import taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
-from grader.judge.numeric import UNDEFINED, Closeness, Compiled, closeness
+from grader.judge.numeric import PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
 from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, side_by_side
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
@@ -44,6 +48,7 @@ __all__ = ["check_equation", "check_equations"]
 
 _PROBE = (0.7, -1.3, 0.45, 1.9)  # accelerations at which linearity is confirmed
 _GROUPS, _STATES = 4, 3  # parameter draws × state draws for the ratio test
+_MAX_STEP_EXPONENT = 200  # steps up to 2²⁰⁰: beyond, a value's square would overflow a float
 
 
 def _as_zero(value) -> sympy.Expr:
@@ -58,20 +63,32 @@ class _Rows:
     """Coefficient rows (c₁…cₙ, b) of equations at one state, and whether they are linear in q̈.
 
     Built from each equation's values at the acceleration settings of :func:`_settings`
-    (q̈ = 0, each unit q̈ₖ, the probe) and each equation's scale there. Each equation is
-    judged on its own scale: in ẍ = m, ÿ = 10¹³ g the first must not look like zero.
+    (q̈ = 0, a ``step`` in each q̈ₖ, the probe) and its scale at each (the largest term
+    summed there). Every entry has its own rounding scale: b's is the equation's scale at
+    q̈ = 0, and cₖ's the larger of that and the scale at its step, divided by the step. So
+    each equation is judged on its own scale (in ẍ = m, ÿ = 10¹³ g the first must not look
+    like zero), and a large step leaves neither b nor cₖ looking rounder than it is.
     """
 
-    def __init__(self, samples: Sequence[tuple[Sequence, float]], precise: bool):
-        self.scales = [scale for _, scale in samples]
-        self.scale = max(self.scales, default=0.0)
-        self.rows, self.linear = [], Closeness.EQUAL
-        for values, scale in samples:
-            b, *units, probed = values
-            c = [unit - b for unit in units]
-            predicted = b + sum(ck * pk for ck, pk in zip(c, _probe(len(c)), strict=True))
-            self.linear = _worst(self.linear, closeness(probed, predicted, scale, precise=precise))
+    def __init__(self, samples: Sequence[tuple[Sequence, Sequence[float]]], precise: bool, step: float = 1.0):
+        self.step = step
+        self.rows, self.entry_scales, self.linear = [], [], Closeness.EQUAL
+        for values, scales in samples:
+            (b, *stepped, probed), (b_scale, *stepped_scales, probe_scale) = values, scales
+            c = [(value - b) / step for value in stepped]
+            c_scales = [max(scale, b_scale) / step for scale in stepped_scales]
+            probe = _probe(len(c))
+            predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
+            noise = max(probe_scale, b_scale + sum(s * abs(p) for s, p in zip(c_scales, probe, strict=True)))
+            self.linear = _worst(self.linear, closeness(probed, predicted, noise, precise=precise))
             self.rows.append([*c, b])
+            self.entry_scales.append([*c_scales, b_scale])
+
+    def scale_at(self, i: int, accelerations) -> float:
+        """The rounding scale of equation ``i`` evaluated at ``accelerations``: its constant's,
+        and each coefficient's times its acceleration."""
+        *c_scales, b_scale = self.entry_scales[i]
+        return b_scale + sum(s * abs(a) for s, a in zip(c_scales, accelerations, strict=True))
 
     @cached_property
     def accelerations(self) -> list | None:
@@ -81,7 +98,7 @@ class _Rows:
 
     @cached_property
     def uncertainty(self) -> list[float]:
-        """How large each acceleration's rounding can be: |A⁻¹| times the equations' scales.
+        """How large each acceleration's rounding can be: |A⁻¹| times the equations' scales there.
 
         Where the equations are coupled, an acceleration inherits the scale of every
         equation it is solved from; where they are not, only its own.
@@ -89,18 +106,40 @@ class _Rows:
         n = len(self.rows[0]) - 1
         matrix = [row[:n] for row in self.rows]
         columns = [_solve(matrix, [float(i == j) for i in range(n)]) for j in range(n)]
+        accelerations = self.accelerations or [0.0] * n
+        scales = [self.scale_at(i, accelerations) for i in range(len(self.rows))]
         if any(column is None for column in columns):
-            return [self.scale] * n
-        return [sum(abs(columns[i][k]) * self.scales[i] for i in range(n)) for k in range(n)]
+            return [max(scales, default=0.0)] * n
+        return [sum(abs(columns[i][k]) * scales[i] for i in range(n)) for k in range(n)]
 
 
 def _probe(n: int) -> list[float]:
     return [_PROBE[k % len(_PROBE)] * (1 + k // len(_PROBE)) for k in range(n)]
 
 
-def _settings(n: int) -> list[list[float]]:
-    """The accelerations each equation is evaluated at: zero, each unit vector, the probe."""
-    return [[0.0] * n, *([float(k == j) for k in range(n)] for j in range(n)), _probe(n)]
+def _settings(n: int, step: float = 1.0) -> list[list[float]]:
+    """The accelerations each equation is evaluated at: zero, ``step`` along each, the probe."""
+    return [[0.0] * n, *([step * (k == j) for k in range(n)] for j in range(n)), _probe(n)]
+
+
+def _step(rows: _Rows | None) -> float:
+    """The step for reading coefficients at a state: the power of two at or above the largest
+    acceleration the reference's equations imply there, |b| / max |cₖ| (1 when that is smaller)."""
+    size = 1.0
+    for row in rows.rows if rows is not None else ():
+        largest = max(abs(c) for c in row[:-1])
+        if largest > 0 and math.isfinite(abs(row[-1]) / largest):
+            size = max(size, abs(row[-1]) / largest)
+    return 2.0 ** min(math.ceil(math.log2(size)), _MAX_STEP_EXPONENT)
+
+
+def _steps(expected: Expected, reference: Sequence[Compiled]) -> tuple[float, ...]:
+    """The step at each sample state, from the reference's rows read with a unit step."""
+    key = ("steps", tuple(id(f) for f in reference))
+    if key not in expected.cache:
+        unit = (1.0,) * POINTS
+        expected.cache[key] = tuple(_step(rows) for rows in _float_rows(expected, reference, unit, reference=True))
+    return expected.cache[key]
 
 
 def _worst(a: Closeness, b: Closeness) -> Closeness:
@@ -120,59 +159,63 @@ def _accelerations_in(expr, expected: Expected) -> list[str]:
     return [q for q in setting.coords if setting.acceleration(q) in present or setting.node(q, 2) in present]
 
 
-def _accelerated_states(expected: Expected) -> np.ndarray:
+def _accelerated_states(expected: Expected, steps: tuple[float, ...]) -> np.ndarray:
     """Every sample state at each acceleration setting, one row per (state, setting), state-major."""
-    if "accelerated states" not in expected.cache:
+    key = ("accelerated states", steps)
+    if key not in expected.cache:
         positions = _positions(expected)
-        settings = np.array(_settings(len(positions)), complex)
         points = expected.points(POINTS, group=GROUP)
-        batch = np.repeat(points, len(settings), axis=0)
-        batch[:, positions] = np.tile(settings, (len(points), 1))
+        settings = np.array([_settings(len(positions), step) for step in steps], complex)
+        batch = np.repeat(points, settings.shape[1], axis=0)
+        batch[:, positions] = settings.reshape(-1, len(positions))
         batch.flags.writeable = False
-        expected.cache["accelerated states"] = batch
-    return expected.cache["accelerated states"]
+        expected.cache[key] = batch
+    return expected.cache[key]
 
 
-def _float_rows(expected: Expected, system: Sequence[Compiled], *, reference: bool = False) -> list[_Rows | None]:
-    """The rows of a system at each sample state, in floats; None where it is undefined.
+def _float_rows(
+    expected: Expected, system: Sequence[Compiled], steps: tuple[float, ...], *, reference: bool = False
+) -> list[_Rows | None]:
+    """The rows of a system at each sample state, read with that state's step, in floats;
+    None where it is undefined.
 
     A ``reference`` system is compiled from the expected answer and kept in its cache (so
     its identity is stable): its rows are the same for every submission and kept too.
     """
-    key = ("rows", tuple(id(f) for f in system))
+    key = ("rows", tuple(id(f) for f in system), steps)
     if reference and key in expected.cache:
         return expected.cache[key]
-    batch = _accelerated_states(expected)
+    batch = _accelerated_states(expected, steps)
     width = len(_positions(expected)) + 2
     evaluated = []
     for f in system:
         values, scales = f.many(batch)
-        evaluated.append((values.reshape(-1, width).tolist(), scales.reshape(-1, width).max(axis=1).tolist()))
+        evaluated.append((values.reshape(-1, width).tolist(), scales.reshape(-1, width).tolist()))
     rows = []
-    for number in range(len(batch) // width):
+    for number, step in enumerate(steps):
         samples = [(values[number], scales[number]) for values, scales in evaluated]
-        defined = all(math.isfinite(scale) for _, scale in samples)
-        rows.append(_Rows(samples, precise=False) if defined else None)
+        defined = all(math.isfinite(sum(scales)) for _, scales in samples)
+        rows.append(_Rows(samples, precise=False, step=step) if defined else None)
     if reference:
         expected.cache[key] = rows
     return rows
 
 
-def _precise_rows(expected: Expected, system: Sequence[Compiled], point: list) -> _Rows:
+def _precise_rows(expected: Expected, system: Sequence[Compiled], point: list, step: float) -> _Rows:
     """The rows of a system at one state, at 40 digits; raises where it is undefined."""
     positions = _positions(expected)
     samples = []
     for f in system:
-        values, scale = [], 0.0
-        for accelerations in _settings(len(positions)):
+        values, scales = [], []
+        for accelerations in _settings(len(positions), step):
             moved = list(point)
             for position, acceleration in zip(positions, accelerations, strict=True):
                 moved[position] = complex(acceleration)
             value, size = f.precise(moved)
             values.append(value)
-            scale = max(scale, size)
-        samples.append((values, scale))
-    return _Rows(samples, precise=True)
+            scales.append(size)
+        samples.append((values, scales))
+    return _Rows(samples, precise=True, step=step)
 
 
 def _at_each_state(expected: Expected, systems: Sequence[Sequence[Compiled]], deadline: Deadline, judge, unsure):
@@ -183,7 +226,8 @@ def _at_each_state(expected: Expected, systems: Sequence[Sequence[Compiled]], de
     Where ``unsure(result)``, the state is judged again on rows evaluated at 40 digits;
     results that are None (the state says nothing) are dropped.
     """
-    floats = [_float_rows(expected, system, reference=number == 0) for number, system in enumerate(systems)]
+    steps = _steps(expected, systems[0])
+    floats = [_float_rows(expected, system, steps, reference=number == 0) for number, system in enumerate(systems)]
     results = []
     for number, point in enumerate(expected.points(POINTS, group=GROUP)):
         deadline.check()
@@ -193,7 +237,11 @@ def _at_each_state(expected: Expected, systems: Sequence[Sequence[Compiled]], de
         try:
             result = judge(rows, False)
             if unsure(result):
-                result = judge([_precise_rows(expected, system, point.tolist()) for system in systems], True)
+                # Rows, solving and residuals are sums of 40-digit values: all of it at 40 digits,
+                # or each sum rounds to a float's 16 and nothing looks linear any more.
+                with mpmath.workdps(PRECISE_DIGITS):
+                    precise = [_precise_rows(expected, system, point.tolist(), steps[number]) for system in systems]
+                    result = judge(precise, True)
         except UNDEFINED:
             continue
         if result is not None:
@@ -229,7 +277,7 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
             return None  # the reference itself is not linear here: no information
         if theirs.linear is not Closeness.EQUAL:
             return theirs.linear
-        return _multiple(mine.rows[0], theirs.rows[0], max(mine.scale, theirs.scale), precise)
+        return _multiple(mine.rows[0], theirs.rows[0], mine.entry_scales[0], theirs.entry_scales[0], precise)
 
     results = _at_each_state(expected, ([expected_f], [submitted_g]), deadline, proportional, _is_unsure)
     same = _decided(results)
@@ -244,17 +292,18 @@ def _is_unsure(result) -> bool:
     return result is Closeness.UNSURE
 
 
-def _multiple(expected_row, submitted_row, scale: float, precise: bool) -> Closeness:
-    """Whether ``submitted_row`` is a nonzero multiple of ``expected_row``."""
-    k = max(range(len(expected_row)), key=lambda j: abs(expected_row[j]))
-    if closeness(expected_row[k], 0, scale, precise=precise) is Closeness.EQUAL:
+def _multiple(expected_row, submitted_row, expected_scales, submitted_scales, precise: bool) -> Closeness:
+    """Whether ``submitted_row`` is a nonzero multiple of ``expected_row`` (each entry judged on
+    the larger of the two rows' scales for it)."""
+    k = max(range(len(expected_row)), key=lambda j: abs(expected_row[j]) / (expected_scales[j] or 1.0))
+    if closeness(expected_row[k], 0, expected_scales[k], precise=precise) is Closeness.EQUAL:
         return None  # a degenerate state of the reference
     factor = submitted_row[k] / expected_row[k]
-    if closeness(factor * expected_row[k], 0, scale, precise=precise) is Closeness.EQUAL:
+    if closeness(submitted_row[k], 0, submitted_scales[k], precise=precise) is Closeness.EQUAL:
         return Closeness.DIFFERENT
     worst = Closeness.EQUAL
-    for a, b in zip(expected_row, submitted_row, strict=True):
-        worst = _worst(worst, closeness(factor * a, b, scale * max(1.0, abs(factor)), precise=precise))
+    for a, b, scale_a, scale_b in zip(expected_row, submitted_row, expected_scales, submitted_scales, strict=True):
+        worst = _worst(worst, closeness(factor * a, b, max(abs(factor) * scale_a, scale_b), precise=precise))
     return worst
 
 
@@ -537,14 +586,17 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
     if reference.linear is not Closeness.EQUAL or accelerations is None:
         return None  # a degenerate state of the reference: it says nothing
     verdicts, trivial = [], []
-    for row, scale in zip(submitted.rows, submitted.scales, strict=True):
-        # the residual's rounding: the row's own terms, and what the accelerations carry in
+    for i, row in enumerate(submitted.rows):
+        # the residual's rounding: the row's entries at these accelerations, its own terms,
+        # and what the accelerations carry in
+        scale = submitted.scale_at(i, accelerations)
         size = sum(abs(c * a) for c, a in zip(row, accelerations, strict=False)) + abs(row[n])
         inherited = sum(abs(c) * u for c, u in zip(row, reference.uncertainty, strict=False))
         residual = sum(c * a for c, a in zip(row, accelerations, strict=False)) + row[n]
         verdict = closeness(residual, 0, max(scale, float(size), float(inherited)), precise=precise)
         verdicts.append(_worst(verdict, submitted.linear))
-        trivial.append(all(closeness(c, 0, scale, precise=precise) is Closeness.EQUAL for c in row[:n]))
+        coefficients = zip(row[:n], submitted.entry_scales[i][:n], strict=True)
+        trivial.append(all(closeness(c, 0, s, precise=precise) is Closeness.EQUAL for c, s in coefficients))
     good = [row for row, verdict in zip(submitted.rows, verdicts, strict=True) if verdict is Closeness.EQUAL]
     independent = _solve([row[:n] for row in submitted.rows], [-row[n] for row in submitted.rows]) is not None
     return _State(verdicts, trivial, independent, good, reference.rows)
