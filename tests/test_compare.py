@@ -221,6 +221,12 @@ def test_each_equation_of_a_system_is_judged_on_its_own_scale(submitted, status)
         # off by 1 in 10¹²: floats cannot tell, 40 digits can
         ("equations", "xddot = m; yddot = 10^12 g", "m xddot = m m; l yddot - l 10^12 g = 1", "not_equivalent"),
         ("equation", "yddot = 10^12 g", "l yddot - l 10^12 g - 1 = 0", "not_equivalent"),
+        # off by 1 in 10¹⁵: below what floats see at all; the numbers' span asks for fractions
+        ("equation", "yddot = 10^12 g", "yddot = 10^12 g + 0.001", "not_equivalent"),
+        ("equations", "xddot + yddot = 10^12 g; xddot - yddot = m",
+         "2 xddot = 10^12 g + m; 2 yddot = 10^12 g - m + 0.001", "not_equivalent"),
+        ("equations", "xddot + yddot = 10^12 g; xddot - yddot = m",
+         "2 xddot = 10^12 g + m; 2 yddot = 10^12 g - m", "equivalent"),
     ],
 )  # fmt: skip
 def test_accelerations_far_larger_than_their_coefficients(kind, expected, submitted, status):

@@ -29,6 +29,7 @@ import enum
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from fractions import Fraction
 from functools import cached_property
 
 import mpmath
@@ -48,6 +49,8 @@ __all__ = ["check_equation", "check_equations"]
 
 _PROBE = (0.7, -1.3, 0.45, 1.9)  # accelerations at which linearity is confirmed
 _GROUPS, _STATES = 4, 3  # parameter draws × state draws for the ratio test
+_WIDE = 10**8  # numbers further apart than this may hide a term from floats: check exactly
+_DYADIC = 1024  # the exact check's state is rounded to multiples of 1/1024
 _MAX_STEP_EXPONENT = 200  # steps up to 2²⁰⁰: beyond, a value's square would overflow a float
 
 
@@ -77,7 +80,7 @@ class _Rows:
             (b, *stepped, probed), (b_scale, *stepped_scales, probe_scale) = values, scales
             c = [(value - b) / step for value in stepped]
             c_scales = [max(scale, b_scale) / step for scale in stepped_scales]
-            probe = _probe(len(c))
+            probe = [type(step)(p) for p in _probe(len(c))]  # fractions for exact rows
             predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
             noise = max(probe_scale, b_scale + sum(s * abs(p) for s, p in zip(c_scales, probe, strict=True)))
             self.linear = _worst(self.linear, closeness(probed, predicted, noise, precise=precise))
@@ -201,8 +204,9 @@ def _float_rows(
     return rows
 
 
-def _precise_rows(expected: Expected, system: Sequence[Compiled], point: list, step: float) -> _Rows:
-    """The rows of a system at one state, at 40 digits; raises where it is undefined."""
+def _rows_at(expected: Expected, system: Sequence[Compiled], point: list, step: float, *, exact: bool) -> _Rows:
+    """The rows of a system at one state, at 40 digits or (``exact``, for rational functions)
+    in fractions; raises where it is undefined."""
     positions = _positions(expected)
     samples = []
     for f in system:
@@ -211,20 +215,26 @@ def _precise_rows(expected: Expected, system: Sequence[Compiled], point: list, s
             moved = list(point)
             for position, acceleration in zip(positions, accelerations, strict=True):
                 moved[position] = complex(acceleration)
-            value, size = f.precise(moved)
+            value, size = f.exact(moved) if exact else f.precise(moved)
             values.append(value)
             scales.append(size)
         samples.append((values, scales))
-    return _Rows(samples, precise=True, step=step)
+    return _Rows(samples, precise=True, step=Fraction(step) if exact else step)
 
 
-def _at_each_state(expected: Expected, systems: Sequence[Sequence[Compiled]], deadline: Deadline, judge, unsure):
+def _at_each_state(
+    expected: Expected, systems: Sequence[Sequence[Compiled]], deadline: Deadline, judge, unsure, agrees
+):
     """``judge(rows of each system, precise)`` at each sample state where every system is defined.
 
     The first system is the reference, compiled from the expected answer.
 
     Where ``unsure(result)``, the state is judged again on rows evaluated at 40 digits;
-    results that are None (the state says nothing) are dropped.
+    results that are None (the state says nothing) are dropped. When every result
+    ``agrees``, the systems are rational functions and their numbers span more than
+    :data:`_WIDE`, one state is judged once more in exact fractions: it sees the 0.001
+    beside 10¹² g that floats round away. (Numbers of like size cannot hide a term
+    below the floats' 10⁻¹³, so the fractions, a millisecond each, are spared there.)
     """
     steps = _steps(expected, systems[0])
     floats = [_float_rows(expected, system, steps, reference=number == 0) for number, system in enumerate(systems)]
@@ -240,13 +250,43 @@ def _at_each_state(expected: Expected, systems: Sequence[Sequence[Compiled]], de
                 # Rows, solving and residuals are sums of 40-digit values: all of it at 40 digits,
                 # or each sum rounds to a float's 16 and nothing looks linear any more.
                 with mpmath.workdps(PRECISE_DIGITS):
-                    precise = [_precise_rows(expected, system, point.tolist(), steps[number]) for system in systems]
+                    precise = [
+                        _rows_at(expected, system, point.tolist(), steps[number], exact=False) for system in systems
+                    ]
                     result = judge(precise, True)
         except UNDEFINED:
             continue
         if result is not None:
             results.append(result)
+    functions = [f for fs in systems for f in fs]
+    if results and all(agrees(r) for r in results) and all(f.rational for f in functions) and _wide(functions):
+        exact = _exactly(expected, systems, steps, judge)
+        if exact is not None:
+            results.append(exact)
     return results
+
+
+def _wide(functions: Sequence[Compiled]) -> bool:
+    """Whether the numbers written in these functions span more than :data:`_WIDE`."""
+    numbers = [abs(n) for f in functions for n in f.expr.atoms(sympy.Rational) if n != 0]
+    return bool(numbers) and max(numbers) > _WIDE * min(numbers)
+
+
+def _exactly(expected: Expected, systems: Sequence[Sequence[Compiled]], steps: tuple[float, ...], judge):
+    """``judge`` at the first sample state where every system is defined, in fractions.
+
+    The state is rounded to multiples of 1/1024 first: any state will do, and fractions
+    of a float's 53 bits grow to hundreds of digits within a few products.
+    """
+    for number, point in enumerate(expected.points(POINTS, group=GROUP)):
+        rounded = [complex(round(value.real * _DYADIC) / _DYADIC) for value in point.tolist()]
+        try:
+            result = judge([_rows_at(expected, system, rounded, steps[number], exact=True) for system in systems], True)
+        except UNDEFINED:
+            continue
+        if result is not None:
+            return result
+    return None
 
 
 def _decided(results: list[Closeness]) -> bool | None:
@@ -279,7 +319,14 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
             return theirs.linear
         return _multiple(mine.rows[0], theirs.rows[0], mine.entry_scales[0], theirs.entry_scales[0], precise)
 
-    results = _at_each_state(expected, ([expected_f], [submitted_g]), deadline, proportional, _is_unsure)
+    results = _at_each_state(
+        expected,
+        ([expected_f], [submitted_g]),
+        deadline,
+        proportional,
+        _is_unsure,
+        lambda result: result is Closeness.EQUAL,
+    )
     same = _decided(results)
     if same:
         return Outcome("equivalent", 1.0, "equivalent", method="accelerations")
@@ -557,11 +604,15 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
 
 def _states(expected: Expected, expected_fs, submitted_gs, deadline: Deadline) -> list[_State]:
     """What each sample state says of the submitted system; unsure states are redone at 40 digits."""
-    return _at_each_state(expected, (expected_fs, submitted_gs), deadline, _system_state, _state_unsure)
+    return _at_each_state(expected, (expected_fs, submitted_gs), deadline, _system_state, _state_unsure, _state_agrees)
 
 
 def _state_unsure(state: _State | None) -> bool:
     return state is not None and state.unsure
+
+
+def _state_agrees(state: _State) -> bool:
+    return all(verdict is Closeness.EQUAL for verdict in state.verdicts)
 
 
 def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: Deadline) -> bool:
