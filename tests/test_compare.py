@@ -234,6 +234,30 @@ def test_accelerations_far_larger_than_their_coefficients(kind, expected, submit
     assert verdict.status == status, verdict
 
 
+@pytest.mark.parametrize(
+    ("kind", "expected", "submitted", "status"),
+    [
+        # beside e^(10(m + 2)) ≥ e²⁴, m is below floats' sight at every point: 40 digits see it
+        ("expression", "exp(10 (m + 2))", "exp(10 (m + 2)) + m", "not_equivalent"),
+        ("expression", "exp(10 (m + 2)) + m", "m + exp(10 (m + 2))", "equivalent"),
+        ("equation", "yddot = exp(10 (m + 2))", "yddot = exp(10 (m + 2)) + m", "not_equivalent"),
+        ("equations", "xddot = m; yddot = exp(10 (m + 2))", "xddot = m; yddot = exp(10 (m + 2)) + m", "not_equivalent"),
+        # 18 digits typed: more than a float holds
+        ("expression", "sin(x)/3", "0.333333333333333333 sin(x)", "not_equivalent"),
+        # beyond 40 digits at every point: a person decides, nobody guesses
+        ("expression", "exp(100 m) + 1", "exp(100 m) + 1 + 10^-50", "undecided"),
+    ],
+)  # fmt: skip
+def test_a_term_too_small_for_floats_to_see_is_not_ignored(kind, expected, submitted, status):
+    verdict = compare(expected, submitted, kind=kind, coords=["x", "y"], known=["m"])
+    assert verdict.status == status, verdict
+
+
+def test_answers_that_differ_by_a_tiny_term_are_not_off_by_a_factor_one():
+    verdict = compare("exp(100 m) + 1", "exp(100 m)", known=["m"])
+    assert verdict.diagnosis == "missing_term", verdict
+
+
 def test_an_equation_with_an_acceleration_is_never_called_trivial():
     # beside e^30 ≈ 10¹³ the coefficient 1 of ÿ is within rounding of zero; it is still there
     verdict = compare(

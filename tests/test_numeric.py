@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import cmath
 
+import mpmath
 import numpy as np
 import pytest
 import sympy
 
 from grader.judge.expected import prepare
 from grader.judge.lagrangian import _dynamics, _symbolic_dynamics
-from grader.judge.numeric import UNDEFINED, Compiled, sample_points
+from grader.judge.numeric import UNDEFINED, Compiled, LostTerm, sample_points
 
 x, y, z = sympy.symbols("x y z", real=True)
 VARIABLES = (x, y, z)
@@ -69,6 +70,45 @@ def test_an_overflow_is_undefined_not_infinite():
     huge = np.array([[800 + 0j, 1 + 0j, 1 + 0j], [1 + 0j, 1 + 0j, 1 + 0j]])
     values, _ = Compiled(sympy.exp(x) * y - sympy.exp(x) * z + sympy.exp(x**2), VARIABLES).many(huge)
     assert cmath.isnan(values[0]) and cmath.isfinite(values[1])
+
+
+def test_a_term_too_small_for_its_sum_is_noted_as_lost():
+    points = np.array([[1 + 0j, 2 + 0j, 0.5 + 0j], [40 + 0j, 2 + 0j, 0.5 + 0j]])
+    # beside e^40 ≈ 2·10¹⁷, y = 2 is below a float's 10⁻¹³ of the sum; beside e^1 it is not
+    assert Compiled(sympy.exp(x) + y, VARIABLES).lost(points).tolist() == [False, True]
+    # a sum of like terms loses nothing, nor does one with a zero term (not a small one)
+    assert not Compiled(x**2 * y - 3 * z + 1, VARIABLES).lost(points).any()
+    assert not Compiled(x * (y - 2) + z, VARIABLES).lost(points).any()
+
+
+def test_a_number_with_more_digits_than_a_float_is_noted_as_lost():
+    points = _points(3)
+    third = sympy.Rational(333333333333333333, 10**18)  # 0.333333333333333333: 18 digits
+    assert Compiled(third * sympy.sin(x), VARIABLES).lost(points).all()
+    assert not Compiled(sympy.sin(x) / 3, VARIABLES).lost(points).any()
+    point = points[0].tolist()  # 40 digits hold it
+    value, _ = Compiled(third * sympy.sin(x), VARIABLES).precise(point)
+    exact = third * sympy.sin(sympy.Rational(point[0].real))
+    assert abs(value - exact.evalf(40)) < 1e-35
+
+
+def test_at_40_digits_a_lost_term_leaves_the_point_undefined():
+    point = [200 + 0j, 2 + 0j, 0.5 + 0j]  # e^200 ≈ 10⁸⁷: y is beyond 40 digits too
+    with pytest.raises(LostTerm):
+        Compiled(sympy.exp(x) + y, VARIABLES).precise(point)
+    value, _ = Compiled(sympy.exp(x) + y, VARIABLES).precise([40 + 0j, 2 + 0j, 0.5 + 0j])
+    with mpmath.workdps(40):
+        assert abs(value - (mpmath.exp(40) + 2)) < 1e-20  # y is there
+
+
+def test_noting_losses_does_not_change_values():
+    points = _points()
+    for expr in EXPRESSIONS:
+        compiled = Compiled(expr, VARIABLES)
+        before = compiled.many(points)
+        compiled.lost(points)
+        after = Compiled(expr, VARIABLES).many(points)
+        assert np.array_equal(before[0], after[0], equal_nan=True), expr
 
 
 @pytest.mark.parametrize("expr", EXPRESSIONS, ids=str)

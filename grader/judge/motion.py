@@ -51,6 +51,7 @@ _PROBE = (0.7, -1.3, 0.45, 1.9)  # accelerations at which linearity is confirmed
 _GROUPS, _STATES = 4, 3  # parameter draws × state draws for the ratio test
 _WIDE = 10**8  # numbers further apart than this may hide a term from floats: check exactly
 _DYADIC = 1024  # the exact check's state is rounded to multiples of 1/1024
+_STEP_ROUNDS = 4  # rounds of reading the reference's rows for the steps
 _MAX_STEP_EXPONENT = 200  # steps up to 2²⁰⁰: beyond, a value's square would overflow a float
 
 
@@ -125,23 +126,34 @@ def _settings(n: int, step: float = 1.0) -> list[list[float]]:
     return [[0.0] * n, *([step * (k == j) for k in range(n)] for j in range(n)), _probe(n)]
 
 
-def _step(rows: _Rows | None) -> float:
+def _step(rows: _Rows | None, step: float) -> float:
     """The step for reading coefficients at a state: the power of two at or above the largest
-    acceleration the reference's equations imply there, |b| / max |cₖ| (1 when that is smaller)."""
+    acceleration the reference's equations imply there, |b| / max |cₖ| (1 when that is smaller),
+    from ``rows`` read with ``step``. Coefficients that rounded away entirely (ÿ beside e⁴⁰)
+    ask for a step 2⁵² times larger."""
     size = 1.0
     for row in rows.rows if rows is not None else ():
         largest = max(abs(c) for c in row[:-1])
         if largest > 0 and math.isfinite(abs(row[-1]) / largest):
             size = max(size, abs(row[-1]) / largest)
+        elif largest == 0 and row[-1] != 0:
+            size = max(size, step * 2.0**52)
     return 2.0 ** min(math.ceil(math.log2(size)), _MAX_STEP_EXPONENT)
 
 
 def _steps(expected: Expected, reference: Sequence[Compiled]) -> tuple[float, ...]:
-    """The step at each sample state, from the reference's rows read with a unit step."""
+    """The step at each sample state: the reference's rows are read with a unit step, and
+    again with the steps those imply until they settle (a few rounds; kept per problem)."""
     key = ("steps", tuple(id(f) for f in reference))
     if key not in expected.cache:
-        unit = (1.0,) * POINTS
-        expected.cache[key] = tuple(_step(rows) for rows in _float_rows(expected, reference, unit, reference=True))
+        steps = (1.0,) * POINTS
+        for _ in range(_STEP_ROUNDS):
+            rows = _float_rows(expected, reference, steps, reference=True)
+            settled = tuple(_step(state, step) for state, step in zip(rows, steps, strict=True))
+            if settled == steps:
+                break
+            steps = settled
+        expected.cache[key] = steps
     return expected.cache[key]
 
 
@@ -229,7 +241,8 @@ def _at_each_state(
 
     The first system is the reference, compiled from the expected answer.
 
-    Where ``unsure(result)``, the state is judged again on rows evaluated at 40 digits;
+    Where ``unsure(result)``, or a sum lost a term in floats, the state is judged again on
+    rows evaluated at 40 digits;
     results that are None (the state says nothing) are dropped. When every result
     ``agrees``, the systems are rational functions and their numbers span more than
     :data:`_WIDE`, one state is judged once more in exact fractions: it sees the 0.001
@@ -238,7 +251,7 @@ def _at_each_state(
     """
     steps = _steps(expected, systems[0])
     floats = [_float_rows(expected, system, steps, reference=number == 0) for number, system in enumerate(systems)]
-    results = []
+    results, lost = [], None
     for number, point in enumerate(expected.points(POINTS, group=GROUP)):
         deadline.check()
         rows = [per_state[number] for per_state in floats]
@@ -246,7 +259,9 @@ def _at_each_state(
             continue
         try:
             result = judge(rows, False)
-            if unsure(result):
+            if result is not None and not unsure(result) and agrees(result):
+                lost = lost if lost is not None else _lost_states(expected, systems, steps)
+            if unsure(result) or (lost is not None and lost[number] and agrees(result)):
                 # Rows, solving and residuals are sums of 40-digit values: all of it at 40 digits,
                 # or each sum rounds to a float's 16 and nothing looks linear any more.
                 with mpmath.workdps(PRECISE_DIGITS):
@@ -270,6 +285,15 @@ def _wide(functions: Sequence[Compiled]) -> bool:
     """Whether the numbers written in these functions span more than :data:`_WIDE`."""
     numbers = [abs(n) for f in functions for n in f.expr.atoms(sympy.Rational) if n != 0]
     return bool(numbers) and max(numbers) > _WIDE * min(numbers)
+
+
+def _lost_states(expected: Expected, systems: Sequence[Sequence[Compiled]], steps: tuple[float, ...]) -> np.ndarray:
+    """Per sample state: whether any equation of the systems lost a term there, at any setting."""
+    batch = _accelerated_states(expected, steps)
+    lost = np.zeros(len(steps), bool)
+    for f in (f for system in systems for f in system):
+        lost |= f.lost(batch).reshape(len(steps), -1).any(axis=1)
+    return lost
 
 
 def _exactly(expected: Expected, systems: Sequence[Sequence[Compiled]], steps: tuple[float, ...], judge):

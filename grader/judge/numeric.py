@@ -21,6 +21,11 @@ whichever way it was evaluated.
 Every evaluation also reports its *scale*: the largest magnitude seen among the
 terms of any sum. Two values that agree to 1e-13 of that scale are equal; one
 cancelling ``1e3 - 1e3`` must not make 1e-13 of rounding look like a difference.
+And it notes where a sum *lost* a term: one nonzero but below what the sum can
+resolve (1e-13 of its largest term in floats, 1e-25 at 40 digits), as m is lost
+beside e^(10(m + 2)). A value that lost a term cannot say the term was there: floats
+that lost one defer to 40 digits, and 40 digits that lose one call the point
+undefined (:class:`LostTerm`), so that another point or ``simplify`` decides.
 """
 
 from __future__ import annotations
@@ -39,12 +44,23 @@ from sympy.core.function import AppliedUndef
 
 from grader.parse.functions import COMPLEX
 
-__all__ = ["UNDEFINED", "Closeness", "Compiled", "NotCompilable", "closeness", "sample_points"]
+__all__ = ["UNDEFINED", "Closeness", "Compiled", "LostTerm", "NotCompilable", "closeness", "sample_points"]
 
 PRECISE_DIGITS = 40
 
+# Equal pairs differed by at most ~1e-14 of their scale in float; a term of 1e-9 of the
+# scale (or a constant off by one in a sum of billions) must not pass. Between the two
+# bounds the float result cannot decide: re-evaluate at 40 digits.
+FLOAT_EQUAL = 1e-13
+FLOAT_DIFFERENT = 1e-6
+PRECISE_EQUAL = 1e-25
+
 
 UNDEFINED = (ArithmeticError, ValueError, TypeError)  # what evaluating at a point outside the domain raises
+
+
+class LostTerm(ArithmeticError):
+    """At 40 digits a sum lost a term: this point cannot tell whether the term is there."""
 
 
 class NotCompilable(Exception):  # a condition reported to the caller, not an error
@@ -52,10 +68,16 @@ class NotCompilable(Exception):  # a condition reported to the caller, not an er
 
 
 class _Backend:
-    """The number type and functions one kind of evaluation uses; ``vector`` evaluates numpy arrays."""
+    """The number type and functions one kind of evaluation uses; ``vector`` evaluates numpy arrays.
+    ``resolution``: a sum's term smaller than this times its largest is lost (0: exact, never);
+    ``digits``: a number p/q with p or q beyond this is lost too (it holds more than the type).
+    Losses are noted only when asked: ``scale[1]`` is False (and becomes True), not None."""
 
-    def __init__(self, number, functions: Mapping[str, Callable], pi, e, *, vector: bool = False):
+    def __init__(
+        self, number, functions: Mapping[str, Callable], pi, e, *, vector=False, resolution=FLOAT_EQUAL, digits=2**53
+    ):
         self.number, self.functions, self.pi, self.e, self.vector = number, functions, pi, e, vector
+        self.resolution, self.digits = resolution, digits
 
 
 def _power(base, exponent):
@@ -119,11 +141,12 @@ _PRECISE = _Backend(
         "re": lambda z: mpmath.re(z), "im": lambda z: mpmath.im(z),
     },
     pi=lambda: +mpmath.pi, e=lambda: +mpmath.e,  # + fixes the value at the working precision
+    resolution=PRECISE_EQUAL, digits=10**38,
 )  # fmt: skip
 
 
 _ALIASABLE = (sympy.Derivative, AppliedUndef)
-_EXACT = _Backend(number=Fraction, functions={}, pi=None, e=None)
+_EXACT = _Backend(number=Fraction, functions={}, pi=None, e=None, resolution=0, digits=math.inf)
 
 
 def _is_rational_function(expr) -> bool:
@@ -166,6 +189,7 @@ class Compiled:
         self._jet = None
         self._precise = None
         self._exact = None  # compiled when first needed: most comparisons never need it
+        self._last = None  # (key, result) of the last batch evaluated, when not memoized
         # A reference answer is evaluated at the same points for every submission: remember them.
         self._memo: dict | None = {} if memo else None
 
@@ -193,14 +217,17 @@ class Compiled:
         searched for), which would otherwise grow a reference's memory with every answer."""
         if self._float is None:
             self._float = _compile(self.expr, self.index, _FLOAT)
-        scale = [0.0]
+        scale = [0.0, None]
         value = self._float(values, scale)
         return value, max(scale[0], abs(value))
 
     def _remembered(self, key: tuple, compute):
-        """``compute()``, kept under ``key`` when this is a reference answer's (``memo``)."""
+        """``compute()``, kept under ``key`` when this is a reference answer's (``memo``);
+        a submitted answer's keeps only its last result, for :meth:`lost` after :meth:`many`."""
         if self._memo is None:
-            return compute()
+            if self._last is None or self._last[0] != key:
+                self._last = (key, compute())
+            return self._last[1]
         if key not in self._memo:
             self._memo[key] = compute()
         return self._memo[key]
@@ -214,11 +241,34 @@ class Compiled:
             self._vector = _compile(self.expr, self.index, _VECTOR)
 
         def evaluate(rows):
-            scale = [0.0]
+            scale = [0.0, None]
             value = np.broadcast_to(np.asarray(self._vector(rows.T, scale), complex), len(rows))
             return value, np.maximum(scale[0], np.abs(value))
 
         return _row_by_row_if_undefined(evaluate, np.ascontiguousarray(points))
+
+    def lost(self, points: np.ndarray) -> np.ndarray:
+        """At every row of ``points``: whether a sum lost a term there (see the module's notes);
+        False where undefined.
+
+        A lost term can only make different values look equal, so this is asked only where
+        :meth:`many`'s values agree, in a pass of its own: noting losses costs a third of
+        an evaluation, which different answers would pay for nothing.
+        """
+        return self._remembered(("lost", points.shape, points.tobytes()), lambda: self._lost(points))
+
+    def _lost(self, points: np.ndarray) -> np.ndarray:
+        if self._vector is None:
+            self._vector = _compile(self.expr, self.index, _VECTOR)
+
+        def evaluate(rows):
+            scale = [0.0, False]  # False, not None: note losses
+            self._vector(rows.T, scale)
+            lost = np.broadcast_to(np.asarray(scale[1], complex), len(rows))
+            return lost, np.zeros(len(rows))
+
+        lost, _ = _row_by_row_if_undefined(evaluate, np.ascontiguousarray(points))
+        return lost.real == 1  # NaN (undefined) and 0 are not lost
 
     def derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, ...]:
         """At every row of ``points``: the derivative along the same row of ``first``, the mixed second
@@ -236,7 +286,7 @@ class Compiled:
             self._jet = _compile_jet(self.expr, self.index)
 
         def evaluate(rows, one, two):
-            scale = [0.0]
+            scale = [0.0, None]
             _, slope, _, mixed = self._jet(rows.T, one.T, two.T, scale)
             slope, mixed = (np.broadcast_to(np.asarray(part, complex), len(rows)) for part in (slope, mixed))
             size = np.maximum(scale[0], np.maximum(np.abs(slope), np.abs(mixed)))
@@ -261,19 +311,25 @@ class Compiled:
 
         Floats cannot tell a degree-13 polynomial from one whose constant is off by one.
         """
-        scale = [0.0]
+        scale = [0.0, None]
         if self._exact is None:
             self._exact = _compile(self.expr, self.index, _EXACT)
         value = self._exact([Fraction(v.real) for v in values], scale)
         return value, max(scale[0], float(abs(value)))
 
     def precise(self, values: Sequence[complex]) -> tuple[object, float]:
-        """The same at 40 digits, for values the float evaluation could not tell apart."""
+        """The same at 40 digits, for values the float evaluation could not tell apart.
+
+        Raises:
+            LostTerm: a sum lost a term even at 40 digits.
+        """
         with mpmath.workdps(PRECISE_DIGITS):
             if self._precise is None:  # constants are fixed when compiled: at 40 digits too
                 self._precise = _compile(self.expr, self.index, _PRECISE)
-            scale = [0.0]
+            scale = [0.0, False]
             value = self._precise([mpmath.mpmathify(v) for v in values], scale)
+            if scale[1]:
+                raise LostTerm("a term is below 40 digits' resolution here")
             return value, max(scale[0], float(abs(value)))
 
 
@@ -290,6 +346,15 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
             constant = backend.number(int(p), int(q))
         except OverflowError as overflow:
             raise NotCompilable("a number too large for floating point") from overflow
+        if max(abs(int(p)), int(q)) > backend.digits:
+            # 1 + 10⁻³⁰ folded into one number: a sum whose small term rounds away
+
+            def rounded(values, scale):
+                if scale[1] is not None:
+                    scale[1] = True
+                return constant
+
+            return rounded
         return lambda values, scale: constant
     if expr is sympy.pi:
         pi = backend.pi
@@ -301,19 +366,24 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
         return lambda values, scale: 1j
     args = [_compile(arg, index, backend) for arg in expr.args]
     if backend.vector and (expr.is_Add or (expr.is_Pow and not expr.exp.is_Integer)):
-        return _vector_node(expr, args)
+        return _vector_node(expr, args, backend)
     if expr.is_Add:
+        resolution = backend.resolution
 
         def add(values, scale):
-            total, largest = 0, 0.0
+            total, largest, smallest = 0, 0.0, math.inf
             for f in args:
                 term = f(values, scale)
                 total += term
                 size = abs(term)
                 if size > largest:
                     largest = size
+                if 0 < size < smallest:
+                    smallest = size
             if largest > scale[0]:
                 scale[0] = float(largest)
+            if scale[1] is not None and smallest < resolution * largest:
+                scale[1] = True
             return total
 
         return add
@@ -339,17 +409,25 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
     raise NotCompilable(f"cannot evaluate {name}")
 
 
-def _vector_node(expr, args):
-    """The closures that differ over numpy arrays: a sum tracks each point's largest term."""
+def _vector_node(expr, args, backend: _Backend):
+    """The closures that differ over numpy arrays: a sum tracks each point's largest term,
+    and, when asked, where it lost one."""
     if expr.is_Add:
+        resolution = backend.resolution
 
         def add(values, scale):
-            total, largest = 0, 0.0
+            total, largest, smallest = 0, 0.0, math.inf
+            track = scale[1] is not None
             for f in args:
                 term = f(values, scale)
                 total = total + term
-                largest = np.maximum(largest, np.abs(term))
+                size = np.abs(term)
+                largest = np.maximum(largest, size)
+                if track:
+                    smallest = np.minimum(smallest, np.where(size > 0, size, math.inf))
             scale[0] = np.maximum(scale[0], largest)
+            if track:
+                scale[1] = scale[1] | (smallest < resolution * largest)
             return total
 
         return add
@@ -546,14 +624,6 @@ class Closeness(enum.Enum):
     EQUAL = "equal"
     DIFFERENT = "different"
     UNSURE = "unsure"
-
-
-# Equal pairs differed by at most ~1e-14 of their scale in float; a term of 1e-9 of the
-# scale (or a constant off by one in a sum of billions) must not pass. Between the two
-# bounds the float result cannot decide: re-evaluate at 40 digits.
-FLOAT_EQUAL = 1e-13
-FLOAT_DIFFERENT = 1e-6
-PRECISE_EQUAL = 1e-25
 
 
 def closeness(a, b, scale: float, *, precise: bool = False) -> Closeness:

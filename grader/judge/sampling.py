@@ -15,6 +15,7 @@ says "undecided".
 from __future__ import annotations
 
 import cmath
+import functools
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -64,11 +65,16 @@ def evaluate_pairs(
     *,
     precise: bool = False,
 ) -> list[Pair]:
-    """Both expressions at each point where both are defined; unsure points are redone at 40 digits
-    (all points, with ``precise``)."""
+    """Both expressions at each point where both are defined; unsure points, and points where
+    either lost a term, are redone at 40 digits (all points, with ``precise``)."""
     deadline.check()
     pairs = []
     exact = expected.rational and submitted.rational
+
+    @functools.cache
+    def lost() -> np.ndarray:  # per point, whether either lost a term: asked only where floats agree
+        return expected.lost(points) | submitted.lost(points)
+
     for number, (a, scale_a, b, scale_b) in enumerate(side_by_side(expected, submitted, points)):
         if not (cmath.isfinite(a) and cmath.isfinite(b)):
             continue
@@ -77,7 +83,8 @@ def evaluate_pairs(
             # outside its real domain (√ or log of a negative): compare where it is defined.
             continue
         pair = Pair(a, b, max(scale_a, scale_b), group=number // GROUP)
-        if exact and a != b and pair.closeness() is Closeness.EQUAL:
+        agreement = pair.closeness()
+        if exact and a != b and agreement is Closeness.EQUAL:
             exact = False  # once per comparison: enough to catch a difference floats cannot see
             point = points[number].tolist()
             try:
@@ -85,7 +92,7 @@ def evaluate_pairs(
             except UNDEFINED:
                 continue
             pair = Pair(a, b, max(scale_a, scale_b), precise=True, group=number // GROUP)
-        elif precise or pair.closeness() is Closeness.UNSURE:
+        elif precise or agreement is Closeness.UNSURE or (agreement is Closeness.EQUAL and lost()[number]):
             deadline.check()
             point = points[number].tolist()
             try:
@@ -122,12 +129,16 @@ def all_equal(pairs: Sequence[Pair]) -> bool | None:
 
 
 def constant_ratio(pairs: Sequence[Pair]) -> complex | None:
-    """The constant k with submitted = k·expected at every point, if there is one (k ≠ 0)."""
+    """The constant k with submitted = k·expected at every point, if there is one (k ≠ 0).
+
+    Not k = 1 either: answers that differ yet agree that closely differ by a term too small
+    beside the rest to show in a ratio (m beside e^(10(m + 2))), which is no factor.
+    """
     usable = [pair for pair in pairs if abs(pair.expected) > 1e-9 * pair.scale]
     if len(usable) < MIN_DEFINED // 2:
         return None
     k = complex(usable[0].submitted / usable[0].expected)
-    if k == 0:
+    if k == 0 or abs(k - 1) <= 1e-9:
         return None
     for pair in pairs:
         scaled = Pair(k * complex(pair.expected), complex(pair.submitted), pair.scale * max(1.0, abs(k)))
