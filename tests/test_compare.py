@@ -129,6 +129,41 @@ def test_feedback_names_the_mistake(expected, submitted, kind, setting, diagnosi
     assert verdict.feedback[0] == sentence
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "options", "sentence"),
+    [
+        (L_PENDULUM, "m l (l θ̇^2/2)", "lagrangian", {}, "A term is missing: a term in cos(θ)."),
+        (L_PENDULUM, "1/2 m l^2 θ̇^2 + 3 m g l cos θ", "lagrangian", {},
+         "A term differs: the term in cos(θ) has the wrong factor."),
+        ("m g l (1 - cos(theta)) + 1/2 k theta^2", "-m g l cos θ + 7", "expression", {"up_to_constant": True},
+         "A term is missing: a term in θ."),
+        ("-(g/l) sin(theta) - b thetadot", "-(g/l) sin θ + b θ̇", "expression", {},
+         "A term differs: the velocity-dependent term has the wrong sign."),
+    ],
+)  # fmt: skip
+def test_one_term_missing_or_off_is_named_without_expanding_the_answer(
+    expected, submitted, kind, options, sentence, monkeypatch
+):
+    # the difference is a multiple of one expected term: the numbers say which, and sympy's
+    # expansion of the submitted answer (a millisecond) is not needed
+    def no_expanding(*args, **kwargs):
+        raise AssertionError("the submitted answer was expanded")
+
+    setting = {"kind": kind, "coords": ["theta"], "known": ["m", "g", "l", "k", "b"], **options}
+    compare(expected, "0", **setting)  # a first answer: the expected one's terms are expanded, once
+    monkeypatch.setattr("grader.judge.expression.terms", no_expanding)
+    monkeypatch.setattr("grader.judge.lagrangian.terms", no_expanding)
+    verdict = compare(expected, submitted, **setting)
+    assert verdict.feedback == (sentence,), verdict
+
+
+def test_a_term_written_with_another_function_is_named_as_typed():
+    # up to a constant, ω²cos²θ is −ω²sin²θ; but the student wrote cos, not a sin of the wrong sign
+    hoop = "1/2 m R^2 (thetadot^2 + omega^2 sin(theta)^2) + m g R cos(theta)"
+    verdict = compare(hoop, "1/2 m R^2 (θ̇² + ω² cos²θ) + m g R cos θ", kind="lagrangian", coords=["theta"])
+    assert verdict.feedback == ("A term is missing: a term in sin(θ).", "There is a term too many: a term in cos(θ).")
+
+
 def test_feedback_never_contains_the_expected_answer():
     for expected, submitted, kind, setting, _, _ in FEEDBACK:
         verdict = compare(expected, submitted, kind=kind, **setting)

@@ -7,21 +7,33 @@ Contents:
 Numbers first: both sides at ten seeded points inside the symbols' domains; a near
 miss is redone at 40 digits; too few defined points fall back to ``simplify``
 with the domains as assumptions. Then, when not equal, the diagnosis: sign,
-constant factor, small-angle form, and which term differs.
+constant factor, small-angle form, and which term differs. One term missing or
+off by a factor is found in the numbers too (the difference is a multiple of that
+term); only other mistakes need the submitted answer expanded by sympy.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
+import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import has_angle_functions, small_angle, symbolic_zero, term_changes, terms
+from grader.judge.diagnose import (
+    MAX_TERMS,
+    describe_term,
+    has_angle_functions,
+    small_angle,
+    symbolic_zero,
+    term_changes,
+    terms,
+)
 from grader.judge.expected import Expected, Outcome
-from grader.judge.numeric import Closeness
+from grader.judge.numeric import FLOAT_EQUAL, Closeness
 from grader.judge.sampling import (
     GROUP,
+    MIN_DEFINED,
     POINTS,
     Pair,
     all_equal,
@@ -32,7 +44,14 @@ from grader.judge.sampling import (
 )
 from grader.parse import ParsedAnswer
 
-__all__ = ["check_expression", "diagnose_difference", "expected_terms", "same_values", "term_outcome"]
+__all__ = [
+    "check_expression",
+    "diagnose_difference",
+    "expected_terms",
+    "same_values",
+    "single_term_change",
+    "term_outcome",
+]
 
 
 def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "value") -> tuple[bool | None, list[Pair]]:
@@ -62,13 +81,12 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
         return Outcome("equivalent", 1.0, "equivalent")
     if expected.option("up_to_constant") and constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
-    submitted = expected.setting.plain(answer.value)
     if equal is None:
         deadline.check()
-        if symbolic_zero(submitted - expected.value, expected.setting):
+        if symbolic_zero(expected.setting.plain(answer.value) - expected.value, expected.setting):
             return Outcome("equivalent", 1.0, "equivalent", method="symbolic")
         return Outcome("undecided", 0.0, "undecided", method="numeric: too few defined points")
-    return diagnose_difference(expected, expected.value, submitted, pairs, deadline)
+    return diagnose_difference(expected, expected.value, answer.value, pairs, deadline)
 
 
 def diagnose_difference(
@@ -82,7 +100,8 @@ def diagnose_difference(
     approximations: Callable[[sympy.Expr], list] | None = None,
     expanded: bool = False,
 ) -> Outcome:
-    """A not-equivalent outcome for ``s`` against ``e``, naming the mistake where it can.
+    """A not-equivalent outcome for ``s`` (as parsed, or in plain symbols) against ``e``,
+    naming the mistake where it can.
 
     ``key`` names ``e`` among the expressions derived from the expected answer;
     ``approximations`` gives the small-angle forms of an expression (by default
@@ -105,14 +124,18 @@ def diagnose_difference(
             continue  # the approximation does not exist here (a Taylor expansion through a pole)
         if same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")[0]:
             return Outcome("not_equivalent", 0.0, "small_angle")
+    # where a constant is allowed, do not point at one
+    varying = set(expected.setting.state.values()) if expected.option("up_to_constant") else None
+    change = single_term_change(expected, key, e, s, varying)
+    if change:
+        return term_outcome([change])
+    s = expected.setting.plain(s)
     # Only an expected answer without trigonometry can be a small-angle form the student did not use.
     if not has_angle_functions(e, expected.setting) and has_angle_functions(s, expected.setting):
         for form in approximate(s):
             if not form.has(sympy.nan, sympy.zoo) and same_values(expected, e, form, deadline, key=key)[0]:
                 return Outcome("not_equivalent", 0.0, "not_small_angle")
     deadline.check()
-    # where a constant is allowed, do not point at one
-    varying = set(expected.setting.state.values()) if expected.option("up_to_constant") else None
     submitted_terms = terms(s, varying=varying, expanded=expanded)
     return term_outcome(term_changes(expected_terms(expected, key, e, varying), submitted_terms, expected.setting))
 
@@ -124,6 +147,74 @@ def expected_terms(expected: Expected, key: str, e, varying: set | None = None) 
     if cache_key not in expected.cache:
         expected.cache[cache_key] = terms(e, varying=varying)
     return expected.cache[cache_key]
+
+
+def single_term_change(expected: Expected, key: str, e, s, varying: set | None = None) -> tuple[str, str] | None:
+    """(key, description) when ``s`` is ``e`` with one of its terms missing or off by a factor,
+    as :func:`~grader.judge.diagnose.term_changes` would name it; None otherwise.
+
+    Read from the numbers: s − e must be the same multiple λ of one term of ``e`` at every
+    sample point (λ = −1: missing; −2: the wrong sign; otherwise the wrong factor, when
+    the functions of that term occur in ``s``: a term can only differ if it is there). With
+    ``varying`` (a constant is allowed), only the terms involving those symbols count, and
+    differences are compared within each group of points sharing the parameters. Points
+    the floats cannot decide make this give up; sympy's expansion then has the last word.
+    """
+    shapes = expected_terms(expected, key, e, varying)
+    if not 1 <= len(shapes) <= MAX_TERMS:
+        return None
+    points = expected.points(POINTS, group=GROUP)
+    (e_values, e_scales), (s_values, s_scales) = (
+        expected.compiled(key, e).many(points),
+        expected.compile(s).many(points),
+    )
+    difference, scale = s_values - e_values, np.maximum(e_scales, s_scales)
+    found = []
+    for number, (shape, coefficient) in enumerate(shapes.items()):
+        term = expected.compiled(f"{key}, term {number}{' varying' if varying else ''}", coefficient * shape)
+        t_values, t_scales = term.many(points)
+        multiple = _multiple_of(difference, t_values, np.maximum(scale, t_scales), varying is not None)
+        if multiple is not None:
+            found.append((shape, multiple))
+    if len(found) != 1:
+        return None
+    (shape, multiple), setting = found[0], expected.setting
+    if abs(multiple + 1) < 1e-9:
+        return "missing_term", describe_term(shape, setting)
+    if _function_names(shape) - _function_names(s):
+        # cos²θ written for sin²θ is, up to a constant, sin²θ with the wrong sign; but the
+        # student wrote no sin: naming the terms as typed (sympy's comparison) says more
+        return None
+    how = "has the wrong sign" if abs(multiple + 2) < 1e-9 else "has the wrong factor"
+    return "term_differs", f"{describe_term(shape, setting, definite=True)} {how}"
+
+
+def _function_names(expr) -> set[str]:
+    return {type(f).__name__ for f in expr.atoms(sympy.Function)}
+
+
+def _multiple_of(difference: np.ndarray, term: np.ndarray, scale: np.ndarray, up_to_constant: bool) -> float | None:
+    """λ ≠ 0 with ``difference`` = λ·``term`` at every point where all are defined (up to a
+    constant per group of points, with ``up_to_constant``), to floats' resolution; else None."""
+    defined = np.isfinite(difference) & np.isfinite(term) & np.isfinite(scale)
+    if up_to_constant:
+        firsts = {}
+        for i in np.flatnonzero(defined):
+            firsts.setdefault(i // GROUP, i)
+        keep = np.array([defined[i] and firsts.get(i // GROUP) != i for i in range(len(defined))])
+        base = np.array([firsts.get(i // GROUP, i) for i in range(len(defined))])
+        difference, term, defined = difference - difference[base], term - term[base], keep
+    if defined.sum() < (MIN_DEFINED - 2 if up_to_constant else MIN_DEFINED):
+        return None
+    difference, term, scale = difference[defined], term[defined], scale[defined]
+    largest = int(np.argmax(np.abs(term) / scale))
+    if abs(term[largest]) <= 1e-9 * scale[largest] or abs(difference[largest]) <= 1e-9 * scale[largest]:
+        return None  # this term vanishes here, or it is not what differs
+    multiple = difference[largest] / term[largest]
+    if abs(multiple.imag) > 1e-9 * abs(multiple):
+        return None
+    bound = FLOAT_EQUAL * np.maximum(scale, np.abs(multiple) * scale)
+    return float(multiple.real) if bool(np.all(np.abs(difference - multiple * term) <= bound)) else None
 
 
 def term_outcome(changes: list[tuple[str, str]]) -> Outcome:

@@ -24,7 +24,7 @@ import sympy
 from grader.judge.deadline import Deadline
 from grader.judge.diagnose import taylor, term_changes, terms
 from grader.judge.expected import Expected, Outcome, prepare
-from grader.judge.expression import expected_terms, same_values, term_outcome
+from grader.judge.expression import expected_terms, same_values, single_term_change, term_outcome
 from grader.judge.numeric import Closeness, Compiled, closeness
 from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, constant_difference, nice_number, side_by_side
 from grader.judge.setting import Setting
@@ -222,5 +222,8 @@ def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> 
             return Outcome("not_equivalent", 0.0, key)
     # the terms that vary along the motion: another zero of the potential is no mistake
     state = set(setting.state.values()) | {TIME}
+    change = single_term_change(expected, "value", lagrangian, submitted, state)
+    if change:
+        return term_outcome([change])
     submitted_terms = terms(submitted, varying=state)
     return term_outcome(term_changes(expected_terms(expected, "value", lagrangian, state), submitted_terms, setting))
