@@ -98,14 +98,15 @@ def diagnose_difference(
     *,
     key: str = "value",
     approximations: Callable[[sympy.Expr], list] | None = None,
-    expanded: bool = False,
+    termwise: Callable[[], sympy.Expr | None] | None = None,
 ) -> Outcome:
     """A not-equivalent outcome for ``s`` (as parsed, or in plain symbols) against ``e``,
     naming the mistake where it can.
 
     ``key`` names ``e`` among the expressions derived from the expected answer;
     ``approximations`` gives the small-angle forms of an expression (by default
-    sin u → u, cos u → 1 or 1 − u²/2); ``expanded`` says ``s`` is already expanded.
+    sin u → u, cos u → 1 or 1 − u²/2); ``termwise``, when given, gives ``s`` expanded in
+    the form whose terms are compared (None: it has no such form), for the last resort.
     """
     approximate = approximations or (lambda expr: small_angle(expr, expected.setting))
     ratio = constant_ratio(pairs)
@@ -136,7 +137,13 @@ def diagnose_difference(
             if not form.has(sympy.nan, sympy.zoo) and same_values(expected, e, form, deadline, key=key)[0]:
                 return Outcome("not_equivalent", 0.0, "not_small_angle")
     deadline.check()
-    submitted_terms = terms(s, varying=varying, expanded=expanded)
+    if termwise is None:
+        submitted_terms = terms(s, varying=varying)
+    else:
+        solved = termwise()
+        if solved is None:
+            return Outcome("not_equivalent", 0.0, "wrong")
+        submitted_terms = terms(solved, varying=varying, expanded=True)
     return term_outcome(term_changes(expected_terms(expected, key, e, varying), submitted_terms, expected.setting))
 
 

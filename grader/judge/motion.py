@@ -379,12 +379,18 @@ def _multiple(expected_row, submitted_row, expected_scales, submitted_scales, pr
 
 
 def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
-    """Compare the two equations solved for the same acceleration, term by term."""
+    """Compare the two equations solved for the same acceleration, term by term.
+
+    For the numbers, g divided by its coefficient of the acceleration need not be
+    expanded (sympy's expansion is most of the cost); only naming the terms when the
+    numbers cannot needs g solved and expanded (:func:`_solved`).
+    """
     (coordinate, *_) = _accelerations_in(f, expected)
     acceleration = expected.setting.acceleration(coordinate)
-    normal_g = _solved(g, acceleration)
-    if normal_g is None:
+    coefficient = g.xreplace({acceleration: sympy.Integer(1)}) - g.xreplace({acceleration: sympy.Integer(0)})
+    if coefficient == 0:  # none of this acceleration: another coordinate's equation
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+    normal_g = g / coefficient
     key = "equation, normalized"
     if key not in expected.cache:
         expected.cache[key] = _solved(f, acceleration)
@@ -393,7 +399,8 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     _, pairs = same_values(expected, normal_f, normal_g, deadline, key=key)
     outcome = diagnose_difference(
         expected, normal_f, normal_g, pairs, deadline, key=key,
-        approximations=lambda expr: [taylor(expr, expected.setting, 1)], expanded=True,
+        approximations=lambda expr: [taylor(expr, expected.setting, 1)],
+        termwise=lambda: _solved(g, acceleration),
     )  # fmt: skip
     if outcome.key in ("sign", "factor", "wrong"):
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
