@@ -164,6 +164,12 @@ def test_a_term_written_with_another_function_is_named_as_typed():
     assert verdict.feedback == ("A term is missing: a term in sin(θ).", "There is a term too many: a term in cos(θ).")
 
 
+def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
+    # any constant difference is a multiple of cos 3: only the terms as typed can say which
+    verdict = compare("cos(3) + theta", "cos(3) - 3 + theta", coords=["theta"])
+    assert verdict.feedback == ("There is a term too many: a constant term.",), verdict
+
+
 def test_feedback_never_contains_the_expected_answer():
     for expected, submitted, kind, setting, _, _ in FEEDBACK:
         verdict = compare(expected, submitted, kind=kind, **setting)

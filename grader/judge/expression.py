@@ -178,6 +178,8 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     difference, scale = s_values - e_values, np.maximum(e_scales, s_scales)
     found = []
     for number, (shape, coefficient) in enumerate(shapes.items()):
+        if not shape.free_symbols:
+            continue  # any constant difference is a multiple of a number: the numbers cannot say which
         term = expected.compiled(f"{key}, term {number}{' varying' if varying else ''}", coefficient * shape)
         t_values, t_scales = term.many(points)
         multiple = _multiple_of(difference, t_values, np.maximum(scale, t_scales), varying is not None)
