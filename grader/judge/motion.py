@@ -241,9 +241,9 @@ def _at_each_state(
 
     The first system is the reference, compiled from the expected answer.
 
-    Where ``unsure(result)``, or a sum lost a term in floats, the state is judged again on
-    rows evaluated at 40 digits;
-    results that are None (the state says nothing) are dropped. When every result
+    Where ``unsure(result)``, or where it ``agrees`` but a sum lost a term in floats, the
+    state is judged again on rows evaluated at 40 digits; results that are None (the
+    state says nothing) are dropped. When every result
     ``agrees``, the systems are rational functions and their numbers span more than
     :data:`_WIDE`, one state is judged once more in exact fractions: it sees the 0.001
     beside 10¹² g that floats round away. (Numbers of like size cannot hide a term
@@ -259,9 +259,11 @@ def _at_each_state(
             continue
         try:
             result = judge(rows, False)
-            if result is not None and not unsure(result) and agrees(result):
+            redo = unsure(result)
+            if not redo and result is not None and agrees(result):  # unless floats lost a term here
                 lost = lost if lost is not None else _lost_states(expected, systems, steps)
-            if unsure(result) or (lost is not None and lost[number] and agrees(result)):
+                redo = bool(lost[number])
+            if redo:
                 # Rows, solving and residuals are sums of 40-digit values: all of it at 40 digits,
                 # or each sum rounds to a float's 16 and nothing looks linear any more.
                 with mpmath.workdps(PRECISE_DIGITS):
