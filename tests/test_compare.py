@@ -302,6 +302,14 @@ def test_answers_that_differ_by_a_tiny_term_are_not_off_by_a_factor_one():
     assert verdict.diagnosis == "missing_term", verdict
 
 
+def test_a_difference_at_the_edge_of_float_resolution_is_not_hidden_by_the_rows_scale():
+    # 1 in 7·10¹² at these points: comparing the rows (c, b) as multiples moves b's difference
+    # into c, whose rounding band must be no wider than c itself
+    expected, submitted = "yddot = 10^12 g (coth(-m) (m + m))", "yddot = 10^12 g (coth(-m) (m + m)) + 1"
+    verdict = compare(expected, submitted, kind="equation", coords=["x", "y"], known=["m", "g"])
+    assert verdict.status == "not_equivalent", verdict
+
+
 def test_an_equation_with_an_acceleration_is_never_called_trivial():
     # beside e^30 ≈ 10¹³ the coefficient 1 of ÿ is within rounding of zero; it is still there
     verdict = compare(
