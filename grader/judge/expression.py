@@ -216,7 +216,7 @@ def _multiple_of(difference: np.ndarray, term: np.ndarray, scale: np.ndarray, up
     if defined.sum() < (MIN_DEFINED - 2 if up_to_constant else MIN_DEFINED):
         return None
     difference, term, scale = difference[defined], term[defined], scale[defined]
-    largest = int(np.argmax(np.abs(term) / scale))
+    largest = int(np.argmax(np.abs(term) / np.where(scale > 0, scale, 1.0)))
     if abs(term[largest]) <= 1e-9 * scale[largest] or abs(difference[largest]) <= 1e-9 * scale[largest]:
         return None  # this term vanishes here, or it is not what differs
     multiple = difference[largest] / term[largest]

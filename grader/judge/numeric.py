@@ -189,7 +189,7 @@ class Compiled:
         self._jet = None
         self._precise = None
         self._exact = None  # compiled when first needed: most comparisons never need it
-        self._last = None  # (key, result) of the last batch evaluated, when not memoized
+        self._last: dict = {}  # kind of evaluation → (key, result) of the last batch, when not memoized
         # A reference answer is evaluated at the same points for every submission: remember them.
         self._memo: dict | None = {} if memo else None
 
@@ -223,11 +223,13 @@ class Compiled:
 
     def _remembered(self, key: tuple, compute):
         """``compute()``, kept under ``key`` when this is a reference answer's (``memo``);
-        a submitted answer's keeps only its last result, for :meth:`lost` after :meth:`many`."""
+        a submitted answer's keeps only its last result of each kind (``key[0]``): the same
+        points are asked for again by the next diagnosis, and :meth:`lost` comes in between."""
         if self._memo is None:
-            if self._last is None or self._last[0] != key:
-                self._last = (key, compute())
-            return self._last[1]
+            last = self._last.get(key[0])
+            if last is None or last[0] != key:
+                last = self._last[key[0]] = (key, compute())
+            return last[1]
         if key not in self._memo:
             self._memo[key] = compute()
         return self._memo[key]
