@@ -164,6 +164,13 @@ def test_a_term_written_with_another_function_is_named_as_typed():
     assert verdict.feedback == ("A term is missing: a term in sin(θ).", "There is a term too many: a term in cos(θ).")
 
 
+def test_a_term_the_answer_does_not_have_is_not_said_to_differ():
+    # ẍ = g is (m₁ − m₂)g/(m₁ + m₂) with "the gravity term in m₂" of the other sign; but
+    # the student wrote no m₂ (an Atwood machine's free-fall answer, from the example class)
+    verdict = compare("(m1 + m2) xddot = (m1 - m2) g", "xddot = g", kind="equation", coords=["x"], known=["m1", "m2"])
+    assert verdict.feedback == ("This equation does not say the same as the expected one.",), verdict
+
+
 def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
     # any constant difference is a multiple of cos 3: only the terms as typed can say which
     verdict = compare("cos(3) + theta", "cos(3) - 3 + theta", coords=["theta"])

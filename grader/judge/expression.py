@@ -18,6 +18,7 @@ from collections.abc import Callable
 
 import numpy as np
 import sympy
+from sympy.core.function import AppliedUndef
 
 from grader.judge.deadline import Deadline
 from grader.judge.diagnose import (
@@ -162,7 +163,8 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
 
     Read from the numbers: s − e must be the same multiple λ of one term of ``e`` at every
     sample point (λ = −1: missing; −2: the wrong sign; otherwise the wrong factor, when
-    the functions of that term occur in ``s``: a term can only differ if it is there). With
+    the functions and symbols of that term occur in ``s``: a term can only differ if it
+    is there). With
     ``varying`` (a constant is allowed), only the terms involving those symbols count, and
     differences are compared within each group of points sharing the parameters. Points
     the floats cannot decide make this give up; sympy's expansion then has the last word.
@@ -190,9 +192,11 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     (shape, multiple), setting = found[0], expected.setting
     if abs(multiple + 1) < 1e-9:
         return "missing_term", describe_term(shape, setting)
-    if _function_names(shape) - _function_names(s):
+    if _function_names(shape) - _function_names(s) or _symbol_names(shape) - _symbol_names(s):
         # cos²θ written for sin²θ is, up to a constant, sin²θ with the wrong sign; but the
-        # student wrote no sin: naming the terms as typed (sympy's comparison) says more
+        # student wrote no sin. Against (m₁ − m₂)g/(m₁ + m₂), ẍ = g has "the gravity term in
+        # m₂ with the wrong sign"; but the student wrote no m₂. A term can only differ if it
+        # is there: naming the terms as typed (sympy's comparison) says more.
         return None
     how = "has the wrong sign" if abs(multiple + 2) < 1e-9 else "has the wrong factor"
     return "term_differs", f"{describe_term(shape, setting, definite=True)} {how}"
@@ -200,6 +204,12 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
 
 def _function_names(expr) -> set[str]:
     return {type(f).__name__ for f in expr.atoms(sympy.Function)}
+
+
+def _symbol_names(expr) -> set[str]:
+    """The names of the symbols in ``expr``, plain or as parsed: θ, θ̇ and θ(t) are all ``theta``."""
+    names = {symbol.name.split("__")[0] for symbol in expr.free_symbols}
+    return names | {type(f).__name__ for f in expr.atoms(AppliedUndef)}
 
 
 def _multiple_of(difference: np.ndarray, term: np.ndarray, scale: np.ndarray, up_to_constant: bool) -> float | None:
