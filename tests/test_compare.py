@@ -293,6 +293,9 @@ def test_accelerations_far_larger_than_their_coefficients(kind, expected, submit
         # e^(40x²) is 10¹⁷ or more at some states, where floats lose the 1, and ordinary at others
         ("equations", "x^2 xddot = m; yddot = exp(40 x^2)", "x^2 xddot = m; yddot = exp(40 x^2) + 1", "not_equivalent"),
         ("equations", "x^2 xddot = m; yddot = exp(40 x^2)", "yddot = exp(40 x^2); x^2 xddot = m", "equivalent"),
+        # relations (no accelerations): compared by their ratio, which floats see as 1
+        ("equation", "E = exp(10 (m + 2)) + m", "E = exp(10 (m + 2))", "not_equivalent"),
+        ("equation", "E = exp(10 (m + 2)) + m", "2 E = 2 exp(10 (m + 2)) + 2 m", "equivalent"),
         # 18 digits typed: more than a float holds
         ("expression", "sin(x)/3", "0.333333333333333333 sin(x)", "not_equivalent"),
         # beyond 40 digits at every point: a person decides, nobody guesses
@@ -302,6 +305,12 @@ def test_accelerations_far_larger_than_their_coefficients(kind, expected, submit
 def test_a_term_too_small_for_floats_to_see_is_not_ignored(kind, expected, submitted, status):
     verdict = compare(expected, submitted, kind=kind, coords=["x", "y"], known=["m"])
     assert verdict.status == status, verdict
+
+
+def test_a_relation_that_floats_call_the_same_is_checked_at_40_digits_where_a_term_was_lost():
+    # at these points floats agree everywhere: only the lost m says to look again
+    verdict = compare("E = exp(10 (m + 2)) + m", "E = exp(10 (m + 2))", kind="equation", coords=["theta"], known=["m"])
+    assert verdict.status == "not_equivalent", verdict
 
 
 def test_answers_that_differ_by_a_tiny_term_are_not_off_by_a_factor_one():

@@ -451,20 +451,13 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     submitted_g = expected.compile(g)
     deadline.check()
     points = expected.points(_GROUPS * _STATES, salt=1, group=_STATES)
-    results = []
-    ratios: dict[int, complex] = {}
-    for number, (a, scale_a, b, scale_b) in enumerate(side_by_side(expected_f, submitted_g, points)):
-        if not math.isfinite(scale_a + scale_b):
-            continue  # undefined here
-        scale = max(scale_a, scale_b)
-        if closeness(a, 0, scale) is Closeness.EQUAL:
-            results.append(closeness(b, 0, scale))  # on the expected relation's zero set
-            continue
-        ratio = ratios.setdefault(number // group, b / a)
-        if closeness(ratio, 0, 1.0) is Closeness.EQUAL:
-            results.append(Closeness.DIFFERENT)
-        else:
-            results.append(closeness(ratio * a, b, scale * max(1.0, abs(ratio))))
+    results = _ratio_test(side_by_side(expected_f, submitted_g, points), group, precise=False)
+    redo = Closeness.UNSURE in results
+    if not redo and all(result is Closeness.EQUAL for result in results):
+        redo = bool((expected_f.lost(points) | submitted_g.lost(points)).any())  # m beside e^(10(m + 2))
+    if redo:  # floats could not tell somewhere: all of it again at 40 digits
+        with mpmath.workdps(PRECISE_DIGITS):
+            results = _ratio_test(_precise_side_by_side(expected_f, submitted_g, points), group, precise=True)
     if all(result is Closeness.EQUAL for result in results) and len(results) >= MIN_DEFINED:
         return Outcome("equivalent", 1.0, "equivalent", method="ratio")
     same = _same_roots(expected, expected_f, submitted_g, f.free_symbols & g.free_symbols, deadline)
@@ -475,6 +468,38 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     if same is None and Closeness.DIFFERENT not in results:
         return Outcome("undecided", 0.0, "undecided", method="ratio: too few defined points")
     return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="ratio")
+
+
+def _ratio_test(values, group: int, *, precise: bool) -> list[Closeness]:
+    """Per point where both are defined: is g = λ f there, λ fixed within each ``group`` of
+    points (``values``: f, its scale, g, its scale at each point)."""
+    results = []
+    ratios: dict = {}
+    for number, (a, scale_a, b, scale_b) in enumerate(values):
+        if not math.isfinite(scale_a + scale_b):
+            continue  # undefined here
+        scale = max(scale_a, scale_b)
+        if closeness(a, 0, scale, precise=precise) is Closeness.EQUAL:
+            results.append(closeness(b, 0, scale, precise=precise))  # on the expected relation's zero set
+            continue
+        ratio = ratios.setdefault(number // group, b / a)
+        if closeness(ratio, 0, 1.0, precise=precise) is Closeness.EQUAL:
+            results.append(Closeness.DIFFERENT)
+        else:
+            results.append(closeness(ratio * a, b, scale * max(1.0, abs(ratio)), precise=precise))
+    return results
+
+
+def _precise_side_by_side(f: Compiled, g: Compiled, points: np.ndarray) -> list[tuple]:
+    """As :func:`~grader.judge.sampling.side_by_side`, at 40 digits; NaN scales where undefined."""
+    values = []
+    for point in points.tolist():
+        try:
+            (a, scale_a), (b, scale_b) = f.precise(point), g.precise(point)
+        except UNDEFINED:
+            a = scale_a = b = scale_b = math.nan
+        values.append((a, scale_a, b, scale_b))
+    return values
 
 
 _SCAN = {"positive": (0.01, 10.0), "negative": (-10.0, -0.01)}  # where roots are looked for
