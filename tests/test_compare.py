@@ -282,6 +282,9 @@ def test_accelerations_far_larger_than_their_coefficients(kind, expected, submit
     assert verdict.status == status, verdict
 
 
+HUGE_POTENTIAL = "1/2 m xdot^2 + exp(10 (m + 2)) cos(x)"
+
+
 @pytest.mark.parametrize(
     ("kind", "expected", "submitted", "status"),
     [
@@ -293,6 +296,14 @@ def test_accelerations_far_larger_than_their_coefficients(kind, expected, submit
         # e^(40x²) is 10¹⁷ or more at some states, where floats lose the 1, and ordinary at others
         ("equations", "x^2 xddot = m; yddot = exp(40 x^2)", "x^2 xddot = m; yddot = exp(40 x^2) + 1", "not_equivalent"),
         ("equations", "x^2 xddot = m; yddot = exp(40 x^2)", "yddot = exp(40 x^2); x^2 xddot = m", "equivalent"),
+        # a Lagrangian with a potential of e^(10(m + 2)): the kinetic term's change is lost beside it
+        ("lagrangian", HUGE_POTENTIAL, f"{HUGE_POTENTIAL} + m xdot^2", "not_equivalent"),
+        ("lagrangian", HUGE_POTENTIAL, f"{HUGE_POTENTIAL} + 1/100 xdot^2", "not_equivalent"),
+        ("lagrangian", HUGE_POTENTIAL, f"{HUGE_POTENTIAL} + d/dt(m x^2)", "equivalent"),
+        ("lagrangian", HUGE_POTENTIAL, f"{HUGE_POTENTIAL} + 7 m", "equivalent"),
+        # lost inside a derivative's own sum: (e^(10(m + 2)) + m) ẋ²/2
+        ("lagrangian", "1/2 exp(10 (m + 2)) xdot^2 + exp(10 (m + 2)) cos(x)",
+         "1/2 (exp(10 (m + 2)) + m) xdot^2 + exp(10 (m + 2)) cos(x)", "not_equivalent"),
         # relations (no accelerations): compared by their ratio, which floats see as 1
         ("equation", "E = exp(10 (m + 2)) + m", "E = exp(10 (m + 2))", "not_equivalent"),
         ("equation", "E = exp(10 (m + 2)) + m", "2 E = 2 exp(10 (m + 2)) + 2 m", "equivalent"),

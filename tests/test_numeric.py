@@ -8,6 +8,7 @@ Lagrangian's numeric equations of motion with the symbolic Euler–Lagrange ones
 from __future__ import annotations
 
 import cmath
+import dataclasses
 
 import mpmath
 import numpy as np
@@ -17,6 +18,7 @@ import sympy
 from grader.judge.expected import prepare
 from grader.judge.lagrangian import _dynamics, _symbolic_dynamics
 from grader.judge.numeric import UNDEFINED, Compiled, LostTerm, sample_points
+from grader.judge.sampling import Pair, constant_difference, constant_ratio
 
 x, y, z = sympy.symbols("x y z", real=True)
 VARIABLES = (x, y, z)
@@ -101,6 +103,19 @@ def test_at_40_digits_a_lost_term_leaves_the_point_undefined():
         assert abs(value - (mpmath.exp(40) + 2)) < 1e-20  # y is there
 
 
+def test_readings_of_40_digit_pairs_use_40_digits_tolerance():
+    with mpmath.workdps(40):
+        big = mpmath.mpf(10) ** 15
+        # submitted = 2·expected but for a term of 1 in 10¹⁵: equal to floats, not to 40 digits
+        pairs = [Pair(big + k, 2 * (big + k) + (k % 2), 2 * big, precise=True, group=k // 5) for k in range(10)]
+        assert constant_ratio(pairs) is None
+        assert constant_ratio([dataclasses.replace(pair, precise=False) for pair in pairs]) is not None
+        # submitted − expected varies by 1 in 10¹⁵ along the motion: no constant
+        pairs = [Pair(big + k, big + 2 * k, big, precise=True, group=k // 5) for k in range(10)]
+        assert not constant_difference(pairs)
+        assert constant_difference([dataclasses.replace(pair, precise=False) for pair in pairs])
+
+
 def test_noting_losses_does_not_change_values():
     points = _points()
     for expr in EXPRESSIONS:
@@ -149,7 +164,8 @@ LAGRANGIANS = [
 @pytest.mark.parametrize(("name", "lagrangian", "coords", "known"), LAGRANGIANS, ids=[row[0] for row in LAGRANGIANS])
 def test_numeric_equations_of_motion_agree_with_euler_lagrange(name, lagrangian, coords, known):
     expected = prepare(lagrangian, "lagrangian", coords, known, (), (("factor_credit", 0.5),))
-    numeric = _dynamics(expected, expected.value)
+    numeric, lost = _dynamics(expected, expected.value)
+    assert not lost, name  # ordinary Lagrangians never need the 40-digit path
     symbolic = _symbolic_dynamics(expected, expected.value)
     for by_numbers, by_symbols in zip(numeric, symbolic, strict=True):
         for (a, scale, _, _), (b, _, _, _) in zip(by_numbers, by_symbols, strict=True):

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 
+import mpmath
 import numpy as np
 import sympy
 
@@ -25,8 +26,16 @@ from grader.judge.deadline import Deadline
 from grader.judge.diagnose import taylor, term_changes, terms
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import expected_terms, same_values, single_term_change, term_outcome
-from grader.judge.numeric import Closeness, Compiled, closeness
-from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, constant_difference, nice_number, side_by_side
+from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, Closeness, Compiled, closeness
+from grader.judge.sampling import (
+    GROUP,
+    MIN_DEFINED,
+    POINTS,
+    constant_difference,
+    nice_number,
+    precise_side_by_side,
+    side_by_side,
+)
 from grader.judge.setting import Setting
 from grader.parse import TIME, ParsedAnswer
 from grader.parse.readback import to_text
@@ -94,13 +103,18 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
     Returns (None, False) when the equations are not proportional.
 
     The equations are evaluated by forward-mode differentiation (:func:`_dynamics`);
-    where rounding leaves a state unsure, they are derived symbolically and evaluated again.
+    where rounding leaves a state unsure, or they look proportional but a sum lost a term
+    (m θ̈ beside e^(10(m + 2)) sin θ), they are derived symbolically and evaluated at 40 digits.
     """
     deadline.check()
-    proportional = _proportional(_dynamics(expected, submitted))
-    if proportional is Closeness.UNSURE:
+    columns, lost = _dynamics(expected, submitted)
+    proportional = _proportional(columns)
+    if proportional is not None and proportional is not Closeness.UNSURE and not lost:
+        lost = _jets_lost(expected, submitted)
+    if proportional is Closeness.UNSURE or (lost and proportional is not None):
         deadline.check()
-        proportional = _proportional(_symbolic_dynamics(expected, submitted))
+        with mpmath.workdps(PRECISE_DIGITS):
+            proportional = _proportional(_symbolic_dynamics(expected, submitted, precise=True), precise=True)
     if proportional in (None, Closeness.UNSURE):
         return None, False
     first, *others = proportional.values()
@@ -108,11 +122,12 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
     return first, named
 
 
-def _proportional(columns: list[list[tuple]]):
+def _proportional(columns: list[list[tuple]], *, precise: bool = False):
     """The ratio in each group of points (a dict), None when the equations are not proportional,
-    or Closeness.UNSURE when floats cannot tell.
+    or Closeness.UNSURE when the numbers cannot tell.
 
-    ``columns`` holds, per coordinate and per point, (expected, its scale, submitted, its scale).
+    ``columns`` holds, per coordinate and per point, (expected, its scale, submitted, its scale),
+    in floats or (``precise``) at 40 digits.
     """
     ratios: dict[int, complex] = {}
     checked, unsure = 0, False
@@ -123,14 +138,14 @@ def _proportional(columns: list[list[tuple]]):
         group = number // GROUP
         if group not in ratios:
             a, _, b, _ = max(values, key=lambda value: abs(value[0]))
-            if closeness(a, 0, scale) is Closeness.EQUAL:
+            if closeness(a, 0, scale, precise=precise) is Closeness.EQUAL:
                 continue
-            if closeness(b, 0, scale) is Closeness.EQUAL:
+            if closeness(b, 0, scale, precise=precise) is Closeness.EQUAL:
                 return None
             ratios[group] = b / a
         ratio = ratios[group]
         for a, _, b, _ in values:
-            same = closeness(ratio * a, b, scale * max(1.0, abs(ratio)))
+            same = closeness(ratio * a, b, scale * max(1.0, abs(ratio)), precise=precise)
             if same is Closeness.DIFFERENT:
                 return None
             unsure |= same is Closeness.UNSURE
@@ -140,8 +155,10 @@ def _proportional(columns: list[list[tuple]]):
     return ratios if checked >= MIN_DEFINED else None
 
 
-def _dynamics(expected: Expected, submitted) -> list[list[tuple]]:
-    """Both sets of Euler–Lagrange expressions at the sample states, as :func:`_proportional` reads them.
+def _dynamics(expected: Expected, submitted) -> tuple[list[list[tuple]], bool]:
+    """Both sets of Euler–Lagrange expressions at the sample states, as :func:`_proportional` reads
+    them, and whether d/dt ∂L/∂q̇ − ∂L/∂q lost a term at any state (see :mod:`grader.judge.numeric`;
+    the sums inside either part are :func:`_jets_lost`'s).
 
     No calculus on symbols: d/dt ∂L/∂q̇ is the mixed second derivative of L along q̇ and
     along the motion (q̇, q̈ and 1 for q, q̇ and t), and ∂L/∂q its derivative along q,
@@ -151,20 +168,35 @@ def _dynamics(expected: Expected, submitted) -> list[list[tuple]]:
     n = len(expected.setting.coords)
     count = len(points) // (2 * n)  # rows: per coordinate the states along (q̇, motion), then along q
 
+    lost = False
+
     def euler_lagrange_at(lagrangian: Compiled) -> list[tuple[list, list]]:
+        nonlocal lost
         slope, mixed, scale = lagrangian.derivatives(points, first, second)
         expressions = []
         for i in range(n):
             along, across = slice(i * count, (i + 1) * count), slice((n + i) * count, (n + i + 1) * count)
             values = mixed[along] - slope[across]
+            # d/dt ∂L/∂q̇ − ∂L/∂q is a sum too: m θ̈ is lost beside e^(10(m + 2)) sin θ
+            sizes = np.abs(mixed[along]), np.abs(slope[across])
+            smaller, larger = np.minimum(*sizes), np.maximum(*sizes)
+            lost |= bool(np.any((smaller > 0) & (smaller < FLOAT_EQUAL * larger)))
             expressions.append((values.tolist(), np.maximum(scale[along], scale[across]).tolist()))
         return expressions
 
     mine = euler_lagrange_at(expected.compiled("value", expected.value))
     theirs = euler_lagrange_at(expected.compile(submitted))
-    return [
+    columns = [
         list(zip(a, scale_a, b, scale_b, strict=True)) for (a, scale_a), (b, scale_b) in zip(mine, theirs, strict=True)
     ]
+    return columns, lost
+
+
+def _jets_lost(expected: Expected, submitted) -> bool:
+    """Whether a sum inside either Lagrangian or its derivatives lost a term at a sample state."""
+    points, first, second = _directions(expected)
+    lagrangians = (expected.compiled("value", expected.value), expected.compile(submitted))
+    return any(bool(lagrangian.derivatives_lost(points, first, second).any()) for lagrangian in lagrangians)
 
 
 def _directions(expected: Expected) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -194,8 +226,9 @@ def _directions(expected: Expected) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     return expected.cache["directions"]
 
 
-def _symbolic_dynamics(expected: Expected, submitted) -> list[list[tuple]]:
-    """Both sets of Euler–Lagrange expressions derived symbolically, at the sample states."""
+def _symbolic_dynamics(expected: Expected, submitted, *, precise: bool = False) -> list[list[tuple]]:
+    """Both sets of Euler–Lagrange expressions derived symbolically, at the sample states (at 40
+    digits with ``precise``, where a point that loses a term even so counts as undefined)."""
     if "euler-lagrange" not in expected.cache:
         expected.cache["euler-lagrange"] = [
             expected.compiled(f"euler-lagrange {i}", e)
@@ -203,7 +236,8 @@ def _symbolic_dynamics(expected: Expected, submitted) -> list[list[tuple]]:
         ]
     theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
     points = expected.points(POINTS, group=GROUP)
-    return [side_by_side(f, g, points) for f, g in zip(expected.cache["euler-lagrange"], theirs, strict=True)]
+    evaluate = precise_side_by_side if precise else side_by_side
+    return [evaluate(f, g, points) for f, g in zip(expected.cache["euler-lagrange"], theirs, strict=True)]
 
 
 def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> Outcome:

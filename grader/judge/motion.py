@@ -41,7 +41,7 @@ from grader.judge.diagnose import taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
 from grader.judge.numeric import PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
-from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, side_by_side
+from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, precise_side_by_side, side_by_side
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
 
@@ -457,7 +457,7 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
         redo = bool((expected_f.lost(points) | submitted_g.lost(points)).any())  # m beside e^(10(m + 2))
     if redo:  # floats could not tell somewhere: all of it again at 40 digits
         with mpmath.workdps(PRECISE_DIGITS):
-            results = _ratio_test(_precise_side_by_side(expected_f, submitted_g, points), group, precise=True)
+            results = _ratio_test(precise_side_by_side(expected_f, submitted_g, points), group, precise=True)
     if all(result is Closeness.EQUAL for result in results) and len(results) >= MIN_DEFINED:
         return Outcome("equivalent", 1.0, "equivalent", method="ratio")
     same = _same_roots(expected, expected_f, submitted_g, f.free_symbols & g.free_symbols, deadline)
@@ -488,18 +488,6 @@ def _ratio_test(values, group: int, *, precise: bool) -> list[Closeness]:
         else:
             results.append(closeness(ratio * a, b, scale * max(1.0, abs(ratio)), precise=precise))
     return results
-
-
-def _precise_side_by_side(f: Compiled, g: Compiled, points: np.ndarray) -> list[tuple]:
-    """As :func:`~grader.judge.sampling.side_by_side`, at 40 digits; NaN scales where undefined."""
-    values = []
-    for point in points.tolist():
-        try:
-            (a, scale_a), (b, scale_b) = f.precise(point), g.precise(point)
-        except UNDEFINED:
-            a = scale_a = b = scale_b = math.nan
-        values.append((a, scale_a, b, scale_b))
-    return values
 
 
 _SCAN = {"positive": (0.01, 10.0), "negative": (-10.0, -0.01)}  # where roots are looked for

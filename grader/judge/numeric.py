@@ -31,6 +31,7 @@ undefined (:class:`LostTerm`), so that another point or ``simplify`` decides.
 from __future__ import annotations
 
 import enum
+import functools
 import math
 import random
 from collections.abc import Callable, Mapping, Sequence
@@ -281,22 +282,29 @@ class Compiled:
         (ε₁² = ε₂² = 0), exact but for rounding.
         """
         key = ("derivatives", points.shape, points.tobytes(), first.tobytes(), second.tobytes())
-        return self._remembered(key, lambda: self._derivatives(points, first, second))
+        return self._remembered(key, lambda: self._derivatives(points, first, second, track=False)[:3])
 
-    def _derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, ...]:
+    def derivatives_lost(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> np.ndarray:
+        """At every row: whether a sum in the value or those derivatives lost a term there (see the
+        module's notes); asked, in a pass of its own, only of equations of motion that agree."""
+        key = ("derivatives lost", points.shape, points.tobytes(), first.tobytes(), second.tobytes())
+        return self._remembered(key, lambda: self._derivatives(points, first, second, track=True)[3])
+
+    def _derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray, *, track: bool):
         if self._jet is None:
             self._jet = _compile_jet(self.expr, self.index)
 
         def evaluate(rows, one, two):
-            scale = [0.0, None]
+            scale = [0.0, False if track else None]
             _, slope, _, mixed = self._jet(rows.T, one.T, two.T, scale)
-            slope, mixed = (np.broadcast_to(np.asarray(part, complex), len(rows)) for part in (slope, mixed))
+            parts = (slope, mixed, bool(scale[1]) if not track else scale[1])
+            slope, mixed, lost = (np.broadcast_to(np.asarray(part, complex), len(rows)) for part in parts)
             size = np.maximum(scale[0], np.maximum(np.abs(slope), np.abs(mixed)))
-            return np.stack([slope, mixed]), size
+            return np.stack([slope, mixed, lost]), size
 
         arrays = (np.ascontiguousarray(array) for array in (points, first, second))
-        (slope, mixed), scale = _row_by_row_if_undefined(evaluate, *arrays, parts=2)
-        return slope, mixed, scale
+        (slope, mixed, lost), scale = _row_by_row_if_undefined(evaluate, *arrays, parts=3)
+        return slope, mixed, scale, lost.real == 1
 
     @cached_property
     def constant(self) -> bool:
@@ -520,10 +528,13 @@ def _compile_jet(expr, index: Mapping[sympy.Symbol, int]):
 
         def add(values, first, second, scale):
             total = [0, 0, 0, 0]
-            for f in args:
-                jet = f(values, first, second, scale)
+            parts = [jet for f in args for jet in [f(values, first, second, scale)]]
+            for jet in parts:
                 total = [t + part for t, part in zip(total, jet, strict=True)]
                 scale[0] = np.maximum(scale[0], np.maximum(np.abs(jet[1]), np.abs(jet[3])))
+            if scale[1] is not None:
+                for k in (0, 1, 3):  # value and derivatives: lost where a term is below the rest's resolution
+                    _note_lost([jet[k] for jet in parts], scale)
             return tuple(total)
 
         return add
@@ -580,6 +591,14 @@ def _compile_jet(expr, index: Mapping[sympy.Symbol, int]):
         function, slopes, (argument,) = _VECTOR.functions[name], _SLOPES[name], args
         return lambda values, first, second, scale: _chain(function, slopes, argument(values, first, second, scale))
     raise NotCompilable(f"cannot differentiate {name}")
+
+
+def _note_lost(terms, scale: list) -> None:
+    """Mark ``scale[1]`` where a nonzero one of ``terms`` (summed) is below floats' resolution."""
+    sizes = [np.abs(term) for term in terms]  # arrays, or numbers for constant parts
+    largest = functools.reduce(np.maximum, sizes)
+    smallest = functools.reduce(np.minimum, [np.where(size > 0, size, math.inf) for size in sizes])
+    scale[1] = scale[1] | (smallest < FLOAT_EQUAL * largest)
 
 
 def _mul_jets(x, y, scale: list | None = None):

@@ -4,6 +4,7 @@ Contents:
     Pair                      one point: both values and their common scale
     evaluate_pairs(...)       both expressions at seeded points, near misses re-evaluated precisely
     side_by_side(f, g, points)  both expressions' values and scales at each point, in one numpy pass
+    precise_side_by_side(...)   the same at 40 digits, point by point
     all_equal, constant_ratio, constant_difference   readings of a list of pairs
     nice_number(x)            1/2, 2, 2π… for feedback, or None
 
@@ -16,6 +17,7 @@ from __future__ import annotations
 
 import cmath
 import functools
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -35,6 +37,7 @@ __all__ = [
     "constant_ratio",
     "evaluate_pairs",
     "nice_number",
+    "precise_side_by_side",
     "side_by_side",
 ]
 
@@ -113,6 +116,19 @@ def side_by_side(f: Compiled, g: Compiled, points: np.ndarray) -> list[tuple[com
     return list(zip(a.tolist(), scale_a.tolist(), b.tolist(), scale_b.tolist(), strict=True))
 
 
+def precise_side_by_side(f: Compiled, g: Compiled, points: np.ndarray) -> list[tuple]:
+    """As :func:`side_by_side`, at 40 digits; NaN scales where undefined (or a term is lost even so).
+    Call it inside ``mpmath.workdps``: what is done with the values needs 40 digits too."""
+    values = []
+    for point in points.tolist():
+        try:
+            (a, scale_a), (b, scale_b) = f.precise(point), g.precise(point)
+        except UNDEFINED:
+            a = scale_a = b = scale_b = math.nan
+        values.append((a, scale_a, b, scale_b))
+    return values
+
+
 def _finite(value) -> bool:
     if isinstance(value, complex):
         return cmath.isfinite(value)
@@ -141,7 +157,8 @@ def constant_ratio(pairs: Sequence[Pair]) -> complex | None:
     if k == 0 or abs(k - 1) <= 1e-9:
         return None
     for pair in pairs:
-        scaled = Pair(k * complex(pair.expected), complex(pair.submitted), pair.scale * max(1.0, abs(k)))
+        precise = pair.precise and usable[0].precise  # k from floats is only good to floats' resolution
+        scaled = Pair(k * pair.expected, pair.submitted, pair.scale * max(1.0, abs(k)), precise=precise)
         if scaled.closeness() is not Closeness.EQUAL:
             return None
     return k
@@ -155,11 +172,11 @@ def constant_difference(pairs: Sequence[Pair]) -> bool:
     """
     if len(pairs) < MIN_DEFINED:
         return False
-    first: dict[int, complex] = {}
+    first: dict[int, tuple] = {}
     for pair in pairs:
-        difference = complex(pair.submitted - pair.expected)
-        reference = first.setdefault(pair.group, difference)
-        if closeness(difference, reference, pair.scale) is not Closeness.EQUAL:
+        difference = pair.submitted - pair.expected
+        reference, precise = first.setdefault(pair.group, (difference, pair.precise))
+        if closeness(difference, reference, pair.scale, precise=precise and pair.precise) is not Closeness.EQUAL:
             return False
     return True
 
