@@ -324,6 +324,20 @@ def test_a_relation_that_floats_call_the_same_is_checked_at_40_digits_where_a_te
     assert verdict.status == "not_equivalent", verdict
 
 
+def test_a_lagrangian_whose_dynamics_even_40_digits_cannot_judge_goes_to_a_person():
+    # beside e^(30g) ≥ 10²⁶, m ẍ is lost even at 40 digits at one draw of g: too few states remain
+    lagrangian = "1/2 m xdot^2 + exp(30 g) x"
+    verdict = compare(lagrangian, f"{lagrangian} + d/dt(m x^2)", kind="lagrangian", coords=["x"], known=["m", "g"])
+    assert verdict.status == "undecided", verdict
+
+
+def test_a_constant_added_to_nearly_constant_dynamics_is_not_a_factor_one():
+    # m ẍ − e^(10(m + 2)) g barely changes along the motion: minus m looks like a factor 1 + 10⁻²²
+    lagrangian = "1/2 m xdot^2 + exp(10 (m + 2)) g x"
+    verdict = compare(lagrangian, f"{lagrangian} + m x", kind="lagrangian", coords=["x"], known=["m", "g"])
+    assert verdict.status == "not_equivalent", verdict
+
+
 def test_answers_that_differ_by_a_tiny_term_are_not_off_by_a_factor_one():
     verdict = compare("exp(100 m) + 1", "exp(100 m)", known=["m"])
     assert verdict.diagnosis == "missing_term", verdict

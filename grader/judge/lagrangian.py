@@ -17,6 +17,7 @@ the symbolic equations as the judge where rounding leaves a state unsure.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import mpmath
 import numpy as np
@@ -82,6 +83,8 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     deadline.check()
     submitted = expected.setting.plain(answer.value)
     ratio, named = _dynamics_ratio(expected, submitted, deadline)
+    if ratio is Closeness.UNSURE:  # too few states where even 40 digits see every term
+        return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: the numbers cannot tell")
     if ratio is not None:
         credit = float(expected.option("factor_credit", 0.5))
         if named and abs(ratio - 1) < 1e-9:
@@ -95,12 +98,13 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     return _diagnose(expected, lagrangian, submitted, deadline)
 
 
-def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[complex | None, bool]:
+def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[complex | Closeness | None, bool]:
     """(k, named) when the submitted equations of motion are k times the expected ones.
 
     k may depend on the parameters (L/m is as good as 2L), so it is found afresh for
     each draw of the parameters; ``named`` says whether it was the same number in all.
-    Returns (None, False) when the equations are not proportional.
+    Returns (None, False) when the equations are not proportional, and
+    (Closeness.UNSURE, False) when the numbers cannot tell.
 
     The equations are evaluated by forward-mode differentiation (:func:`_dynamics`);
     where rounding leaves a state unsure, or they look proportional but a sum lost a term
@@ -114,17 +118,41 @@ def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[
     if proportional is Closeness.UNSURE or (lost and proportional is not None):
         deadline.check()
         with mpmath.workdps(PRECISE_DIGITS):
-            proportional = _proportional(_symbolic_dynamics(expected, submitted, precise=True), precise=True)
-    if proportional in (None, Closeness.UNSURE):
-        return None, False
+            columns = _symbolic_dynamics(expected, submitted, precise=True)
+            return _ratio_of(columns, _proportional(columns, precise=True), precise=True)
+    return _ratio_of(columns, proportional, precise=False)
+
+
+def _ratio_of(columns, proportional, *, precise: bool) -> tuple[complex | Closeness | None, bool]:
+    """:func:`_dynamics_ratio`'s answer from the ratios :func:`_proportional` found in ``columns``.
+
+    A ratio that is the same short number in every draw (1, −1, 2, 1/2) is that number only
+    if the equations are exactly that multiple at every point: where the equations barely
+    change along the motion (m ẍ beside e^(10(m + 2)) g), adding a constant looks like a
+    factor 1 + 10⁻²².
+    """
+    if proportional is None or proportional is Closeness.UNSURE:
+        return proportional, False
     first, *others = proportional.values()
     named = all(closeness(first, other, abs(first)) is Closeness.EQUAL for other in others)
+    if named:
+        short = Fraction(float(first.real)).limit_denominator(12)
+        if abs(first - float(short)) <= 1e-9 * max(1.0, abs(first)):
+            k = Fraction(short.numerator, short.denominator)
+            for column in columns:
+                for a, scale_a, b, scale_b in column:
+                    if not math.isfinite(scale_a + scale_b):
+                        continue
+                    scale = max(scale_a, scale_b) * max(1.0, abs(float(k)))
+                    if closeness(a * k.numerator / k.denominator, b, scale, precise=precise) is not Closeness.EQUAL:
+                        return None, False
+            return complex(float(k)), True
     return first, named
 
 
 def _proportional(columns: list[list[tuple]], *, precise: bool = False):
     """The ratio in each group of points (a dict), None when the equations are not proportional,
-    or Closeness.UNSURE when the numbers cannot tell.
+    or Closeness.UNSURE when the numbers cannot tell (unsure somewhere, or too few defined points).
 
     ``columns`` holds, per coordinate and per point, (expected, its scale, submitted, its scale),
     in floats or (``precise``) at 40 digits.
@@ -152,7 +180,7 @@ def _proportional(columns: list[list[tuple]], *, precise: bool = False):
         checked += 1
     if unsure:
         return Closeness.UNSURE
-    return ratios if checked >= MIN_DEFINED else None
+    return ratios if checked >= MIN_DEFINED else Closeness.UNSURE
 
 
 def _dynamics(expected: Expected, submitted) -> tuple[list[list[tuple]], bool]:
