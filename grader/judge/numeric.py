@@ -281,23 +281,26 @@ class Compiled:
         Forward-mode differentiation: one pass over hyper-dual numbers a + b ε₁ + c ε₂ + d ε₁ε₂
         (ε₁² = ε₂² = 0), exact but for rounding.
         """
-        key = ("derivatives", points.shape, points.tobytes(), first.tobytes(), second.tobytes())
-        return self._remembered(key, lambda: self._derivatives(points, first, second, track=False)[:3])
+        return self._jets(points, first, second)[:3]
 
     def derivatives_lost(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> np.ndarray:
         """At every row: whether a sum in the value or those derivatives lost a term there (see the
-        module's notes); asked, in a pass of its own, only of equations of motion that agree."""
-        key = ("derivatives lost", points.shape, points.tobytes(), first.tobytes(), second.tobytes())
-        return self._remembered(key, lambda: self._derivatives(points, first, second, track=True)[3])
+        module's notes). Noted in the same pass as :meth:`derivatives`: a third more than a pass
+        without, where a pass of its own would cost a whole one."""
+        return self._jets(points, first, second)[3]
 
-    def _derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray, *, track: bool):
+    def _jets(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, ...]:
+        key = ("derivatives", points.shape, points.tobytes(), first.tobytes(), second.tobytes())
+        return self._remembered(key, lambda: self._derivatives(points, first, second))
+
+    def _derivatives(self, points: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, ...]:
         if self._jet is None:
             self._jet = _compile_jet(self.expr, self.index)
 
         def evaluate(rows, one, two):
-            scale = [0.0, False if track else None]
+            scale = [0.0, False]
             _, slope, _, mixed = self._jet(rows.T, one.T, two.T, scale)
-            parts = (slope, mixed, bool(scale[1]) if not track else scale[1])
+            parts = (slope, mixed, scale[1])
             slope, mixed, lost = (np.broadcast_to(np.asarray(part, complex), len(rows)) for part in parts)
             size = np.maximum(scale[0], np.maximum(np.abs(slope), np.abs(mixed)))
             return np.stack([slope, mixed, lost]), size
@@ -595,7 +598,10 @@ def _compile_jet(expr, index: Mapping[sympy.Symbol, int]):
 
 def _note_lost(terms, scale: list) -> None:
     """Mark ``scale[1]`` where a nonzero one of ``terms`` (summed) is below floats' resolution."""
-    sizes = [np.abs(term) for term in terms]  # arrays, or numbers for constant parts
+    # a constant's derivative is the number 0: it is no term, and costs numpy nothing to skip
+    sizes = [np.abs(term) for term in terms if not (isinstance(term, complex | float | int) and term == 0)]
+    if len(sizes) < 2:
+        return
     largest = functools.reduce(np.maximum, sizes)
     smallest = functools.reduce(np.minimum, [np.where(size > 0, size, math.inf) for size in sizes])
     scale[1] = scale[1] | (smallest < FLOAT_EQUAL * largest)
