@@ -379,7 +379,7 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
         return lambda values, scale: 1j
     args = [_compile(arg, index, backend) for arg in expr.args]
     if backend.vector and (expr.is_Add or (expr.is_Pow and not expr.exp.is_Integer)):
-        return _vector_node(expr, args, backend)
+        return _vector_node(expr, args)
     if expr.is_Add:
         resolution = backend.resolution
 
@@ -422,25 +422,21 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
     raise NotCompilable(f"cannot evaluate {name}")
 
 
-def _vector_node(expr, args, backend: _Backend):
+def _vector_node(expr, args):
     """The closures that differ over numpy arrays: a sum tracks each point's largest term,
     and, when asked, where it lost one."""
     if expr.is_Add:
-        resolution = backend.resolution
 
         def add(values, scale):
-            total, largest, smallest = 0, 0.0, math.inf
-            track = scale[1] is not None
+            total, largest, terms = 0, 0.0, []
             for f in args:
                 term = f(values, scale)
                 total = total + term
-                size = np.abs(term)
-                largest = np.maximum(largest, size)
-                if track:
-                    smallest = np.minimum(smallest, np.where(size > 0, size, math.inf))
+                largest = np.maximum(largest, np.abs(term))
+                terms.append(term)
             scale[0] = np.maximum(scale[0], largest)
-            if track:
-                scale[1] = scale[1] | (smallest < resolution * largest)
+            if scale[1] is not None:
+                _note_lost(terms, scale)
             return total
 
         return add
@@ -597,7 +593,9 @@ def _compile_jet(expr, index: Mapping[sympy.Symbol, int]):
 
 
 def _note_lost(terms, scale: list) -> None:
-    """Mark ``scale[1]`` where a nonzero one of ``terms`` (summed) is below floats' resolution."""
+    """Mark ``scale[1]`` where a nonzero one of ``terms`` (summed, in floats: numpy arrays or
+    numbers) is below floats' resolution beside the largest: the rule for the vector sums
+    and the jets alike."""
     # a constant's derivative is the number 0: it is no term, and costs numpy nothing to skip
     sizes = [np.abs(term) for term in terms if not (isinstance(term, complex | float | int) and term == 0)]
     if len(sizes) < 2:
