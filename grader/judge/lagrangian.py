@@ -17,7 +17,6 @@ the symbolic equations as the judge where rounding leaves a state unsure.
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 
 import mpmath
 import numpy as np
@@ -35,6 +34,7 @@ from grader.judge.sampling import (
     constant_difference,
     nice_number,
     precise_side_by_side,
+    short_fraction,
     side_by_side,
 )
 from grader.judge.setting import Setting
@@ -135,18 +135,16 @@ def _ratio_of(columns, proportional, *, precise: bool) -> tuple[complex | Closen
         return proportional, False
     first, *others = proportional.values()
     named = all(closeness(first, other, abs(first)) is Closeness.EQUAL for other in others)
-    if named:
-        short = Fraction(float(first.real)).limit_denominator(12)
-        if abs(first - float(short)) <= 1e-9 * max(1.0, abs(first)):
-            k = Fraction(short.numerator, short.denominator)
-            for column in columns:
-                for a, scale_a, b, scale_b in column:
-                    if not math.isfinite(scale_a + scale_b):
-                        continue
-                    scale = max(scale_a, scale_b) * max(1.0, abs(float(k)))
-                    if closeness(a * k.numerator / k.denominator, b, scale, precise=precise) is not Closeness.EQUAL:
-                        return None, False
-            return complex(float(k)), True
+    k = short_fraction(float(first.real)) if named and abs(first.imag) <= 1e-9 * abs(first) else None
+    if k is not None:
+        for column in columns:
+            for a, scale_a, b, scale_b in column:
+                if not math.isfinite(scale_a + scale_b):
+                    continue
+                scale = max(scale_a, scale_b) * max(1.0, abs(float(k)))
+                if closeness(a * k.numerator / k.denominator, b, scale, precise=precise) is not Closeness.EQUAL:
+                    return None, False
+        return complex(float(k)), True
     return first, named
 
 

@@ -38,6 +38,7 @@ __all__ = [
     "evaluate_pairs",
     "nice_number",
     "precise_side_by_side",
+    "short_fraction",
     "side_by_side",
 ]
 
@@ -181,6 +182,13 @@ def constant_difference(pairs: Sequence[Pair]) -> bool:
     return True
 
 
+def short_fraction(x: float) -> Fraction | None:
+    """The nonzero fraction with a denominator of at most 12 within 10⁻⁹ of ``x`` (relatively),
+    or None: what a ratio measured in floats is, when it is a number one would write."""
+    fraction = Fraction(x).limit_denominator(12)
+    return fraction if fraction != 0 and abs(float(fraction) - x) <= 1e-9 * abs(x) else None
+
+
 def nice_number(k: complex) -> str | None:
     """A short exact form of ``k`` (1/2, 2, -3/4, 2π, π/2), or None when it has none.
 
@@ -191,8 +199,8 @@ def nice_number(k: complex) -> str | None:
         return None
     value = k.real
     for unit, suffix in ((1.0, ""), (float(sympy.pi), "π")):
-        fraction = Fraction(value / unit).limit_denominator(12)
-        if fraction != 0 and abs(float(fraction) * unit - value) <= 1e-9 * abs(value):
+        fraction = short_fraction(value / unit)
+        if fraction is not None:
             if suffix and fraction.denominator != 1:
                 numerator = (
                     "" if fraction.numerator == 1 else "-" if fraction.numerator == -1 else str(fraction.numerator)
