@@ -43,7 +43,7 @@ import numpy as np
 import sympy
 from sympy.core.function import AppliedUndef
 
-from grader.parse.functions import COMPLEX
+from grader.parse.functions import COMPLEX, with_reciprocals
 
 __all__ = ["UNDEFINED", "Closeness", "Compiled", "LostTerm", "NotCompilable", "closeness", "sample_points"]
 
@@ -113,17 +113,15 @@ def _vector_sign(z):
 
 _VECTOR = _Backend(
     number=lambda p, q: complex(p / q),
-    functions={
-        "sin": np.sin, "cos": np.cos, "tan": np.tan, "cot": lambda z: 1 / np.tan(z),
-        "sec": lambda z: 1 / np.cos(z), "csc": lambda z: 1 / np.sin(z),
+    functions=with_reciprocals({
+        "sin": np.sin, "cos": np.cos, "tan": np.tan,
         "asin": _vector_principal(np.arcsin), "acos": _vector_principal(np.arccos), "atan": np.arctan,
         "sinh": np.sinh, "cosh": np.cosh, "tanh": np.tanh,
-        "coth": lambda z: 1 / np.tanh(z), "sech": lambda z: 1 / np.cosh(z), "csch": lambda z: 1 / np.sinh(z),
         "asinh": _vector_principal(np.arcsinh), "acosh": _vector_principal(np.arccosh),
         "atanh": _vector_principal(np.arctanh),
         "exp": np.exp, "log": _vector_principal(np.log), "Abs": lambda z: np.abs(z) + 0j,
         "sign": _vector_sign, "re": lambda z: z.real + 0j, "im": lambda z: z.imag + 0j,
-    },
+    }),
     pi=lambda: complex(math.pi), e=lambda: complex(math.e), vector=True,
 )  # fmt: skip
 

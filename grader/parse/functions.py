@@ -4,6 +4,7 @@ Contents:
     SYMPY       canonical name (as :data:`~grader.parse.names.FUNCTION_NAMES` gives it) → sympy function
     COMPLEX     sympy's class name → the function in complex floats, on sympy's principal branch
     principal(f)  a cmath function made to agree with sympy on its branch cut
+    with_reciprocals(t)  a table of sin, cos, tan… with cot, sec, csc… derived as 1/f
 
 Keyed by sympy's class name because sympy may rewrite one function as another: the
 arctangent of an imaginary number comes back as i·atanh. A function added to the
@@ -17,7 +18,7 @@ import cmath
 
 import sympy
 
-__all__ = ["COMPLEX", "SYMPY", "principal"]
+__all__ = ["COMPLEX", "SYMPY", "principal", "with_reciprocals"]
 
 SYMPY = {
     "sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "cot": sympy.cot, "sec": sympy.sec,
@@ -42,12 +43,23 @@ def principal(function):
     return on_branch
 
 
-COMPLEX = {
-    "sin": cmath.sin, "cos": cmath.cos, "tan": cmath.tan, "cot": lambda z: 1 / cmath.tan(z),
-    "sec": lambda z: 1 / cmath.cos(z), "csc": lambda z: 1 / cmath.sin(z),
+_RECIPROCALS = {"cot": "tan", "sec": "cos", "csc": "sin", "coth": "tanh", "sech": "cosh", "csch": "sinh"}
+
+
+def with_reciprocals(table: dict) -> dict:
+    """``table`` (sin, cos, tan, sinh, cosh, tanh… for one kind of number) with cot, sec, csc,
+    coth, sech and csch added as 1/tan, 1/cos… of its own functions."""
+
+    def reciprocal(function):
+        return lambda z: 1 / function(z)
+
+    return {**table, **{name: reciprocal(table[of]) for name, of in _RECIPROCALS.items()}}
+
+
+COMPLEX = with_reciprocals({
+    "sin": cmath.sin, "cos": cmath.cos, "tan": cmath.tan,
     "asin": principal(cmath.asin), "acos": principal(cmath.acos), "atan": cmath.atan,
     "sinh": cmath.sinh, "cosh": cmath.cosh, "tanh": cmath.tanh,
-    "coth": lambda z: 1 / cmath.tanh(z), "sech": lambda z: 1 / cmath.cosh(z), "csch": lambda z: 1 / cmath.sinh(z),
     "asinh": principal(cmath.asinh), "acosh": principal(cmath.acosh), "atanh": principal(cmath.atanh),
     "exp": cmath.exp, "log": principal(cmath.log), "Abs": abs,
-}  # fmt: skip
+})  # fmt: skip
