@@ -72,7 +72,10 @@ def _parser() -> argparse.ArgumentParser:
     )
     judge.add_argument("expected", help="the reference answer")
     judge.add_argument("submitted", help="the answer to judge")
-    judge.add_argument("--kind", choices=sorted(KINDS), default="expression", help="the kind of answer")
+    judge.add_argument(
+        "--kind", choices=sorted(KINDS), help="the kind of answer (default: as the expected answer is written:"
+        " an equation, a system of equations, or else an expression)",
+    )  # fmt: skip
     judge.add_argument("--coords", type=_names, default=[], help="generalized coordinates, e.g. theta1,theta2")
     judge.add_argument("--known", type=_names, default=[], help="more symbols the problem defines")
     judge.add_argument("--timeout", type=float, default=2.0, help="seconds before the verdict is 'undecided'")
@@ -334,9 +337,10 @@ def _run_validate(args: argparse.Namespace) -> int:
 
 def _run_compare(args: argparse.Namespace) -> int:
     options = {"up_to_constant": True} if args.up_to_constant else {}
+    kind = args.kind or _written_kind(args.expected, args.coords, args.known)
     try:
         verdict = compare(
-            args.expected, args.submitted, kind=args.kind, coords=args.coords, known=args.known,
+            args.expected, args.submitted, kind=kind, coords=args.coords, known=args.known,
             timeout=args.timeout, **options,
         )  # fmt: skip
     except AuthorError as error:
@@ -355,6 +359,13 @@ def _run_compare(args: argparse.Namespace) -> int:
         else:
             print(f"read as: {verdict.read_as}")
     return _EXIT_BY_STATUS[verdict.status]
+
+
+def _written_kind(expected: str, coords: list[str], known: list[str]) -> str:
+    # Without --kind, `grader compare "θ̈ = …" "…"` means an equation: the expected answer says
+    # so. An unreadable one is left to compare, whose error names what is wrong with it.
+    read = parse_answer(expected, coords=coords, known=known)
+    return read.kind if read.ok else "expression"
 
 
 def _run_parse(args: argparse.Namespace) -> int:

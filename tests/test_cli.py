@@ -44,6 +44,11 @@ COMPARE_EXITS = [
     (["--kind", "lagrangian", "--coords", "theta", L_PENDULUM, "1/2 m l^2 θ̇^2 - m g l cos θ"], 1,
      "not equivalent (score 0, by numeric)"),
     (["x", "sin(x"], 2, "invalid (score 0, by parse)"),
+    # without --kind, the kind is the expected answer's: an equation, a system, else an expression
+    (["--coords", "theta", "thetaddot = -g/l sin(theta)", "l θ̈ + g sin θ = 0"], 0,
+     "equivalent (score 1, by accelerations)"),
+    (["--coords", "x,y", "xddot = -x; yddot = -y", "xddot + yddot = -x - y; yddot = -y"], 0,
+     "equivalent (score 1, by accelerations)"),
     (["--timeout", "1e-9", "--coords", "theta", "sin(theta)", "cos(theta)"], 3, "undecided (score 0, by timeout)"),
 ]  # fmt: skip
 
