@@ -64,7 +64,14 @@ def test_a_malformed_expected_answer_raises_for_the_author():
         (lambda: compare("x", "x", kind="vector"), "unknown answer kind 'vector'"),
         (lambda: compare("x", "x", rtol=0.1), "option rtol does not apply to kind 'expression'"),
         (lambda: compare("x", "x", domains={"x": "complex"}), "domain of 'x' is 'complex'"),
-        (lambda: compare("x = 1", "x", kind="expression"), "must be expression, not equation"),
+        (
+            lambda: compare("x = 1", "x", kind="expression"),
+            "of kind 'expression' must be an expression, not an equation",
+        ),
+        (
+            lambda: compare("x'' = 1; y'' = 2", "x", kind="lagrangian", coords=["x", "y"]),
+            "of kind 'lagrangian' must be an expression, not a system of equations",
+        ),
     ],
 )
 def test_author_mistakes_in_the_call_raise_author_error(call, message):

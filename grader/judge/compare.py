@@ -118,8 +118,13 @@ def compare(
     prepared = prepare(expected, kind, tuple(coords), known, domains, frozen, parsed=spec.parsed)
     allowed = {spec.shape, "equation"} if spec.shape == "equations" else {spec.shape}  # one coordinate: one equation
     if spec.parsed and spec.shape and prepared.parsed.kind not in allowed:
-        raise AuthorError(f"the expected answer of a {kind!r} part must be {spec.shape}, not {prepared.parsed.kind}")
+        raise AuthorError(
+            f"the expected answer of kind {kind!r} must be {_AN[spec.shape]}, not {_AN[prepared.parsed.kind]}"
+        )
     return _judge(spec, prepared, submitted, timeout)
+
+
+_AN = {"expression": "an expression", "equation": "an equation", "equations": "a system of equations"}
 
 
 def _hashable(value):
