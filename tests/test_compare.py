@@ -409,9 +409,14 @@ def test_scalar_kinds(kind, expected, submitted, options, status):
     assert compare(expected, submitted, kind=kind, **options).status == status
 
 
-def test_a_number_part_refuses_symbols():
-    verdict = compare("3", "x", kind="integer")
-    assert verdict.diagnosis == "not_a_number"
+@pytest.mark.parametrize(
+    ("kind", "expected", "submitted", "names"),
+    [("integer", "2", "two", "`two`"), ("number", "2.006", "2.006 s", "`s`"), ("integer", "3", "x", "`x`")],
+)
+def test_a_number_with_words_or_units_is_invalid_and_goes_to_a_person(kind, expected, submitted, names):
+    verdict = compare(expected, submitted, kind=kind)
+    assert (verdict.status, verdict.score, verdict.diagnosis) == ("invalid", 0.0, "not_a_number")
+    assert verdict.feedback == (f"A number is asked for here; your answer contains {names}.",)
 
 
 def test_out_of_time_is_undecided_and_flagged_for_a_person():

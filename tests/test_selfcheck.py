@@ -33,6 +33,11 @@ CHECK_EXITS = [
      "invalid plane-pendulum.lagrangian: could not be read\n"
      "  Unbalanced bracket: the `(` at position 4 is never closed.\n"
      "  where: sin(theta\n            ^\n"),
+    # read, but not a number: shown as read, and a person will decide
+    (["plane-pendulum.period", "2.006 s"], 2,
+     "invalid plane-pendulum.period: could not be read\n"
+     "  A number is asked for here; your answer contains `s`.\n"
+     "  read as: 1003*s/500\n"),
     (["constraint-classification.rigid-body-holonomic", "A"], 0,
      "✔ constraint-classification.rigid-body-holonomic: right\n"),
 ]  # fmt: skip

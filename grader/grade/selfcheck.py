@@ -59,19 +59,25 @@ class CheckResult:
     def right(self) -> bool:
         return self.status == "equivalent"
 
+    @property
+    def _unread(self) -> bool:
+        # An invalid answer was either not read (read_as is the line with a caret) or read as
+        # something that is not an answer here ("2.006 s" for a number), shown as read.
+        return self.status == "invalid" and not self.read_as_mathml
+
     def __str__(self) -> str:
         lines = [f"{SYMBOLS[self.status]} {self.key}: {WORDS[self.status]}"]
         lines += [f"  {hint}" for hint in self.hints if hint != "Correct."]
         if self.read_as:
-            label = "where" if self.status == "invalid" else "read as"
+            label = "where" if self._unread else "read as"
             lines += [f"  {label}: {line}" if i == 0 else f"  {' ' * len(label)}  {line}"
                       for i, line in enumerate(self.read_as.splitlines())]  # fmt: skip
         return "\n".join(lines)
 
     def _repr_markdown_(self) -> str:
         hints = "".join(f"\n- {_markdown(hint)}" for hint in self.hints if hint != "Correct.")
-        read = f"\n\nRead as: `{self.read_as}`" if self.read_as and self.status != "invalid" else ""
-        where = f"\n\n```\n{self.read_as}\n```" if self.status == "invalid" and self.read_as else ""
+        read = f"\n\nRead as: `{self.read_as}`" if self.read_as and not self._unread else ""
+        where = f"\n\n```\n{self.read_as}\n```" if self._unread and self.read_as else ""
         return f"**{SYMBOLS[self.status]} {_markdown(self.key)}: {WORDS[self.status]}**{hints}{read}{where}"
 
     def _repr_html_(self) -> str:

@@ -179,9 +179,9 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
     items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
     used = set().union(*(item.free_symbols for item in items))
     if spec.name in ("integer", "number") and used:
-        return Outcome(
-            "not_equivalent", 0.0, "not_a_number", {"names": _listing(sorted(s.name for s in used))}, "symbols"
-        )
+        # "2.006 s", "two": often the right number in words or with a unit. Not a number we can
+        # grade, so a person decides, and a student checking first is told to write the number.
+        return Outcome("invalid", 0.0, "not_a_number", {"names": _listing(sorted(s.name for s in used))}, "symbols")
     undefined = sorted(symbol.name for symbol in used if symbol.name not in expected.names)
     if undefined:
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
