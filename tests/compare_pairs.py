@@ -419,6 +419,10 @@ EQUATION_PAIRS = [
     ("pendulum", "equation", PEND_EOM, "diff(theta, t, 2) + g/l sin(theta) = 0", True, "diff notation"),
     ("pendulum", "equation", PEND_EOM, "-m l theta'' = m g sin theta", True, "sides swapped and scaled"),
     ("pendulum", "equation", PEND_EOM, "theta'' = -(g/l) sin(theta)", True, "solved, primes"),
+    # dE/dt = m l θ̇ (l θ̈ + g sin θ): at rest (θ̇ = 0) it holds for every θ̈
+    ("pendulum", "equation", PEND_EOM, f"d/dt({PEND_E}) = 0", False, "vanishing factor: energy conserved, at rest"),
+    ("pendulum", "equation", PEND_EOM, "sin θ (l θ̈ + g sin θ) = 0", False, "vanishing factor: sin θ, at θ = 0"),
+    ("pendulum", "equation", PEND_EOM, "(1 + θ̇²)(l θ̈ + g sin θ) = 0", True, "scaled by a factor that never vanishes"),
     ("pendulum", "equation", PEND_EOM, "theta'' = -g/l theta", False, "small angle: sin θ replaced by θ"),
     ("pendulum", "equation", PEND_EOM, "θ̈ = g/l sin θ", False, "sign of the gravity term"),
     ("pendulum", "equation", PEND_EOM, "thetaddot + g sin(theta) = 0", False, "factor: missing 1/l on one term"),
@@ -1070,6 +1074,14 @@ EQUATIONS_PAIRS = [
         "LaTeX, double angle",
     ),
     ("spherical_pendulum", "equations", SPH_SYSTEM, SPH_EQT, False, "missing equation: phi equation"),
+    (
+        "spherical_pendulum",
+        "equations",
+        SPH_SYSTEM,
+        f"{SPH_EQT}; φ̇ ({SPH_EQP.removesuffix(' = 0')}) = 0",
+        False,
+        "vanishing factor: phi equation times phidot",
+    ),
     ("spherical_pendulum", "equations", SPH_SYSTEM, SPH_SYSTEM + "; phidot = 0", False, "extra equation: phidot = 0"),
     (
         "spherical_pendulum",

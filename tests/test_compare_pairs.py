@@ -57,6 +57,7 @@ NAMED = {
     "T+V": {"t_plus_v", "term_differs"},
     "extra equation": {"extra_equation"},
     "missing equation": {"missing_equation", "expected_system", "dependent_equations"},
+    "vanishing factor": {"vanishing_factor", "vanishing_factor_system"},
 }
 
 

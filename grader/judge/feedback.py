@@ -36,6 +36,10 @@ FEEDBACK: dict[str, str] = {
     "wrong_equation": "Your equation for {coords} is not right; {right}.",
     "wrong_equations": "Your equations do not determine the right accelerations for {coords}.",
     "dependent_equations": "Your equations are not independent: they do not determine every acceleration.",
+    "vanishing_factor": "Your equation is right only where a factor of it is not zero: at rest, or where a"
+    " coordinate is 0, it no longer says what the acceleration is. Divide that factor out.",
+    "vanishing_factor_system": "One of your equations is right only where a factor of it is not zero: at rest,"
+    " or where a coordinate is 0, your equations no longer determine every acceleration. Divide that factor out.",
     "trivial_equation": "Equation {index} holds for every motion, so it says nothing about this one.",
     "not_equation_of_motion": "This should be an equation of motion, with the accelerations ({accelerations}) in it.",
     "wrong_equation_single": "This equation does not say the same as the expected one.",

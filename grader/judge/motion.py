@@ -18,6 +18,11 @@ Then
   the accelerations the expected system implies, and together they determine the
   accelerations: reordered, scaled, recombined, or solved for q̈ explicitly.
 
+"Every state" includes two that random draws never give: at rest (every velocity 0) and
+at the origin (every coordinate 0). A factor that vanishes there (θ̇, as in dE/dt = 0;
+θ or sin θ, cleared from a denominator) leaves an equation that no longer says what q̈
+is in those states, where the expected one does.
+
 An equation without accelerations (a constraint, a conserved quantity) is right
 when submitted/expected is, at fixed parameters, the same nonzero number
 whatever the state.
@@ -54,6 +59,7 @@ _DYADIC = 1024  # the exact check's state is rounded to multiples of 1/1024
 _STEP_MARGIN = 256  # the step is this many times the largest acceleration
 _STEP_ROUNDS = 4  # rounds of reading the reference's rows for the steps
 _MAX_STEP_EXPONENT = 200  # steps up to 2²⁰⁰: beyond, a value's square would overflow a float
+_SPECIAL = 2  # states after the POINTS drawn ones: at rest, and at the origin
 
 
 def _as_zero(value) -> sympy.Expr:
@@ -151,7 +157,7 @@ def _steps(expected: Expected, reference: Sequence[Compiled]) -> tuple[float, ..
     again with the steps those imply until they settle (a few rounds; kept per problem)."""
     key = ("steps", tuple(id(f) for f in reference))
     if key not in expected.cache:
-        steps = (1.0,) * POINTS
+        steps = (1.0,) * (POINTS + _SPECIAL)
         for _ in range(_STEP_ROUNDS):
             rows = _float_rows(expected, reference, steps, reference=True)
             settled = tuple(_step(state, step) for state, step in zip(rows, steps, strict=True))
@@ -179,12 +185,29 @@ def _accelerations_in(expr, expected: Expected) -> list[str]:
     return [q for q in setting.coords if setting.acceleration(q) in present or setting.node(q, 2) in present]
 
 
+def _states_of(expected: Expected) -> np.ndarray:
+    """The sample states: the POINTS drawn ones, then the first at rest (every velocity 0) and
+    the second at the origin (every coordinate 0), where a factor like θ̇ or sin θ vanishes."""
+    if "motion states" not in expected.cache:
+        drawn = expected.points(POINTS, group=GROUP)
+        index = {symbol: i for i, symbol in enumerate(expected.variables)}
+        velocities = [index[expected.setting.velocity(q)] for q in expected.setting.coords]
+        coordinates = [index[expected.setting.state[(q, 0)]] for q in expected.setting.coords]
+        special = drawn[:_SPECIAL].copy()
+        special[0, velocities] = 0
+        special[1, coordinates] = 0
+        states = np.vstack([drawn, special])
+        states.flags.writeable = False
+        expected.cache["motion states"] = states
+    return expected.cache["motion states"]
+
+
 def _accelerated_states(expected: Expected, steps: tuple[float, ...]) -> np.ndarray:
     """Every sample state at each acceleration setting, one row per (state, setting), state-major."""
     key = ("accelerated states", steps)
     if key not in expected.cache:
         positions = _positions(expected)
-        points = expected.points(POINTS, group=GROUP)
+        points = _states_of(expected)
         settings = np.array([_settings(len(positions), step) for step in steps], complex)
         batch = np.repeat(points, settings.shape[1], axis=0)
         batch[:, positions] = settings.reshape(-1, len(positions))
@@ -242,7 +265,8 @@ def _rows_at(expected: Expected, system: Sequence[Compiled], point: list, step: 
 def _at_each_state(
     expected: Expected, systems: Sequence[Sequence[Compiled]], deadline: Deadline, judge, unsure, agrees
 ):
-    """``judge(rows of each system, precise)`` at each sample state where every system is defined.
+    """``(state number, judge(rows of each system, precise))`` at each sample state where every
+    system is defined; the states are :func:`_states_of`, numbered from 0.
 
     The first system is the reference, compiled from the expected answer.
 
@@ -257,7 +281,7 @@ def _at_each_state(
     steps = _steps(expected, systems[0])
     floats = [_float_rows(expected, system, steps, reference=number == 0) for number, system in enumerate(systems)]
     results, lost = [], None
-    for number, point in enumerate(expected.points(POINTS, group=GROUP)):
+    for number, point in enumerate(_states_of(expected)):
         deadline.check()
         rows = [per_state[number] for per_state in floats]
         if None in rows:
@@ -279,9 +303,9 @@ def _at_each_state(
         except UNDEFINED:
             continue
         if result is not None:
-            results.append(result)
+            results.append((number, result))
     functions = [f for fs in systems for f in fs]
-    if results and all(agrees(r) for r in results) and all(f.rational for f in functions) and _wide(functions):
+    if results and all(agrees(r) for _, r in results) and all(f.rational for f in functions) and _wide(functions):
         exact = _exactly(expected, systems, steps, judge)
         if exact is not None:
             results.append(exact)
@@ -304,19 +328,19 @@ def _lost_states(expected: Expected, systems: Sequence[Sequence[Compiled]], step
 
 
 def _exactly(expected: Expected, systems: Sequence[Sequence[Compiled]], steps: tuple[float, ...], judge):
-    """``judge`` at the first sample state where every system is defined, in fractions.
+    """``(state number, judge)`` at the first sample state where every system is defined, in fractions.
 
     The state is rounded to multiples of 1/1024 first: any state will do, and fractions
     of a float's 53 bits grow to hundreds of digits within a few products.
     """
-    for number, point in enumerate(expected.points(POINTS, group=GROUP)):
+    for number, point in enumerate(_states_of(expected)):
         rounded = [complex(round(value.real * _DYADIC) / _DYADIC) for value in point.tolist()]
         try:
             result = judge([_rows_at(expected, system, rounded, steps[number], exact=True) for system in systems], True)
         except UNDEFINED:
             continue
         if result is not None:
-            return result
+            return number, result
     return None
 
 
@@ -350,7 +374,7 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
             return theirs.linear
         return _multiple(mine.rows[0], theirs.rows[0], mine.entry_scales[0], theirs.entry_scales[0], precise)
 
-    results = _at_each_state(
+    numbered = _at_each_state(
         expected,
         ([expected_f], [submitted_g]),
         deadline,
@@ -358,11 +382,15 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         _is_unsure,
         lambda result: result is Closeness.EQUAL,
     )
+    results = [result for _, result in numbered]
     same = _decided(results)
     if same:
         return Outcome("equivalent", 1.0, "equivalent", method="accelerations")
     if same is None:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
+    if _decided([result for number, result in numbered if number < POINTS]):
+        # right wherever states are drawn, wrong at rest or at the origin: a vanishing factor
+        return Outcome("not_equivalent", 0.0, "vanishing_factor", method="accelerations")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
 
 
@@ -372,8 +400,9 @@ def _is_unsure(result) -> bool:
 
 def _multiple(expected_row, submitted_row, expected_scales, submitted_scales, precise: bool) -> Closeness:
     """Whether ``submitted_row`` is a nonzero multiple of ``expected_row`` (each entry judged on
-    the larger of the two rows' scales for it)."""
-    k = max(range(len(expected_row)), key=lambda j: abs(expected_row[j]) / (expected_scales[j] or 1.0))
+    the larger of the two rows' scales for it); None where the expected equation does not
+    involve the acceleration (sin θ φ̈ + … at θ = 0): such a state says nothing."""
+    k = max(range(len(expected_row) - 1), key=lambda j: abs(expected_row[j]) / (expected_scales[j] or 1.0))
     if closeness(expected_row[k], 0, expected_scales[k], precise=precise) is Closeness.EQUAL:
         return None  # a degenerate state of the reference
     factor = submitted_row[k] / expected_row[k]
@@ -643,18 +672,24 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     theirs = _equations(answer.value)
     expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(_equations(expected.value))]
     submitted_gs = [expected.compile(g) for g in theirs]
-    states = _states(expected, expected_fs, submitted_gs, deadline)
+    numbered = _states(expected, expected_fs, submitted_gs, deadline)
+    states = [state for _, state in numbered]
     if len(states) < MIN_DEFINED:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
     outcome = _system_outcome(expected, states, theirs)
+    drawn = [state for number, state in numbered if number < POINTS]
+    if outcome.key == "dependent_equations" and all(state.independent for state in drawn):
+        # independent wherever states are drawn, not at rest or at the origin: a vanishing factor
+        return Outcome("not_equivalent", 0.0, "vanishing_factor_system", method=outcome.method)
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
     if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
     return outcome
 
 
-def _states(expected: Expected, expected_fs, submitted_gs, deadline: Deadline) -> list[_State]:
-    """What each sample state says of the submitted system; unsure states are redone at 40 digits."""
+def _states(expected: Expected, expected_fs, submitted_gs, deadline: Deadline) -> list[tuple[int, _State]]:
+    """What each sample state says of the submitted system, by state number; unsure states
+    are redone at 40 digits."""
     return _at_each_state(expected, (expected_fs, submitted_gs), deadline, _system_state, _state_unsure, _state_agrees)
 
 
@@ -677,7 +712,7 @@ def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: D
     linear_fs = expected.cache["equations, linearized"]
     if linear_fs is None:
         return False
-    states = _states(expected, linear_fs, submitted_gs, deadline)
+    states = [state for _, state in _states(expected, linear_fs, submitted_gs, deadline)]
     return len(states) >= MIN_DEFINED and _system_outcome(expected, states, theirs).key == "equivalent"
 
 
