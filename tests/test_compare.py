@@ -248,6 +248,29 @@ def test_relations_have_the_same_roots_each_as_often(expected, submitted, status
 
 
 @pytest.mark.parametrize(
+    ("expected", "submitted", "coords", "known"),
+    [
+        # an extra root along the one symbol that is not the first: ω = 2
+        ("omega = sqrt(g/l)", "(omega - sqrt(g/l))(omega - 2) = 0", [], ["omega", "g", "l"]),
+        # multiplied through by sin θ: every θ = nπ is a new solution, whatever φ̇ and p are
+        (
+            "p = m l^2 sin(theta)^2 phidot",
+            "p sin(theta) = m l^2 sin(theta)^3 phidot",
+            ["theta", "phi"],
+            ["m", "l", "p"],
+        ),
+        ("x = 0", "x (x - 11) = 0", ["x"], []),  # an extra root beyond ±10
+        # roots that floats put within 10⁻⁶ of each other, told apart at 40 digits
+        ("omega^2 = k/m", "omega^2 = k/m (1 + 10^-7)", [], ["omega", "k", "m"]),
+        ("omega = sqrt(g/l)", "omega = sqrt(g/l) + 10^-9 g", [], ["omega", "g", "l"]),
+        ("cos(theta) = g/(omega^2 l)", "cos(theta) = g/(omega^2 l) + 10^-9", ["theta"], ["omega", "g", "l"]),
+    ],
+)
+def test_a_relation_with_another_root_is_not_equivalent(expected, submitted, coords, known):
+    assert compare(expected, submitted, kind="equation", coords=coords, known=known).status == "not_equivalent"
+
+
+@pytest.mark.parametrize(
     ("submitted", "status"),
     [
         ("yddot = 10^12 g; xddot = m", "equivalent"),

@@ -519,7 +519,10 @@ def _ratio_test(values, group: int, *, precise: bool) -> list[Closeness]:
     return results
 
 
-_SCAN = {"positive": (0.01, 10.0), "negative": (-10.0, -0.01)}  # where roots are looked for
+# Where roots are looked for: steps of 1/8 within ±10, and 20 per decade out to 10³ and in to 10⁻³.
+_LINEAR = [i / 8 for i in range(1, 81)]
+_LOGARITHMIC = [10 ** (k / 20) for k in range(-60, 61)]
+_SCAN = sorted(set(_LINEAR + _LOGARITHMIC))
 
 
 class _Roots(enum.Enum):
@@ -528,35 +531,74 @@ class _Roots(enum.Enum):
     MULTIPLICITY = "the same roots, not each as often"
 
 
-def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: Deadline) -> _Roots | None:
-    """Whether f = 0 and g = 0 have the same real roots in one shared symbol, each of the
-    same multiplicity (order of vanishing), at sample points.
+def _grid(domain: str) -> list[float]:
+    if domain == "positive":
+        return _SCAN
+    negative = [-x for x in reversed(_SCAN)]
+    return negative if domain == "negative" else [*negative, 0.0, *_SCAN]
 
-    None when no root was found to compare.
+
+def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: Deadline) -> _Roots | None:
+    """Whether f = 0 and g = 0 have the same real roots, each of the same multiplicity (order
+    of vanishing): along each shared symbol in turn, through sample points.
+
+    Every symbol, because (ω − √(g/l))(ω − 2) = 0 has its extra root along ω alone, and
+    p sin θ = … its extra roots along θ alone. A root found in floats is checked in the other
+    function in floats; where that cannot tell (ω² = 1.000001 k/m), again at 40 digits.
+    None when no root was found to compare, or a root could not be judged.
     """
-    if not shared:
-        return None
-    symbol = min(shared, key=lambda s: (not expected.setting.is_state(s), s.name))
-    position = expected.variables.index(symbol)
-    low, high = _SCAN.get(expected.setting.domain(symbol), (-10.0, 10.0))
-    grid = [low + (high - low) * i / 80 for i in range(81)]
     found, multiplicity = 0, False
-    for point in expected.points(4, salt=2).tolist():
-        for one, other in ((f, g), (g, f)):
-            for root in _real_roots(one, point, position, grid, deadline):
-                try:
-                    value, scale = other.at(_moved(point, position, root))
-                except UNDEFINED:
-                    return None
-                if closeness(value, 0, max(scale, 1.0)) is Closeness.DIFFERENT:
-                    return _Roots.DIFFERENT
-                orders = [_order(function, point, position, root) for function in (one, other)]
-                if None not in orders and abs(orders[0] - orders[1]) > 0.25:
-                    multiplicity = True
-                found += 1
+    points = expected.points(4, salt=2).tolist()
+    for symbol in sorted(shared, key=lambda s: (not expected.setting.is_state(s), s.name)):
+        position = expected.variables.index(symbol)
+        grid = _grid(expected.setting.domain(symbol))
+        for point in points:
+            for one, other in ((f, g), (g, f)):
+                for root, bracket in _real_roots(one, point, position, grid, deadline):
+                    try:
+                        value, scale = other.at(_moved(point, position, root))
+                        verdict = closeness(value, 0, max(scale, 1.0))
+                        if verdict is Closeness.UNSURE and bracket is not None:
+                            verdict = _vanishes_at_root(one, other, point, position, bracket)
+                    except UNDEFINED:
+                        return None
+                    if verdict is Closeness.DIFFERENT:
+                        return _Roots.DIFFERENT
+                    orders = [_order(function, point, position, root) for function in (one, other)]
+                    if None not in orders and abs(orders[0] - orders[1]) > 0.25:
+                        multiplicity = True
+                    found += 1
     if not found:
         return None
     return _Roots.MULTIPLICITY if multiplicity else _Roots.SAME
+
+
+def _vanishes_at_root(one: Compiled, other: Compiled, point, position: int, bracket) -> Closeness:
+    """Whether ``other`` vanishes at the root of ``one`` inside ``bracket`` (where ``one``
+    changes sign), the root found by bisection at 40 digits.
+
+    Raises:
+        UNDEFINED: where either is undefined at 40 digits.
+    """
+    with mpmath.workdps(PRECISE_DIGITS):
+        low, high = (mpmath.mpf(end) for end in bracket)
+        values = [mpmath.mpmathify(value) for value in point]
+
+        def at(function: Compiled, x):
+            values[position] = x
+            return function.precise(values)
+
+        low_sign = mpmath.sign(mpmath.re(at(one, low)[0]))
+        for _ in range(4 * PRECISE_DIGITS):
+            middle = (low + high) / 2
+            if middle in (low, high):
+                break
+            if mpmath.sign(mpmath.re(at(one, middle)[0])) == low_sign:
+                low = middle
+            else:
+                high = middle
+        value, scale = at(other, (low + high) / 2)
+        return closeness(value, 0, max(scale, 1.0), precise=True)
 
 
 def _order(function: Compiled, point, position: int, root: float) -> float | None:
@@ -586,8 +628,9 @@ def _moved(point, position: int, x: float) -> list:
     return values
 
 
-def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadline) -> list[float]:
-    """Real roots of a function of one variable on ``grid``.
+def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadline) -> list[tuple[float, tuple | None]]:
+    """Real roots of a function of one variable on ``grid``, each with the bracket where the
+    function changes sign around it (None for a touching root, or one on the grid).
 
     Sign changes are refined by bisection and kept only where the function really
     vanishes (a pole changes sign too); a touching root such as that of (x − 2)² is
@@ -614,13 +657,13 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
         (x, (value.real, scale) if math.isfinite(scale) and abs(value.imag) <= 1e-9 * max(1.0, abs(value)) else None)
         for x, value, scale in zip(grid, values.tolist(), scales.tolist(), strict=True)
     ]
-    roots: list[float] = []
+    roots: list[tuple[float, tuple | None]] = []
     for (x0, s0), (x1, s1), (x2, s2) in zip(samples, samples[1:], samples[2:], strict=False):
         deadline.check()
         if s0 is None or s1 is None:
             continue
         if s1[0] == 0:
-            roots.append(x1)
+            roots.append((x1, None))
         elif s0[0] * s1[0] < 0:
             low, high = x0, x1
             for _ in range(60):
@@ -630,7 +673,7 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
                     break
                 low, high = (middle, high) if (sample[0] > 0) == (s0[0] > 0) else (low, middle)
             if vanishes((low + high) / 2):
-                roots.append((low + high) / 2)
+                roots.append(((low + high) / 2, (low, high)))
         elif s2 is not None and abs(s1[0]) < min(abs(s0[0]), abs(s2[0])) and s0[0] * s2[0] > 0:
             low, high = x0, x2  # golden-section search for the minimum of |f|
             for _ in range(80):
@@ -640,7 +683,7 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
                     break
                 low, high = (low, b) if abs(fa[0]) < abs(fb[0]) else (a, high)
             if vanishes((low + high) / 2):
-                roots.append((low + high) / 2)
+                roots.append(((low + high) / 2, None))
     return roots
 
 
