@@ -620,7 +620,8 @@ def sample_points(
 ) -> list[list[complex]]:
     """``count`` points, each a value per variable, drawn inside its domain.
 
-    Domains: ``real`` (uniform in ±[0.2, 2.5]), ``positive`` (0.4 to 3),
+    Domains: ``real`` (uniform in ±[0.2, 5]: past π, where √((1 + cos θ)/2) stops being
+    cos(θ/2)), ``positive`` (0.4 to 3),
     ``negative``, ``nonzero`` (as real), ``integer`` (1 to 6). The same seed
     gives the same points on every run and machine, so verdicts are deterministic.
     """
@@ -637,7 +638,7 @@ def sample_points(
             elif domain == "integer":
                 value = float(rng.randint(1, 6))
             else:  # real, nonzero
-                value = rng.choice((-1, 1)) * rng.uniform(0.2, 2.5)
+                value = rng.choice((-1, 1)) * rng.uniform(0.2, 5.0)
             point.append(complex(value))
         points.append(point)
     return points
