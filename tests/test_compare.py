@@ -218,6 +218,24 @@ def test_up_to_constant_allows_another_zero_of_potential():
 
 
 @pytest.mark.parametrize(
+    "submitted",
+    # beside 10¹⁴ the whole Lagrangian is below floats' resolution: "a constant" to a careless check
+    ["1e14", "1e100", "2^47", "pi^30", "1e14 m", "1e14 + thetadot^2", "1e14 + m g l cos(theta)"],
+)
+def test_a_huge_constant_is_not_a_lagrangian_plus_a_constant(submitted):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score) == ("not_equivalent", 0.0), verdict
+    # nor a potential up to a constant: a person decides what floats cannot
+    assert compare("-m g l cos(theta)", submitted, up_to_constant=True, **PENDULUM).status != "equivalent"
+
+
+@pytest.mark.parametrize("constant", ["5", "1e6 m g l", "1e14", "1e100"])
+def test_the_right_lagrangian_plus_any_constant_is_still_right(constant):
+    verdict = compare(L_PENDULUM, f"{L_PENDULUM} + {constant}", kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score) == ("equivalent", 1.0), verdict
+
+
+@pytest.mark.parametrize(
     ("expected", "submitted", "status"),
     [
         ("omega^2 = g/l", "omega = sqrt(g/l)", "equivalent"),  # same positive root

@@ -113,7 +113,8 @@ def test_readings_of_40_digit_pairs_use_40_digits_tolerance():
         # submitted − expected varies by 1 in 10¹⁵ along the motion: no constant
         pairs = [Pair(big + k, big + 2 * k, big, precise=True, group=k // 5) for k in range(10)]
         assert not constant_difference(pairs)
-        assert constant_difference([dataclasses.replace(pair, precise=False) for pair in pairs])
+        # in floats the expected answer's change (1 in 10¹⁵) is below resolution: they cannot tell
+        assert constant_difference([dataclasses.replace(pair, precise=False) for pair in pairs]) is None
 
 
 def test_noting_losses_does_not_change_values():

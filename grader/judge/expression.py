@@ -80,8 +80,12 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     equal, pairs = same_values(expected, expected.value, answer.value, deadline)
     if equal:
         return Outcome("equivalent", 1.0, "equivalent")
-    if expected.option("up_to_constant") and constant_difference(pairs):
-        return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
+    if expected.option("up_to_constant"):
+        constant = constant_difference(pairs)
+        if constant:
+            return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
+        if constant is None:  # a constant so large that it hides the rest: a person decides
+            return Outcome("undecided", 0.0, "undecided", method="numeric: a constant hides the answer")
     if equal is None:
         deadline.check()
         if symbolic_zero(expected.setting.plain(answer.value) - expected.value, expected.setting):

@@ -27,7 +27,7 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.numeric import UNDEFINED, Closeness, Compiled, closeness
+from grader.judge.numeric import FLOAT_DIFFERENT, UNDEFINED, Closeness, Compiled, closeness
 
 __all__ = [
     "POINTS",
@@ -165,21 +165,39 @@ def constant_ratio(pairs: Sequence[Pair]) -> complex | None:
     return k
 
 
-def constant_difference(pairs: Sequence[Pair]) -> bool:
-    """True when submitted − expected does not change along the motion.
+def constant_difference(pairs: Sequence[Pair]) -> bool | None:
+    """True when submitted − expected does not change along the motion; None when the
+    numbers cannot tell.
 
     It may depend on the parameters (m g l is a constant of the motion), so it is
     compared within each group of points that share the parameters' values.
+
+    They cannot tell where the submitted answer dwarfs the expected one: beside 10¹⁴, the
+    whole of L changes submitted − expected by less than floats resolve, so "10¹⁴" would
+    pass as L plus a constant. Within a group, the expected answer's own change must then
+    be clear of the resolution (10⁻⁶ of the scale in floats, 10⁻²⁰ at 40 digits).
     """
     if len(pairs) < MIN_DEFINED:
         return False
-    first: dict[int, tuple] = {}
+    groups: dict[int, list[Pair]] = {}
     for pair in pairs:
-        difference = pair.submitted - pair.expected
-        reference, precise = first.setdefault(pair.group, (difference, pair.precise))
-        if closeness(difference, reference, pair.scale, precise=precise and pair.precise) is not Closeness.EQUAL:
-            return False
-    return True
+        groups.setdefault(pair.group, []).append(pair)
+    blind = False
+    for group in groups.values():
+        first = group[0]
+        reference = first.submitted - first.expected
+        for pair in group:
+            precise = first.precise and pair.precise
+            if closeness(pair.submitted - pair.expected, reference, pair.scale, precise=precise) is not Closeness.EQUAL:
+                return False
+        change = max(abs(pair.expected - first.expected) for pair in group)
+        precise = all(pair.precise for pair in group)
+        resolution = (_PRECISE_RESOLUTION if precise else FLOAT_DIFFERENT) * max(pair.scale for pair in group)
+        blind = blind or 0 < change < resolution
+    return None if blind else True
+
+
+_PRECISE_RESOLUTION = 1e-20  # at 40 digits, a change this much smaller than the scale is not seen
 
 
 def short_fraction(x: float) -> Fraction | None:
