@@ -478,7 +478,7 @@ def test_out_of_time_is_undecided_and_flagged_for_a_person():
     assert verdict.status == "undecided"
     assert verdict.needs_person
     assert verdict.feedback == (
-        "This answer could not be checked automatically in time; it has been set aside for a person to grade.",
+        "This answer could not be checked automatically; it has been set aside for a person to grade.",
     )
 
 

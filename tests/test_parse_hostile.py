@@ -160,6 +160,10 @@ FORMERLY_ACCEPTED = [
     ("getattr(x)", "unknown_function"),
     ("(((2^(1/2))^99)^99)^99", "value_too_large"),  # a 146,000-digit power of a non-rational base
     ("*".join(["9^99"] * 46), "value_too_large"),  # each factor within limits, the product 4,300 digits
+    # a coefficient multiplied out beside a symbol: 10¹⁰⁰⁰⁰ in front of l⁻¹⁰⁰, which no printer could show
+    ("(1e-100 l)^-100", "value_too_large"),
+    ("x*" + "*".join(["1e99"] * 100), "value_too_large"),
+    (r"\frac{10^{99} x}{10^{-99}} \cdot 10^{99} \cdot 10^{99} \cdot 10^{99}", "value_too_large"),
     ("√" * 41 + "x", "too_deep"),  # √ without brackets nests as brackets do
     ("√" * (CAP - 1) + "x", "too_deep"),
     ("x^exp(exp(exp(100)))", "value_too_large"),  # evalf of the exponent never returned

@@ -5,8 +5,10 @@ from __future__ import annotations
 import xml.dom.minidom
 
 import pytest
+import sympy
 
 from grader import parse_answer
+from grader.parse import ParsedAnswer
 
 COORDS = ["theta", "theta_1", "theta_2", "x"]
 KNOWN = ["m", "g", "l", "m_1", "l_1", "p_theta"]
@@ -60,3 +62,9 @@ def test_a_system_is_a_mathml_table_with_one_row_per_equation():
 def test_names_in_mathml_are_escaped_text_not_markup():
     mathml = parse_answer("lt + gt + amp", known=[]).read_as_mathml
     xml.dom.minidom.parseString(mathml)  # raises if a name broke the markup
+
+
+def test_a_value_no_printer_can_show_is_shown_as_typed():
+    # The parser refuses such values; should one get past it, showing it back must not raise.
+    answer = ParsedAnswer("10^10000 x", sympy.Integer(10) ** 10000 * sympy.Symbol("x"), "expression")
+    assert (answer.read_as_text, answer.read_as_latex, answer.read_as_mathml) == ("10^10000 x", "", "")

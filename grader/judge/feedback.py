@@ -48,7 +48,7 @@ FEEDBACK: dict[str, str] = {
         " as in (x − a)² = 0, says more than x = a."
     ),
     "wrong": "Not equivalent to the expected answer.",
-    "undecided": "This answer could not be checked automatically in time; it has been set aside for a person to grade.",
+    "undecided": "This answer could not be checked automatically; it has been set aside for a person to grade.",
     "not_a_number": "A number is asked for here; your answer contains {names}.",
     "not_an_integer": "A whole number is asked for here.",
     "out_of_tolerance": "Not within the accepted tolerance.",

@@ -45,18 +45,27 @@ class ParsedAnswer:
 
     @cached_property
     def read_as_text(self) -> str:
-        """How the answer was read, as one line of Unicode text."""
-        return to_text(self.value)
+        """How the answer was read, as one line of Unicode text (as typed, if it cannot be printed)."""
+        return _printed(to_text, self.value, self.text)
 
     @cached_property
     def read_as_latex(self) -> str:
-        """How the answer was read, as LaTeX."""
-        return to_latex(self.value)
+        """How the answer was read, as LaTeX ("" if it cannot be printed)."""
+        return _printed(to_latex, self.value, "")
 
     @cached_property
     def read_as_mathml(self) -> str:
-        """How the answer was read, as a MathML ``<math>`` element."""
-        return to_mathml(self.value)
+        """How the answer was read, as a MathML ``<math>`` element ("" if it cannot be printed)."""
+        return _printed(to_mathml, self.value, "")
+
+
+def _printed(printer, value, otherwise: str) -> str:
+    # The parser's limits keep every value printable; should one slip past them, showing the
+    # answer back must not be what fails a student's whole submission.
+    try:
+        return printer(value)
+    except _SYMPY_FAILURES:
+        return otherwise
 
 
 # sympy raises these from deep inside on values it cannot build; for a student they

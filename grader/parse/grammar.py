@@ -328,7 +328,9 @@ class _Parser:
             denominator = self.argument(token)
             if denominator == 0:
                 raise ParseFailure("division_by_zero", token.start, token.end)
-            return numerator * _power(denominator, sympy.Integer(-1), token)
+            quotient = numerator * _power(denominator, sympy.Integer(-1), token)
+            _check_size(quotient, token)
+            return quotient
         if token.kind == "sqrt":
             self.advance()
             if self.token.is_op("[") and token.value == "\\sqrt":  # \sqrt[3]{x}
@@ -775,8 +777,14 @@ _MAX_MAGNITUDE = 1e300  # for constants that are not rational, just inside what 
 
 
 def _check_size(value, token: Token) -> None:
-    """Refuse a constant too large to print or to evaluate: ((√2)^99)^99 has 146,000 digits."""
+    """Refuse a constant too large to print or to evaluate: ((√2)^99)^99 has 146,000 digits,
+    and so does the coefficient sympy multiplies out of (10⁻¹⁰⁰ l)⁻¹⁰⁰ or x·10⁹⁹·10⁹⁹·…"""
     if not value.is_number:  # a constant: is_number stops at the first symbol, free_symbols walks all
+        # The parts were checked as they were built; only combining them makes new coefficients.
+        for term in sympy.Add.make_args(value):
+            coefficient = term.as_coeff_Mul()[0]
+            if coefficient.is_Rational and _digits(coefficient.p) + _digits(coefficient.q) > LIMITS.power_digits:
+                raise ParseFailure("value_too_large", token.start, token.end)
         return
     if value.is_Rational:
         too_large = _digits(value.p) + _digits(value.q) > LIMITS.power_digits
