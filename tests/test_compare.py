@@ -11,6 +11,7 @@ import dataclasses
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from sympy.core.cache import clear_cache
 
 from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare
 from grader.judge.expected import prepare
@@ -480,6 +481,15 @@ def test_out_of_time_is_undecided_and_flagged_for_a_person():
     assert verdict.feedback == (
         "This answer could not be checked automatically; it has been set aside for a person to grade.",
     )
+
+
+def test_reading_the_answer_counts_against_the_time_limit():
+    # within every cap, yet sympy takes about a second to build each factor: (a + ib)¹⁰⁰ expanded
+    slow = "*".join([f"(theta'''-(g^-{n})^(1/5))^(abs(m m)/(l+theta''))" for n in range(93, 101)])
+    clear_cache()  # or sympy remembers the factors from an earlier test, and reading is quick
+    verdict = compare("sqrt(g/l)", slow, timeout=0.2, **PENDULUM)
+    assert (verdict.status, verdict.method) == ("undecided", "timeout")
+    assert verdict.answer is None  # stopped while reading, not after
 
 
 def test_verdicts_are_deterministic():

@@ -22,8 +22,10 @@ import signal
 from contextlib import contextmanager
 
 import pytest
+from sympy.core.cache import clear_cache
 
 from grader import Refusal, parse_answer
+from grader.judge.deadline import CheckTimeout, Deadline
 
 COORDS = ["theta", "x"]
 KNOWN = ["m", "g", "l"]
@@ -315,3 +317,18 @@ _DIFF_OF_PRODUCT = "diff(" + "*".join(f"sin({i}theta)" for i in range(1, 60)) + 
 def test_high_derivative_of_a_long_product_is_refused_quickly():
     with _hang_guard(HANG_SECONDS):
         assert _refusal(_DIFF_OF_PRODUCT).code == "diff_too_large"
+
+
+def test_a_deadline_stops_reading_between_factors():
+    # No signal can interrupt sympy outside the main thread: the parser checks between factors.
+    slow = "*".join([f"(theta'''-(m^-{n})^(1/7))^(abs(g g)/(l+theta''))" for n in range(93, 101)])
+    clear_cache()  # or sympy remembers the factors from an earlier test, and reading is quick
+    with pytest.raises(CheckTimeout):
+        parse_answer(slow, coords=["theta"], known=["m", "g", "l"], deadline=Deadline(0.01))
+
+
+def test_a_derivative_whose_result_grows_as_the_square_is_refused():
+    product = "".join(f"(θ+{i})" for i in range(1, 40))  # d/dt gives 39 terms of 39 factors
+    refusal = parse_answer(f"d/dt({product})", coords=["theta"])
+    assert refusal.code == "diff_too_large"
+    assert parse_answer("d/dt(1/2 m l^2 thetadot^2 - m g l cos(theta))", coords=["theta"], known=["m", "g", "l"]).ok

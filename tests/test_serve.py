@@ -19,6 +19,7 @@ import urllib.request
 
 import pytest
 from course import BANK, REVIEW, ROOT
+from sympy.core.cache import clear_cache
 
 import grader.serve.app
 from grader.cli import main
@@ -152,6 +153,28 @@ def test_preview_refusal_says_what_and_where(server):
         "ok": False,
         "message": "Unbalanced bracket: the `(` at position 4 is never closed.",
         "pointer": "sin(θ\n   ^",
+    }
+
+
+# Within every cap, yet sympy takes about a second to build each factor: (a + ib)¹⁰⁰ expanded.
+SLOW = "*".join([f"(theta'''-(l^-{n})^(1/3))^(abs(m m)/(g+theta''))" for n in range(93, 101)])
+
+
+def test_preview_of_an_answer_too_slow_to_read_is_bounded_by_the_check_timeout(tmp_path):
+    clear_cache()  # or sympy remembers the factors from an earlier test, and reading is quick
+    slow_server = make_server(bank=BANK, assignment=REVIEW, log_path=tmp_path / "log.jsonl", timeout=0.2)
+    thread = threading.Thread(target=slow_server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        status, record = _post(slow_server, "/api/preview", {"part": LAGRANGIAN, "answer": SLOW})
+    finally:
+        slow_server.shutdown()
+        slow_server.server_close()
+    assert status == 200
+    assert record == {
+        "ok": False,
+        "message": "This answer takes too long to read back here; check it to see how it was read.",
+        "pointer": "",
     }
 
 

@@ -135,16 +135,20 @@ def _hashable(value):
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Verdict:
     answer = None
-    if spec.parsed:
-        answer = parse_answer(submitted, coords=expected.setting.coords, known=sorted(expected.names))
-        if not answer.ok:
-            return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
-        answer = _unwrap_named(answer, spec)
-        early = _mismatch(spec, expected, answer)
-        if early:
-            return _verdict(early, answer)
     try:
+        # Reading is timed too: within the parser's caps, sympy can still spend a second
+        # building one factor of a hostile answer, and an answer has room for dozens.
         with time_limit(timeout) as deadline:
+            if spec.parsed:
+                answer = parse_answer(
+                    submitted, coords=expected.setting.coords, known=sorted(expected.names), deadline=deadline
+                )
+                if not answer.ok:
+                    return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
+                answer = _unwrap_named(answer, spec)
+                early = _mismatch(spec, expected, answer)
+                if early:
+                    return _verdict(early, answer)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
     except CheckTimeout:
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")

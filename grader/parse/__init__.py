@@ -73,7 +73,7 @@ def _printed(printer, value, otherwise: str) -> str:
 _SYMPY_FAILURES = (ArithmeticError, ValueError, TypeError, RecursionError, MemoryError)
 
 
-def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = ()) -> ParsedAnswer | Refusal:
+def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = (), deadline=None) -> ParsedAnswer | Refusal:
     """Read an answer typed by a student, safely.
 
     Args:
@@ -83,10 +83,12 @@ def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = ()) -> P
             functions of :data:`TIME`; ``theta'`` and ``θ̇`` are derivatives of these.
         known: the other symbols the problem defines, by name or as sympy Symbols
             (whose assumptions are kept). Juxtaposed known names split: ``mgl``.
+        deadline: an object whose ``check()`` raises when time is up (a grader
+            ``Deadline``); asked between the terms and factors of the answer.
 
     Returns:
         A :class:`ParsedAnswer`, or a :class:`Refusal` saying what is wrong and where.
-        Nothing a student can type makes it raise.
+        Nothing a student can type makes it raise; only a ``deadline`` that has passed does.
 
     >>> parse_answer("1/2 m l^2 thetadot^2", coords=["theta"], known=["m", "l"]).read_as_text
     'l^2*m*θ̇^2/2'
@@ -103,7 +105,7 @@ def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = ()) -> P
         return refusal("empty", text)
     try:
         tokens = tokenize(text)
-        value = parse_tokens(tokens, Context.build(coords, known), text)
+        value = parse_tokens(tokens, Context.build(coords, known), text, deadline)
     except ParseFailure as failure:
         return failure.to_refusal(text)
     except _SYMPY_FAILURES:

@@ -110,18 +110,24 @@ def _built(coords: tuple, known: tuple) -> Context:
     return Context._build(coords, known)
 
 
-def parse_tokens(tokens: list[Token], context: Context, text: str):
+def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None):
     """An expression, an ``Eq``, or a tuple of ``Eq`` (a system), from the tokens of ``text``.
+
+    ``deadline``, if given, is asked to ``check()`` before each term and factor is built:
+    within the caps, sympy may still take a second to build one (``(l^-100)^(1/3)`` raised
+    to a symbolic power expands (a + ib)¹⁰⁰), and a long answer has dozens.
 
     Raises:
         ParseFailure: when the tokens do not form an answer.
+        whatever ``deadline.check()`` raises once the time is up.
     """
-    return _Parser(tokens, context, text).answer()
+    return _Parser(tokens, context, text, deadline).answer()
 
 
 class _Parser:
-    def __init__(self, tokens: list[Token], context: Context, text: str):
+    def __init__(self, tokens: list[Token], context: Context, text: str, deadline=None):
         self.tokens, self.context, self.text = _leibniz(tokens, context), context, text
+        self.deadline = deadline
         self.i = 0
         self.depth = 0
         self.powers = 0  # exponents open around the cursor, as in x^(y^(z…))
@@ -239,6 +245,8 @@ class _Parser:
     def expr(self):
         terms = [self.term()]
         while self.token.is_op("+", "-"):
+            if self.deadline is not None:
+                self.deadline.check()
             op = self.advance()
             term = self.term()
             terms.append(-term if op.value == "-" else term)
@@ -248,6 +256,8 @@ class _Parser:
         factors = [self.signed()]
         previous_was_number = self.tokens[self.i - 1].kind == "num"
         while True:
+            if self.deadline is not None:
+                self.deadline.check()
             token = self.token
             if token.is_op("*", "/"):
                 self.advance()
@@ -466,7 +476,7 @@ class _Parser:
                 raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
             return self.context.derivative(target.expr, total)
         # Each differentiation of a product multiplies its terms: bound size ** order.
-        if sympy.count_ops(target, visual=False) ** order > _DIFF_BUDGET:
+        if sympy.count_ops(target, visual=False) ** (order + 1) > _DIFF_BUDGET:
             raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
         return sympy.diff(target, TIME, order)
 
@@ -772,7 +782,9 @@ def _power(base, exponent, token: Token):
     return value
 
 
-_DIFF_BUDGET = 4000  # operations ** order: diff of 60 operations once, of 15 three times
+# operations ** (order + 1): d/dt of a product of n factors is n terms of n factors each, so
+# the result grows as the square. d/dt of 63 operations, d²/dt² of 15, d³/dt³ of 7.
+_DIFF_BUDGET = 4000
 _MAX_MAGNITUDE = 1e300  # for constants that are not rational, just inside what a float holds
 
 

@@ -36,8 +36,11 @@ from grader.errors import GraderError
 from grader.grade.part import setting_of
 from grader.grade.selfcheck import SYMBOLS, WORDS, check, find_part
 from grader.judge import DEFAULT_TIMEOUT
+from grader.judge.deadline import CheckTimeout, Deadline
 from grader.parse import parse_answer
 from grader.serve.page import MATH_KINDS, problem_views, render_page
+
+_SLOW_PREVIEW = "This answer takes too long to read back here; check it to see how it was read."
 
 __all__ = ["LIMITS", "AttemptsLog", "SelfCheckServer", "make_server"]
 
@@ -248,7 +251,12 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
             self._send_json({"ok": True, "mathml": "", "text": answer.strip()})
             return
         setting = setting_of(problem)
-        read = parse_answer(answer, coords=setting["coords"], known=setting["known"])
+        try:  # sent as the student types: bounded like a check, so one answer cannot hold a thread
+            deadline = Deadline(self.server.check_timeout)
+            read = parse_answer(answer, coords=setting["coords"], known=setting["known"], deadline=deadline)
+        except CheckTimeout:
+            self._send_json({"ok": False, "message": _SLOW_PREVIEW, "pointer": ""})
+            return
         if read.ok:
             self._send_json({"ok": True, "mathml": read.read_as_mathml, "text": read.read_as_text})
         else:
