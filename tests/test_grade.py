@@ -69,6 +69,63 @@ def test_a_folder_of_answer_files_is_read(tmp_path):
     assert str(issues[1]).startswith(f"{tmp_path / 's3.yaml'}: cannot be read")
 
 
+def test_a_cell_longer_than_the_csv_modules_limit_is_read_and_cut(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_text(f"id,plane-pendulum.lagrangian\ns1,{'x' * 140_000}\ns2,{PENDULUM_L}\n", encoding="utf-8")
+    submissions, issues = read_submissions(path, ["plane-pendulum.lagrangian"])
+    assert [len(s.answers["plane-pendulum.lagrangian"]) for s in submissions] == [10_000, len(PENDULUM_L)]
+    assert issues == []
+
+
+def test_a_column_given_twice_is_reported_and_the_first_read(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_text(f"id,plane-pendulum.lagrangian,id,plane-pendulum.lagrangian\ns1,{PENDULUM_L},x,y\n")
+    submissions, issues = read_submissions(path, ["plane-pendulum.lagrangian"])
+    assert (submissions[0].student.id, submissions[0].answers) == ("s1", {"plane-pendulum.lagrangian": PENDULUM_L})
+    assert [str(issue) for issue in issues] == [
+        f"{path}, row 1, column 3: 'id' is also column 1; that one is read",
+        f"{path}, row 1, column 4: 'plane-pendulum.lagrangian' is also column 2; that one is read",
+    ]
+
+
+def test_a_csv_saved_as_windows_1252_is_read_and_said_so(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_bytes('id,name,plane-pendulum.lagrangian\ns1,"Núñez, María",½ m l^2 thetadot^2\n'.encode("cp1252"))
+    submissions, issues = read_submissions(path, ["plane-pendulum.lagrangian"])
+    assert submissions[0].student.name == "Núñez, María"
+    assert submissions[0].answers["plane-pendulum.lagrangian"] == "½ m l^2 thetadot^2"
+    assert [str(issue) for issue in issues] == [
+        f"{path}: not UTF-8 (byte 40); read as Windows-1252 (Latin-1): check accented names and answers,"
+        " or save the file as CSV UTF-8"
+    ]
+
+
+BILLION_LAUGHS = "\n".join(
+    ["id: s4", "a0: &a0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]"]
+    + [f"a{i}: &a{i} [{', '.join([f'*a{i - 1}'] * 9)}]" for i in range(1, 9)]
+    + ["answers:", "  plane-pendulum.lagrangian: *a8"]
+)
+
+
+def test_hostile_answer_files_are_reported_and_the_rest_read(tmp_path):
+    (tmp_path / "s1.json").write_text(json.dumps({"id": "s1", "answers": {"plane-pendulum.lagrangian": PENDULUM_L}}))
+    (tmp_path / "s2.json").write_text("[" * 100_000)  # deeper than the JSON reader's stack
+    (tmp_path / "s3.yaml").write_text("[" * 20_000)
+    (tmp_path / "s4.yaml").write_text(BILLION_LAUGHS)  # 9⁹ items, were the list written out
+    (tmp_path / "s5.yaml").write_text("id: {a: 1}\nanswers: {}\n")
+    submissions, issues = read_submissions(tmp_path, ["plane-pendulum.lagrangian"])
+    assert [(s.student.id, s.answers["plane-pendulum.lagrangian"]) for s in submissions if s.answers] == [
+        ("s1", PENDULUM_L),
+        ("s4", ""),
+    ]
+    assert [str(issue) for issue in issues] == [
+        f"{tmp_path / 's2.json'}: cannot be read: nested too deeply",
+        f"{tmp_path / 's3.yaml'}: cannot be read: nested too deeply",
+        f"{tmp_path / 's4.yaml'}: the answer to plane-pendulum.lagrangian is a list, not text; left blank",
+        f"{tmp_path / 's5.yaml'}: id, name and email must each be text",
+    ]
+
+
 def test_grading_one_submission_gives_every_part_of_the_assignment(tmp_path):
     assignment = _pendulum_only(tmp_path)
     grade = grade_submission(Submission(Student("s1"), {"plane-pendulum.lagrangian": PENDULUM_L}), assignment, BANK)

@@ -29,6 +29,10 @@ __all__ = ["InputIssue", "Submission", "read_submissions"]
 MAX_INPUT_BYTES = 50_000_000
 MAX_ANSWER_CHARS = 10_000  # longer cells are cut; the parser refuses anything over its own cap
 _IDENTITY = ("id", "name", "email")
+_SCALARS = (str, int, float)  # what a cell of a submission file may hold (bool is an int)
+# A cell may be as long as the file; the csv module's default cap (131,072) would stop the
+# whole class at one long answer. Raising it is process-wide, and only ever looser.
+csv.field_size_limit(max(csv.field_size_limit(), MAX_INPUT_BYTES))
 
 
 @dataclass(frozen=True)
@@ -66,22 +70,28 @@ def read_submissions(path: str | Path, keys: Iterable[str]) -> tuple[list[Submis
 def _read_csv(path: Path, keys: set[str]) -> tuple[list[Submission], list[InputIssue]]:
     if path.stat().st_size > MAX_INPUT_BYTES:
         raise OSError(f"{path} is larger than {MAX_INPUT_BYTES} bytes")
-    text = path.read_bytes().decode("utf-8-sig", errors="replace")  # Excel writes a BOM
-    rows = csv.reader(io.StringIO(text, newline=""))
     issues: list[InputIssue] = []
+    text = _decoded(path, path.read_bytes(), issues)
+    rows = csv.reader(io.StringIO(text, newline=""))
     try:
         header = [cell.strip() for cell in next(rows)]
     except StopIteration:
         return [], [InputIssue(str(path), "the file is empty")]
+    except csv.Error as error:
+        return [], [InputIssue(f"{path}, row 1", f"the header cannot be read: {error}")]
     lower = [cell.lower() for cell in header]
     if "id" not in lower:
         return [], [InputIssue(f"{path}, row 1", "the header has no 'id' column")]
-    columns = {}
+    columns: dict[int, str] = {}
     for index, name in enumerate(header):
-        if lower[index] in _IDENTITY:
-            columns[index] = lower[index]
-        elif name in keys:
-            columns[index] = name
+        column = lower[index] if lower[index] in _IDENTITY else name if name in keys else None
+        if column is not None and column in columns.values():
+            first = next(i for i, c in columns.items() if c == column) + 1
+            issues.append(
+                InputIssue(f"{path}, row 1, column {index + 1}", f"{column!r} is also column {first}; that one is read")
+            )
+        elif column is not None:
+            columns[index] = column
         elif name:
             issues.append(
                 InputIssue(
@@ -89,7 +99,7 @@ def _read_csv(path: Path, keys: set[str]) -> tuple[list[Submission], list[InputI
                 )
             )
     submissions = []
-    for number, row in enumerate(rows, start=2):
+    for number, row in _numbered(rows, path, issues):
         where = f"{path}, row {number}"
         if not any(cell.strip() for cell in row):
             continue
@@ -107,6 +117,39 @@ def _read_csv(path: Path, keys: set[str]) -> tuple[list[Submission], list[InputI
     return submissions, issues
 
 
+def _decoded(path: Path, data: bytes, issues: list[InputIssue]) -> str:
+    """The file's text: UTF-8 (with Excel's BOM or without), else Windows-1252, which is what
+    Excel on Windows saves as "CSV" and which decodes any byte, said so to the instructor."""
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        issues.append(
+            InputIssue(
+                str(path),
+                f"not UTF-8 (byte {error.start + 1}); read as Windows-1252 (Latin-1): check accented names and answers,"
+                " or save the file as CSV UTF-8",
+            )
+        )
+        return data.decode("cp1252", errors="replace")
+
+
+def _numbered(rows, path: Path, issues: list[InputIssue]):
+    """(row number, cells) from row 2 on; a row the csv module cannot read ends the file, said so."""
+    number = 1
+    while True:
+        number += 1
+        try:
+            row = next(rows)
+        except StopIteration:
+            return
+        except csv.Error as error:
+            issues.append(
+                InputIssue(f"{path}, row {number}", f"cannot be read ({error}); this row and the rest skipped")
+            )
+            return
+        yield number, row
+
+
 def _read_folder(folder: Path, keys: set[str]) -> tuple[list[Submission], list[InputIssue]]:
     submissions, issues = [], []
     files = sorted(p for p in folder.iterdir() if p.suffix.lower() in (".yaml", ".yml", ".json"))
@@ -120,17 +163,30 @@ def _read_folder(folder: Path, keys: set[str]) -> tuple[list[Submission], list[I
         except (OSError, ValueError, yaml.YAMLError) as error:
             issues.append(InputIssue(where, f"cannot be read: {error}"))
             continue
+        except RecursionError:  # [[[[…: nested deeper than the reader's stack
+            issues.append(InputIssue(where, "cannot be read: nested too deeply"))
+            continue
         if not isinstance(data, dict) or not isinstance(data.get("answers", {}), dict):
             issues.append(InputIssue(where, "expected a mapping with id, name, email and answers"))
             continue
-        student_id = str(data.get("id") or path.stem).strip()
+        identity = {name: data.get(name) for name in _IDENTITY}
+        if not all(value is None or isinstance(value, _SCALARS) for value in identity.values()):
+            issues.append(InputIssue(where, "id, name and email must each be text"))
+            continue
+        student_id = str(identity["id"] or path.stem).strip()
         answers = {}
         for key, value in data.get("answers", {}).items():
             if key not in keys:
-                issues.append(InputIssue(where, f"unknown part {key!r}: not a part of this assignment"))
+                issues.append(InputIssue(where, f"unknown part {str(key)[:80]!r}: not a part of this assignment"))
                 continue
+            if value is not None and not isinstance(value, _SCALARS):
+                # str() of a list would build all of it first: nine YAML aliases nine deep are 387 M items
+                issues.append(
+                    InputIssue(where, f"the answer to {key} is a {type(value).__name__}, not text; left blank")
+                )
+                value = None
             answers[key] = "" if value is None else str(value)[:MAX_ANSWER_CHARS]
-        student = Student(student_id, str(data.get("name") or ""), str(data.get("email") or ""))
+        student = Student(student_id, str(identity["name"] or ""), str(identity["email"] or ""))
         submissions.append(Submission(student, answers, where))
     return submissions, issues
 
