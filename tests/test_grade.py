@@ -18,7 +18,10 @@ from grader.export import (
     grade_from_json,
     gradebook_csv,
     moodle_csv,
+    read_overrides,
     result_json,
+    review_csv,
+    scores_long_csv,
     write_atomic,
 )
 from grader.grade import batch
@@ -202,6 +205,26 @@ def test_the_gradebook_has_a_points_possible_row_first_and_quotes_names():
     assert rows[1] == ["Points Possible", "", "", "2.0", "3.0", "5.0", "5.0", "100.0", ""]
     assert rows[2] == ["s1", "O'Brien, Pat", "pat@x.org", "2.0", "1.0", "3.0", "5.0", "60.0", "graded"]
     assert rows[3][0] == "s2" and rows[3][-1] == "error"
+
+
+def test_no_csv_cell_starts_a_spreadsheet_formula(tmp_path):
+    hostile = '=HYPERLINK("http://evil.example","click")'
+    parts = (PartGrade("p", "a", 2.0, "+cmd|' /C calc'!A0", "undecided", 0.0, ("-2+3",), read_as="@SUM(1)"),)
+    grades = [SubmissionGrade(Student("-s1", hostile, "\tx@y"), parts)]
+    written = [
+        gradebook_csv(grades, [("p.a", 2.0)]),
+        scores_long_csv(grades),
+        review_csv(grades),
+        canvas_csv(grades, assignment="A", assignment_id="1", max_score=2.0),
+        moodle_csv(grades, assignment="A"),
+    ]
+    cells = [cell for text in written for row in csv.reader(io.StringIO(text)) for cell in row]
+    assert '\'=HYPERLINK("http://evil.example","click")' in cells and "'+cmd|' /C calc'!A0" in cells
+    assert not [cell for cell in cells if cell[:1] in ("=", "+", "@", "\t", "\r") or cell.startswith("-s")]
+    # a person copies the student's id from review.csv into the overrides: it still matches
+    overrides = tmp_path / "overrides.csv"
+    overrides.write_text("student,part,points,comment\n'-s1,p.a,2,fine\n")
+    assert read_overrides(overrides) == ({("-s1", "p.a"): (2.0, "fine")}, [])
 
 
 def test_overrides_keep_the_automatic_score_beside_the_persons():

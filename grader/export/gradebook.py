@@ -9,7 +9,9 @@ Contents:
     canvas_csv, moodle_csv                       LMS gradebook imports
 
 CSVs are built as pandas frames and written by pandas, never by string formatting: a comma
-or a quote in a name is quoted, not a broken row.
+or a quote in a name is quoted, not a broken row. A text cell that a spreadsheet would run
+as a formula (=, +, -, @, a tab or a carriage return first: =HYPERLINK(…) or +cmd|… typed as
+an answer or a name) is written after an apostrophe, which spreadsheets read as "text".
 """
 
 from __future__ import annotations
@@ -39,8 +41,25 @@ __all__ = [
 ]
 
 
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
 def _csv(frame: pandas.DataFrame) -> str:
-    return frame.to_csv(index=False, lineterminator="\n")
+    return frame.map(_inert).to_csv(index=False, lineterminator="\n")
+
+
+def _inert(value):
+    """A cell no spreadsheet runs: text that would start a formula gets an apostrophe first.
+
+    >>> _inert("=HYPERLINK(\"http://x\")"), _inert("-m g l cos θ"), _inert(-1.5), _inert("s1")
+    ('\'=HYPERLINK("http://x")', "'-m g l cos θ", -1.5, 's1')
+    """
+    return "'" + value if isinstance(value, str) and value.startswith(_FORMULA_START) else value
+
+
+def _typed(cell: str) -> str:
+    """A cell as a person typed it, from one this module wrote (its apostrophe removed)."""
+    return cell[1:] if cell.startswith("'") and cell[1:].startswith(_FORMULA_START) else cell
 
 
 # -- results/<student>.json ------------------------------------------------------------
@@ -162,7 +181,8 @@ def read_overrides(path: str | Path) -> tuple[dict[tuple[str, str], tuple[float,
         except (TypeError, ValueError):
             issues.append(f"{path}, row {number}: points {row.get('points')!r} is not a number; row ignored")
             continue
-        overrides[(row["student"].strip(), row["part"].strip())] = (points, (row.get("comment") or "").strip())
+        student, part = _typed(row["student"].strip()), _typed(row["part"].strip())  # copied from review.csv
+        overrides[(student, part)] = (points, (row.get("comment") or "").strip())
     return overrides, issues
 
 
