@@ -146,6 +146,10 @@ LEIBNIZ = [
     ("d/dt (m l^2 thetadot) = 0", Eq(m * l**2 * D(theta, 2), 0)),
     ("\\frac{d\\theta}{dt}", D(theta)),
     ("\\frac{d^2 x}{dt^2}", D(x, 2)),
+    # a power after the fraction is the derivative's, as in (dx/dt)², not x²'s
+    ("\\frac{1}{2} m \\frac{dx}{dt}^2", m * D(x) ** 2 / 2),
+    ("\\frac{d\\theta}{dt}^{2}", D(theta) ** 2),
+    ("d/dt x^2", 2 * x * D(x)),  # the operator form still takes the factor after it, power and all
     ("\\frac{d}{dt}\\left(m l^2 \\dot\\theta\\right) + m g l \\sin\\theta = 0",
      Eq(m * l**2 * D(theta, 2) + m * g * l * sin(theta), 0)),
 ]  # fmt: skip

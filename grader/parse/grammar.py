@@ -457,13 +457,18 @@ class _Parser:
 
     def leibniz(self, token: Token):
         """``d/dt (…)``, ``\\frac{d}{dt}\\left(…\\right)``, ``dθ/dt``, ``\\frac{d^2x}{dt^2}``: the time derivative
-        of the factor that follows (rewritten to this token by :func:`_leibniz`)."""
+        of the factor that follows (rewritten to this token by :func:`_leibniz`).
+
+        A target written inside the notation is only that: in ``\\frac{dx}{dt}^2`` the square
+        is the derivative's, as in (dx/dt)², not x²'s.
+        """
+        order, inside = token.value
         if self.token.kind == "end":
             raise ParseFailure("missing_argument", token.start, token.end, name=self.source(token))
         self.deeper(token)
-        target = self.factor()
+        target = self.group() if inside else self.factor()
         self.depth -= 1
-        return self.differentiate(target, token.value, token)
+        return self.differentiate(target, order, token)
 
     def differentiate(self, target, order: int, token: Token):
         if order > LIMITS.derivative_order:
@@ -636,7 +641,8 @@ class _Parser:
 
 
 def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
-    """Leibniz's notation rewritten to one ``deriv`` token (its value the order) before the target.
+    """Leibniz's notation rewritten to one ``deriv`` token before the target; its value is
+    (order, whether the target was inside the notation, as in ``dθ/dt``, not after it).
 
     ``d/dt``, ``\\frac{d}{dt}``, ``dθ/dt``, ``d²x/dt²``, ``\\frac{d\\theta}{dt}``, ``\\frac{d^2 x}{dt^2}``;
     not where the problem itself defines d or dt as symbols.
@@ -652,7 +658,7 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
             i += 1
             continue
         order, target, end = found
-        out.append(Token("deriv", order, tokens[i].start, tokens[end - 1].end))
+        out.append(Token("deriv", (order, bool(target)), tokens[i].start, tokens[end - 1].end))
         out += target
         i = end
     return out
@@ -733,7 +739,11 @@ def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | N
     order, end = _order(tokens, after_dt)
     if order != numerator[0]:
         return None
-    return order, numerator[1], end
+    target = numerator[1]
+    if target:
+        opener, closer = Token("op", "(", token.start, token.start), Token("op", ")", token.end, token.end)
+        target = [opener, *target, closer]
+    return order, target, end
 
 
 def _closing(tokens: list[Token], i: int) -> int | None:
