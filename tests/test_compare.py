@@ -450,6 +450,11 @@ def test_a_lost_double_root_is_named_without_giving_the_root():
         ("integer", "3", "6/2", {}, "equivalent"),
         ("integer", "3", "4", {}, "not_equivalent"),
         ("integer", "3", "3.5", {}, "not_equivalent"),
+        # exactly: nsimplify's tolerance would round these to 15
+        ("integer", "15", "15 + 10^-29", {}, "not_equivalent"),
+        ("integer", "15", "15.0000000000000000000000001", {}, "not_equivalent"),
+        ("integer", "15", "15 + exp(-100)", {}, "not_equivalent"),
+        ("integer", "15", "log(2^15)/log(2)", {}, "equivalent"),
         ("number", "2 pi", "6.2832", {"rtol": 1e-4}, "equivalent"),
         ("number", "2 pi", "6.28", {"rtol": 1e-4}, "not_equivalent"),
         ("number", "9.81", "9.8", {"atol": 0.05, "rtol": 0}, "equivalent"),

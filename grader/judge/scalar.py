@@ -26,13 +26,28 @@ _SEPARATORS = re.compile(r"(?:\s*[,;/&]\s*|\s+and\s+|\s+)")
 
 
 def check_integer(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    value = sympy.nsimplify(answer.value) if answer.value.is_number else answer.value
+    value = _whole(answer.value) if answer.value.is_number else answer.value
     if not (value.is_number and value.is_Integer):
         return Outcome("not_equivalent", 0.0, "not_an_integer", method="exact")
     equal = value == expected.parsed.value
     return Outcome(
         "equivalent" if equal else "not_equivalent", float(equal), "equivalent" if equal else "wrong", method="exact"
     )
+
+
+def _whole(value):
+    """``value`` as a sympy Integer when it is one exactly, else as it is.
+
+    A rational is one only if its denominator is 1 (15 + 10⁻²⁹ is not 15). Anything else
+    (log(8)/log(2)) is guessed by ``nsimplify``, whose guess has a tolerance, so the guess
+    must agree with the value to 50 digits.
+    """
+    if value.is_Rational:
+        return value
+    guess = sympy.nsimplify(value)
+    if guess.is_Integer and abs((value - guess).evalf(DIGITS + 30)) < sympy.Float(10) ** -50:
+        return guess
+    return value
 
 
 def check_number(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
