@@ -122,7 +122,7 @@ FEEDBACK = [
     (EOM_DOUBLE, f"{EOM_DOUBLE_1}; {EOM_DOUBLE_1}", "equations", DOUBLE, "dependent_equations",
      "Your equations are not independent: they do not determine every acceleration."),
     (EOM_DOUBLE, f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2}; theta1 = 0", "equations", DOUBLE, "extra_equation",
-     "You gave 3 equations; this system has 2 coordinates, so it needs exactly 2."),
+     "You gave 3 equations; this system needs exactly 2, one per coordinate."),
 ]  # fmt: skip
 
 

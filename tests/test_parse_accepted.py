@@ -52,6 +52,9 @@ ARITHMETIC = [
     ("a ÷ b", a / b),
     ("a^2 b", a**2 * b),
     ("--a", a),
+    ("½ m", m / 2),
+    ("2½ m", Rational(5, 2) * m),  # a mixed number, as a person reads it: not 2·½
+    ("3¼", Rational(13, 4)),
 ]
 
 FUNCTIONS = [

@@ -32,7 +32,7 @@ FEEDBACK: dict[str, str] = {
     "expected_expression": "An expression is asked for here, but your answer is an equation.",
     "expected_system": "A system of {count} equations is asked for here (one per coordinate: {coords}).",
     "missing_equation": "The equation for {coords} is missing.",
-    "extra_equation": "You gave {given} equations; this system has {count} coordinates, so it needs exactly {count}.",
+    "extra_equation": "You gave {given} equations; this system needs exactly {count}, one per coordinate.",
     "wrong_equation": "Your equation for {coords} is not right; {right}.",
     "wrong_equations": "Your equations do not determine the right accelerations for {coords}.",
     "dependent_equations": "Your equations are not independent: they do not determine every acceleration.",

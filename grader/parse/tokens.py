@@ -35,6 +35,7 @@ from __future__ import annotations
 import re
 import unicodedata
 from dataclasses import dataclass
+from fractions import Fraction
 
 from grader.parse.messages import ParseFailure
 from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, SUBSCRIPT_DIGITS, SUPERSCRIPTS
@@ -177,7 +178,7 @@ class _Tokenizer:
             elif self._is_letter(c):
                 self._name()
             elif c in _VULGAR_FRACTIONS:  # ½ m v²: a number, as 1/2 in brackets would be
-                self._emit("num", _VULGAR_FRACTIONS[c], 1)
+                self._vulgar_fraction(c)
             elif c in SUPERSCRIPTS:
                 self._superscript()
             elif c == "\u221a":  # √
@@ -229,6 +230,16 @@ class _Tokenizer:
         else:
             self.tokens.append(Token("num", match[0], match.start(), match.end()))
         self.pos = match.end()
+
+    def _vulgar_fraction(self, c: str) -> None:
+        """½ alone, or a mixed number: 2½ is 5/2, as a person reads it, not 2·½."""
+        last = self.tokens[-1] if self.tokens else None
+        if last is not None and last.kind == "num" and last.end == self.pos and last.value.isdecimal():
+            mixed = int(last.value) + Fraction(_VULGAR_FRACTIONS[c])
+            self.tokens[-1] = Token("num", f"{mixed.numerator}/{mixed.denominator}", last.start, self.pos + 1)
+            self.pos += 1
+        else:
+            self._emit("num", _VULGAR_FRACTIONS[c], 1)
 
     def _superscript(self) -> None:
         start = self.pos
