@@ -316,7 +316,10 @@ def _markdown_escape(text: str) -> str:
     \<script\>alert(1)\</script\> \*x\* {{ 7\*7 }}
     >>> print(_markdown_escape("# heading"), _markdown_escape("1. item"))
     \# heading 1\. item
+    >>> print(repr(_markdown_escape("a\r# heading")))  # CommonMark ends a line at a bare CR too
+    'a\n\\# heading'
     """
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
     text = _MARKDOWN_INLINE.sub(r"\\\1", text)
 
     def escape(match: re.Match) -> str:
