@@ -51,8 +51,8 @@ def _csv(frame: pandas.DataFrame) -> str:
 def _inert(value):
     """A cell no spreadsheet runs: text that would start a formula gets an apostrophe first.
 
-    >>> _inert("=HYPERLINK(\"http://x\")"), _inert("-m g l cos θ"), _inert(-1.5), _inert("s1")
-    ('\'=HYPERLINK("http://x")', "'-m g l cos θ", -1.5, 's1')
+    >>> _inert("=HYPERLINK('http://x')"), _inert("-m g l cos θ"), _inert(-1.5), _inert("s1")
+    ("'=HYPERLINK('http://x')", "'-m g l cos θ", -1.5, 's1')
     """
     return "'" + value if isinstance(value, str) and value.startswith(_FORMULA_START) else value
 
