@@ -129,6 +129,7 @@ HOSTILE = [
     # -- derivatives beyond the limit -------------------------------------------
     ("theta''''", "derivative_order"),
     ("diff(theta, t, 99999999999999999999)", "derivative_order"),
+    ("d/dt(d/dt(d/dt(d/dt(theta*m))))", "derivative_order"),  # nested around a product, past the cap
 ]
 
 

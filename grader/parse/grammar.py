@@ -483,7 +483,11 @@ class _Parser:
         # Each differentiation of a product multiplies its terms: bound size ** order.
         if sympy.count_ops(target, visual=False) ** (order + 1) > _DIFF_BUDGET:
             raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
-        return sympy.diff(target, TIME, order)
+        derivative = sympy.diff(target, TIME, order)
+        # d/dt (d/dt (m θ̇)) nests past the order cap that θ⃛ and diff(θ, t, 3) meet
+        if any(d.derivative_count > LIMITS.derivative_order for d in derivative.atoms(sympy.Derivative)):
+            raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
+        return derivative
 
     # -- names -----------------------------------------------------------------
 
