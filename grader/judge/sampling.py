@@ -203,6 +203,8 @@ _PRECISE_RESOLUTION = 1e-20  # at 40 digits, a change this much smaller than the
 def short_fraction(x: float) -> Fraction | None:
     """The nonzero fraction with a denominator of at most 12 within 10⁻⁹ of ``x`` (relatively),
     or None: what a ratio measured in floats is, when it is a number one would write."""
+    if not math.isfinite(x):  # 1/ratio of a ratio that underflowed to 0
+        return None
     fraction = Fraction(x).limit_denominator(12)
     return fraction if fraction != 0 and abs(float(fraction) - x) <= 1e-9 * abs(x) else None
 
