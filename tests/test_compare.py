@@ -285,6 +285,12 @@ def test_an_identity_that_fails_beyond_pi_is_not_equivalent(kind, expected, subm
     assert compare(expected, submitted, kind=kind, **PENDULUM).status == "not_equivalent"
 
 
+def test_a_float_that_underflows_far_out_is_no_root():
+    # e^(st) never vanishes, but at t = −1000 it underflows to 0: a root only floats would see
+    verdict = compare("s^2 = 0", "s^2 e^(s t) = 0", kind="equation", known=["s"], domains={"s": "real"})
+    assert (verdict.status, verdict.method) == ("equivalent", "roots"), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "coords", "known"),
     [

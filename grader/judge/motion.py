@@ -45,7 +45,7 @@ from grader.judge.deadline import Deadline
 from grader.judge.diagnose import taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
-from grader.judge.numeric import PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
+from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
 from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, precise_side_by_side, side_by_side
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
@@ -650,6 +650,17 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
         sample = at(x)
         return sample is not None and closeness(sample[0], 0, max(sample[1], 1.0)) is Closeness.EQUAL
 
+    def really_vanishes(x: float) -> bool:
+        # Far out on the grid a float underflows: s² e^(st) at t = −1000 is 0, though no root.
+        # At 40 digits (mpmath's exponents do not underflow) a root is still a root.
+        try:
+            with mpmath.workdps(PRECISE_DIGITS):
+                value, scale = function.precise(_moved(point, position, x))
+        except UNDEFINED:
+            return False
+        # in mpmath's numbers: as floats, e^(−1000 s) would underflow all over again
+        return value == 0 or abs(value) <= FLOAT_EQUAL * mpmath.mpmathify(scale)
+
     batch = np.array([point] * len(grid), complex)
     batch[:, position] = grid
     values, scales = function.many(batch)
@@ -663,7 +674,8 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
         if s0 is None or s1 is None:
             continue
         if s1[0] == 0:
-            roots.append((x1, None))
+            if really_vanishes(x1):
+                roots.append((x1, None))
         elif s0[0] * s1[0] < 0:
             low, high = x0, x1
             for _ in range(60):
@@ -682,7 +694,7 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
                 if fa is None or fb is None:
                     break
                 low, high = (low, b) if abs(fa[0]) < abs(fb[0]) else (a, high)
-            if vanishes((low + high) / 2):
+            if vanishes((low + high) / 2) and really_vanishes((low + high) / 2):
                 roots.append(((low + high) / 2, None))
     return roots
 
