@@ -103,6 +103,18 @@ def test_a_csv_saved_as_windows_1252_is_read_and_said_so(tmp_path):
     ]
 
 
+def test_nul_characters_are_left_out_and_a_utf16_file_is_read(tmp_path):
+    nul = tmp_path / "nul.csv"
+    nul.write_bytes(f"id,name,plane-pendulum.lagrangian\ns1,A\x00B,{PENDULUM_L}\x00\n".encode())
+    submissions, issues = read_submissions(nul, ["plane-pendulum.lagrangian"])
+    assert (submissions[0].student.name, submissions[0].answers["plane-pendulum.lagrangian"]) == ("AB", PENDULUM_L)
+    assert [str(issue) for issue in issues] == [f"{nul}: the file holds NUL characters; they are left out"]
+    wide = tmp_path / "utf16.csv"
+    wide.write_bytes(f"id,name,plane-pendulum.lagrangian\ns1,Núñez,{PENDULUM_L}\n".encode("utf-16"))
+    submissions, issues = read_submissions(wide, ["plane-pendulum.lagrangian"])
+    assert (submissions[0].student.name, issues) == ("Núñez", [])
+
+
 BILLION_LAUGHS = "\n".join(
     ["id: s4", "a0: &a0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]"]
     + [f"a{i}: &a{i} [{', '.join([f'*a{i - 1}'] * 9)}]" for i in range(1, 9)]

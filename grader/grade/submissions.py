@@ -13,6 +13,7 @@ name and row, and everything else is still read.
 
 from __future__ import annotations
 
+import codecs
 import csv
 import io
 import json
@@ -120,6 +121,14 @@ def _read_csv(path: Path, keys: set[str]) -> tuple[list[Submission], list[InputI
 def _decoded(path: Path, data: bytes, issues: list[InputIssue]) -> str:
     """The file's text: UTF-8 (with Excel's BOM or without), else Windows-1252, which is what
     Excel on Windows saves as "CSV" and which decodes any byte, said so to the instructor."""
+    if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):  # "Unicode" as some spreadsheets save it
+        try:
+            return data.decode("utf-16").replace("\x00", "")
+        except UnicodeDecodeError:
+            pass
+    if b"\x00" in data:  # never text; echoed into reports and CSVs it breaks other tools
+        issues.append(InputIssue(str(path), "the file holds NUL characters; they are left out"))
+        data = data.replace(b"\x00", b"")
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as error:
@@ -158,7 +167,7 @@ def _read_folder(folder: Path, keys: set[str]) -> tuple[list[Submission], list[I
         try:
             if path.stat().st_size > MAX_INPUT_BYTES:
                 raise ValueError("the file is too large")
-            text = path.read_text(encoding="utf-8")
+            text = _decoded(path, path.read_bytes(), issues)
             data = json.loads(text) if path.suffix.lower() == ".json" else yaml.safe_load(text)
         except (OSError, ValueError, yaml.YAMLError) as error:
             issues.append(InputIssue(where, f"cannot be read: {error}"))
