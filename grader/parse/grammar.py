@@ -480,7 +480,7 @@ class _Parser:
             if total > LIMITS.derivative_order:
                 raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
             return self.context.derivative(target.expr, total)
-        # Each differentiation of a product multiplies its terms: bound size ** order.
+        # Each differentiation of a product multiplies its terms: see _DIFF_BUDGET.
         if sympy.count_ops(target, visual=False) ** (order + 1) > _DIFF_BUDGET:
             raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
         derivative = sympy.diff(target, TIME, order)
