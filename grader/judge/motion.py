@@ -607,7 +607,7 @@ def _order(function: Compiled, point, position: int, root: float) -> float | Non
     |f(r + h)| ∝ hᵏ near the root, so halving h divides it by 2ᵏ; measured on each side
     where f is defined and real there, and averaged. None where neither side is.
     """
-    h = 1e-3 * max(1.0, abs(root))
+    h = 1e-3  # not relative to the root: at α = 500 a step of 0.5 spans a twelfth of cos α's period
     orders = []
     for step in (h, -h):
         try:
