@@ -114,6 +114,25 @@ def test_an_unreadable_answer_is_pointed_at(server, browser):
     result = _check(browser, "invalid")
     assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "invalid\ncould not be read"
     assert result.find_element(By.CSS_SELECTOR, ".read pre").text == "sin(theta\n   ^"
+    assert result.find_element(By.CSS_SELECTOR, ".read .caption").text == "where:"
+
+
+def test_a_number_with_a_unit_is_shown_as_read(server, browser):
+    browser.get(server.url)
+    period = "plane-pendulum.period"
+    part = browser.find_element(By.CSS_SELECTOR, f'article.part[data-part="{period}"]')
+    part.find_element(By.ID, f"answer-{period}").send_keys("2.006 s")
+    part.find_element(By.CSS_SELECTOR, "button.check").click()
+    result = WebDriverWait(browser, 20).until(
+        expected_conditions.visibility_of_element_located(
+            (By.CSS_SELECTOR, f'article.part[data-part="{period}"] .result.invalid')
+        )
+    )
+    assert [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")] == [
+        "A number is asked for here; your answer contains `s`."
+    ]
+    assert result.find_element(By.CSS_SELECTOR, ".read .caption").text == "read as:"
+    assert result.find_elements(By.CSS_SELECTOR, ".read math")
 
 
 def test_hostile_text_stays_text(server, browser):
