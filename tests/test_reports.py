@@ -211,7 +211,11 @@ def test_student_report_shows_every_status():
     # the score table: a row per part, under its problem's title; a heading row and a total
     assert page.tags["tr"] == 1 + 2 + len(_ada().parts) + 1
     assert "The plane pendulum" in page.text and "The double pendulum" in page.text
-    assert "Write the Lagrangian $L(\\theta, \\dot\\theta)$." in page.text  # prompts as text, LaTeX kept
+    # prompts' LaTeX read as Unicode text, its source kept for a tooltip; the Markdown keeps it as written
+    assert "Write the Lagrangian L(θ, θ̇)." in page.text
+    assert ("span", "title", "L(\\theta, \\dot\\theta)") in page.attributes
+    assert "$" not in page.text and "\\dot" not in page.text
+    assert "Write the Lagrangian $L(\\theta, \\dot\\theta)$." in markdown
     # feedback, and the line that shows where an unreadable answer fails
     assert BANK["plane-pendulum"].part("lagrangian").mistakes[0].feedback in page.text
     assert "sin(θ\n   ^" in page.text and "sin(θ\n   ^" in markdown
@@ -288,7 +292,7 @@ def test_student_report_of_a_real_grading():
     _self_contained(page)
     assert page.tags["math"] >= 2 and SCRIPT in page.text
     assert "You used the small-angle approximation, but the full answer is asked for here." in page.text
-    assert "(b)is held fixed, $\\delta t = 0$your answer" in page.text  # the chosen option is marked
+    assert "(b)is held fixed, δt = 0your answer" in page.text  # the chosen option is marked, its LaTeX read
     assert "- **(b)** is held fixed, $\\delta t = 0$ ← your answer" in markdown
 
 
@@ -361,6 +365,9 @@ def test_summary():
     # the most common wrong answers, read alike and counted together
     assert "A term differs: a gravity term is not right." in text
     assert re.search(r"<code>g/l</code>.*?<td class=\"num\">2</td>", html_page, re.S)
+    # each part's prompt above its wrong answers, its LaTeX read as text with scripts
+    assert '<span class="tex" title="g = 9.81\\,\\mathrm{m/s^2}">g = 9.81 m/s<sup>2</sup></span>, give' in html_page
+    assert "$" not in text
 
 
 def test_common_wrong_answers_count_readings():
@@ -392,6 +399,8 @@ def test_review_queue_lists_what_waits_for_a_person():
     _self_contained(page)
     assert SCRIPT in page.text  # the hostile answer, as text
     assert "5 answers to review" in re.sub(r"\s+", " ", page.text)
+    # a part's heading quotes its prompt on one line: LaTeX as Unicode text, subscripts included
+    assert "Write the Lagrangian L(θ₁, θ₂, θ̇₁, θ̇₂)." in page.text
 
 
 def test_summary_of_a_class_that_could_not_be_graded():

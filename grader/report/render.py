@@ -27,6 +27,7 @@ import jinja2
 from markupsafe import Markup
 
 from grader.bank import Assignment, Part, Problem
+from grader.bank.markup import Segment, paragraphs, plain_text, segments
 from grader.grade.batch import assignment_parts
 from grader.grade.part import expected_answer, setting_of
 from grader.grade.results import PartGrade, SubmissionGrade
@@ -83,9 +84,9 @@ STATUS_LABELS = {
 @dataclass(frozen=True)
 class _PartView:
     grade: PartGrade
-    prompt: tuple[str, ...]  # paragraphs
+    prompt: tuple[tuple[Segment, ...], ...]  # paragraphs
     prompt_text: str  # as written, for Markdown
-    choices: tuple[tuple[str, str], ...]
+    choices: tuple[tuple[str, str], ...]  # (label, text as written)
     label: StatusLabel
     mathml: Markup | None
     reference: str | None
@@ -103,26 +104,21 @@ class _PartView:
         return frozenset(label for label, _ in self.choices if label.casefold() in given)
 
     @property
-    def reference_paragraphs(self) -> tuple[str, ...]:
-        return _paragraphs(self.reference or "")
+    def shown_choices(self) -> tuple[tuple[str, tuple[Segment, ...]], ...]:
+        return tuple((label, segments(" ".join(str(text).split()))) for label, text in self.choices)
+
+    @property
+    def reference_paragraphs(self) -> tuple[tuple[Segment, ...], ...]:
+        return paragraphs(self.reference or "")
 
 
 @dataclass(frozen=True)
 class _ProblemView:
     id: str
     title: str
-    prompt: tuple[str, ...]  # paragraphs
+    prompt: tuple[tuple[Segment, ...], ...]  # paragraphs
     prompt_text: str  # as written, for Markdown
     parts: tuple[_PartView, ...]
-
-
-def _paragraphs(text: str) -> tuple[str, ...]:
-    """Bank text as paragraphs: lines wrapped in the YAML file join up, blank lines separate.
-
-    >>> _paragraphs("A bob of mass $m$\\nhangs.\\n\\nUse θ.\\n")
-    ('A bob of mass $m$ hangs.', 'Use θ.')
-    """
-    return tuple(" ".join(block.split()) for block in re.split(r"\n\s*\n", text) if block.strip())
 
 
 def _mathml(text: str) -> Markup | None:
@@ -169,7 +165,7 @@ def _part_view(bank: dict[str, Problem], grade: PartGrade, reveal: bool) -> _Par
     reference, reference_mathml = _reference(problem, part) if reveal and part is not None else (None, None)
     return _PartView(
         grade=grade,
-        prompt=_paragraphs(part.prompt) if part is not None else (),
+        prompt=paragraphs(part.prompt) if part is not None else (),
         prompt_text=part.prompt.strip() if part is not None else "",
         choices=tuple(part.choices.items()) if part is not None else (),
         label=STATUS_LABELS[grade.status],
@@ -188,7 +184,7 @@ def _problem_views(grade: SubmissionGrade, bank: dict[str, Problem], reveal: boo
     for problem_id, parts in groups.items():
         problem = bank.get(problem_id)
         title, prompt = (problem.title, problem.prompt) if problem else (problem_id, "")
-        views.append(_ProblemView(problem_id, title, _paragraphs(prompt), prompt.strip(), tuple(parts)))
+        views.append(_ProblemView(problem_id, title, paragraphs(prompt), prompt.strip(), tuple(parts)))
     return views
 
 
@@ -238,12 +234,14 @@ def render_summary(grades: Sequence[SubmissionGrade], *, assignment: Assignment,
     for item in items:
         by_problem.setdefault(item.problem, []).append(item)
     titles = {problem_id: bank[problem_id].title if problem_id in bank else problem_id for problem_id in by_problem}
-    prompts = {}
+    prompts = {}  # part key → the prompt's paragraphs
     for grade in grades:
         for part in grade.parts:
             if part.key not in prompts:
                 _, found = _lookup(bank, part)
-                prompts[part.key] = " ".join(found.prompt.split()) if found is not None else ""
+                prompts[part.key] = paragraphs(found.prompt) if found is not None else ()
+    # in a table's heading, on one line without markup
+    prompt_lines = {key: " ".join(plain_text(paragraph) for paragraph in shown) for key, shown in prompts.items()}
     means = [(titles[problem], [(item.part, item.mean_share) for item in rows]) for problem, rows in by_problem.items()]
     context = {
         "assignment": assignment,
@@ -257,6 +255,7 @@ def render_summary(grades: Sequence[SubmissionGrade], *, assignment: Assignment,
         "low_discrimination": LOW_DISCRIMINATION,
         "wrong_answers": common_wrong_answers(grades),
         "prompts": prompts,
+        "prompt_lines": prompt_lines,
         "review": review_queue(grades),
         "errors": [grade for grade in grades if grade.status == "error"],
         "labels": STATUS_LABELS,
