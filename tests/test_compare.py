@@ -93,6 +93,47 @@ def test_by_default_parameters_are_positive_and_coordinates_real():
     assert compare("x", "sqrt(x^2)", known=["x"], domains={"x": "real"}).status == "not_equivalent"
 
 
+# Answers right only for some signs of parameters an author declared real (a charge, a
+# displacement). The problem's other names shift the seeded draws: every setting must catch them.
+SIGN_BLIND = [
+    ("expression", "a", "sqrt(a^2)", ["a"]),
+    ("expression", "a*b", "sqrt(a^2 b^2)", ["a", "b"]),
+    ("expression", "-a*b", "sqrt(a^2 b^2)", ["a", "b"]),
+    ("expression", "a*b*c", "sqrt(a^2) b c", ["a", "b", "c"]),
+    ("lagrangian", "1/2 m thetadot^2 - a*b*cos(theta)", "1/2 m thetadot^2 + sqrt(a^2 b^2) cos(theta)", ["a", "b"]),
+    ("equation", "m thetaddot - a*b*sin(theta) = 0", "m thetaddot + sqrt(a^2 b^2) sin(theta) = 0", ["a", "b"]),
+    ("equation", "m thetaddot = a*b*sin(theta)", "m thetaddot = sqrt(a^2 b^2) sin(theta)", ["a", "b"]),
+]
+
+
+@pytest.mark.parametrize("kind, expected, submitted, signed", SIGN_BLIND)
+def test_real_parameters_take_both_signs_and_every_pair_of_signs(kind, expected, submitted, signed):
+    for others in range(8):
+        known = ["m", *signed, *(f"k{i}" for i in range(others))]
+        verdict = compare(
+            expected, submitted, kind=kind, coords=["theta"], known=known, domains=dict.fromkeys(signed, "real")
+        )
+        assert verdict.status == "not_equivalent", (others, verdict)
+
+
+@pytest.mark.parametrize(
+    "kind, expected, submitted",
+    [
+        ("expression", "-a*b", "-sqrt(a^2) b a/abs(a)"),
+        ("expression", "abs(a b)", "sqrt(a^2 b^2)"),
+        ("lagrangian", "1/2 m thetadot^2 - a*b*cos(theta)", "1/2 m thetadot^2 - b a cos(theta) + a b c"),
+        ("equation", "m thetaddot - a*b*sin(theta) = 0", "thetaddot = a b sin(theta) / m"),
+    ],
+)
+def test_real_parameters_keep_right_answers_right(kind, expected, submitted):
+    for others in range(4):
+        known = ["m", "a", "b", "c", *(f"k{i}" for i in range(others))]
+        verdict = compare(
+            expected, submitted, kind=kind, coords=["theta"], known=known, domains=dict.fromkeys("abc", "real")
+        )
+        assert verdict.status == "equivalent", (others, verdict)
+
+
 FEEDBACK = [
     # (expected, submitted, kind, setting, diagnosis, feedback sentence)
     ("1/2 m l^2 thetadot^2", "m l^2 thetadot^2", "expression", PENDULUM, "factor",

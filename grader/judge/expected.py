@@ -21,6 +21,7 @@ import sympy
 
 from grader.errors import ReferenceAnswerError
 from grader.judge.numeric import Compiled
+from grader.judge.sampling import POINTS
 from grader.judge.setting import Setting
 from grader.parse import TIME, ParsedAnswer, parse_answer
 
@@ -67,6 +68,20 @@ class Expected:
             state = set(self.setting.state.values())
             self.cache["variables"] = (*sorted(parameters | state, key=str), TIME)
         return self.cache["variables"]
+
+    @property
+    def point_count(self) -> int:
+        """How many sample points a comparison draws, in runs of GROUP that share the parameters.
+
+        Where two or more parameters may be negative, twice as many: two draws of the
+        parameters cannot give two such parameters all four pairs of signs, and √(a²b²) would
+        pass for −ab; four draws can (see :meth:`Setting.points`).
+        """
+        if "point count" not in self.cache:
+            setting = self.setting
+            signed = [s for s in self.variables if not setting.is_state(s) and setting.domain(s) in ("real", "nonzero")]
+            self.cache["point count"] = 2 * POINTS if len(signed) >= 2 else POINTS
+        return self.cache["point count"]
 
     def compiled(self, key: str, expr) -> Compiled:
         """An expression derived from the expected answer, compiled once over :attr:`variables`."""

@@ -60,7 +60,7 @@ def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "val
 
     ``key`` names ``e`` among the expressions derived from the expected answer, for the cache.
     """
-    points = expected.points(POINTS, group=GROUP)
+    points = expected.points(expected.point_count, group=GROUP)
     expected_c, submitted_c = expected.compiled(key, e), expected.compile(s)
     if expected_c.constant and submitted_c.constant:
         # A constant: floats cannot tell 99999998/99999999 from 0.99999999; 40 digits can.
@@ -176,7 +176,7 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     shapes = expected_terms(expected, key, e, varying)
     if not 1 <= len(shapes) <= MAX_TERMS:
         return None
-    points = expected.points(POINTS, group=GROUP)
+    points = expected.points(expected.point_count, group=GROUP)
     (e_values, e_scales), (s_values, s_scales) = (
         expected.compiled(key, e).many(points),
         expected.compile(s).many(points),

@@ -30,7 +30,6 @@ from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, Closeness, Compile
 from grader.judge.sampling import (
     GROUP,
     MIN_DEFINED,
-    POINTS,
     constant_difference,
     nice_number,
     precise_side_by_side,
@@ -230,7 +229,7 @@ def _directions(expected: Expected) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     (first q̇, second the motion: q̇ for q, q̈ for q̇, 1 for t), then once more with those that
     give ∂L/∂q (first q, second none)."""
     if "directions" not in expected.cache:
-        points = expected.points(POINTS, group=GROUP)
+        points = expected.points(expected.point_count, group=GROUP)
         setting, index = expected.setting, {symbol: i for i, symbol in enumerate(expected.variables)}
         motion = np.zeros_like(points)
         motion[:, index[TIME]] = 1
@@ -261,7 +260,7 @@ def _symbolic_dynamics(expected: Expected, submitted, *, precise: bool = False) 
             for i, e in enumerate(euler_lagrange(expected.value, expected.setting))
         ]
     theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
-    points = expected.points(POINTS, group=GROUP)
+    points = expected.points(expected.point_count, group=GROUP)
     evaluate = precise_side_by_side if precise else side_by_side
     return [evaluate(f, g, points) for f, g in zip(expected.cache["euler-lagrange"], theirs, strict=True)]
 

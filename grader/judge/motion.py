@@ -46,7 +46,7 @@ from grader.judge.diagnose import taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
-from grader.judge.sampling import GROUP, MIN_DEFINED, POINTS, precise_side_by_side, side_by_side
+from grader.judge.sampling import GROUP, MIN_DEFINED, precise_side_by_side, side_by_side
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
 
@@ -59,7 +59,7 @@ _DYADIC = 1024  # the exact check's state is rounded to multiples of 1/1024
 _STEP_MARGIN = 256  # the step is this many times the largest acceleration
 _STEP_ROUNDS = 4  # rounds of reading the reference's rows for the steps
 _MAX_STEP_EXPONENT = 200  # steps up to 2²⁰⁰: beyond, a value's square would overflow a float
-_SPECIAL = 2  # states after the POINTS drawn ones: at rest, and at the origin
+_SPECIAL = 2  # states after the drawn ones (expected.point_count): at rest, and at the origin
 
 
 def _as_zero(value) -> sympy.Expr:
@@ -157,7 +157,7 @@ def _steps(expected: Expected, reference: Sequence[Compiled]) -> tuple[float, ..
     again with the steps those imply until they settle (a few rounds; kept per problem)."""
     key = ("steps", tuple(id(f) for f in reference))
     if key not in expected.cache:
-        steps = (1.0,) * (POINTS + _SPECIAL)
+        steps = (1.0,) * len(_states_of(expected))
         for _ in range(_STEP_ROUNDS):
             rows = _float_rows(expected, reference, steps, reference=True)
             settled = tuple(_step(state, step) for state, step in zip(rows, steps, strict=True))
@@ -186,10 +186,10 @@ def _accelerations_in(expr, expected: Expected) -> list[str]:
 
 
 def _states_of(expected: Expected) -> np.ndarray:
-    """The sample states: the POINTS drawn ones, then the first at rest (every velocity 0) and
+    """The sample states: the drawn ones, then the first at rest (every velocity 0) and
     the second at the origin (every coordinate 0), where a factor like θ̇ or sin θ vanishes."""
     if "motion states" not in expected.cache:
-        drawn = expected.points(POINTS, group=GROUP)
+        drawn = expected.points(expected.point_count, group=GROUP)
         index = {symbol: i for i, symbol in enumerate(expected.variables)}
         velocities = [index[expected.setting.velocity(q)] for q in expected.setting.coords]
         coordinates = [index[expected.setting.state[(q, 0)]] for q in expected.setting.coords]
@@ -388,7 +388,7 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         return Outcome("equivalent", 1.0, "equivalent", method="accelerations")
     if same is None:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
-    if _decided([result for number, result in numbered if number < POINTS]):
+    if _decided([result for number, result in numbered if number < expected.point_count]):
         # right wherever states are drawn, wrong at rest or at the origin: a vanishing factor
         return Outcome("not_equivalent", 0.0, "vanishing_factor", method="accelerations")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
@@ -732,7 +732,7 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     if len(states) < MIN_DEFINED:
         return Outcome("undecided", 0.0, "undecided", method="accelerations: too few defined states")
     outcome = _system_outcome(expected, states, theirs)
-    drawn = [state for number, state in numbered if number < POINTS]
+    drawn = [state for number, state in numbered if number < expected.point_count]
     if outcome.key == "dependent_equations" and all(state.independent for state in drawn):
         # independent wherever states are drawn, not at rest or at the origin: a vanishing factor
         return Outcome("not_equivalent", 0.0, "vanishing_factor_system", method=outcome.method)

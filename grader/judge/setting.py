@@ -122,7 +122,11 @@ class Setting:
         domains = {symbol: self.domain(symbol) for symbol in variables}
         points = sample_points(variables, domains, count, self.seed + salt)
         parameters = [i for i, symbol in enumerate(variables) if not self.is_state(symbol)]
+        signed = [i for i in parameters if domains[variables[i]] in ("real", "nonzero")]
         for start in range(0, count, group):
+            signs = _signs(start // group, len(signed), count // group)
+            for i, sign in zip(signed, signs, strict=True):
+                points[start][i] = sign * abs(points[start][i].real)
             for point in points[start + 1 : start + group]:
                 for i in parameters:
                     point[i] = points[start][i]
@@ -131,3 +135,26 @@ class Setting:
     def describe(self, names: Iterable[str]) -> str:
         """Names as a student reads them: ``m, l, g, θ``."""
         return ", ".join(unicode_name(name) for name in names)
+
+
+def _signs(draw: int, count: int, draws: int) -> list[int]:
+    """The signs of ``count`` parameters that may be negative, in parameter draw ``draw`` of ``draws``.
+
+    Random signs would leave a parameter positive in every draw a quarter of the time with two
+    draws, and √(a²) would pass for a. Instead, parameter k takes the sign (−1)^|draw ∧ mask_k|
+    (the parity of the bits they share), with masks 1, 2, 3, … below the number of draws. Each
+    parameter is negative in half the draws, and two whose masks differ meet all four pairs of
+    signs (two draws of signs are too few for that: there, parameters alternate, so that
+    neighbours differ and √(a²b²) cannot pass for ab).
+
+    >>> [_signs(draw, 3, 4) for draw in range(4)]
+    [[1, 1, 1], [-1, 1, -1], [1, -1, -1], [-1, -1, 1]]
+    >>> [_signs(draw, 3, 2) for draw in range(2)]
+    [[1, -1, 1], [-1, 1, -1]]
+    """
+    if draws < 2:
+        return [1] * count
+    if draws < 4:
+        return [(-1) ** (draw + k) for k in range(count)]
+    masks = range(1, 2 ** (draws.bit_length() - 1))  # bits a draw number below ``draws`` can hold
+    return [(-1) ** (draw & masks[k % len(masks)]).bit_count() for k in range(count)]
