@@ -8,7 +8,7 @@ Commands:
     grader grade SUBMISSIONS --assignment A --out DIR [--jobs N] [--only ID] grade a class
     grader export DIR --to canvas|moodle|gradescope                        LMS imports
     grader check PROBLEM.PART ANSWER | --answers FILE [--assignment A]     a student checks answers
-    grader serve [--assignment A] [--port P] [--log FILE]                  the self-check web page
+    grader serve [--assignment A] [--port P] [--log FILE] [--workers N]    the self-check web page
 
 Exit statuses: 0 equivalent (or read, or all graded); 1 not equivalent (or validation
 failures); 2 invalid input or usage error; 3 undecided (set aside for a person); 4 some
@@ -132,6 +132,7 @@ def _parser() -> argparse.ArgumentParser:
     serve.add_argument("--port", type=int, default=8000, help="the port (default: %(default)s; 0 picks a free one)")
     serve.add_argument("--log", type=Path, default=Path("attempts.jsonl"), help="attempts log (default: %(default)s)")
     serve.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
+    serve.add_argument("--workers", type=int, help="processes that check answers (default: one per core)")
     _add_bank_option(serve)
     serve.set_defaults(run=_run_serve)
     return parser
@@ -262,7 +263,13 @@ def _run_serve(args: argparse.Namespace) -> int:
         return EXIT_INVALID
     try:
         server = make_server(
-            bank=bank, assignment=assignment, host=args.host, port=args.port, log_path=args.log, timeout=args.timeout
+            bank=bank,
+            assignment=assignment,
+            host=args.host,
+            port=args.port,
+            log_path=args.log,
+            timeout=args.timeout,
+            workers=args.workers,
         )
     except OSError as error:
         print(f"grader serve: cannot start: {error}", file=sys.stderr)

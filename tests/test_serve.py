@@ -21,12 +21,12 @@ import pytest
 from course import BANK, REVIEW, ROOT
 from sympy.core.cache import clear_cache
 
-import grader.serve.app
 from grader.cli import main
 from grader.errors import GraderError
 from grader.grade.part import expected_answer
 from grader.grade.selfcheck import find_part
 from grader.serve import LIMITS, make_server, problem_views, render_page
+from grader.serve.workers import OVERRUN, PoolBusy
 
 LAGRANGIAN = "plane-pendulum.lagrangian"
 CSP = "default-src 'self'; script-src 'self' 'unsafe-inline'; style-src 'unsafe-inline'"
@@ -379,13 +379,29 @@ def test_an_exception_is_500_and_the_server_keeps_running(server, monkeypatch, c
     def broken(*args, **kwargs):
         raise RuntimeError("a bug")
 
-    monkeypatch.setattr(grader.serve.app, "check", broken)
+    monkeypatch.setattr(server.checks, "check", broken)
     status, record = _post(server, "/api/check", {"part": LAGRANGIAN, "answer": "x"})
     assert (status, record) == (500, {"error": "the server failed on this request; it has been logged"})
     assert "RuntimeError: a bug" in capfd.readouterr().err
     monkeypatch.undo()
     status, record = _post(server, "/api/check", {"part": LAGRANGIAN, "answer": "1/2 m l^2 θ̇^2 + m g l cos θ"})
     assert (status, record["status"]) == (200, "equivalent")
+
+
+def test_a_check_ended_for_overrunning_is_undecided_and_says_why(server, monkeypatch):
+    monkeypatch.setattr(server.checks, "check", lambda key, answer: None)  # what CheckPool says of one it ended
+    status, record = _post(server, "/api/check", {"part": LAGRANGIAN, "answer": "m l^2 θ̇^2"})
+    assert (status, record["status"], record["symbol"]) == (200, "undecided", "?")
+    assert record["hints"] == [OVERRUN]
+
+
+def test_every_worker_busy_is_503(server, monkeypatch):
+    def busy(key, answer):
+        raise PoolBusy
+
+    monkeypatch.setattr(server.checks, "check", busy)
+    status, record = _post(server, "/api/check", {"part": LAGRANGIAN, "answer": "m l^2 θ̇^2"})
+    assert (status, record) == (503, {"error": "the server is busy; check again in a moment"})
 
 
 def test_a_slow_check_is_bounded_by_the_time_limit(tmp_path):

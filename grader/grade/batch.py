@@ -30,7 +30,7 @@ from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.lagrangian import equations_of_motion
 from grader.parse import parse_answer
 
-__all__ = ["assignment_parts", "grade_class", "grade_submission"]
+__all__ = ["assignment_parts", "grade_class", "grade_submission", "limit_memory"]
 
 TASKS_PER_WORKER = 200  # then the worker is replaced, and its memory returned
 WORKER_MEMORY = 1_500_000_000  # bytes of address space; past it sympy raises MemoryError
@@ -101,7 +101,8 @@ def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str,
 _WORK: dict = {}  # set in the parent before forking, so workers inherit the bank
 
 
-def _limit_memory() -> None:
+def limit_memory() -> None:
+    """Cap this worker process's address space at WORKER_MEMORY (batch and self-check workers)."""
     # Where the limit cannot be set, recycling the workers still bounds their memory.
     with contextlib.suppress(ValueError, OSError):
         resource.setrlimit(resource.RLIMIT_AS, (WORKER_MEMORY, WORKER_MEMORY))
@@ -166,7 +167,7 @@ def _run_pool(pending: list[int], results: dict, jobs: int, progress) -> list[in
     chunk = TASKS_PER_WORKER * jobs
     for start in range(0, len(pending), chunk):
         with concurrent.futures.ProcessPoolExecutor(
-            max_workers=jobs, mp_context=context, initializer=_limit_memory
+            max_workers=jobs, mp_context=context, initializer=limit_memory
         ) as pool:
             futures = [pool.submit(_grade_one, index) for index in pending[start : start + chunk]]
             for future in concurrent.futures.as_completed(futures):

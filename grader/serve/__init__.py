@@ -4,6 +4,7 @@ Contents:
     make_server(bank=, assignment=, host=, port=, log_path=)   the server; the caller runs serve_forever
     SelfCheckServer                                            what make_server returns (``.url``)
     problem_views, render_page                                 the page, built from an allow-list of fields
+    workers.CheckPool                                          the processes that check answers
 
 Built on the standard library's ``http.server``; the page is one HTML document with inline CSS
 and script, and fetches nothing from the network. Reference answers never leave the server.

@@ -1,14 +1,16 @@
 """The self-check server: the page, a preview of how an answer is read, and checking it.
 
 Contents:
-    make_server(bank=, assignment=, host=, port=, log_path=)   a server; the caller runs serve_forever
+    make_server(bank=, assignment=, host=, port=, log_path=, workers=)   a server; the caller runs serve_forever
     SelfCheckServer                                            the server and what every request shares
     AttemptsLog                                                one JSON line per check, from any thread
     LIMITS                                                     sizes past which a request is refused
 
 Routes: ``GET /`` the page; ``POST /api/preview`` and ``POST /api/check`` take JSON
 ``{"part": "problem.part", "answer": "…"}`` and answer JSON. Every error is JSON with a 4xx
-or 5xx status, and no request stops the server.
+or 5xx status, and no request stops the server. Checks run in worker processes
+(:mod:`grader.serve.workers`), which can be stopped; a preview only reads the answer, in the
+handler's thread, bounded by the parser's own checks of the time limit.
 
 Nothing a response holds comes from a Part's ``answer`` or the answers of its ``mistakes`` and
 ``tests``: the page is built from the views in ``page`` (an allow-list), a preview only from the
@@ -34,11 +36,12 @@ from typing import ClassVar
 from grader.bank import Assignment, Problem
 from grader.errors import GraderError
 from grader.grade.part import setting_of
-from grader.grade.selfcheck import SYMBOLS, WORDS, check, find_part
+from grader.grade.selfcheck import SYMBOLS, WORDS, CheckResult, find_part
 from grader.judge import DEFAULT_TIMEOUT
 from grader.judge.deadline import CheckTimeout, Deadline
 from grader.parse import parse_answer
 from grader.serve.page import MATH_KINDS, problem_views, render_page
+from grader.serve.workers import OVERRUN, CheckPool, PoolBusy
 
 _SLOW_PREVIEW = "This answer takes too long to read back here; check it to see how it was read."
 
@@ -93,7 +96,8 @@ class AttemptsLog:
 
 
 class SelfCheckServer(ThreadingHTTPServer):
-    """A threading HTTP server holding the bank, the rendered page and the attempts log."""
+    """A threading HTTP server holding the bank, the rendered page, the attempts log and the
+    worker processes that check answers."""
 
     daemon_threads = True  # a stuck check never keeps the process from exiting
 
@@ -105,6 +109,7 @@ class SelfCheckServer(ThreadingHTTPServer):
         assignment: Assignment | None,
         log: AttemptsLog | None,
         check_timeout: float,
+        workers: int | None = None,
     ):
         self.bank = bank
         self.assignment = assignment
@@ -114,7 +119,13 @@ class SelfCheckServer(ThreadingHTTPServer):
         self.keys = frozenset(part.key for view in views for part in view.parts)
         title = assignment.title if assignment is not None else "The problem bank"
         self.page = render_page(views, title=title).encode("utf-8")
+        self.checks: CheckPool | None = None  # started once the address is bound
         super().__init__(address, SelfCheckHandler)
+        try:
+            self.checks = CheckPool(bank, keys=tuple(sorted(self.keys)), timeout=check_timeout, workers=workers)
+        except BaseException:
+            super().server_close()
+            raise
 
     @property
     def url(self) -> str:
@@ -123,6 +134,8 @@ class SelfCheckServer(ThreadingHTTPServer):
 
     def server_close(self) -> None:
         super().server_close()
+        if self.checks is not None:
+            self.checks.close()
         if self.attempts is not None:
             self.attempts.close()
 
@@ -135,6 +148,7 @@ def make_server(
     port: int = 0,
     log_path: str | Path | None = None,
     timeout: float = DEFAULT_TIMEOUT,
+    workers: int | None = None,
 ) -> SelfCheckServer:
     """A self-check server bound to ``host:port``, not yet serving.
 
@@ -145,6 +159,8 @@ def make_server(
         port: 0 picks a free port (read it back from ``server.server_address`` or ``server.url``).
         log_path: a JSON-lines file each check is appended to; None keeps no log.
         timeout: seconds per check before it is "undecided".
+        workers: processes that check answers (default: the machine's cores); a check that
+            overruns its limit is ended by killing its worker.
 
     Returns:
         The server; run ``serve_forever()`` (in a thread, for tests) and ``server_close()`` after.
@@ -154,7 +170,9 @@ def make_server(
     """
     log = AttemptsLog(log_path) if log_path is not None else None
     try:
-        return SelfCheckServer((host, port), bank=bank, assignment=assignment, log=log, check_timeout=timeout)
+        return SelfCheckServer(
+            (host, port), bank=bank, assignment=assignment, log=log, check_timeout=timeout, workers=workers
+        )
     except BaseException:
         if log is not None:
             log.close()
@@ -266,11 +284,12 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
         request = self._request()
         self._part(request)
         key, answer = request["part"], request["answer"]
-        # Runs in this handler thread, where the grader's time limit is only cooperative: the
-        # signal that interrupts sympy works in the main thread alone. A check can then overrun
-        # its limit by as long as one sympy call takes (grading a class uses worker processes,
-        # which can be killed, for that reason); the default of 2 s keeps the checks short.
-        result = check(key, answer, bank=self.server.bank, timeout=self.server.check_timeout)
+        try:  # in a worker process, ended if it overruns (see grader.serve.workers)
+            result = self.server.checks.check(key, answer)
+        except PoolBusy:
+            raise _Refused(HTTPStatus.SERVICE_UNAVAILABLE, "the server is busy; check again in a moment") from None
+        if result is None:
+            result = CheckResult(key, "undecided", 0.0, (OVERRUN,))
         if self.server.attempts is not None:
             self.server.attempts.append(
                 {
