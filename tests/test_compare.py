@@ -253,6 +253,35 @@ def test_a_lagrangian_is_right_up_to_a_constant_or_a_total_derivative(submitted)
     assert (verdict.status, verdict.score) == ("equivalent", 1.0)
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # the prompts say "Write the Lagrangian L(θ, θ̇)": students write the name with its arguments
+        ("L(θ, θ̇) = " + L_PENDULUM, "equivalent"),
+        ("L(theta, thetadot, t) = " + L_PENDULUM, "equivalent"),
+        (r"\mathcal{L}(\theta, \dot\theta) = \frac12 m l^2 \dot\theta^2 + m g l \cos\theta", "equivalent"),
+        # and the definition on the way: the last side is the answer
+        ("L = T - V = " + L_PENDULUM, "equivalent"),
+        ("L(θ, θ̇) = T − V = ½ m v² + m g l cos θ = " + L_PENDULUM, "equivalent"),
+        ("L(θ, θ̇) = T - V = 1/2 m l^2 θ̇^2 - m g l cos θ", "not_equivalent"),  # the last side is judged
+        ("L = T - V", "not_equivalent"),  # a definition alone is no Lagrangian
+        # a middle side in the problem's own names may be what was meant: a person decides
+        ("L = 1/2 m l^2 θ̇^2 = " + L_PENDULUM, "invalid"),
+        ("l(θ, θ̇) = " + L_PENDULUM, "invalid"),  # l is the length here: no name, and no list
+        ("L(θ, 2) = " + L_PENDULUM, "invalid"),
+    ],
+)
+def test_an_answer_may_name_the_quantity_it_writes_out(submitted, status):
+    assert compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM).status == status
+
+
+def test_a_defined_name_before_brackets_is_a_product_not_a_name():
+    spring = {"coords": ["x"], "known": ["m", "k"]}
+    assert compare("m xddot = -k x", "m(ẍ) = -k x", kind="equation", **spring).status == "equivalent"
+    # F = m ẍ = −k x: the equation is in the last two sides, not the last one; a person reads it
+    assert compare("m xddot = -k x", "F = m ẍ = -k x", kind="equation", **spring).status == "invalid"
+
+
 def test_up_to_constant_allows_another_zero_of_potential():
     expected = "-m g l cos(theta)"
     assert compare(expected, "m g l (1 - cos θ)", **PENDULUM).status == "not_equivalent"

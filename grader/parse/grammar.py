@@ -231,14 +231,53 @@ class _Parser:
 
     def item(self):
         first = self.token
-        lhs = self.expr()
+        label = self.label()
+        lhs = label if label is not None else self.expr()
         if not self.token.is_op("="):
             return first, lhs
         self.advance()
         rhs = self.expr()
+        while label is not None and self.token.is_op("=") and self._defines(rhs):
+            # L = T − V = ½ m l² θ̇² + …: the quantity, its definition, and the answer, which is the last
+            # side. Not F = m ẍ = −k x, whose middle side is part of an equation: that stays ambiguous.
+            self.advance()
+            rhs = self.expr()
         if self.token.is_op("="):
             raise ParseFailure("too_many_equals", self.token.start, self.token.end)
         return first, sympy.Eq(lhs, rhs, evaluate=False)
+
+    def _defines(self, side) -> bool:
+        """Whether a side is written in names the problem does not define (T − V, ½ m v²)."""
+        defined = set(self.context.known.values()) | {TIME}
+        return any(symbol not in defined for symbol in side.free_symbols)
+
+    def label(self) -> sympy.Symbol | None:
+        """The name of the quantity an answer writes out, as in ``L(θ, θ̇) = …`` or ``L = T − V = …``:
+        a name the problem does not define, alone or with a bracket of names, before ``=``.
+
+        A defined name is never a label: ``m(ẍ) = −k x`` is m·ẍ, and ``ml = …`` is m·l.
+        """
+        tokens, i = self.tokens, self.i
+        token = tokens[i]
+        if token.kind != "name" or token.value.dots or token.value.primes:
+            return None
+        j = i + 1
+        if tokens[j].is_op("(") and tokens[j + 1].kind == "name":
+            j += 1
+            while tokens[j].kind == "name" and tokens[j + 1].is_op(","):
+                j += 2
+            if not (tokens[j].kind == "name" and tokens[j + 1].is_op(")")):
+                return None
+            j += 2
+        if not tokens[j].is_op("="):
+            return None
+        canonical = canonical_name(token.value.raw)
+        if self.lookup(canonical) is not None:
+            return None
+        if not _GREEK_NAME.match(canonical) and self.split(token.value.raw, token):  # mgl: m·g·l
+            return None
+        self.i = j
+        return sympy.Symbol(canonical)
 
     # -- arithmetic ------------------------------------------------------------
 
