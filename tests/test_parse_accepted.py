@@ -137,6 +137,7 @@ DERIVATIVES = [
     ("m l thetadot", m * l * D(theta)),
     ("mlθ̇", m * l * D(theta)),
     ("diff(x^2, t)", 2 * x * D(x)),
+    ("θ˙ + θ¨₁", D(theta) + D(theta1, 2)),  # the spacing dots a Mac keyboard types (Option-h, Option-u)
 ]
 
 LEIBNIZ = [
@@ -217,6 +218,19 @@ LATEX = [
     ("\\exp(a) + \\ln b", exp(a) + sympy.log(b)),
     ("\\dot{\\theta}'", D(theta, 2)),
     ("\\ell", l),
+    # an argument without braces is one character, as TeX reads it
+    ("\\frac gl", g / l),
+    ("-\\frac gl \\sin\\theta", -g / l * sin(theta)),
+    ("\\frac m2 l^2", m * l**2 / 2),
+    ("\\frac m23", 3 * m / 2),
+    ("\\frac\\pi2", sympy.pi / 2),
+    ("\\sqrt gl", sqrt(g) * l),
+    ("\\frac{mgl}{2}", m * g * l / 2),
+    # the math's own delimiters, and the full stop or comma of the sentence around it
+    ("\\[ \\frac{a}{b} \\]", a / b),
+    ("\\( a + b \\)", a + b),
+    ("a + b.", a + b),
+    ("\\ddot x = -\\frac km x,", Eq(D(x, 2), -k / m * x)),
 ]
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX

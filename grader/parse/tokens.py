@@ -151,18 +151,27 @@ def tokenize(text: str) -> list[Token]:
     return tokens
 
 
+# A Mac keyboard types a dot or two over a letter as the spacing marks ˙ (Option-h) and ¨
+# (Option-u, space): read after a letter as the combining ones, θ˙ as θ̇. One character for one,
+# so positions in messages still point into the text as typed.
+_SPACING_DOTS = str.maketrans({"\u02d9": "\u0307", "\u00a8": "\u0308"})
+
+
 class _Tokenizer:
     def __init__(self, text: str, *, latex: bool):
-        self.text, self.latex = text, latex
+        self.text, self.latex = text.translate(_SPACING_DOTS), latex
         self.pos = 0
         self.tokens: list[Token] = []
 
     def run(self) -> list[Token]:
         text = self.text
+        end = len(text.rstrip())
         while self.pos < len(text):
             c = text[self.pos]
             if c in " \t\r\u00a0" or (self.latex and c in "&$"):
                 self.pos += 1
+            elif c in ".," and self.pos == end - 1 and not text[: self.pos].rstrip().endswith((".", ",")):
+                self.pos += 1  # the full stop or comma that ends a sentence: L = ½ m l² θ̇² − V.
             elif c == "\n":
                 self._emit("sep", "\n", 1)
             elif c == "\\" and self.latex:
@@ -222,8 +231,7 @@ class _Tokenizer:
             raise ParseFailure("number_too_large", match.start(), match.end(), digits=digits, limit=LIMITS.digits)
         if exponent is not None and abs(int(exponent)) > LIMITS.exponent:
             raise ParseFailure("exponent_too_large", match.start(), match.end(), limit=LIMITS.exponent)
-        last = self.tokens[-1] if self.tokens else None
-        if self.latex and match[0].isdecimal() and last and (last.kind == "frac" or last.is_op("^")):
+        if self.latex and match[0].isdecimal() and self._one_character_argument():
             # TeX reads ``x^23`` as x²·3 and ``\frac12`` as ½: an argument is one digit.
             for i, digit in enumerate(match[0]):
                 self.tokens.append(Token("num", digit, self.pos + i, self.pos + i + 1))
@@ -255,6 +263,13 @@ class _Tokenizer:
         start, text = self.pos, self.text
         if self.latex:
             run = _LETTERS.match(text, self.pos)
+            if run and text[start + 1 : start + 2].isalnum() and self._one_character_argument():
+                # TeX reads \frac gl as g/l, \sqrt ab as √a·b and x^ab as xᵃ·b: an argument
+                # without braces is one character. Reading gl as one name made \frac gl \sin\theta
+                # (g/l)·sin θ into g·l/sin θ.
+                self.pos += 1
+                self._finish_name(start, text[start], 0)
+                return
             if run and run[0] in FUNCTION_NAMES:  # ``sin x`` typed inside LaTeX still means sine
                 self.pos = run.end()
                 self.tokens.append(Token("func", FUNCTION_NAMES[run[0]], start, self.pos))
@@ -297,6 +312,17 @@ class _Tokenizer:
                     self.pos = match.end()
                 break
         self._finish_name(start, "".join(raw), dots)
+
+    def _one_character_argument(self) -> bool:
+        """Whether the next token is a TeX macro's argument without braces: the one after
+        ``\\frac``, ``\\sqrt`` or ``^``, or the second of ``\\frac`` when the first was one token."""
+        tokens = self.tokens
+        if not tokens:
+            return False
+        last = tokens[-1]
+        if last.kind in ("frac", "sqrt") or last.is_op("^"):
+            return True
+        return len(tokens) >= 2 and tokens[-2].kind == "frac" and last.kind in ("name", "num")
 
     def _subscript(self, raw: list[str]) -> None:
         """``_1``, ``_{12}``, ``_\\theta``, ``_{cm}``: a subscript written the TeX way."""
@@ -349,8 +375,8 @@ class _Tokenizer:
         match = _COMMAND.match(text, self.pos)
         command = match[1]
         self.pos = match.end()
-        if command in ("", ",", ";", ":", "!", " "):
-            return
+        if command in ("", ",", ";", ":", "!", " ", "[", "]", "(", ")"):
+            return  # spaces, and \[ … \] or \( … \) around the math as $ … $ are
         if command == "\\":
             self.tokens.append(Token("sep", "\n", start, self.pos))
         elif command in ("{", "}"):
