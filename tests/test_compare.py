@@ -265,6 +265,8 @@ def test_a_lagrangian_is_right_up_to_a_constant_or_a_total_derivative(submitted)
         ("L(θ, θ̇) = T − V = ½ m v² + m g l cos θ = " + L_PENDULUM, "equivalent"),
         ("L(θ, θ̇) = T - V = 1/2 m l^2 θ̇^2 - m g l cos θ", "not_equivalent"),  # the last side is judged
         ("L = T - V", "not_equivalent"),  # a definition alone is no Lagrangian
+        ("T - V = " + L_PENDULUM, "equivalent"),  # a left side only in names the problem leaves free
+        ("m - V = " + L_PENDULUM, "not_equivalent"),  # m is the mass: this is an equation
         # a middle side in the problem's own names may be what was meant: a person decides
         ("L = 1/2 m l^2 θ̇^2 = " + L_PENDULUM, "invalid"),
         ("l(θ, θ̇) = " + L_PENDULUM, "invalid"),  # l is the length here: no name, and no list

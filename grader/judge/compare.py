@@ -145,7 +145,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
                 )
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
-                answer = _unwrap_named(answer, spec)
+                answer = _unwrap_named(answer, spec, expected)
                 early = _mismatch(spec, expected, answer)
                 if early:
                     return _verdict(early, answer)
@@ -165,15 +165,16 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
     return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer)
 
 
-def _unwrap_named(answer: ParsedAnswer, spec: Kind) -> ParsedAnswer:
-    """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` or ``ẍ = …`` for an expression: the name is not the answer."""
+def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
+    """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` or ``ẍ = …`` for an expression: the name is not
+    the answer. Nor is ``T − V = …``, a left side only in names the problem does not define."""
     value = answer.value
-    if (
-        spec.shape == "expression"
-        and isinstance(value, sympy.Eq)
-        and isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
-        and not value.rhs.has(value.lhs)
-    ):
+    if spec.shape != "expression" or not isinstance(value, sympy.Eq) or value.rhs.has(value.lhs):
+        return answer
+    named = isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
+    undefined = {symbol.name for symbol in value.lhs.free_symbols} - expected.names
+    defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
+    if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     return answer
 
