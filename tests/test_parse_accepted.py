@@ -137,7 +137,11 @@ DERIVATIVES = [
     ("m l thetadot", m * l * D(theta)),
     ("mlθ̇", m * l * D(theta)),
     ("diff(x^2, t)", 2 * x * D(x)),
-    ("θ˙ + θ¨₁", D(theta) + D(theta1, 2)),  # the spacing dots a Mac keyboard types (Option-h, Option-u)
+    ("θ˙ + θ¨₁", D(theta) + D(theta1, 2)),
+    # a glued name dotted once is undotted the next time: (lθ̇)(lθ) once passed for (lθ̇)²
+    ("(lθ̇)(lθ)", l**2 * theta * D(theta)),
+    ("lθ̈ + lθ̇ + lθ", l * D(theta, 2) + l * D(theta) + l * theta),
+    ("(ltheta')(ltheta)", l**2 * theta * D(theta)),  # the spacing dots a Mac keyboard types (Option-h, Option-u)
 ]
 
 LEIBNIZ = [

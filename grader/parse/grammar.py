@@ -533,7 +533,7 @@ class _Parser:
     def name(self, token: Token) -> list:
         """The values a name stands for: one, or several for a split name (``mgl``)."""
         name: Name = token.value
-        pieces = self.resolve(name, token)
+        pieces = list(self.resolve(name, token))  # a copy: a split is kept for the name's next use, undotted
         order = name.dots + name.primes
         if order:
             last = pieces[-1]
