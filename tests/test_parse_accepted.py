@@ -84,6 +84,13 @@ FUNCTIONS = [
     ("√(g/l)", sqrt(g / l)),
     ("√2 a", sqrt(2) * a),
     ("mglsinθ", m * g * l * sin(theta)),
+    # a bare argument takes a glued product (cos ωt), but never a velocity: that is no angle
+    ("cos ωt", cos(omega * t)),
+    ("sin kx", sin(k * x)),
+    ("sin²θφ̇²", sin(theta) ** 2 * D(phi) ** 2),
+    ("ml²sin²θφ̇", m * l**2 * sin(theta) ** 2 * D(phi)),
+    ("sin 2θφ̇", sin(2 * theta) * D(phi)),
+    ("cos θ₁θ̇₂²", cos(theta1) * D(theta2) ** 2),
 ]
 
 NAMES = [

@@ -422,10 +422,11 @@ class _Parser:
         bare = not (self.token.kind == "op" and self.token.value in _OPENERS)
         if bare:  # a bracketed argument counts its own level
             self.deeper(token)
-        value = _apply(name, self.function_argument(token), token)
+        argument, after = self.function_argument(token)
+        value = _apply(name, argument, token)
         if bare:
             self.depth -= 1
-        return value if power is None else _power(value, sympy.Integer(power), token)
+        return (value if power is None else _power(value, sympy.Integer(power), token)) * after
 
     def function_power(self, function: Token) -> int:
         """``sin^2 θ``, ``\\sin^{2}\\theta``, ``sin²θ``: the power of the function's value."""
@@ -452,22 +453,39 @@ class _Parser:
         return int(value)
 
     def function_argument(self, function: Token):
-        """A bracketed argument, or a bare one: ``sin θ``, ``sin 2θ``, ``cos θ₁²``, ``\\sin\\frac{θ}{2}``."""
+        """A bracketed argument, or a bare one: ``sin θ``, ``sin 2θ``, ``cos θ₁²``, ``\\sin\\frac{θ}{2}``;
+        and what follows it in the same glued name but is not in it (see :meth:`name_argument`)."""
         token = self.token
         if token.kind == "op" and token.value in _OPENERS:
-            return self.group()
+            return self.group(), sympy.S.One
         if token.kind == "num":
             coefficient = self.primary()
             if self.token.kind == "name":
-                return coefficient * self.factor()
-            return self.factor(coefficient)
-        if token.kind in ("name", "frac", "sqrt"):
-            return self.factor()
+                argument, after = self.name_argument()
+                return coefficient * argument, after
+            return self.factor(coefficient), sympy.S.One
+        if token.kind == "name":
+            return self.name_argument()
+        if token.kind in ("frac", "sqrt"):
+            return self.factor(), sympy.S.One
         if token.kind == "func":
-            return self.primary()
+            return self.primary(), sympy.S.One
         if token.kind == "end" or token.kind == "sep" or token.kind == "op":
             raise ParseFailure("missing_argument", function.start, function.end, name=self.source(function))
         self.fail_here()
+
+    def name_argument(self):
+        """A glued name as a function's bare argument, and the factor after it that is not in it.
+
+        ``cos ωt`` is cos(ωt) and ``sin kx`` sin(kx), but ``sin²θφ̇²`` is sin²θ · φ̇²: a velocity
+        or an acceleration is never part of an angle, so the argument ends before one.
+        """
+        *prefix, base = self.name(self.advance())
+        pieces = [*prefix, base]
+        cut = next((i for i, piece in enumerate(pieces) if i and isinstance(piece, sympy.Derivative)), len(pieces))
+        if cut == len(pieces):
+            return sympy.Mul(*prefix, self.exponent_of(base)), sympy.S.One
+        return sympy.Mul(*pieces[:cut]), sympy.Mul(*pieces[cut:-1], self.exponent_of(base))
 
     def diff(self, token: Token):
         """``diff(θ, t)`` and ``diff(θ, t, 2)``: time derivatives written as a call."""
@@ -563,7 +581,8 @@ class _Parser:
             if i + 1 < len(pieces):
                 argument, j = self.chain(pieces, i + 1, token)
                 return _apply(piece, argument, token), j
-            return _apply(piece, self.function_argument(token), token), i + 1
+            argument, after = self.function_argument(token)
+            return _apply(piece, argument, token) * after, i + 1
         return piece, i + 1
 
     def _skip_time_argument(self) -> None:
