@@ -148,7 +148,11 @@ DERIVATIVES = [
     # a glued name dotted once is undotted the next time: (lθ̇)(lθ) once passed for (lθ̇)²
     ("(lθ̇)(lθ)", l**2 * theta * D(theta)),
     ("lθ̈ + lθ̇ + lθ", l * D(theta, 2) + l * D(theta) + l * theta),
-    ("(ltheta')(ltheta)", l**2 * theta * D(theta)),  # the spacing dots a Mac keyboard types (Option-h, Option-u)
+    ("(ltheta')(ltheta)", l**2 * theta * D(theta)),
+    # letters and signs as a PDF or another keyboard gives them; invisible characters
+    ("ℓ + ℒ + a ⁄ b + c ∕ d", l + sympy.Symbol("L") + a / b + c / d),
+    ("２ａ＋ｂ", 2 * a + b),
+    ("a\u200b + b\ufeff", a + b),  # the spacing dots a Mac keyboard types (Option-h, Option-u)
 ]
 
 LEIBNIZ = [
@@ -190,6 +194,15 @@ SYSTEMS = [
     ("a = b\nc = d", (Eq(a, b), Eq(c, d))),
     ("[a = b, c = d]", (Eq(a, b), Eq(c, d))),
     ("a = b;", Eq(a, b)),
+    # as people write a system: commas or "and" between equations, numbers that label them
+    ("a = b, c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b and c = d", (Eq(a, b), Eq(c, d))),
+    ("(1) a = b\n(2) c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b (1)\nc = d (2)", (Eq(a, b), Eq(c, d))),
+    ("(1) a = b; (2) c = 2 (d)", (Eq(a, b), Eq(c, 2 * d))),
+    # numbers out of order, or on one equation only, are factors as written
+    ("(2) a = b\n(1) c = d", (Eq(2 * a, b), Eq(c, d))),
+    ("a = b; (2) c = d", (Eq(a, b), Eq(2 * c, d))),
     ("θ̈₁ = a; θ̈₂ = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
     ("a = b +\nc", Eq(a, b + c)),
     ("a = b\n+ c", Eq(a, b + c)),
@@ -242,6 +255,9 @@ LATEX = [
     ("\\( a + b \\)", a + b),
     ("a + b.", a + b),
     ("\\ddot x = -\\frac km x,", Eq(D(x, 2), -k / m * x)),
+    ("\\bigl(a + b\\bigr)^2 + \\Bigl[c\\Bigr]", (a + b) ** 2 + c),
+    ("\\mathcal L + \\mathrm d", sympy.Symbol("L") + d),  # a font's letter without braces, as TeX reads it
+    ("a~b\\,.", a * b),
 ]
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX

@@ -123,8 +123,8 @@ HOSTILE = [
     ("\x00", "bad_character"),
     ("x\x1b[2J", "bad_character"),
     ("\u202ex", "bad_character"),  # right-to-left override
-    ("x\u200b", "bad_character"),  # zero-width space
-    ("ｘ", "bad_character"),  # fullwidth x
+    ("x\u2066", "bad_character"),  # left-to-right isolate (zero-width spaces and full-width letters are read)
+    ("x\u00ad", "bad_character"),  # soft hyphen
     ("x\ud800", "bad_character"),  # lone surrogate, as json.loads can produce
     # -- derivatives beyond the limit -------------------------------------------
     ("theta''''", "derivative_order"),

@@ -126,7 +126,7 @@ def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None
 
 class _Parser:
     def __init__(self, tokens: list[Token], context: Context, text: str, deadline=None):
-        self.tokens, self.context, self.text = _leibniz(tokens, context), context, text
+        self.tokens, self.context, self.text = _as_system(_leibniz(tokens, context)), context, text
         self.deadline = deadline
         self.i = 0
         self.depth = 0
@@ -724,6 +724,63 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
         out += target
         i = end
     return out
+
+
+def _as_system(tokens: list[Token]) -> list[Token]:
+    """Equations written one after another as people write them: ``eq₁, eq₂`` or ``eq₁ and eq₂``
+    (each side of the comma or the *and* one equation) separated as ``;`` separates them, and
+    the numbers of a system's equations, ``(1) eq₁ ⏎ (2) eq₂`` or ``eq₁ (1) ⏎ eq₂ (2)``, left out
+    when every equation has its own, in order: they are labels, not factors.
+    """
+    top = _top_level(tokens)
+    pieces = _split_at(tokens, top, lambda token: token.is_op(",", ";") or token.kind == "sep" or _is_raw(token, "and"))
+    if len(pieces) > 1 and all(sum(tokens[j].is_op("=") for j in piece if j in top) == 1 for piece in pieces):
+        joins = {j for j in top if tokens[j].is_op(",") or _is_raw(tokens[j], "and")}
+        tokens = [Token("sep", ";", t.start, t.end) if j in joins else t for j, t in enumerate(tokens)]
+    items = _split_at(tokens, top, lambda token: token.is_op(";") or token.kind == "sep")
+    if len(items) < 2:
+        return tokens
+    if any(len(item) <= 3 for item in items):
+        return tokens
+    for labels in ([item[:3] for item in items], [item[-3:] for item in items]):  # before each, or after
+        if all(_is_number_label(tokens, label, number) for number, label in enumerate(labels, start=1)):
+            dropped = {j for label in labels for j in label}
+            return [token for j, token in enumerate(tokens) if j not in dropped]
+    return tokens
+
+
+def _top_level(tokens: list[Token]) -> set[int]:
+    """The positions of the tokens outside every bracket."""
+    top, depth = set(), 0
+    for j, token in enumerate(tokens):
+        if token.kind == "op" and token.value in _OPENERS.values():
+            depth -= 1
+        if depth == 0:
+            top.add(j)
+        if token.kind == "op" and token.value in _OPENERS:
+            depth += 1
+    return top
+
+
+def _split_at(tokens: list[Token], top: set[int], separates) -> list[list[int]]:
+    """The positions of the tokens between top-level separators (the end token left out)."""
+    pieces, piece = [], []
+    for j, token in enumerate(tokens[:-1]):
+        if j in top and separates(token):
+            if piece:
+                pieces.append(piece)
+            piece = []
+        else:
+            piece.append(j)
+    if piece:
+        pieces.append(piece)
+    return pieces
+
+
+def _is_number_label(tokens: list[Token], positions: list[int], number: int) -> bool:
+    """Whether the tokens at ``positions`` are ``(number)``."""
+    opener, value, closer = (tokens[j] for j in positions)
+    return opener.is_op("(") and value.kind == "num" and value.value == str(number) and closer.is_op(")")
 
 
 def _is_raw(token: Token, raw: str) -> bool:

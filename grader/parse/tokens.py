@@ -99,7 +99,8 @@ class Token:
 # The whitelist. Operators by every spelling a keyboard or a PDF produces.
 _OPERATORS = {
     "+": "+", "-": "-", "\u2212": "-", "\u2013": "-", "*": "*", "\u00b7": "*", "\u22c5": "*",
-    "\u00d7": "*", "\u2219": "*", "/": "/", "\u00f7": "/", "^": "^", "=": "=", ",": ",", ";": ";",
+    "\u00d7": "*", "\u2219": "*", "/": "/", "\u00f7": "/", "\u2044": "/", "\u2215": "/", "^": "^", "=": "=",
+    ",": ",", ";": ";",
     "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}",
 }  # fmt: skip
 _VULGAR_FRACTIONS = {"½": "1/2", "⅓": "1/3", "⅔": "2/3", "¼": "1/4", "¾": "3/4", "⅕": "1/5", "⅛": "1/8"}
@@ -135,8 +136,9 @@ _LATEX_FUNCTIONS = {
 _CALLABLE = FUNCTION_NAMES | {"diff": "diff"}  # names followed by an argument in plain notation
 _LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
 _LATEX_FONTS = {"mathcal", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
-_BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}")
-_LATEX_IGNORED = {"left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "quad", "qquad", "limits"}
+_BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
+_SIZES = {f"{size}{side}" for size in ("big", "Big", "bigg", "Bigg") for side in ("", "l", "r", "m")}
+_LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "quad", "qquad", "limits", *_SIZES}
 _LATEX_ENVIRONMENTS = {"aligned", "align", "align*", "gathered", "gather", "gather*", "split"}
 
 
@@ -155,11 +157,17 @@ def tokenize(text: str) -> list[Token]:
 # (Option-u, space): read after a letter as the combining ones, θ˙ as θ̇. One character for one,
 # so positions in messages still point into the text as typed.
 _SPACING_DOTS = str.maketrans({"\u02d9": "\u0307", "\u00a8": "\u0308"})
+# Letters a PDF or a word processor gives for ours: script ℓ, ℒ, ℋ, ℱ (as \ell and \mathcal do),
+# and full-width digits, letters and signs (an East Asian keyboard's). One character for one.
+_LOOKALIKES = {0x2113: "l", 0x2112: "L", 0x210B: "H", 0x2131: "F"} | {c: chr(c - 0xFEE0) for c in range(0xFF01, 0xFF5F)}
+# Invisible: zero-width spaces and joiners, a byte order mark, a word joiner. Read as a space.
+_INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x2060, 0xFEFF), " ")
+_READ_AS = str.maketrans(_LOOKALIKES | _INVISIBLE)
 
 
 class _Tokenizer:
     def __init__(self, text: str, *, latex: bool):
-        self.text, self.latex = text.translate(_SPACING_DOTS), latex
+        self.text, self.latex = text.translate(_SPACING_DOTS).translate(_READ_AS), latex
         self.pos = 0
         self.tokens: list[Token] = []
 
@@ -168,9 +176,9 @@ class _Tokenizer:
         end = len(text.rstrip())
         while self.pos < len(text):
             c = text[self.pos]
-            if c in " \t\r\u00a0" or (self.latex and c in "&$"):
+            if c in " \t\r\u00a0" or (self.latex and c in "&$~"):
                 self.pos += 1
-            elif c in ".," and self.pos == end - 1 and not text[: self.pos].rstrip().endswith((".", ",")):
+            elif c in ".," and self.pos == end - 1:
                 self.pos += 1  # the full stop or comma that ends a sentence: L = ½ m l² θ̇² − V.
             elif c == "\n":
                 self._emit("sep", "\n", 1)
@@ -409,7 +417,7 @@ class _Tokenizer:
             if not braced:
                 raise ParseFailure("unknown_command", start, self.pos, name=command)
             self.pos = braced.end()
-            self._finish_name(start, braced[1], 0)
+            self._finish_name(start, braced[1] or braced[2], 0)
         else:
             raise ParseFailure("unknown_command", start, self.pos, name=command)
 
