@@ -178,6 +178,14 @@ def test_feedback_names_the_mistake(expected, submitted, kind, setting, diagnosi
     assert verdict.feedback[0] == sentence
 
 
+def test_feedback_shows_velocities_as_typed_never_as_internal_names():
+    verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2 + m g l cos(θ̇)", kind="lagrangian", **PENDULUM)
+    assert verdict.feedback == (
+        "A term is missing: a term in cos(θ).",
+        "There is a term too many: a velocity-dependent term in cos(θ̇).",
+    )
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind", "options", "sentence"),
     [

@@ -19,7 +19,6 @@ import itertools
 import sympy
 
 from grader.judge.setting import Setting
-from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["describe_term", "has_angle_functions", "small_angle", "symbolic_zero", "taylor", "term_changes", "terms"]
@@ -79,8 +78,7 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
     velocities = {setting.velocity(q) for q in setting.coords}
     accelerations = {setting.acceleration(q) for q in setting.coords}
     trig = [f for f in term.atoms(*_TRIG) if f.args[0].free_symbols & set(setting.state.values())]
-    # coordinates keep their names as plain symbols, so to_text shows them as typed
-    within = f" in {to_text(min(trig, key=str))}" if trig else ""
+    within = f" in {to_text(setting.as_typed(min(trig, key=str)))}" if trig else ""  # θ̇, not theta__1
     if symbols & accelerations:
         return f"{article} term with an acceleration{within}"
     if symbols & velocities:
@@ -93,8 +91,8 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
         return f"{article} constant term"
     if not symbols & set(setting.state.values()):
         return f"{article} term without coordinates or velocities"
-    coordinates = sorted(symbol.name for symbol in symbols & set(setting.state.values()))
-    return f"{article} term in {', '.join(unicode_name(name) for name in coordinates)}"
+    coordinates = sorted(symbols & set(setting.state.values()), key=str)
+    return f"{article} term in {', '.join(to_text(setting.as_typed(symbol)) for symbol in coordinates)}"
 
 
 def has_angle_functions(expr, setting: Setting) -> bool:

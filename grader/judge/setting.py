@@ -2,7 +2,7 @@
 
 Contents:
     Setting             coordinates, known symbols and their domains
-    Setting.plain(v)    an answer with q(t), q̇, q̈ replaced by plain real symbols
+    Setting.plain(v)    an answer with q(t), q̇, q̈ replaced by plain real symbols (as_typed: back)
     Setting.points(...) seeded sample points for a set of symbols
 
 The parser keeps coordinates as functions of time so that ``diff`` works; the
@@ -87,6 +87,14 @@ class Setting:
         if isinstance(value, sympy.Eq):  # rebuilding an Eq would make sympy try to decide it
             return sympy.Eq(self.plain(value.lhs), self.plain(value.rhs), evaluate=False)
         return value.xreplace(self._replacements)
+
+    def as_typed(self, value):
+        """The reverse of :meth:`plain`: plain symbols back to q(t), q̇, q̈…, which print as θ, θ̇, θ̈."""
+        return value.xreplace(self._typed)
+
+    @cached_property
+    def _typed(self) -> dict:
+        return {symbol: node for node, symbol in self._replacements.items()}
 
     def node(self, name: str, order: int) -> sympy.Expr:
         """The coordinate, or its derivative of ``order``, as the parser builds it."""
