@@ -238,6 +238,9 @@ LATEX = [
     ("\\ddot{x} = -\\frac{k}{m} x", Eq(D(x, 2), -k / m * x)),
     ("\\ddot\\theta_1 = a \\\\ \\ddot\\theta_2 = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
     ("\\begin{aligned} a &= b \\\\ c &= d \\end{aligned}", (Eq(a, b), Eq(c, d))),
+    ("\\begin{cases} a = b \\\\ c = d \\end{cases}", (Eq(a, b), Eq(c, d))),
+    ("\\left\\{ \\begin{aligned} a &= b \\\\ c &= d \\end{aligned} \\right.", (Eq(a, b), Eq(c, d))),
+    ("\\left\\{ a + b \\right\\} c", (a + b) * c),  # a brace closed by a brace is a bracket
     ("$\\frac{a}{b}$", a / b),
     ("\\exp(a) + \\ln b", exp(a) + sympy.log(b)),
     ("\\dot{\\theta}'", D(theta, 2)),

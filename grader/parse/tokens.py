@@ -116,6 +116,7 @@ _SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+")
 _COMMAND_NAME = re.compile(r"\\([A-Za-z]+)")
 _COMMAND = re.compile(r"\\([A-Za-z]+\*?|.?)")
 _ENVIRONMENT = re.compile(r"\s*\{([A-Za-z*]+)\}")
+_LEFT_RIGHT = re.compile(r"\\(left|right)(?![A-Za-z])\s*(\.?)")
 _ASSIGNMENTS = (":=", "==", "+=", "-=", "*=", "/=", "!=", "<=", ">=")
 # What a student might try that we can name, rather than calling it a bad character.
 _NAMED_REFUSALS = {"#": "comment", '"': "string", "`": "string"}
@@ -139,7 +140,10 @@ _LATEX_FONTS = {"mathcal", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
 _SIZES = {f"{size}{side}" for size in ("big", "Big", "bigg", "Bigg") for side in ("", "l", "r", "m")}
 _LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "quad", "qquad", "limits", *_SIZES}
-_LATEX_ENVIRONMENTS = {"aligned", "align", "align*", "gathered", "gather", "gather*", "split"}
+_LATEX_ENVIRONMENTS = {
+    "aligned", "align", "align*", "gathered", "gather", "gather*", "split",
+    "cases", "equation", "equation*", "multline",
+}  # fmt: skip
 
 
 def tokenize(text: str) -> list[Token]:
@@ -392,6 +396,8 @@ class _Tokenizer:
         elif command in _LATEX_IGNORED:
             if command in ("left", "right") and text.startswith(".", self.pos):
                 self.pos += 1
+            elif command == "left" and text.startswith("\\{", self.pos) and self._closed_by_nothing():
+                self.pos += 2  # \left\{ … \right.: the brace that gathers a system, not a bracket
         elif command in ("begin", "end"):
             env = _ENVIRONMENT.match(text, self.pos)
             if not env or env[1] not in _LATEX_ENVIRONMENTS:
@@ -420,6 +426,15 @@ class _Tokenizer:
             self._finish_name(start, braced[1] or braced[2], 0)
         else:
             raise ParseFailure("unknown_command", start, self.pos, name=command)
+
+    def _closed_by_nothing(self) -> bool:
+        """Whether the \\left just read is matched by \\right. (no delimiter)."""
+        depth = 0
+        for match in _LEFT_RIGHT.finditer(self.text, self.pos):
+            depth += 1 if match[1] == "left" else -1
+            if depth < 0:
+                return match[2] == "."
+        return False
 
     def _latex_dot(self, start: int, command: str) -> None:
         """``\\dot{\\theta}_1``, ``\\dot\\theta_1``, ``\\dot{\\theta_1}``, ``\\ddot x``: one name, dotted."""
