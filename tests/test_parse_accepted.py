@@ -261,6 +261,9 @@ LATEX = [
     ("\\bigl(a + b\\bigr)^2 + \\Bigl[c\\Bigr]", (a + b) ** 2 + c),
     ("\\mathcal L + \\mathrm d", sympy.Symbol("L") + d),  # a font's letter without braces, as TeX reads it
     ("a~b\\,.", a * b),
+    # what a document adds around the math: labels, tags, a full stop in \text; \operatorname{cos} is \cos
+    ("m g l \\operatorname{cos}\\theta \\label{eq:L} \\tag{1}\\text{.}", m * g * l * cos(theta)),
+    ("\\mathscr{L} + \\mathscr L", 2 * sympy.Symbol("L")),
 ]
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX

@@ -136,7 +136,11 @@ _LATEX_FUNCTIONS = {
 }
 _CALLABLE = FUNCTION_NAMES | {"diff": "diff"}  # names followed by an argument in plain notation
 _LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
-_LATEX_FONTS = {"mathcal", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
+_LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
+# \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop
+_LATEX_ANNOTATIONS = re.compile(r"\s*\{[^{}]{0,40}\}")
+_TEXT_PUNCTUATION = re.compile(r"\s*\{\s*[.,;]?\s*\}")
+_OPERATOR_NAME = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}")
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
 _SIZES = {f"{size}{side}" for size in ("big", "Big", "bigg", "Bigg") for side in ("", "l", "r", "m")}
 _LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "quad", "qquad", "limits", *_SIZES}
@@ -418,6 +422,13 @@ class _Tokenizer:
             self._finish_name(start, "".join(raw), 0)
         elif command in ("dot", "ddot"):
             self._latex_dot(start, command)
+        elif command in ("label", "tag") and _LATEX_ANNOTATIONS.match(text, self.pos):
+            self.pos = _LATEX_ANNOTATIONS.match(text, self.pos).end()
+        elif command == "text" and _TEXT_PUNCTUATION.match(text, self.pos):
+            self.pos = _TEXT_PUNCTUATION.match(text, self.pos).end()
+        elif command == "operatorname" and (name := _OPERATOR_NAME.match(text, self.pos)) and name[1] in FUNCTION_NAMES:
+            self.pos = name.end()  # \operatorname{cos}, as \cos
+            self.tokens.append(Token("func", FUNCTION_NAMES[name[1]], start, self.pos))
         elif command in _LATEX_FONTS:  # \mathcal{F}, \mathrm{d}: the letters, in another typeface
             braced = _BRACED_LETTERS.match(text, self.pos)
             if not braced:
