@@ -292,6 +292,25 @@ def test_a_defined_name_before_brackets_is_a_product_not_a_name():
     assert compare("m xddot = -k x", "F = m ẍ = -k x", kind="equation", **spring).status == "invalid"
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status"),
+    [
+        # "+ C" or "+ const" where a constant is allowed: the student's way of saying so
+        (L_PENDULUM, L_PENDULUM + " + C", {"kind": "lagrangian"}, "equivalent"),
+        (L_PENDULUM, L_PENDULUM + " - 3 const", {"kind": "lagrangian"}, "equivalent"),
+        ("-m g l cos(theta)", "-m g l cos θ + C", {"up_to_constant": True}, "equivalent"),
+        # not a constant term of its own, or no constant allowed: C is a name the problem lacks
+        (L_PENDULUM, "1/2 m l^2 θ̇^2 + C m g l cos θ", {"kind": "lagrangian"}, "not_equivalent"),
+        (L_PENDULUM, L_PENDULUM + " + C^2", {"kind": "lagrangian"}, "not_equivalent"),
+        ("-m g l cos(theta)", "-m g l cos θ + C", {}, "not_equivalent"),
+        # the constant does not make a wrong answer right
+        (L_PENDULUM, "1/2 m l^2 θ̇^2 - m g l cos θ + C", {"kind": "lagrangian"}, "not_equivalent"),
+    ],
+)
+def test_an_arbitrary_constant_may_be_written_where_one_is_allowed(expected, submitted, options, status):
+    assert compare(expected, submitted, **options, **PENDULUM).status == status
+
+
 def test_up_to_constant_allows_another_zero_of_potential():
     expected = "-m g l cos(theta)"
     assert compare(expected, "m g l (1 - cos θ)", **PENDULUM).status == "not_equivalent"

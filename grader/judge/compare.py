@@ -146,6 +146,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _unwrap_named(answer, spec, expected)
+                answer = _without_arbitrary_constant(answer, spec, expected)
                 early = _mismatch(spec, expected, answer)
                 if early:
                     return _verdict(early, answer)
@@ -176,6 +177,27 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
         return ParsedAnswer(answer.text, value.rhs, "expression")
+    return answer
+
+
+_ARBITRARY = ("C", "const", "constant")  # what students add for "any constant"
+
+
+def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
+    """``… + C`` or ``… + const`` where a constant is allowed (a Lagrangian, or an expression with
+    ``up_to_constant``): the answer without it, when it is a term of its own and a name the
+    problem does not define. Inside a product it stays, and is an undefined name."""
+    allowed = spec.name == "lagrangian" or (spec.name == "expression" and expected.option("up_to_constant"))
+    value = answer.value
+    if not allowed or answer.kind != "expression":
+        return answer
+    for name in _ARBITRARY:
+        constant = sympy.Symbol(name)
+        if name in expected.names or constant not in value.free_symbols:
+            continue
+        rest, term = value.as_independent(constant, as_Add=True)
+        if term.free_symbols == {constant} and term.is_polynomial(constant) and sympy.degree(term, constant) == 1:
+            return ParsedAnswer(answer.text, rest, "expression")
     return answer
 
 
