@@ -203,6 +203,9 @@ SYSTEMS = [
     # numbers out of order, or on one equation only, are factors as written
     ("(2) a = b\n(1) c = d", (Eq(2 * a, b), Eq(c, d))),
     ("a = b; (2) c = d", (Eq(a, b), Eq(2 * c, d))),
+    ("1. a = b\n2. c = d", (Eq(a, b), Eq(c, d))),  # a numbered list, every line in order
+    ("  1) a = b\n\n  2) c = d\n", (Eq(a, b), Eq(c, d))),
+    ("1.5 a = b\n2.5 c = d", (Eq(3 * a / 2, b), Eq(5 * c / 2, d))),  # decimals, not a list
     ("θ̈₁ = a; θ̈₂ = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
     ("a = b +\nc", Eq(a, b + c)),
     ("a = b\n+ c", Eq(a, b + c)),

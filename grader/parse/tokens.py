@@ -173,18 +173,37 @@ _INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x2060, 0xFEFF), " ")
 _READ_AS = str.maketrans(_LOOKALIKES | _INVISIBLE)
 
 
+_LIST_MARKER = re.compile(r"[ \t]*([0-9]{1,3})[.)][ \t]+")
+
+
+def _list_markers(text: str) -> dict[int, int]:
+    """Where ``1. …`` or ``1) …`` numbers every line of an answer in order: start → end of each
+    number, to be read past. Otherwise none: ``2. l θ̈`` alone may be a factor, as typed."""
+    lines, at = [], 0
+    for line in text.split("\n"):
+        if line.strip():
+            lines.append((at, _LIST_MARKER.match(line)))
+        at += len(line) + 1
+    if len(lines) < 2 or not all(m and int(m[1]) == k for k, (_, m) in enumerate(lines, start=1)):
+        return {}
+    return {start: start + m.end() for start, m in lines}
+
+
 class _Tokenizer:
     def __init__(self, text: str, *, latex: bool):
         self.text, self.latex = text.translate(_SPACING_DOTS).translate(_READ_AS), latex
         self.pos = 0
         self.tokens: list[Token] = []
+        self.markers = _list_markers(self.text) if "\n" in text else {}
 
     def run(self) -> list[Token]:
         text = self.text
         end = len(text.rstrip())
         while self.pos < len(text):
             c = text[self.pos]
-            if c in " \t\r\u00a0" or (self.latex and c in "&$~"):
+            if self.pos in self.markers:  # 1. … ⏎ 2. …: a list's numbers, not the equations'
+                self.pos = self.markers.pop(self.pos)
+            elif c in " \t\r\u00a0" or (self.latex and c in "&$~"):
                 self.pos += 1
             elif c in ".," and self.pos == end - 1:
                 self.pos += 1  # the full stop or comma that ends a sentence: L = ½ m l² θ̇² − V.
