@@ -91,6 +91,7 @@ FUNCTIONS = [
     ("ml²sin²θφ̇", m * l**2 * sin(theta) ** 2 * D(phi)),
     ("sin 2θφ̇", sin(2 * theta) * D(phi)),
     ("cos θ₁θ̇₂²", cos(theta1) * D(theta2) ** 2),
+    ("sqrt lθ̇", sqrt(l * D(theta))),  # not an angle: the glued product stays whole
 ]
 
 NAMES = [
@@ -187,6 +188,7 @@ EQUATIONS = [
     ("m l^2 θ̈ + m g l sin θ = 0", Eq(m * l**2 * D(theta, 2) + m * g * l * sin(theta), 0)),
     ("thetaddot = -(g/l) sin(theta)", Eq(D(theta, 2), -(g / l) * sin(theta))),
     ("m x'' = -k x", Eq(m * D(x, 2), -k * x)),
+    ("I(θ̈) = -m g l sin θ", Eq(sympy.Symbol("I") * D(theta, 2), -m * g * l * sin(theta))),  # no L(θ, θ̇) label
 ]
 
 SYSTEMS = [
@@ -206,6 +208,7 @@ SYSTEMS = [
     ("1. a = b\n2. c = d", (Eq(a, b), Eq(c, d))),  # a numbered list, every line in order
     ("  1) a = b\n\n  2) c = d\n", (Eq(a, b), Eq(c, d))),
     ("1.5 a = b\n2.5 c = d", (Eq(3 * a / 2, b), Eq(5 * c / 2, d))),  # decimals, not a list
+    ("1. ẍ = -k x.\n2. a = b.", (Eq(D(x, 2), -k * x), Eq(a, b))),
     ("θ̈₁ = a; θ̈₂ = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
     ("a = b +\nc", Eq(a, b + c)),
     ("a = b\n+ c", Eq(a, b + c)),
@@ -256,10 +259,14 @@ LATEX = [
     ("\\frac\\pi2", sympy.pi / 2),
     ("\\sqrt gl", sqrt(g) * l),
     ("\\frac{mgl}{2}", m * g * l / 2),
+    ("√gl \\cdot x", sqrt(g * l) * x),  # √ is not \\sqrt: its argument is the name that follows
+    ("\\, mv = p", Eq(m * sympy.Symbol("v"), sympy.Symbol("p"))),  # in TeX, mv is m·v: no name
     # the math's own delimiters, and the full stop or comma of the sentence around it
     ("\\[ \\frac{a}{b} \\]", a / b),
     ("\\( a + b \\)", a + b),
     ("a + b.", a + b),
+    ("\\[\\ddot x = -k x.\\]", Eq(D(x, 2), -k * x)),
+    ("\\begin{cases} a = b. \\\\ c = d. \\end{cases}", (Eq(a, b), Eq(c, d))),
     ("\\ddot x = -\\frac km x,", Eq(D(x, 2), -k / m * x)),
     ("\\bigl(a + b\\bigr)^2 + \\Bigl[c\\Bigr]", (a + b) ** 2 + c),
     ("\\mathcal L + \\mathrm d", sympy.Symbol("L") + d),  # a font's letter without braces, as TeX reads it

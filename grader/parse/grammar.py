@@ -40,6 +40,7 @@ __all__ = ["TIME", "Context", "parse_tokens"]
 TIME = sympy.Symbol("t", real=True)
 
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
+_ANGLE_FUNCTIONS = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
 _STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt", "deriv")
 _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
 _GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
@@ -246,6 +247,19 @@ class _Parser:
             raise ParseFailure("too_many_equals", self.token.start, self.token.end)
         return first, sympy.Eq(lhs, rhs, evaluate=False)
 
+    def _is_variable(self, token: Token) -> bool:
+        """Whether a token is what a quantity depends on, as in L(θ, θ̇, t): a coordinate, its
+        velocity, or time. An acceleration is not: I(θ̈) = … is I·θ̈."""
+        if token.kind != "name":
+            return False
+        meaning = self.lookup(canonical_name(token.value.raw))
+        order = token.value.dots + token.value.primes
+        if meaning is TIME:
+            return order == 0
+        if isinstance(meaning, sympy.Derivative):
+            return order == 0 and meaning.derivative_count == 1
+        return meaning in self.context.coordinate_set and order <= 1
+
     def _defines(self, side) -> bool:
         """Whether a side is written in names the problem does not define (T − V, ½ m v²)."""
         defined = set(self.context.known.values()) | {TIME}
@@ -264,9 +278,9 @@ class _Parser:
         j = i + 1
         if tokens[j].is_op("(") and tokens[j + 1].kind == "name":
             j += 1
-            while tokens[j].kind == "name" and tokens[j + 1].is_op(","):
+            while self._is_variable(tokens[j]) and tokens[j + 1].is_op(","):
                 j += 2
-            if not (tokens[j].kind == "name" and tokens[j + 1].is_op(")")):
+            if not (self._is_variable(tokens[j]) and tokens[j + 1].is_op(")")):
                 return None
             j += 2
         if not tokens[j].is_op("="):
@@ -275,6 +289,8 @@ class _Parser:
         if self.lookup(canonical) is not None:
             return None
         if not _GREEK_NAME.match(canonical) and self.split(token.value.raw, token):  # mgl: m·g·l
+            return None
+        if token.value.tex and len(self.tex_letters(token.value.raw)) > 1:  # in TeX, mv is m·v
             return None
         self.i = j
         return sympy.Symbol(canonical)
@@ -452,7 +468,7 @@ class _Parser:
             raise ParseFailure("function_power", token.start, self.tokens[self.i - 1].end)
         return int(value)
 
-    def function_argument(self, function: Token):
+    def function_argument(self, function: Token, name: str | None = None):
         """A bracketed argument, or a bare one: ``sin θ``, ``sin 2θ``, ``cos θ₁²``, ``\\sin\\frac{θ}{2}``;
         and what follows it in the same glued name but is not in it (see :meth:`name_argument`)."""
         token = self.token
@@ -461,11 +477,11 @@ class _Parser:
         if token.kind == "num":
             coefficient = self.primary()
             if self.token.kind == "name":
-                argument, after = self.name_argument()
+                argument, after = self.name_argument(name or function.value)
                 return coefficient * argument, after
             return self.factor(coefficient), sympy.S.One
         if token.kind == "name":
-            return self.name_argument()
+            return self.name_argument(name or function.value)
         if token.kind in ("frac", "sqrt"):
             return self.factor(), sympy.S.One
         if token.kind == "func":
@@ -474,15 +490,19 @@ class _Parser:
             raise ParseFailure("missing_argument", function.start, function.end, name=self.source(function))
         self.fail_here()
 
-    def name_argument(self):
+    def name_argument(self, function: str):
         """A glued name as a function's bare argument, and the factor after it that is not in it.
 
         ``cos ωt`` is cos(ωt) and ``sin kx`` sin(kx), but ``sin²θφ̇²`` is sin²θ · φ̇²: a velocity
-        or an acceleration is never part of an angle, so the argument ends before one.
+        or an acceleration is never part of an angle, so a trigonometric function's argument ends
+        before one (``sqrt lθ̇`` stays √(lθ̇)).
         """
         *prefix, base = self.name(self.advance())
         pieces = [*prefix, base]
-        cut = next((i for i, piece in enumerate(pieces) if i and isinstance(piece, sympy.Derivative)), len(pieces))
+        angle = function in _ANGLE_FUNCTIONS
+        cut = next(
+            (i for i, piece in enumerate(pieces) if angle and i and isinstance(piece, sympy.Derivative)), len(pieces)
+        )
         if cut == len(pieces):
             return sympy.Mul(*prefix, self.exponent_of(base)), sympy.S.One
         return sympy.Mul(*pieces[:cut]), sympy.Mul(*pieces[cut:-1], self.exponent_of(base))
@@ -581,7 +601,7 @@ class _Parser:
             if i + 1 < len(pieces):
                 argument, j = self.chain(pieces, i + 1, token)
                 return _apply(piece, argument, token), j
-            argument, after = self.function_argument(token)
+            argument, after = self.function_argument(token, piece)
             return _apply(piece, argument, token) * after, i + 1
         return piece, i + 1
 

@@ -176,6 +176,21 @@ _READ_AS = str.maketrans(_LOOKALIKES | _INVISIBLE)
 _LIST_MARKER = re.compile(r"[ \t]*([0-9]{1,3})[.)][ \t]+")
 
 
+# the rest of a line after its math: closing delimiters, \end{…}, then the line's end or TeX's \\
+_LINE_END = re.compile(r"(?:[ \t]|\\[\])]|\$|\\end\{[A-Za-z*]+\})*(?:\n|$|\\\\)")
+
+
+def _opens_line(text: str, start: int) -> bool:
+    """Whether only spaces (or ``$``) stand between the line's start and ``start``."""
+    return not text[:start].rsplit("\n", 1)[-1].strip(" \t$")
+
+
+def _closes_line(text: str, position: int) -> bool:
+    """Whether only spaces and the math's closing delimiters follow ``position`` on its line
+    (or before TeX's line break ``\\\\``)."""
+    return bool(_LINE_END.match(text, position))
+
+
 def _list_markers(text: str) -> dict[int, int]:
     """Where ``1. …`` or ``1) …`` numbers every line of an answer in order: start → end of each
     number, to be read past. Otherwise none: ``2. l θ̈`` alone may be a factor, as typed."""
@@ -198,14 +213,13 @@ class _Tokenizer:
 
     def run(self) -> list[Token]:
         text = self.text
-        end = len(text.rstrip())
         while self.pos < len(text):
             c = text[self.pos]
             if self.pos in self.markers:  # 1. … ⏎ 2. …: a list's numbers, not the equations'
                 self.pos = self.markers.pop(self.pos)
             elif c in " \t\r\u00a0" or (self.latex and c in "&$~"):
                 self.pos += 1
-            elif c in ".," and self.pos == end - 1:
+            elif c in ".," and _closes_line(text, self.pos + 1):
                 self.pos += 1  # the full stop or comma that ends a sentence: L = ½ m l² θ̇² − V.
             elif c == "\n":
                 self._emit("sep", "\n", 1)
@@ -355,8 +369,8 @@ class _Tokenizer:
         if not tokens:
             return False
         last = tokens[-1]
-        if last.kind in ("frac", "sqrt") or last.is_op("^"):
-            return True
+        if last.kind == "frac" or (last.kind == "sqrt" and last.value == "\\sqrt") or last.is_op("^"):
+            return True  # not after √: √gl is √(gl), whatever else the answer holds
         return len(tokens) >= 2 and tokens[-2].kind == "frac" and last.kind in ("name", "num")
 
     def _subscript(self, raw: list[str]) -> None:
@@ -410,8 +424,10 @@ class _Tokenizer:
         match = _COMMAND.match(text, self.pos)
         command = match[1]
         self.pos = match.end()
-        if command in ("", ",", ";", ":", "!", " ", "[", "]", "(", ")"):
-            return  # spaces, and \[ … \] or \( … \) around the math as $ … $ are
+        if command in ("", ",", ";", ":", "!", " ") or (command in ("[", "(") and _opens_line(text, start)):
+            return  # spaces, and \[ or \( that opens the math, as $ does
+        if command in ("]", ")") and _closes_line(text, self.pos):
+            return
         if command == "\\":
             self.tokens.append(Token("sep", "\n", start, self.pos))
         elif command in ("{", "}"):
