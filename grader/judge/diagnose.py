@@ -19,6 +19,7 @@ import itertools
 import sympy
 
 from grader.judge.setting import Setting
+from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["describe_term", "has_angle_functions", "small_angle", "symbolic_zero", "taylor", "term_changes", "terms"]
@@ -92,7 +93,8 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
     if not symbols & set(setting.state.values()):
         return f"{article} term without coordinates or velocities"
     coordinates = sorted(symbols & set(setting.state.values()), key=str)
-    return f"{article} term in {', '.join(to_text(setting.as_typed(symbol)) for symbol in coordinates)}"
+    shown = [unicode_name(s.name) if "__" not in s.name else to_text(setting.as_typed(s)) for s in coordinates]
+    return f"{article} term in {', '.join(shown)}"
 
 
 def has_angle_functions(expr, setting: Setting) -> bool:
