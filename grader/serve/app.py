@@ -164,6 +164,9 @@ def make_server(
 
     Returns:
         The server; run ``serve_forever()`` (in a thread, for tests) and ``server_close()`` after.
+        Its check workers come from multiprocessing's fork server, which imports the main
+        module in each: a script that calls this must do so under ``if __name__ == "__main__":``,
+        as with any start method but fork (``grader serve``, pytest and notebooks need nothing).
 
     Raises:
         OSError: the address is taken or the log cannot be opened.
