@@ -285,6 +285,24 @@ def test_an_answer_may_name_the_quantity_it_writes_out(submitted, status):
     assert compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM).status == status
 
 
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "p_θ = ∂L/∂θ̇ = m l^2 θ̇",
+        "∂L/∂θ̇ = m l^2 θ̇",
+        r"p_\theta = \frac{\partial L}{\partial \dot\theta} = m l^2 \dot\theta",
+    ],
+)
+def test_a_momentum_may_be_written_as_its_derivation(submitted):
+    assert compare("m l^2 thetadot", submitted, **PENDULUM).status == "equivalent"
+
+
+def test_partial_derivatives_elsewhere_are_refused_with_a_message():
+    verdict = compare("m l^2 thetadot", "∂L/∂θ̇", **PENDULUM)
+    assert verdict.status == "invalid"
+    assert verdict.feedback[0].startswith("`∂` is read only in the name of what an answer writes out, before `=`")
+
+
 def test_a_defined_name_before_brackets_is_a_product_not_a_name():
     spring = {"coords": ["x"], "known": ["m", "k"]}
     assert compare("m xddot = -k x", "m(ẍ) = -k x", kind="equation", **spring).status == "equivalent"

@@ -108,7 +108,9 @@ HOSTILE = [
     ("\\input{/etc/passwd}", "unknown_command"),
     ("\\def\\x{1}", "unknown_command"),
     ("\\text{hello}", "unknown_command"),
-    ("\\sqrt\\[3\\]{x}", "unknown_command"),  # \\[ opens the math only where a line starts
+    ("\\sqrt\\[3\\]{x}", "unknown_command"),
+    ("m ∂θ", "partial"),  # ∂ only in a name before =, as in ∂L/∂θ̇ = …
+    ("∂L/∂θ̇ + 1 = m", "partial"),  # \\[ opens the math only where a line starts
     ("\\immediate\\write18{rm -rf /}", "unknown_command"),
     ("\\begin{verbatim}x\\end{verbatim}", "unknown_command"),
     ("\\csname x\\endcsname", "unknown_command"),

@@ -152,6 +152,8 @@ class _Parser:
 
     def fail_here(self):
         token = self.token
+        if token.kind == "partial":
+            raise ParseFailure("partial", token.start, token.end)
         if token.kind == "end":
             last = self.tokens[self.i - 1] if self.i else token
             if self.i == 0:
@@ -237,12 +239,12 @@ class _Parser:
         if not self.token.is_op("="):
             return first, lhs
         self.advance()
-        rhs = self.expr()
+        rhs = self.side(label)
         while label is not None and self.token.is_op("=") and self._defines(rhs):
             # L = T − V = ½ m l² θ̇² + …: the quantity, its definition, and the answer, which is the last
             # side. Not F = m ẍ = −k x, whose middle side is part of an equation: that stays ambiguous.
             self.advance()
-            rhs = self.expr()
+            rhs = self.side(label)
         if self.token.is_op("="):
             raise ParseFailure("too_many_equals", self.token.start, self.token.end)
         return first, sympy.Eq(lhs, rhs, evaluate=False)
@@ -265,6 +267,40 @@ class _Parser:
         defined = set(self.context.known.values()) | {TIME}
         return any(symbol not in defined for symbol in side.free_symbols)
 
+    def side(self, label):
+        """The next side of an equation; after a label, ∂L/∂φ̇ may be one (a definition)."""
+        if label is not None:
+            quotient = self._partial_quotient(self.i)
+            if quotient is not None and self.tokens[quotient[0]].is_op("="):
+                self.i, name = quotient
+                return sympy.Symbol(name)
+        return self.expr()
+
+    def _partial_quotient(self, i: int) -> tuple[int, str] | None:
+        """``∂L/∂φ̇`` or ``\\frac{\\partial L}{\\partial \\dot\\phi}`` at ``i``: the position after it, and
+        a name for it (``dL_dphidot``); None if there is none."""
+        tokens = self.tokens
+
+        def derivative(j: int) -> tuple[int, str] | None:  # ∂ and a name
+            if tokens[j].kind == "partial" and tokens[j + 1].kind == "name":
+                name = tokens[j + 1].value
+                return j + 2, canonical_name(name.raw) + "dot" * (name.dots + name.primes)
+            return None
+
+        if tokens[i].kind == "frac" and tokens[i + 1].is_op("{"):
+            top = derivative(i + 2)
+            if top and tokens[top[0]].is_op("}") and tokens[top[0] + 1].is_op("{"):
+                bottom = derivative(top[0] + 2)
+                if bottom and tokens[bottom[0]].is_op("}"):
+                    return bottom[0] + 1, f"d{top[1]}_d{bottom[1]}"
+            return None
+        top = derivative(i)
+        if top and tokens[top[0]].is_op("/"):
+            bottom = derivative(top[0] + 1)
+            if bottom:
+                return bottom[0], f"d{top[1]}_d{bottom[1]}"
+        return None
+
     def label(self) -> sympy.Symbol | None:
         """The name of the quantity an answer writes out, as in ``L(θ, θ̇) = …`` or ``L = T − V = …``:
         a name the problem does not define, alone or with a bracket of names, before ``=``.
@@ -273,6 +309,10 @@ class _Parser:
         """
         tokens, i = self.tokens, self.i
         token = tokens[i]
+        quotient = self._partial_quotient(i)
+        if quotient is not None and tokens[quotient[0]].is_op("="):  # ∂L/∂φ̇ = …
+            self.i, name = quotient
+            return sympy.Symbol(name)
         if token.kind != "name" or token.value.dots or token.value.primes:
             return None
         j = i + 1

@@ -19,6 +19,7 @@ MESSAGES: dict[str, str] = {
     "empty": "Your answer is empty.",
     "too_long": "Your answer is {length} characters long; the limit is {limit}.",
     "bad_character": "`{char}` is not something an answer can contain.",
+    "partial": "`∂` is read only in the name of what an answer writes out, before `=`, as in p = ∂L/∂φ̇ = …",
     "string": "Quotes are not allowed: an answer is mathematics, not text.",
     "prime_position": "A prime (') marks a time derivative and must follow a coordinate's name, as in theta'.",
     "comment": "`#` starts a comment in code; it cannot be part of an answer.",

@@ -83,7 +83,7 @@ class Token:
     Kinds: ``num`` (value: digit string), ``name`` (value: :class:`Name`), ``func``
     (value: canonical function name, or ``diff``), ``op`` (value: one of
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
-    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``end``; the
+    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``partial`` (∂), ``end``; the
     grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
     """
 
@@ -249,6 +249,8 @@ class _Tokenizer:
                 self._emit("op", _OPERATORS[c], 1)
             elif c in _PRIMES:
                 raise ParseFailure("prime_position" if self._after_value() else "string", self.pos, self.pos + 1)
+            elif c == "\u2202":  # ∂: only in a quantity's name, ∂L/∂φ̇ = …, which the grammar reads
+                self._emit("partial", "∂", 1)
             elif c in _NAMED_REFUSALS:
                 raise ParseFailure(_NAMED_REFUSALS[c], self.pos, self.pos + 1)
             else:
@@ -448,6 +450,8 @@ class _Tokenizer:
             self.tokens.append(Token("frac", "frac", start, self.pos))
         elif command == "sqrt":
             self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
+        elif command == "partial":
+            self.tokens.append(Token("partial", "∂", start, self.pos))
         elif command in _LATEX_FUNCTIONS:
             self.tokens.append(Token("func", _LATEX_FUNCTIONS[command], start, self.pos))
         elif command in _LATEX_NAMES:
