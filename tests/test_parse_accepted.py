@@ -202,6 +202,9 @@ SYSTEMS = [
     ("(1) a = b\n(2) c = d", (Eq(a, b), Eq(c, d))),
     ("a = b (1)\nc = d (2)", (Eq(a, b), Eq(c, d))),
     ("(1) a = b; (2) c = 2 (d)", (Eq(a, b), Eq(c, 2 * d))),
+    ("(a) a = b\n(b) c = d", (Eq(a, b), Eq(c, d))),  # letters too, even where a and b are symbols
+    ("(i) a = b\n(ii) c = d", (Eq(a, b), Eq(c, d))),
+    ("(b) a = b\n(a) c = d", (Eq(b * a, b), Eq(a * c, d))),
     # numbers out of order, or on one equation only, are factors as written
     ("(2) a = b\n(1) c = d", (Eq(2 * a, b), Eq(c, d))),
     ("a = b; (2) c = d", (Eq(a, b), Eq(2 * c, d))),

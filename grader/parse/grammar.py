@@ -789,8 +789,8 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
 def _as_system(tokens: list[Token]) -> list[Token]:
     """Equations written one after another as people write them: ``eq₁, eq₂`` or ``eq₁ and eq₂``
     (each side of the comma or the *and* one equation) separated as ``;`` separates them, and
-    the numbers of a system's equations, ``(1) eq₁ ⏎ (2) eq₂`` or ``eq₁ (1) ⏎ eq₂ (2)``, left out
-    when every equation has its own, in order: they are labels, not factors.
+    the numbers of a system's equations, ``(1) eq₁ ⏎ (2) eq₂``, ``eq₁ (1) ⏎ eq₂ (2)``, ``(a) …`` or
+    ``(i) …``, left out when every equation has its own, in order: they are labels, not factors.
     """
     top = _top_level(tokens)
     pieces = _split_at(tokens, top, lambda token: token.is_op(",", ";") or token.kind == "sep" or _is_raw(token, "and"))
@@ -837,10 +837,18 @@ def _split_at(tokens: list[Token], top: set[int], separates) -> list[list[int]]:
     return pieces
 
 
+_ROMAN = ("i", "ii", "iii", "iv", "v", "vi", "vii", "viii", "ix", "x")
+
+
 def _is_number_label(tokens: list[Token], positions: list[int], number: int) -> bool:
-    """Whether the tokens at ``positions`` are ``(number)``."""
+    """Whether the tokens at ``positions`` are ``(number)``: ``(2)``, ``(b)`` or ``(ii)``."""
     opener, value, closer = (tokens[j] for j in positions)
-    return opener.is_op("(") and value.kind == "num" and value.value == str(number) and closer.is_op(")")
+    if not (opener.is_op("(") and closer.is_op(")")):
+        return False
+    if value.kind == "num":
+        return value.value == str(number)
+    spelled = ("abcdefghij"[number - 1], _ROMAN[number - 1]) if number <= 10 else ()
+    return value.kind == "name" and not (value.value.dots or value.value.primes) and value.value.raw in spelled
 
 
 def _is_raw(token: Token, raw: str) -> bool:
