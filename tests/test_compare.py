@@ -116,6 +116,16 @@ def test_real_parameters_take_both_signs_and_every_pair_of_signs(kind, expected,
         assert verdict.status == "not_equivalent", (others, verdict)
 
 
+def test_an_answer_right_for_one_sign_of_a_parameter_is_told_so():
+    verdict = compare("a x", "sqrt(a^2) x", coords=["x"], known=["a"], domains={"a": "real"})
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "some_signs")
+    assert verdict.feedback == (
+        "Your answer is right only for some signs of a, which may be negative here: remember that √(x²) is |x|, not x.",
+    )
+    # wrong in every draw, it is no question of signs
+    assert compare("a x", "a x + 1", coords=["x"], known=["a"], domains={"a": "real"}).diagnosis != "some_signs"
+
+
 @pytest.mark.parametrize(
     "kind, expected, submitted",
     [

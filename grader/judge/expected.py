@@ -78,10 +78,18 @@ class Expected:
         pass for −ab; four draws can (see :meth:`Setting.points`).
         """
         if "point count" not in self.cache:
-            setting = self.setting
-            signed = [s for s in self.variables if not setting.is_state(s) and setting.domain(s) in ("real", "nonzero")]
-            self.cache["point count"] = 2 * POINTS if len(signed) >= 2 else POINTS
+            self.cache["point count"] = 2 * POINTS if len(self.signed_parameters) >= 2 else POINTS
         return self.cache["point count"]
+
+    @property
+    def signed_parameters(self) -> tuple[str, ...]:
+        """The names of the parameters that may be negative (declared real or nonzero)."""
+        if "signed parameters" not in self.cache:
+            setting = self.setting
+            self.cache["signed parameters"] = tuple(
+                s.name for s in self.variables if not setting.is_state(s) and setting.domain(s) in ("real", "nonzero")
+            )
+        return self.cache["signed parameters"]
 
     def compiled(self, key: str, expr) -> Compiled:
         """An expression derived from the expected answer, compiled once over :attr:`variables`."""

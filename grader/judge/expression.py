@@ -114,6 +114,9 @@ def diagnose_difference(
     the form whose terms are compared (None: it has no such form), for the last resort.
     """
     approximate = approximations or (lambda expr: small_angle(expr, expected.setting))
+    signed = expected.signed_parameters
+    if signed and _right_in_some_draws(pairs):
+        return Outcome("not_equivalent", 0.0, "some_signs", {"names": expected.setting.describe(signed)})
     ratio = constant_ratio(pairs)
     if ratio is not None:
         if abs(ratio + 1) < 1e-9:
@@ -150,6 +153,16 @@ def diagnose_difference(
             return Outcome("not_equivalent", 0.0, "wrong")
         submitted_terms = terms(solved, varying=varying, expanded=True)
     return term_outcome(term_changes(expected_terms(expected, key, e, varying), submitted_terms, expected.setting))
+
+
+def _right_in_some_draws(pairs: list[Pair]) -> bool:
+    """Whether the answer is right at every point of some draws of the parameters and wrong in
+    another: with parameters that may be negative, one sign of them (√(a²) for a)."""
+    draws: dict[int, list[Closeness]] = {}
+    for pair in pairs:
+        draws.setdefault(pair.group, []).append(pair.closeness())
+    right = any(all(c is Closeness.EQUAL for c in draw) for draw in draws.values())
+    return right and any(Closeness.DIFFERENT in draw for draw in draws.values())
 
 
 def expected_terms(expected: Expected, key: str, e, varying: set | None = None) -> dict:

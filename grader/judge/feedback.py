@@ -25,6 +25,8 @@ FEEDBACK: dict[str, str] = {
     "extra_term": "There is a term too many: {description}.",
     "term_differs": "A term differs: {description}.",
     "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",
+    "some_signs": "Your answer is right only for some signs of {names}, which may be negative here:"
+    " remember that √(x²) is |x|, not x.",
     "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",
     "undefined_symbol": "Your answer uses {names}, which this problem does not define (it uses {defined}).",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
