@@ -191,10 +191,9 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
     value = answer.value
     if not allowed or answer.kind != "expression":
         return answer
-    for name in _ARBITRARY:
+    present = {symbol.name for symbol in value.free_symbols} & set(_ARBITRARY)
+    for name in sorted(present - expected.names):
         constant = sympy.Symbol(name)
-        if name in expected.names or constant not in value.free_symbols:
-            continue
         rest, term = value.as_independent(constant, as_Add=True)
         if term.free_symbols == {constant} and term.is_polynomial(constant) and sympy.degree(term, constant) == 1:
             return ParsedAnswer(answer.text, rest, "expression")

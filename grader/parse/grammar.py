@@ -671,6 +671,8 @@ class _Parser:
         pieces = self.split(name.raw, token)
         if pieces:
             return pieces
+        if name.tex and canonical in ("const", "constant"):
+            return [sympy.Symbol(canonical)]  # a word, not c·o·n·s·t: the constant a student may add
         if name.tex:
             return self.tex_letters(name.raw)
         if self.token.is_op("(") and self.token.start == token.end and len(canonical) > 1 and not name.primes:
