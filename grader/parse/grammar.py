@@ -482,7 +482,8 @@ class _Parser:
         value = _apply(name, argument, token)
         if bare:
             self.depth -= 1
-        return (value if power is None else _power(value, sympy.Integer(power), token)) * after
+        value = value if power is None else _power(value, sympy.Integer(power), token)
+        return value if after is sympy.S.One else value * after  # × 1 would cost a sympy product
 
     def function_power(self, function: Token) -> int:
         """``sin^2 θ``, ``\\sin^{2}\\theta``, ``sin²θ``: the power of the function's value."""
@@ -642,7 +643,8 @@ class _Parser:
                 argument, j = self.chain(pieces, i + 1, token)
                 return _apply(piece, argument, token), j
             argument, after = self.function_argument(token, piece)
-            return _apply(piece, argument, token) * after, i + 1
+            value = _apply(piece, argument, token)
+            return (value if after is sympy.S.One else value * after), i + 1
         return piece, i + 1
 
     def _skip_time_argument(self) -> None:
@@ -794,6 +796,8 @@ def _as_system(tokens: list[Token]) -> list[Token]:
     the numbers of a system's equations, ``(1) eq₁ ⏎ (2) eq₂``, ``eq₁ (1) ⏎ eq₂ (2)``, ``(a) …`` or
     ``(i) …``, left out when every equation has its own, in order: they are labels, not factors.
     """
+    if not any(token.kind == "sep" or token.is_op(",", ";") or _is_raw(token, "and") for token in tokens):
+        return tokens  # one item, no comma: most answers
     top = _top_level(tokens)
     pieces = _split_at(tokens, top, lambda token: token.is_op(",", ";") or token.kind == "sep" or _is_raw(token, "and"))
     if len(pieces) > 1 and all(sum(tokens[j].is_op("=") for j in piece if j in top) == 1 for piece in pieces):
