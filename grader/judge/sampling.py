@@ -43,7 +43,7 @@ __all__ = [
 ]
 
 POINTS = 10  # sample points per comparison
-GROUP = 5  # points sharing their parameter values: two draws of the parameters, five states each
+GROUP = 5  # points sharing their parameter values: two draws of them (four: Expected.point_count), five states each
 MIN_DEFINED = 6  # fewer defined points than this cannot decide
 
 
