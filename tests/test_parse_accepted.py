@@ -203,6 +203,8 @@ SYSTEMS = [
     ("a = b (1)\nc = d (2)", (Eq(a, b), Eq(c, d))),
     ("(1) a = b; (2) c = 2 (d)", (Eq(a, b), Eq(c, 2 * d))),
     ("(a) a = b\n(b) c = d", (Eq(a, b), Eq(c, d))),  # letters too, even where a and b are symbols
+    ("$$\\ddot x = a$$ $$\\ddot\\theta = b$$", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),  # two displays, one line
+    ("$\\dot x$ + $\\dot\\theta$", D(x) + D(theta)),  # inline math around an operator: one expression
     ("(i) a = b\n(ii) c = d", (Eq(a, b), Eq(c, d))),
     ("(b) a = b\n(a) c = d", (Eq(b * a, b), Eq(a * c, d))),
     # numbers out of order, or on one equation only, are factors as written

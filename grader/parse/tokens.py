@@ -210,6 +210,7 @@ class _Tokenizer:
         self.pos = 0
         self.tokens: list[Token] = []
         self.markers = _list_markers(self.text) if "\n" in text else {}
+        self.in_math = self.math_closed = False  # between $ … $, and whether a $ has closed math yet
 
     def run(self) -> list[Token]:
         text = self.text
@@ -217,7 +218,9 @@ class _Tokenizer:
             c = text[self.pos]
             if self.pos in self.markers:  # 1. … ⏎ 2. …: a list's numbers, not the equations'
                 self.pos = self.markers.pop(self.pos)
-            elif c in " \t\r\u00a0" or (self.latex and c in "&$~"):
+            elif self.latex and c == "$":
+                self._dollar()
+            elif c in " \t\r\u00a0" or (self.latex and c in "&~"):
                 self.pos += 1
             elif c in ".," and _closes_line(text, self.pos + 1):
                 self.pos += 1  # the full stop or comma that ends a sentence: L = ½ m l² θ̇² − V.
@@ -476,6 +479,18 @@ class _Tokenizer:
             self._finish_name(start, braced[1] or braced[2], 0)
         else:
             raise ParseFailure("unknown_command", start, self.pos, name=command)
+
+    def _dollar(self) -> None:
+        """``$`` or ``$$`` around math is read past; one that opens the math again after it was
+        closed, ``$$eq₁$$ $$eq₂$$``, starts another equation, as a new line would."""
+        width = 2 if self.text.startswith("$$", self.pos) else 1
+        last = self.tokens[-1] if self.tokens else None
+        ends_value = last is not None and (last.kind in ("name", "num", "sup") or last.is_op(")", "]", "}"))
+        if not self.in_math and self.math_closed and ends_value:
+            self.tokens.append(Token("sep", "\n", self.pos, self.pos + width))
+        self.math_closed |= self.in_math
+        self.in_math = not self.in_math
+        self.pos += width
 
     def _closed_by_nothing(self) -> bool:
         """Whether the \\left just read is matched by \\right. (no delimiter)."""
