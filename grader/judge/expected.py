@@ -85,10 +85,7 @@ class Expected:
     def signed_parameters(self) -> tuple[str, ...]:
         """The names of the parameters that may be negative (declared real or nonzero)."""
         if "signed parameters" not in self.cache:
-            setting = self.setting
-            self.cache["signed parameters"] = tuple(
-                s.name for s in self.variables if not setting.is_state(s) and setting.domain(s) in ("real", "nonzero")
-            )
+            self.cache["signed parameters"] = tuple(s.name for s in self.variables if self.setting.may_be_negative(s))
         return self.cache["signed parameters"]
 
     def compiled(self, key: str, expr) -> Compiled:

@@ -120,6 +120,10 @@ class Setting:
             return self.domains.get(symbol.name, "real")
         return self.domains.get(symbol.name, "positive")
 
+    def may_be_negative(self, symbol: sympy.Symbol) -> bool:
+        """Whether ``symbol`` is a parameter declared real or nonzero: its sign is drawn per draw."""
+        return not self.is_state(symbol) and self.domain(symbol) in ("real", "nonzero")
+
     def points(self, variables, count: int, *, salt: int = 0, group: int = 1) -> list[list[complex]]:
         """``count`` sample points for ``variables`` (a sequence of symbols).
 
@@ -130,7 +134,7 @@ class Setting:
         domains = {symbol: self.domain(symbol) for symbol in variables}
         points = sample_points(variables, domains, count, self.seed + salt)
         parameters = [i for i, symbol in enumerate(variables) if not self.is_state(symbol)]
-        signed = [i for i in parameters if domains[variables[i]] in ("real", "nonzero")]
+        signed = [i for i in parameters if self.may_be_negative(variables[i])]
         for start in range(0, count, group):
             signs = _signs(start // group, len(signed), count // group)
             for i, sign in zip(signed, signs, strict=True):
