@@ -31,7 +31,7 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
 from grader.parse import ParsedAnswer, parse_answer
-from grader.parse.names import unicode_name
+from grader.parse.names import CONSTANT_WORDS, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
 
@@ -180,7 +180,7 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     return answer
 
 
-_ARBITRARY = ("C", "const", "constant")  # what students add for "any constant"
+_ARBITRARY = ("C", *CONSTANT_WORDS)  # what students add for "any constant"
 
 
 def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:

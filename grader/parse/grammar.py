@@ -32,7 +32,7 @@ import sympy
 
 from grader.parse.functions import COMPLEX, SYMPY
 from grader.parse.messages import ParseFailure
-from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, canonical_name, split_derivative
+from grader.parse.names import CONSTANT_WORDS, FUNCTION_NAMES, GREEK_BY_LETTER, canonical_name, split_derivative
 from grader.parse.tokens import LIMITS, Name, Token
 
 __all__ = ["TIME", "Context", "parse_tokens"]
@@ -673,7 +673,7 @@ class _Parser:
         pieces = self.split(name.raw, token)
         if pieces:
             return pieces
-        if name.tex and canonical in ("const", "constant"):
+        if name.tex and canonical in CONSTANT_WORDS:
             return [sympy.Symbol(canonical)]  # a word, not c·o·n·s·t: the constant a student may add
         if name.tex:
             return self.tex_letters(name.raw)

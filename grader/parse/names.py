@@ -2,6 +2,7 @@
 
 Contents:
     GREEK_BY_LETTER, GREEK_NAMES   Unicode Greek letters and their ASCII names
+    CONSTANT_WORDS                 "const", "constant": words for an arbitrary constant
     SUBSCRIPT_DIGITS, SUPERSCRIPTS Unicode sub- and superscript characters
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
@@ -19,6 +20,7 @@ import re
 import unicodedata
 
 __all__ = [
+    "CONSTANT_WORDS",
     "FUNCTION_NAMES",
     "GREEK_BY_LETTER",
     "GREEK_NAMES",
@@ -28,6 +30,11 @@ __all__ = [
     "split_derivative",
     "unicode_name",
 ]
+
+# Words a student adds for "some constant" (L + const): one name each, even in TeX, where other
+# runs of letters that are no name are read a letter at a time. The checker leaves them out
+# where a constant is allowed.
+CONSTANT_WORDS = ("const", "constant")
 
 # Unicode letter → ASCII name. Variant forms (ϑ, ϕ, ϵ, ς) are the same letter to a
 # student, so they share a name; µ (the micro sign) is how some keyboards type μ.
