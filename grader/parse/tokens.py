@@ -464,10 +464,10 @@ class _Tokenizer:
             self._finish_name(start, "".join(raw), 0)
         elif command in ("dot", "ddot"):
             self._latex_dot(start, command)
-        elif command in ("label", "tag") and _LATEX_ANNOTATIONS.match(text, self.pos):
-            self.pos = _LATEX_ANNOTATIONS.match(text, self.pos).end()
-        elif command == "text" and _TEXT_PUNCTUATION.match(text, self.pos):
-            self.pos = _TEXT_PUNCTUATION.match(text, self.pos).end()
+        elif command in ("label", "tag") and (annotation := _LATEX_ANNOTATIONS.match(text, self.pos)):
+            self.pos = annotation.end()
+        elif command == "text" and (punctuation := _TEXT_PUNCTUATION.match(text, self.pos)):
+            self.pos = punctuation.end()
         elif command == "operatorname" and (name := _OPERATOR_NAME.match(text, self.pos)) and name[1] in FUNCTION_NAMES:
             self.pos = name.end()  # \operatorname{cos}, as \cos
             self.tokens.append(Token("func", FUNCTION_NAMES[name[1]], start, self.pos))
