@@ -4,6 +4,7 @@ Contents:
     Segment                 one run of text: plain, bold (``**…**``) or LaTeX (between ``$``)
     paragraphs(text)        bank text as paragraphs of segments
     segments(paragraph)     one paragraph's segments
+    inline(text)            text shown on one line (a choice), as segments
     tex_runs(tex)           LaTeX math as Unicode text, in runs marked sub, sup or bold
     plain_text(paragraph)   a paragraph as one line of Unicode text (scripts as ² or ^(…))
 
@@ -17,7 +18,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-__all__ = ["Segment", "paragraphs", "plain_text", "segments", "tex_runs"]
+__all__ = ["Segment", "inline", "paragraphs", "plain_text", "segments", "tex_runs"]
 
 
 @dataclass(frozen=True)
@@ -175,6 +176,15 @@ def _bracketed(runs: list[tuple[str, str]]) -> list[tuple[str, str]]:
     if len(text) > 1 and any(c in text for c in " +-−="):
         return [("(", ""), *runs, (")", "")]
     return runs
+
+
+def inline(text) -> tuple[Segment, ...]:
+    """Bank text shown on one line, a choice's: its lines and spaces joined, then its segments.
+
+    >>> [s.text for s in inline("a **b**\\n  $x$")]
+    ['a ', 'b', ' ', 'x']
+    """
+    return segments(" ".join(str(text).split()))
 
 
 def paragraphs(text: str) -> tuple[tuple[Segment, ...], ...]:

@@ -27,7 +27,7 @@ import jinja2
 from markupsafe import Markup
 
 from grader.bank import Assignment, Part, Problem
-from grader.bank.markup import Segment, paragraphs, plain_text, segments
+from grader.bank.markup import Segment, inline, paragraphs, plain_text
 from grader.grade.batch import assignment_parts
 from grader.grade.part import expected_answer, setting_of
 from grader.grade.results import PartGrade, SubmissionGrade
@@ -105,7 +105,7 @@ class _PartView:
 
     @property
     def shown_choices(self) -> tuple[tuple[str, tuple[Segment, ...]], ...]:
-        return tuple((label, segments(" ".join(str(text).split()))) for label, text in self.choices)
+        return tuple((label, inline(text)) for label, text in self.choices)
 
     @property
     def reference_paragraphs(self) -> tuple[tuple[Segment, ...], ...]:

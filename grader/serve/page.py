@@ -21,7 +21,7 @@ from functools import lru_cache
 import jinja2
 
 from grader.bank import Assignment, Part, Problem
-from grader.bank.markup import Segment, paragraphs, segments
+from grader.bank.markup import Segment, inline, paragraphs
 from grader.grade.part import setting_of
 from grader.parse import parse_answer
 from grader.report import TEMPLATES
@@ -78,7 +78,7 @@ def _part_view(problem: Problem, part: Part) -> PartView:
         kind=part.kind,
         points=part.points,
         prompt=paragraphs(part.prompt),
-        choices=tuple((str(label), segments(" ".join(str(text).split()))) for label, text in part.choices.items()),
+        choices=tuple((str(label), inline(text)) for label, text in part.choices.items()),
         multiple=bool(part.options.get("multiple", False)),
         placeholder=_PLACEHOLDERS.get(part.kind, ""),
     )
