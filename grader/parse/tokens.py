@@ -164,13 +164,13 @@ def tokenize(text: str) -> list[Token]:
 # A Mac keyboard types a dot or two over a letter as the spacing marks ˙ (Option-h) and ¨
 # (Option-u, space): read after a letter as the combining ones, θ˙ as θ̇. One character for one,
 # so positions in messages still point into the text as typed.
-_SPACING_DOTS = str.maketrans({"\u02d9": "\u0307", "\u00a8": "\u0308"})
+_SPACING_DOTS = {0x02D9: "\u0307", 0x00A8: "\u0308"}
 # Letters a PDF or a word processor gives for ours: script ℓ, ℒ, ℋ, ℱ (as \ell and \mathcal do),
 # and full-width digits, letters and signs (an East Asian keyboard's). One character for one.
 _LOOKALIKES = {0x2113: "l", 0x2112: "L", 0x210B: "H", 0x2131: "F"} | {c: chr(c - 0xFEE0) for c in range(0xFF01, 0xFF5F)}
 # Invisible: zero-width spaces and joiners, a byte order mark, a word joiner. Read as a space.
 _INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x2060, 0xFEFF), " ")
-_READ_AS = str.maketrans(_LOOKALIKES | _INVISIBLE)
+_READ_AS = str.maketrans(_SPACING_DOTS | _LOOKALIKES | _INVISIBLE)  # all three, in one pass over the text
 
 
 _LIST_MARKER = re.compile(r"[ \t]*([0-9]{1,3})[.)][ \t]+")
@@ -206,7 +206,7 @@ def _list_markers(text: str) -> dict[int, int]:
 
 class _Tokenizer:
     def __init__(self, text: str, *, latex: bool):
-        self.text, self.latex = text.translate(_SPACING_DOTS).translate(_READ_AS), latex
+        self.text, self.latex = text.translate(_READ_AS), latex
         self.pos = 0
         self.tokens: list[Token] = []
         self.markers = _list_markers(self.text) if "\n" in text else {}
