@@ -74,13 +74,15 @@ def equations_of_motion(lagrangian: str, *, coords, known=(), domains=None) -> s
 
 def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
     lagrangian = expected.value
-    equal, pairs = same_values(expected, lagrangian, answer.value, deadline)
+    # As parsed: the evaluators read θ(t) and its derivatives as they are, and the one compiled
+    # here serves every comparison below. Plain symbols are built only for sympy's own work.
+    submitted = answer.value
+    equal, pairs = same_values(expected, lagrangian, submitted, deadline)
     if equal:
         return Outcome("equivalent", 1.0, "equivalent")
     if constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
     deadline.check()
-    submitted = expected.setting.plain(answer.value)
     ratio, named = _dynamics_ratio(expected, submitted, deadline)
     if ratio is Closeness.UNSURE:  # too few states where even 40 digits see every term
         return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: the numbers cannot tell")
@@ -259,7 +261,7 @@ def _symbolic_dynamics(expected: Expected, submitted, *, precise: bool = False) 
             expected.compiled(f"euler-lagrange {i}", e)
             for i, e in enumerate(euler_lagrange(expected.value, expected.setting))
         ]
-    theirs = [expected.compile(e) for e in euler_lagrange(submitted, expected.setting)]
+    theirs = [expected.compile(e) for e in euler_lagrange(expected.setting.plain(submitted), expected.setting)]
     points = expected.points(expected.point_count, group=GROUP)
     evaluate = precise_side_by_side if precise else side_by_side
     return [evaluate(f, g, points) for f, g in zip(expected.cache["euler-lagrange"], theirs, strict=True)]
@@ -267,14 +269,13 @@ def _symbolic_dynamics(expected: Expected, submitted, *, precise: bool = False) 
 
 def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> Outcome:
     setting = expected.setting
-    at_rest = lagrangian.xreplace({setting.velocity(q): 0 for q in setting.coords})
-    if "small angle" not in expected.cache:
-        expected.cache["small angle"] = taylor(lagrangian, setting, 2)
-    candidates = (
-        ("t_plus_v", lagrangian - 2 * at_rest, "T+V"),  # T − V − 2(−V) = T + V, where T vanishes at rest
-        ("small_angle", expected.cache["small angle"], "small angle"),
-    )
-    for key, form, name in candidates:
+    if "mistaken forms" not in expected.cache:
+        at_rest = lagrangian.xreplace({setting.velocity(q): 0 for q in setting.coords})
+        expected.cache["mistaken forms"] = (
+            ("t_plus_v", lagrangian - 2 * at_rest, "T+V"),  # T − V − 2(−V) = T + V, where T vanishes at rest
+            ("small_angle", taylor(lagrangian, setting, 2), "small angle"),
+        )
+    for key, form, name in expected.cache["mistaken forms"]:
         deadline.check()
         _, pairs = same_values(expected, form, submitted, deadline, key=name)
         if constant_difference(pairs):
@@ -284,5 +285,5 @@ def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> 
     change = single_term_change(expected, "value", lagrangian, submitted, state)
     if change:
         return term_outcome([change])
-    submitted_terms = terms(submitted, varying=state)
+    submitted_terms = terms(setting.plain(submitted), varying=state)
     return term_outcome(term_changes(expected_terms(expected, "value", lagrangian, state), submitted_terms, setting))
