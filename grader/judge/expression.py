@@ -233,13 +233,13 @@ def _multiple_of(difference: np.ndarray, term: np.ndarray, scale: np.ndarray, up
     """λ ≠ 0 with ``difference`` = λ·``term`` at every point where all are defined (up to a
     constant per group of points, with ``up_to_constant``), to floats' resolution; else None."""
     defined = np.isfinite(difference) & np.isfinite(term) & np.isfinite(scale)
-    if up_to_constant:
-        firsts = {}
-        for i in np.flatnonzero(defined):
-            firsts.setdefault(i // GROUP, i)
-        keep = np.array([defined[i] and firsts.get(i // GROUP) != i for i in range(len(defined))])
-        base = np.array([firsts.get(i // GROUP, i) for i in range(len(defined))])
-        difference, term, defined = difference - difference[base], term - term[base], keep
+    if up_to_constant:  # each point against its group's first defined point
+        every = np.arange(len(defined))
+        groups = every // GROUP
+        firsts = np.full(groups[-1] + 1, len(defined))
+        np.minimum.at(firsts, groups[defined], every[defined])
+        base = np.where(firsts[groups] < len(defined), firsts[groups], every)
+        difference, term, defined = difference - difference[base], term - term[base], defined & (base != every)
     if defined.sum() < (MIN_DEFINED - 2 if up_to_constant else MIN_DEFINED):
         return None
     difference, term, scale = difference[defined], term[defined], scale[defined]
