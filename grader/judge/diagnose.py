@@ -79,7 +79,11 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
     velocities = {setting.velocity(q) for q in setting.coords}
     accelerations = {setting.acceleration(q) for q in setting.coords}
     trig = [f for f in term.atoms(*_TRIG) if f.args[0].free_symbols & set(setting.state.values())]
-    within = f" in {to_text(setting.as_typed(min(trig, key=str)))}" if trig else ""  # θ̇, not theta__1
+    if trig:  # the first by its printed form, when there are several
+        first = trig[0] if len(trig) == 1 else min(trig, key=str)
+        within = f" in {to_text(setting.as_typed(first))}"  # θ̇, not theta__1
+    else:
+        within = ""
     if symbols & accelerations:
         return f"{article} term with an acceleration{within}"
     if symbols & velocities:
