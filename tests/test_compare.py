@@ -307,6 +307,20 @@ def test_a_momentum_may_be_written_as_its_derivation(submitted):
     assert compare("m l^2 thetadot", submitted, **PENDULUM).status == "equivalent"
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("m l² θ̈ = −m g l sin θ ⇒ θ̈ = −(g/l) sin θ", "equivalent"),
+        ("m l² θ̈ = −m g l sin θ\n⇒ θ̈ = −(g/l) cos θ", "not_equivalent"),  # the conclusion is judged
+        ("m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ", "equivalent"),  # as it would be on paper
+        ("EOM: θ̈ = −(g/l) sin θ", "equivalent"),
+        (r"\ddot\theta = -\frac gl \sin\theta \quad\Rightarrow", "equivalent"),
+    ],
+)
+def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status):
+    assert compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM).status == status
+
+
 def test_partial_derivatives_elsewhere_are_refused_with_a_message():
     verdict = compare("m l^2 thetadot", "∂L/∂θ̇", **PENDULUM)
     assert verdict.status == "invalid"

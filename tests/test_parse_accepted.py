@@ -150,6 +150,8 @@ DERIVATIVES = [
     ("(lθ̇)(lθ)", l**2 * theta * D(theta)),
     ("lθ̈ + lθ̇ + lθ", l * D(theta, 2) + l * D(theta) + l * theta),
     ("(ltheta')(ltheta)", l**2 * theta * D(theta)),
+    # a prime before the subscript, on a glued name too
+    ("θ'₁ + l₁θ'₂", D(theta1) + l1 * D(theta2)),
     # letters and signs as a PDF or another keyboard gives them; invisible characters
     ("ℓ + ℒ + a ⁄ b + c ∕ d", l + sympy.Symbol("L") + a / b + c / d),
     ("２ａ＋ｂ", 2 * a + b),
@@ -217,6 +219,19 @@ SYSTEMS = [
     ("θ̈₁ = a; θ̈₂ = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
     ("a = b +\nc", Eq(a, b + c)),
     ("a = b\n+ c", Eq(a, b + c)),
+    # a label before a colon names the equation that follows it
+    ("EOM: ẍ = -k x", Eq(D(x, 2), -k * x)),
+    ("θ₁: a = b\nθ₂: c = d", (Eq(a, b), Eq(c, d))),
+    ("eq 1: a = b; eq 2: c = d", (Eq(a, b), Eq(c, d))),
+    ("EOM:\nẍ = -k x", Eq(D(x, 2), -k * x)),
+    # a derivation with ⇒ concludes with what follows the last ⇒ (and a line that goes on from it)
+    ("m ẍ = -k x ⇒ ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    ("m ẍ = -k x => ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    ("m ẍ = -k x\n⇒ ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    ("m ẍ = -k x ⟹\nẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    ("⇒ ẍ = a", Eq(D(x, 2), a)),
+    ("ẍ = a ⇒", Eq(D(x, 2), a)),
+    ("c ẍ = c a ⇒ ẍ = a\nd θ̈ = d b ⇒ θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
     ("a + b\n- c", a + b - c),
     ("(a +\n b) = c", Eq(a + b, c)),
 ]
@@ -279,6 +294,11 @@ LATEX = [
     # what a document adds around the math: labels, tags, a full stop in \text; \operatorname{cos} is \cos
     ("m g l \\operatorname{cos}\\theta \\label{eq:L} \\tag{1}\\text{.}", m * g * l * cos(theta)),
     ("\\mathscr{L} + \\mathscr L", 2 * sympy.Symbol("L")),
+    ("\\text{cos}\\,\\theta", cos(theta)),
+    # TeX puts a subscript that follows a power on the base: x^2_1 is x₁²
+    ("\\dot{\\theta}^2_1 + x^{2}_{1}", D(theta1) ** 2 + sympy.Symbol("x_1") ** 2),
+    ("m \\ddot x = -k x \\Rightarrow \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x)),
+    ("\\ddot x = a \\implies", Eq(D(x, 2), a)),
 ]
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX

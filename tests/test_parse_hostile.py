@@ -83,6 +83,11 @@ HOSTILE = [
     ("getattr(x, '__class__')", "string"),
     ("lambda x: x", "bad_character"),
     ("lambda: 1", "bad_character"),
+    # a colon is read past only after a line's label of an equation: one to three undotted names
+    ("m g:", "bad_character"),
+    ("θ̈: -g sin θ = 0", "bad_character"),
+    ("a b c d: x = 1", "bad_character"),
+    ("x^2_1", "bad_character"),  # a subscript after a power is TeX's, not plain notation's
     ("x # comment", "comment"),
     ("#", "comment"),
     ("x := 1", "assignment"),

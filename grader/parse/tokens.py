@@ -105,6 +105,7 @@ _OPERATORS = {
 }  # fmt: skip
 _VULGAR_FRACTIONS = {"½": "1/2", "⅓": "1/3", "⅔": "2/3", "¼": "1/4", "¾": "3/4", "⅕": "1/5", "⅛": "1/8"}
 _PRIMES = {"'": 1, "\u2032": 1, "\u2033": 2}
+_IMPLIES = {"\u21d2", "\u27f9"}  # ⇒ ⟹, and => typed: what follows is what was derived
 _COMBINING_DOTS = {"\u0307": 1, "\u0308": 2, "\u20db": 3}
 # [0-9], not \d: \d also matches ٣ and ², which are not numbers to us.
 _NUMBER = re.compile(r"([0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?")
@@ -112,6 +113,7 @@ _DIGITS = frozenset("0123456789")
 _ASCII_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _LETTERS = re.compile(r"[A-Za-z]+")
 _UNICODE_SUBSCRIPT = re.compile(r"[\u2080-\u2089]+")
+_ENDS_IN_SUBSCRIPT = re.compile(r"_[0-9]+$")
 _SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+")
 _COMMAND_NAME = re.compile(r"\\([A-Za-z]+)")
 _COMMAND = re.compile(r"\\([A-Za-z]+\*?|.?)")
@@ -157,8 +159,39 @@ def tokenize(text: str) -> list[Token]:
         ParseFailure: for any character or word outside the whitelist.
     """
     tokens = _Tokenizer(text, latex="\\" in text).run()
+    if any(token.kind == "implies" for token in tokens):
+        tokens = _conclusions(tokens)
     _check_brackets(tokens)
     return tokens
+
+
+def _conclusions(tokens: list[Token]) -> list[Token]:
+    """What a derivation written with ``⇒`` concludes: on each line, what follows its last ``⇒``.
+    A line that begins with ``⇒``, or follows one that ends with it, continues the derivation:
+    it replaces the lines above. ``m l θ̈ = −m g sin θ ⇒ θ̈ = −(g/l) sin θ`` is the second equation;
+    ``eq₁ ⇒ eq₁′ ⏎ eq₂ ⇒ eq₂′`` is the system of eq₁′ and eq₂′."""
+    lines: list[list[Token]] = [[]]
+    for token in tokens[:-1]:
+        if token.kind == "sep":
+            lines.append([])
+        else:
+            lines[-1].append(token)
+    kept: list[list[Token]] = []
+    continues = False
+    for line in lines:
+        if line and (continues or line[0].kind == "implies"):
+            kept = []
+        continues = False
+        while line and line[-1].kind == "implies":
+            line, continues = line[:-1], True
+        implications = [i for i, token in enumerate(line) if token.kind == "implies"]
+        kept.append(line[implications[-1] + 1 :] if implications else line)
+    result: list[Token] = []
+    for line in kept:
+        if result and line:
+            result.append(Token("sep", "\n", line[0].start, line[0].start))
+        result += line
+    return [*result, tokens[-1]]
 
 
 # A Mac keyboard types a dot or two over a letter as the spacing marks ˙ (Option-h) and ¨
@@ -248,6 +281,12 @@ class _Tokenizer:
                 self._emit("op", "^", 2)
             elif text[self.pos : self.pos + 2] in _ASSIGNMENTS:
                 raise ParseFailure("assignment", self.pos, self.pos + 2, op=text[self.pos : self.pos + 2])
+            elif c in _IMPLIES or text.startswith("=>", self.pos):
+                self._emit("implies", "⇒", 1 if c in _IMPLIES else 2)
+            elif c == ":" and self._line_label():
+                self.pos += 1  # EOM: …, θ₁: …: the line's label, read past with its colon
+            elif c == "_" and self.latex and self._subscript_after_power():
+                pass  # \dot\theta^2_1: TeX's θ̇₁², the subscript moved onto the name
             elif c in _OPERATORS:
                 self._emit("op", _OPERATORS[c], 1)
             elif c in _PRIMES:
@@ -269,6 +308,46 @@ class _Tokenizer:
 
     def _after_value(self) -> bool:
         return bool(self.tokens) and (self.tokens[-1].kind in ("num", "sup") or self.tokens[-1].is_op(")", "]", "}"))
+
+    def _line_label(self) -> bool:
+        """Whether a colon ends the label of an equation, ``EOM:`` or ``θ₁:``, which is then dropped:
+        one to three undotted names (the first perhaps followed by a number: ``eq 1:``) that start
+        the answer, a line, or an item after ``;`` or ``,``."""
+        if "=" not in self.text[self.pos + 1 :]:
+            return False  # an equation's label only: `m g:` is no answer, `lambda x: x` is code
+        start = len(self.tokens)
+        while start and not (self.tokens[start - 1].kind == "sep" or self.tokens[start - 1].is_op(";", ",")):
+            start -= 1
+        label = self.tokens[start:]
+        if not 1 <= len(label) <= 3 or label[0].kind != "name":
+            return False
+        if not all(t.kind == "num" or (t.kind == "name" and not t.value.dots and not t.value.primes) for t in label):
+            return False
+        del self.tokens[start:]
+        return True
+
+    def _subscript_after_power(self) -> bool:
+        """``x^2_1`` in TeX is x₁²: the subscript that follows a name's power belongs to the name."""
+        tokens = self.tokens
+        if len(tokens) >= 5 and tokens[-1].is_op("}"):
+            opener = max((i for i, t in enumerate(tokens) if t.is_op("{")), default=0)
+            power = opener - 1
+        else:
+            power = len(tokens) - 2
+        if power < 1 or not tokens[power].is_op("^") or tokens[power - 1].kind != "name":
+            return False
+        if not all(t.kind == "num" or t.is_op("{", "}", "-") for t in tokens[power + 1 :]):
+            return False
+        name_token = tokens[power - 1]
+        name = name_token.value
+        if "_" in name.raw:
+            return False
+        raw = [name.raw]
+        self._subscript(raw)
+        tokens[power - 1] = Token(
+            "name", Name("".join(raw), name.dots, name.primes, name.tex), name_token.start, name_token.end
+        )
+        return True
 
     @staticmethod
     def _is_letter(c: str) -> bool:
@@ -408,7 +487,7 @@ class _Tokenizer:
             primes += _PRIMES[self.text[self.pos]]
             self.pos += 1
         subscript = _UNICODE_SUBSCRIPT.match(self.text, self.pos) if primes else None
-        if subscript and "_" not in raw:  # θ'₁ is θ₁'
+        if subscript and not _ENDS_IN_SUBSCRIPT.search(raw):  # θ'₁ is θ₁', and lθ'₁ is lθ₁'
             raw += "_" + "".join(SUBSCRIPT_DIGITS[c] for c in subscript[0])
             self.pos = subscript.end()
         if len(raw) > LIMITS.name:
@@ -455,6 +534,8 @@ class _Tokenizer:
             self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
         elif command == "partial":
             self.tokens.append(Token("partial", "∂", start, self.pos))
+        elif command in ("Rightarrow", "implies", "Longrightarrow"):
+            self.tokens.append(Token("implies", "⇒", start, self.pos))
         elif command in _LATEX_FUNCTIONS:
             self.tokens.append(Token("func", _LATEX_FUNCTIONS[command], start, self.pos))
         elif command in _LATEX_NAMES:
@@ -468,8 +549,12 @@ class _Tokenizer:
             self.pos = annotation.end()
         elif command == "text" and (punctuation := _TEXT_PUNCTUATION.match(text, self.pos)):
             self.pos = punctuation.end()
-        elif command == "operatorname" and (name := _OPERATOR_NAME.match(text, self.pos)) and name[1] in FUNCTION_NAMES:
-            self.pos = name.end()  # \operatorname{cos}, as \cos
+        elif (
+            command in ("operatorname", "text")
+            and (name := _OPERATOR_NAME.match(text, self.pos))
+            and name[1] in FUNCTION_NAMES
+        ):
+            self.pos = name.end()  # \operatorname{cos} or \text{cos}, as \cos
             self.tokens.append(Token("func", FUNCTION_NAMES[name[1]], start, self.pos))
         elif command in _LATEX_FONTS:  # \mathcal{F}, \mathrm{d}: the letters, in another typeface
             braced = _BRACED_LETTERS.match(text, self.pos)
