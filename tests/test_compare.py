@@ -321,6 +321,38 @@ def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status
     assert compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM).status == status
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("θ̈ + ω₀² sin θ = 0, ω₀² = g/l", "equivalent"),
+        ("θ̈ + ω₀² sin θ = 0, where ω₀² = g/l", "equivalent"),
+        ("ω = √(g/l) and θ̈ = −ω² sin θ", "equivalent"),  # defined first
+        (r"\ddot\theta + \omega_0^2 \sin\theta = 0 \quad\text{where}\quad \omega_0^2 = \frac gl", "equivalent"),
+        ("θ̈ = −k sin θ, k = a/l, a = g", "equivalent"),  # one definition in terms of another
+        ("θ̈ + ω₀² sin θ = 0, ω₀² = l/g", "not_equivalent"),  # a wrong definition is a wrong answer
+        ("θ̈ + ω₀² sin θ = 0", "not_equivalent"),  # undefined: said so
+        ("θ̈ + ω₀² sin θ = 0, ω₀² = g/r", "not_equivalent"),  # a definition only in the problem's names
+    ],
+)
+def test_a_name_the_answer_defines_is_put_in_place(submitted, status):
+    assert compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM).status == status
+
+
+def test_a_lagrangian_may_define_its_own_names():
+    verdict = compare(L_PENDULUM, "L = ½ m v² + m g h, where v = l θ̇, h = l cos θ", kind="lagrangian", **PENDULUM)
+    assert verdict.status == "equivalent"
+    assert verdict.answer.read_as_text == "g*l*m*cos(θ) + l^2*m*θ̇^2/2"  # how it was read: with the definitions in place
+
+
+def test_definitions_that_would_build_huge_numbers_are_not_put_in_place():
+    # each equation is within the parser's caps; substituting one into the next is not
+    verdict = compare(
+        "thetaddot = -g/l sin(theta)", "θ̈ = d, a = 9^99 g, b = a^99, c = b^99, d = c^99", kind="equation", **PENDULUM
+    )
+    assert verdict.status == "not_equivalent"
+    assert "does not define" in verdict.feedback[0]
+
+
 def test_partial_derivatives_elsewhere_are_refused_with_a_message():
     verdict = compare("m l^2 thetadot", "∂L/∂θ̇", **PENDULUM)
     assert verdict.status == "invalid"

@@ -201,6 +201,9 @@ SYSTEMS = [
     # as people write a system: commas or "and" between equations, numbers that label them
     ("a = b, c = d", (Eq(a, b), Eq(c, d))),
     ("a = b and c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b, where c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b with c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b \\quad\\text{where}\\quad c = d", (Eq(a, b), Eq(c, d))),
     ("(1) a = b\n(2) c = d", (Eq(a, b), Eq(c, d))),
     ("a = b (1)\nc = d (2)", (Eq(a, b), Eq(c, d))),
     ("(1) a = b; (2) c = 2 (d)", (Eq(a, b), Eq(c, 2 * d))),

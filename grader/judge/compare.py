@@ -13,6 +13,7 @@ checkers only compare.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
@@ -30,7 +31,7 @@ from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
-from grader.parse import ParsedAnswer, parse_answer
+from grader.parse import LIMITS, ParsedAnswer, parse_answer
 from grader.parse.names import CONSTANT_WORDS, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
@@ -145,6 +146,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
                 )
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
+                answer = _with_definitions(answer, expected, deadline)
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 early = _mismatch(spec, expected, answer)
@@ -164,6 +166,54 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
     feedback = list(dict.fromkeys(feedback))  # two terms described alike are one sentence
     diagnosis = None if outcome.status == "equivalent" else outcome.key
     return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer)
+
+
+def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:
+    """``θ̈ + ω₀² sin θ = 0, ω₀² = g/l`` or ``L = ½ m v², where v = l θ̇``: a name the answer
+    defines for itself, put in place. A definition is an equation of its own whose left side
+    is a name the problem does not define (or its power) and whose right side uses only names
+    it does; and another equation must use the name. What remains is the answer.
+
+    The parser's caps bound each equation, not what one put into another makes: a = 9⁹⁹ g,
+    b = a⁹⁹, c = b⁹⁹ … would build numbers of millions of digits. Where a substitution makes
+    a number beyond the parser's caps, none is made, and the answer is judged as typed."""
+    if answer.kind != "equations":
+        return answer
+    items = list(answer.value)
+    while len(items) > 1:
+        deadline.check()
+        found = next(((i, d) for i, item in enumerate(items) if (d := _definition(item, items, expected))), None)
+        if found is None:
+            break
+        position, (symbol, value) = found
+        del items[position]
+        items = [
+            sympy.Eq(i.lhs.xreplace({symbol: value}), i.rhs.xreplace({symbol: value}), evaluate=False) for i in items
+        ]
+        if any(_too_large(number) for item in items for number in item.atoms(sympy.Rational)):
+            return answer
+    if len(items) == len(answer.value):
+        return answer
+    if len(items) == 1:
+        return ParsedAnswer(answer.text, items[0], "equation")
+    return ParsedAnswer(answer.text, tuple(items), "equations")
+
+
+def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sympy.Expr] | None:
+    """(name, its value) when ``item`` defines a name that another of ``items`` uses; else None."""
+    base, power = item.lhs.as_base_exp()
+    if not (base.is_Symbol and base.name not in expected.names and power.is_Integer and power > 0):
+        return None
+    if any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
+        return None
+    if not any(base in other.free_symbols for other in items if other is not item):
+        return None
+    return base, item.rhs ** sympy.Rational(1, int(power))  # a name for a positive quantity, as parameters are
+
+
+def _too_large(number: sympy.Rational) -> bool:
+    bits = int(number.p).bit_length() + int(number.q).bit_length()
+    return bits * math.log10(2) > LIMITS.power_digits
 
 
 def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:

@@ -791,17 +791,19 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
 
 
 def _as_system(tokens: list[Token]) -> list[Token]:
-    """Equations written one after another as people write them: ``eq₁, eq₂`` or ``eq₁ and eq₂``
-    (each side of the comma or the *and* one equation) separated as ``;`` separates them, and
+    """Equations written one after another as people write them: ``eq₁, eq₂``, ``eq₁ and eq₂`` or
+    ``eq₁, where eq₂`` (each side of the comma or the word one equation) separated as ``;`` separates them, and
     the numbers of a system's equations, ``(1) eq₁ ⏎ (2) eq₂``, ``eq₁ (1) ⏎ eq₂ (2)``, ``(a) …`` or
     ``(i) …``, left out when every equation has its own, in order: they are labels, not factors.
     """
-    if not any(token.kind == "sep" or token.is_op(",", ";") or _is_raw(token, "and") for token in tokens):
+    if not any(token.kind == "sep" or token.is_op(",", ";") or _is_joining_word(token) for token in tokens):
         return tokens  # one item, no comma: most answers
     top = _top_level(tokens)
-    pieces = _split_at(tokens, top, lambda token: token.is_op(",", ";") or token.kind == "sep" or _is_raw(token, "and"))
+    pieces = _split_at(
+        tokens, top, lambda token: token.is_op(",", ";") or token.kind == "sep" or _is_joining_word(token)
+    )
     if len(pieces) > 1 and all(sum(tokens[j].is_op("=") for j in piece if j in top) == 1 for piece in pieces):
-        joins = {j for j in top if tokens[j].is_op(",") or _is_raw(tokens[j], "and")}
+        joins = {j for j in top if tokens[j].is_op(",") or _is_joining_word(tokens[j])}
         tokens = [Token("sep", ";", t.start, t.end) if j in joins else t for j, t in enumerate(tokens)]
     items = _split_at(tokens, top, lambda token: token.is_op(";") or token.kind == "sep")
     if len(items) < 2:
@@ -855,6 +857,14 @@ def _is_number_label(tokens: list[Token], positions: list[int], number: int) -> 
         return value.value == str(number)
     spelled = ("abcdefghij"[number - 1], _ROMAN[number - 1]) if number <= 10 else ()
     return value.kind == "name" and not (value.value.dots or value.value.primes) and value.value.raw in spelled
+
+
+_JOINING_WORDS = frozenset({"and", "where", "with"})
+
+
+def _is_joining_word(token: Token) -> bool:
+    """*and*, *where* or *with* between two equations: ``θ̈ = −ω² sin θ, where ω² = g/l``."""
+    return token.kind == "name" and token.value.raw in _JOINING_WORDS and not (token.value.dots or token.value.primes)
 
 
 def _is_raw(token: Token, raw: str) -> bool:
