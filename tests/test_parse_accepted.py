@@ -116,6 +116,7 @@ NAMES = [
     ("E + I + N + S + Q", sum(sympy.Symbol(n) for n in "EINSQ")),
     ("theta(t)", theta),
     ("R", R),
+    ("Qᵣ + Q_r + vₓ + v_x", 2 * sympy.Symbol("Q_r") + 2 * sympy.Symbol("v_x")),  # subscript letters
 ]
 
 DERIVATIVES = [
@@ -197,6 +198,7 @@ SYSTEMS = [
     ("a = b; c = d", (Eq(a, b), Eq(c, d))),
     ("a = b\nc = d", (Eq(a, b), Eq(c, d))),
     ("[a = b, c = d]", (Eq(a, b), Eq(c, d))),
+    ("{a = b, c = d}", (Eq(a, b), Eq(c, d))),
     ("a = b;", Eq(a, b)),
     # as people write a system: commas or "and" between equations, numbers that label them
     ("a = b, c = d", (Eq(a, b), Eq(c, d))),

@@ -191,9 +191,9 @@ class _Parser:
         return tuple(item for _, item in items)
 
     def _is_bracketed_list(self) -> bool:
-        """``[eq1, eq2]`` or ``[eq]``: a bracket spanning the whole answer with a comma or an
-        ``=`` at its top level (otherwise it is only grouping, as in ``[a + b] c``)."""
-        if not self.token.is_op("["):
+        """``[eq1, eq2]``, ``{eq1, eq2}`` or ``[eq]``: a bracket or brace spanning the whole answer
+        with a comma or an ``=`` at its top level (otherwise it is only grouping, as in ``[a + b] c``)."""
+        if not self.token.is_op("[", "{"):
             return False
         depth = 0
         is_list = False
@@ -210,12 +210,12 @@ class _Parser:
         return False
 
     def list_of_items(self):
-        self.advance()  # [
+        opener = self.advance()  # [ or {
         items = [self.item()]
         while self.token.is_op(","):
             self.advance()
             items.append(self.item())
-        self.expect("]", self.tokens[0])
+        self.expect(_OPENERS[opener.value], opener)
         return items
 
     def separated_items(self):

@@ -3,7 +3,7 @@
 Contents:
     GREEK_BY_LETTER, GREEK_NAMES   Unicode Greek letters and their ASCII names
     CONSTANT_WORDS                 "const", "constant": words for an arbitrary constant
-    SUBSCRIPT_DIGITS, SUPERSCRIPTS Unicode sub- and superscript characters
+    SUBSCRIPT_DIGITS, SUBSCRIPT_LETTERS, SUPERSCRIPTS   Unicode sub- and superscript characters
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
     unicode_name(name)             ``theta_1`` → ``θ₁``, for reading an answer back
@@ -25,6 +25,7 @@ __all__ = [
     "GREEK_BY_LETTER",
     "GREEK_NAMES",
     "SUBSCRIPT_DIGITS",
+    "SUBSCRIPT_LETTERS",
     "SUPERSCRIPTS",
     "canonical_name",
     "split_derivative",
@@ -54,6 +55,8 @@ for _letter, _name in GREEK_BY_LETTER.items():
     GREEK_NAMES.setdefault(_name, _letter)
 
 SUBSCRIPT_DIGITS = {chr(0x2080 + d): str(d) for d in range(10)}
+# The letters Unicode has as subscripts, as in Qᵣ or vₓ (each is read as _r, _x).
+SUBSCRIPT_LETTERS = dict(zip("ₐₑₒₓₕₖₗₘₙₚₛₜᵢᵣᵤᵥⱼ", "aeoxhklmnpstiruvj", strict=True))
 SUPERSCRIPTS = {"²": "2", "³": "3", "¹": "1", "⁰": "0", "⁻": "-"} | {chr(0x2070 + d): str(d) for d in range(4, 10)}
 _SUBSCRIPT_OUT = {v: k for k, v in SUBSCRIPT_DIGITS.items()}
 

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from grader.parse.messages import ParseFailure
-from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, SUBSCRIPT_DIGITS, SUPERSCRIPTS
+from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, SUBSCRIPT_DIGITS, SUBSCRIPT_LETTERS, SUPERSCRIPTS
 
 __all__ = ["LIMITS", "Name", "Token", "tokenize"]
 
@@ -114,6 +114,7 @@ _ASCII_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _LETTERS = re.compile(r"[A-Za-z]+")
 _UNICODE_SUBSCRIPT = re.compile(r"[\u2080-\u2089]+")
 _ENDS_IN_SUBSCRIPT = re.compile(r"_[0-9]+$")
+_SUBSCRIPTS = SUBSCRIPT_DIGITS | SUBSCRIPT_LETTERS  # θ₁, Qᵣ: a subscript typed as one
 _SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+")
 _COMMAND_NAME = re.compile(r"\\([A-Za-z]+)")
 _COMMAND = re.compile(r"\\([A-Za-z]+\*?|.?)")
@@ -427,13 +428,13 @@ class _Tokenizer:
                 raw.append(GREEK_BY_LETTER[base])
             elif base.isascii() and (base.isalnum() or base == "_"):
                 raw.append(base)
-            elif c in SUBSCRIPT_DIGITS:
-                raw.append(("" if in_subscript else "_") + SUBSCRIPT_DIGITS[c])
+            elif c in _SUBSCRIPTS:
+                raw.append(("" if in_subscript else "_") + _SUBSCRIPTS[c])
             elif c in _COMBINING_DOTS and raw:
                 marks = c
             else:
                 break
-            in_subscript = c in SUBSCRIPT_DIGITS
+            in_subscript = c in _SUBSCRIPTS
             self.pos += 1
             if marks:
                 if any(m not in _COMBINING_DOTS for m in marks):
