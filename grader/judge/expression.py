@@ -165,7 +165,7 @@ def _right_in_some_draws(pairs: list[Pair]) -> bool:
     return right and any(Closeness.DIFFERENT in draw for draw in draws.values())
 
 
-def expected_terms(expected: Expected, key: str, e, varying: set | None = None) -> dict:
+def expected_terms(expected: Expected, key: str, e, varying: set | None = None) -> dict | None:
     """The terms of ``e`` (named ``key`` among the expected answer's expressions), as
     :func:`~grader.judge.diagnose.terms` gives them, expanded once for every submission."""
     cache_key = ("terms", key, varying is not None)
@@ -187,7 +187,7 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     the floats cannot decide make this give up; sympy's expansion then has the last word.
     """
     shapes = expected_terms(expected, key, e, varying)
-    if not 1 <= len(shapes) <= MAX_TERMS:
+    if shapes is None or not 1 <= len(shapes) <= MAX_TERMS:
         return None
     points = expected.points(expected.point_count, group=GROUP)
     (e_values, e_scales), (s_values, s_scales) = (

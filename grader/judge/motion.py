@@ -42,7 +42,7 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import taylor
+from grader.judge.diagnose import expand_terms, taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
@@ -431,6 +431,8 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     if key not in expected.cache:
         expected.cache[key] = _solved(f, acceleration)
     normal_f = expected.cache[key]
+    if normal_f is None:  # a reference of too many terms to name them
+        return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
     deadline.check()
     _, pairs = same_values(expected, normal_f, normal_g, deadline, key=key)
     outcome = diagnose_difference(
@@ -444,13 +446,17 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
 
 
 def _solved(g, acceleration):
-    """``g`` divided by its coefficient of ``acceleration``, expanded; None when it has none.
+    """``g`` divided by its coefficient of ``acceleration``, expanded; None when it has none,
+    or more terms than naming them is worth.
 
     Usually the coefficient is one term, such as m l²: then each term of g expanded is
     divided by it, which costs a third of expanding the quotient (sympy's ``diff`` and
     ``expand`` were most of the time spent on a wrong equation).
     """
-    terms = sympy.Add.make_args(sympy.expand(g))
+    expansion = expand_terms(g)
+    if expansion is None:
+        return None  # too many terms to name
+    terms = [coefficient * shape for shape, coefficient in expansion.items()]
     coefficients = []
     for term in terms:
         coefficient, factor = term.as_independent(acceleration, as_Add=False)

@@ -1,0 +1,101 @@
+"""Naming a wrong answer's terms: ``expand_terms`` against ``sympy.expand``, whose work it does."""
+
+from __future__ import annotations
+
+import cmath
+
+import pytest
+import sympy
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from grader.judge.diagnose import EXPANSION_LIMIT, expand_terms, term_changes, terms
+from grader.judge.setting import Setting
+
+a, b, m, l, g = sympy.symbols("a b m l g", positive=True)
+theta, omega = sympy.symbols("theta theta__1", real=True)
+
+_ATOMS = st.sampled_from([a, b, m, l, g, theta, omega, sympy.Integer(2), sympy.Integer(-3), sympy.Rational(1, 2)])
+
+
+def _mechanics(children, exponentials=False):
+    """Sums, products, integer powers, sines and cosines: what Lagrangians and equations of motion hold."""
+    return st.one_of(
+        st.lists(children, min_size=2, max_size=3).map(lambda args: sympy.Add(*args)),
+        st.lists(children, min_size=2, max_size=3).map(lambda args: sympy.Mul(*args)),
+        st.tuples(children, st.sampled_from([2, 3, -1, -2])).map(lambda p: sympy.Pow(*p)),
+        children.map(sympy.sin),
+        children.map(sympy.cos),
+        *([children.map(sympy.exp)] if exponentials else []),
+    )
+
+
+EXPRESSIONS = st.recursive(_ATOMS, _mechanics, max_leaves=12)
+# sympy's fraction moves e^(−a) below a sum (e^(−a)/(a + b) is 1/(a e^a + b e^a)); we leave it
+WITH_EXPONENTIALS = st.recursive(_ATOMS, lambda children: _mechanics(children, exponentials=True), max_leaves=12)
+
+
+def _sympy_terms(expr) -> dict:
+    """The terms as ``sympy.expand`` names them: what ``expand_terms`` replaced."""
+    collected: dict = {}
+    for term in sympy.Add.make_args(sympy.expand(expr)):
+        coefficient, shape = term.as_coeff_Mul()
+        collected[shape] = collected.get(shape, 0) + coefficient
+    return {shape: c for shape, c in collected.items() if c != 0}
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(EXPRESSIONS)
+def test_expand_terms_names_the_terms_sympy_expand_names(expr):
+    if expr.has(sympy.zoo, sympy.nan):
+        return
+    found = expand_terms(expr)
+    if found is None:  # too many terms: then sympy's expansion has more than the limit too
+        assert len(sympy.Add.make_args(sympy.expand(expr))) > EXPANSION_LIMIT // 4
+        return
+    assert found == _sympy_terms(expr)
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(WITH_EXPONENTIALS, st.sampled_from([sympy.log, sympy.sqrt]))
+def test_expand_terms_sums_to_the_expression_where_its_names_differ_from_sympys(expr, function):
+    # logarithms and roots of sums are left whole, where sympy splits some: the terms still add up
+    expr = function(expr) * (a + b) + expr
+    found = expand_terms(expr)
+    if found is None or expr.has(sympy.zoo, sympy.nan):
+        return
+    assert all(c.is_Rational for c in found.values())
+    point = {a: 0.7, b: 1.3, m: 2.1, l: 0.9, g: 9.8, theta: 0.4, omega: -1.1}
+    total = sum(c * s for s, c in found.items())
+    try:
+        value, summed = complex(expr.evalf(subs=point)), complex(total.evalf(subs=point))
+    except OverflowError:
+        value = summed = complex("inf")
+    assume(cmath.isfinite(value) and abs(value) < 1e100)  # e^(e^(e^m)): no float to compare
+    assert abs(summed - value) <= 1e-9 * max(1.0, abs(value))
+
+
+@pytest.mark.parametrize(
+    ("expr", "expected"),
+    [
+        ((a + b) ** 2, {a**2: 1, a * b: 2, b**2: 1}),
+        (sympy.sin(2 * (theta + a)), {sympy.sin(2 * theta + 2 * a): 1}),  # inside functions too
+        (m / (l * (a + b)), {m / (a * l + b * l): 1}),  # one denominator, multiplied out, as sympy's fraction does
+        (1 / (a + b) ** 2, {1 / (a**2 + 2 * a * b + b**2): 1}),
+        (sympy.exp(a + 2 * b), {sympy.exp(a) * sympy.exp(2 * b): 1}),  # e^(a + b) is e^a·e^b
+        (sympy.sqrt(2) * sympy.sqrt(2) * a, {a: 2}),  # a product of shapes may be a number
+        ((a + b) * (a - b), {a**2: 1, b**2: -1}),  # terms that cancel are gone
+        (m * l**2 * omega**2 / 2, {m * l**2 * omega**2: sympy.Rational(1, 2)}),  # nothing to do: the very term
+    ],
+)
+def test_expand_terms_examples(expr, expected):
+    assert expand_terms(expr) == expected
+
+
+def test_too_many_terms_are_not_named():
+    many = sum(sympy.symbols("x:5")) ** 8  # 495 terms
+    assert expand_terms(many) is None
+    assert terms(many) is None
+    setting = Setting.build(["theta"], ["m", "l", "g"])
+    assert term_changes({m: 1}, terms(many), setting) == []  # nothing said, rather than 495 "extra terms"
+    assert term_changes(terms(many), {m: 1}, setting) == []
