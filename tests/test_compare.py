@@ -342,6 +342,28 @@ def test_a_lagrangian_may_define_its_own_names():
     verdict = compare(L_PENDULUM, "L = ½ m v² + m g h, where v = l θ̇, h = l cos θ", kind="lagrangian", **PENDULUM)
     assert verdict.status == "equivalent"
     assert verdict.answer.read_as_text == "g*l*m*cos(θ) + l^2*m*θ̇^2/2"  # how it was read: with the definitions in place
+    # as the notes build it: L from T and V, T from v; and the mistake is still named
+    built = "L = T − V, T = ½ m v², V = {} m g l cos θ, v = l θ̇"
+    assert compare(L_PENDULUM, built.format("−"), kind="lagrangian", **PENDULUM).status == "equivalent"
+    wrong = compare(L_PENDULUM, built.format(""), kind="lagrangian", **PENDULUM)
+    assert wrong.feedback == ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.",)
+
+
+def test_a_system_may_define_its_own_names():
+    double = {"coords": ["theta_1", "theta_2"], "known": ["m", "g", "l"]}
+    expected = (
+        "2 l theta1ddot + l theta2ddot cos(theta1 - theta2) + l theta2dot^2 sin(theta1 - theta2) + 2 g sin(theta1) = 0;"
+        " l theta2ddot + l theta1ddot cos(theta1 - theta2) - l theta1dot^2 sin(theta1 - theta2) + g sin(theta2) = 0"
+    )
+    submitted = (
+        "2 l θ̈₁ + l θ̈₂ cos Δ + l θ̇₂² sin Δ + 2 g sin θ₁ = 0\n"
+        "l θ̈₂ + l θ̈₁ cos Δ − l θ̇₁² sin Δ + g sin θ₂ = 0\n"
+        "where Δ = θ₁ − θ₂"
+    )
+    assert compare(expected, submitted, kind="equations", **double).status == "equivalent"
+    assert compare(expected, submitted.replace("θ₁ − θ₂", "θ₂ − θ₁"), kind="equations", **double).status == (
+        "not_equivalent"
+    )
 
 
 def test_definitions_that_would_build_huge_numbers_are_not_put_in_place():
