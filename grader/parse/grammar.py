@@ -32,7 +32,14 @@ import sympy
 
 from grader.parse.functions import COMPLEX, SYMPY
 from grader.parse.messages import ParseFailure
-from grader.parse.names import CONSTANT_WORDS, FUNCTION_NAMES, GREEK_BY_LETTER, canonical_name, split_derivative
+from grader.parse.names import (
+    CONSTANT_WORDS,
+    FUNCTION_NAMES,
+    GREEK_BY_LETTER,
+    JOINING_WORDS,
+    canonical_name,
+    split_derivative,
+)
 from grader.parse.tokens import LIMITS, Name, Token
 
 __all__ = ["TIME", "Context", "parse_tokens"]
@@ -859,12 +866,9 @@ def _is_number_label(tokens: list[Token], positions: list[int], number: int) -> 
     return value.kind == "name" and not (value.value.dots or value.value.primes) and value.value.raw in spelled
 
 
-_JOINING_WORDS = frozenset({"and", "where", "with"})
-
-
 def _is_joining_word(token: Token) -> bool:
     """*and*, *where* or *with* between two equations: ``θ̈ = −ω² sin θ, where ω² = g/l``."""
-    return token.kind == "name" and token.value.raw in _JOINING_WORDS and not (token.value.dots or token.value.primes)
+    return token.kind == "name" and token.value.raw in JOINING_WORDS and not (token.value.dots or token.value.primes)
 
 
 def _is_raw(token: Token, raw: str) -> bool:

@@ -3,6 +3,7 @@
 Contents:
     GREEK_BY_LETTER, GREEK_NAMES   Unicode Greek letters and their ASCII names
     CONSTANT_WORDS                 "const", "constant": words for an arbitrary constant
+    JOINING_WORDS                  "and", "where", "with": words between two equations
     SUBSCRIPT_DIGITS, SUBSCRIPT_LETTERS, SUPERSCRIPTS   Unicode sub- and superscript characters
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
@@ -24,6 +25,7 @@ __all__ = [
     "FUNCTION_NAMES",
     "GREEK_BY_LETTER",
     "GREEK_NAMES",
+    "JOINING_WORDS",
     "SUBSCRIPT_DIGITS",
     "SUBSCRIPT_LETTERS",
     "SUPERSCRIPTS",
@@ -36,6 +38,7 @@ __all__ = [
 # runs of letters that are no name are read a letter at a time. The checker leaves them out
 # where a constant is allowed.
 CONSTANT_WORDS = ("const", "constant")
+JOINING_WORDS = frozenset({"and", "where", "with"})  # eq₁, where eq₂: a system, the grammar reads
 
 # Unicode letter → ASCII name. Variant forms (ϑ, ϕ, ϵ, ς) are the same letter to a
 # student, so they share a name; µ (the micro sign) is how some keyboards type μ.

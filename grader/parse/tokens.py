@@ -38,7 +38,14 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from grader.parse.messages import ParseFailure
-from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, SUBSCRIPT_DIGITS, SUBSCRIPT_LETTERS, SUPERSCRIPTS
+from grader.parse.names import (
+    FUNCTION_NAMES,
+    GREEK_BY_LETTER,
+    JOINING_WORDS,
+    SUBSCRIPT_DIGITS,
+    SUBSCRIPT_LETTERS,
+    SUPERSCRIPTS,
+)
 
 __all__ = ["LIMITS", "Name", "Token", "tokenize"]
 
@@ -144,7 +151,6 @@ _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "b
 _LATEX_ANNOTATIONS = re.compile(r"\s*\{[^{}]{0,40}\}")
 _TEXT_PUNCTUATION = re.compile(r"\s*\{\s*[.,;]?\s*\}")
 _OPERATOR_NAME = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}")
-_JOINING_WORDS = {"and", "where", "with"}  # \text{where} between equations is the grammar's to read
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
 _SIZES = {f"{size}{side}" for size in ("big", "Big", "bigg", "Bigg") for side in ("", "l", "r", "m")}
 _LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "quad", "qquad", "limits", *_SIZES}
@@ -558,7 +564,7 @@ class _Tokenizer:
         ):
             self.pos = name.end()  # \operatorname{cos} or \text{cos}, as \cos
             self.tokens.append(Token("func", FUNCTION_NAMES[name[1]], start, self.pos))
-        elif command == "text" and (word := _OPERATOR_NAME.match(text, self.pos)) and word[1] in _JOINING_WORDS:
+        elif command == "text" and (word := _OPERATOR_NAME.match(text, self.pos)) and word[1] in JOINING_WORDS:
             self.pos = word.end()  # eq₁ \text{ where } eq₂: the word between two equations
             self.tokens.append(Token("name", Name(word[1]), start, self.pos))
         elif command in _LATEX_FONTS:  # \mathcal{F}, \mathrm{d}: the letters, in another typeface
