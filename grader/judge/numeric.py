@@ -352,12 +352,13 @@ def _compile(expr, index: Mapping[sympy.Symbol, int], backend: _Backend):
         position = index[expr]
         return lambda values, scale: values[position]
     if expr.is_Rational or expr.is_Float:
-        p, q = expr.as_numer_denom() if expr.is_Rational else sympy.Rational(expr).as_numer_denom()
+        exact = expr if expr.is_Rational else sympy.Rational(expr)
+        p, q = int(exact.p), int(exact.q)
         try:
-            constant = backend.number(int(p), int(q))
+            constant = backend.number(p, q)
         except OverflowError as overflow:
             raise NotCompilable("a number too large for floating point") from overflow
-        if max(abs(int(p)), int(q)) > backend.digits:
+        if max(abs(p), q) > backend.digits:
             # 1 + 10⁻³⁰ folded into one number: a sum whose small term rounds away
 
             def rounded(values, scale):
