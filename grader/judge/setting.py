@@ -98,8 +98,21 @@ class Setting:
 
     def node(self, name: str, order: int) -> sympy.Expr:
         """The coordinate, or its derivative of ``order``, as the parser builds it."""
+        if (name, order) in self._nodes:
+            return self._nodes[(name, order)]
         q = self.functions[name]
         return q if order == 0 else sympy.Derivative(q, (TIME, order))
+
+    @cached_property
+    def _nodes(self) -> dict:
+        # built once: a sympy Derivative takes 16 µs to build, 150 µs with sympy's cache emptied
+        nodes = {}
+        for name in self.coords:
+            q = self.functions[name]
+            nodes |= {
+                (name, order): sympy.Derivative(q, (TIME, order)) if order else q for order in range(MAX_ORDER + 1)
+            }
+        return nodes
 
     def velocity(self, name: str) -> sympy.Symbol:
         return self.state[(name, 1)]
