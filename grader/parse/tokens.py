@@ -559,14 +559,14 @@ class _Tokenizer:
             self.pos = punctuation.end()
         elif (
             command in ("operatorname", "text")
-            and (name := _OPERATOR_NAME.match(text, self.pos))
-            and name[1] in FUNCTION_NAMES
+            and (word := _OPERATOR_NAME.match(text, self.pos))
+            and (word[1] in FUNCTION_NAMES or (command == "text" and word[1] in JOINING_WORDS))
         ):
-            self.pos = name.end()  # \operatorname{cos} or \text{cos}, as \cos
-            self.tokens.append(Token("func", FUNCTION_NAMES[name[1]], start, self.pos))
-        elif command == "text" and (word := _OPERATOR_NAME.match(text, self.pos)) and word[1] in JOINING_WORDS:
-            self.pos = word.end()  # eq₁ \text{ where } eq₂: the word between two equations
-            self.tokens.append(Token("name", Name(word[1]), start, self.pos))
+            self.pos = word.end()
+            if word[1] in FUNCTION_NAMES:  # \operatorname{cos} or \text{cos}, as \cos
+                self.tokens.append(Token("func", FUNCTION_NAMES[word[1]], start, self.pos))
+            else:  # eq₁ \text{ where } eq₂: the word between two equations
+                self.tokens.append(Token("name", Name(word[1]), start, self.pos))
         elif command in _LATEX_FONTS:  # \mathcal{F}, \mathrm{d}: the letters, in another typeface
             braced = _BRACED_LETTERS.match(text, self.pos)
             if not braced:
@@ -580,8 +580,7 @@ class _Tokenizer:
         """``$`` or ``$$`` around math is read past; one that opens the math again after it was
         closed, ``$$eq₁$$ $$eq₂$$``, starts another equation, as a new line would."""
         width = 2 if self.text.startswith("$$", self.pos) else 1
-        last = self.tokens[-1] if self.tokens else None
-        ends_value = last is not None and (last.kind in ("name", "num", "sup") or last.is_op(")", "]", "}"))
+        ends_value = self._after_value() or (bool(self.tokens) and self.tokens[-1].kind == "name")
         if not self.in_math and self.math_closed and ends_value:
             self.tokens.append(Token("sep", "\n", self.pos, self.pos + width))
         self.math_closed |= self.in_math
