@@ -868,11 +868,12 @@ def _is_number_label(tokens: list[Token], positions: list[int], number: int) -> 
 
 def _is_joining_word(token: Token) -> bool:
     """*and*, *where* or *with* between two equations: ``θ̈ = −ω² sin θ, where ω² = g/l``."""
-    return token.kind == "name" and token.value.raw in JOINING_WORDS and not (token.value.dots or token.value.primes)
+    return _is_raw(token, *JOINING_WORDS)
 
 
-def _is_raw(token: Token, raw: str) -> bool:
-    return token.kind == "name" and token.value.raw == raw and not (token.value.dots or token.value.primes)
+def _is_raw(token: Token, *raws: str) -> bool:
+    """Whether the token is a name typed as one of ``raws``, without dots or primes."""
+    return token.kind == "name" and token.value.raw in raws and not (token.value.dots or token.value.primes)
 
 
 def _after_dt(tokens: list[Token], i: int) -> int | None:
