@@ -13,7 +13,6 @@ checkers only compare.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
@@ -31,7 +30,7 @@ from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
-from grader.parse import LIMITS, ParsedAnswer, parse_answer
+from grader.parse import ParsedAnswer, parse_answer, too_many_digits
 from grader.parse.names import CONSTANT_WORDS, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
@@ -190,7 +189,7 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
         items = [
             sympy.Eq(i.lhs.xreplace({symbol: value}), i.rhs.xreplace({symbol: value}), evaluate=False) for i in items
         ]
-        if any(_too_large(number) for item in items for number in item.atoms(sympy.Rational)):
+        if any(too_many_digits(number) for item in items for number in item.atoms(sympy.Rational)):
             return answer
     if len(items) == len(answer.value):
         return answer
@@ -209,11 +208,6 @@ def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sy
     if not any(base in other.free_symbols for other in items if other is not item):
         return None
     return base, item.rhs ** sympy.Rational(1, int(power))  # a name for a positive quantity, as parameters are
-
-
-def _too_large(number: sympy.Rational) -> bool:
-    bits = int(number.p).bit_length() + int(number.q).bit_length()
-    return bits * math.log10(2) > LIMITS.power_digits
 
 
 def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:

@@ -42,7 +42,7 @@ from grader.parse.names import (
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
-__all__ = ["TIME", "Context", "parse_tokens"]
+__all__ = ["TIME", "Context", "parse_tokens", "too_many_digits"]
 
 TIME = sympy.Symbol("t", real=True)
 
@@ -1013,13 +1013,10 @@ def _check_size(value, token: Token) -> None:
         # The parts were checked as they were built; only combining them makes new coefficients.
         for term in sympy.Add.make_args(value):
             coefficient = term.as_coeff_Mul()[0]
-            if coefficient.is_Rational and _digits(coefficient.p) + _digits(coefficient.q) > LIMITS.power_digits:
+            if coefficient.is_Rational and too_many_digits(coefficient):
                 raise ParseFailure("value_too_large", token.start, token.end)
         return
-    if value.is_Rational:
-        too_large = _digits(value.p) + _digits(value.q) > LIMITS.power_digits
-    else:
-        too_large = not _magnitude(value) <= _MAX_MAGNITUDE
+    too_large = too_many_digits(value) if value.is_Rational else not _magnitude(value) <= _MAX_MAGNITUDE
     if too_large:
         raise ParseFailure("value_too_large", token.start, token.end)
 
@@ -1054,6 +1051,12 @@ def _float(value) -> complex:
     if function is None or len(value.args) != 1:
         raise ValueError(f"no float estimate for {type(value).__name__}")
     return complex(function(_float(value.args[0])))
+
+
+def too_many_digits(number: sympy.Rational) -> bool:
+    """Whether a rational number holds more digits, numerator and denominator together, than
+    :data:`LIMITS` allow an answer's constants: the parser's cap, which the checker keeps too."""
+    return _digits(number.p) + _digits(number.q) > LIMITS.power_digits
 
 
 def _digits(n: int) -> int:
