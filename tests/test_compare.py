@@ -366,6 +366,45 @@ def test_a_system_may_define_its_own_names():
     )
 
 
+SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
+SPHERICAL_EOM = (
+    "thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta);"
+    " sin(theta)^2 phiddot + 2 sin(theta) cos(theta) thetadot phidot = 0"
+)
+
+
+@pytest.mark.parametrize(
+    ("conserved", "status"),
+    [
+        ("m l² sin²θ φ̇ = const", "equivalent"),  # p_φ: φ is cyclic
+        ("C = m l^2 sin(theta)^2 phidot", "equivalent"),
+        ("p = m l² sin²θ φ̇, p = C₁", "equivalent"),  # named first, then conserved
+        ("m l² sin θ φ̇ = const", "not_equivalent"),  # not the conserved quantity
+        ("m l² sin²θ φ̈ = const", "not_equivalent"),  # an acceleration is no conserved quantity: C undefined
+        ("m l² sin²θ φ̇ = r", "not_equivalent"),  # r is no word for a constant
+    ],
+)
+def test_a_conserved_quantity_is_read_as_an_equation_of_motion(conserved, status):
+    submitted = f"θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; {conserved}"
+    assert compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL).status == status
+
+
+def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
+    submitted = "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; m l² sin θ φ̇ = const"
+    verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)
+    assert verdict.feedback[0] == "Your equation for φ is not right; equation 1 is right."
+    assert "conserved quantity" in verdict.feedback[1]
+    # energy for one coordinate: its derivative is the equation of motion times θ̇, which vanishes at rest
+    energy = compare("thetaddot = -g/l sin(theta)", "½ m l² θ̇² − m g l cos θ = C", kind="equation", **PENDULUM)
+    assert (energy.diagnosis, len(energy.feedback)) == ("vanishing_factor", 2)
+
+
+def test_a_conserved_quantity_too_large_to_differentiate_is_left_as_typed():
+    huge = " + ".join(f"m l^{k} sin(theta)^{k} phidot^{k}" for k in range(2, 40))
+    verdict = compare(SPHERICAL_EOM, f"θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; {huge} = C", kind="equations", **SPHERICAL)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "undefined_symbol")
+
+
 def test_definitions_that_would_build_huge_numbers_are_not_put_in_place():
     # each equation is within the parser's caps; substituting one into the next is not
     verdict = compare(

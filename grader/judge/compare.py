@@ -13,8 +13,9 @@ checkers only compare.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import sympy
 from sympy.core.function import AppliedUndef
@@ -30,7 +31,7 @@ from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
-from grader.parse import ParsedAnswer, parse_answer, too_many_digits
+from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import CONSTANT_WORDS, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
@@ -134,7 +135,7 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Verdict:
-    answer = None
+    answer, conserved = None, 0
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
@@ -146,12 +147,15 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
+                answer, conserved = _conserved(answer, spec, expected)
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 early = _mismatch(spec, expected, answer)
                 if early:
                     return _verdict(early, answer)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+            if spec.parsed and conserved and outcome.status != "equivalent":
+                outcome = replace(outcome, more=(*outcome.more, ("conserved_read", {})))
     except CheckTimeout:
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")
     except _CHECK_FAILURES as failure:
@@ -210,6 +214,46 @@ def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sy
     return base, item.rhs ** sympy.Rational(1, int(power))  # a name for a positive quantity, as parameters are
 
 
+_ARBITRARY = ("C", *CONSTANT_WORDS)  # what students add for "any constant"
+
+
+def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, int]:
+    """``m l² sin²θ φ̇ = const``: a conserved quantity, as the equation of motion of a cyclic
+    coordinate is often first written (p_φ = const). Where equations of motion are asked, an
+    equation whose one side is an arbitrary constant (``C``, ``C₁``, ``const``, a name the problem
+    does not define) and whose other side is a quantity of the motion (coordinates and
+    velocities in the problem's names) is read as its time derivative, d/dt (…) = 0.
+
+    Returns the answer and how many of its equations were so read."""
+    if spec.shape not in ("equation", "equations") or answer.kind == "expression":
+        return answer, 0
+    items = answer.value if answer.kind == "equations" else (answer.value,)
+    read = [_rate_of_conserved(item, expected) for item in items]
+    count = sum(item is not None for item in read)
+    if not count:
+        return answer, 0
+    items = tuple(new if new is not None else old for new, old in zip(read, items, strict=True))
+    return ParsedAnswer(answer.text, items if answer.kind == "equations" else items[0], answer.kind), count
+
+
+def _rate_of_conserved(item: sympy.Eq, expected: Expected) -> sympy.Eq | None:
+    """``d/dt (quantity) = 0`` for ``quantity = C``, either way round; None for any other equation."""
+    for quantity, constant in ((item.lhs, item.rhs), (item.rhs, item.lhs)):
+        if not (constant.is_Symbol and _is_arbitrary(constant.name) and constant.name not in expected.names):
+            continue
+        in_motion = quantity.atoms(AppliedUndef) & set(expected.setting.functions.values())
+        names = {symbol.name for symbol in quantity.free_symbols}
+        velocities_only = all(d.derivative_count == 1 for d in quantity.atoms(sympy.Derivative))
+        if in_motion and names <= expected.names and velocities_only and within_diff_budget(quantity):
+            return sympy.Eq(sympy.diff(quantity, TIME), 0, evaluate=False)
+    return None
+
+
+def _is_arbitrary(name: str) -> bool:
+    """``C``, ``const``, ``constant``, or a numbered ``C₁``: what students write for any constant."""
+    return name in _ARBITRARY or re.fullmatch(r"C_[0-9]+", name) is not None
+
+
 def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` or ``ẍ = …`` for an expression: the name is not
     the answer. Nor is ``T − V = …``, a left side only in names the problem does not define."""
@@ -222,9 +266,6 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     return answer
-
-
-_ARBITRARY = ("C", *CONSTANT_WORDS)  # what students add for "any constant"
 
 
 def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:

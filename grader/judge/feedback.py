@@ -38,6 +38,8 @@ FEEDBACK: dict[str, str] = {
     "wrong_equation": "Your equation for {coords} is not right; {right}.",
     "wrong_equations": "Your equations do not determine the right accelerations for {coords}.",
     "dependent_equations": "Your equations are not independent: they do not determine every acceleration.",
+    "conserved_read": "`… = const` was read as a conserved quantity: what was compared is its time derivative,"
+    " d/dt (…) = 0.",
     "vanishing_factor": "Your equation is right only where a factor of it is not zero: at rest, or where a"
     " coordinate is 0, it no longer says what the acceleration is. Divide that factor out.",
     "vanishing_factor_system": "One of your equations is right only where a factor of it is not zero: at rest,"

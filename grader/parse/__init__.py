@@ -6,6 +6,7 @@ Contents:
     Refusal                              why an answer could not be read, and where
     TIME                                 the symbol t the coordinates depend on
     too_many_digits(number)              whether a constant is beyond the parser's cap on digits
+    within_diff_budget(value, order)     whether a value is small enough to differentiate in t
 
 The modules behind it: ``tokens`` (the whitelist and threat model), ``grammar``
 (tokens to sympy), ``names`` (one spelling per name), ``messages`` (every word a
@@ -20,12 +21,12 @@ from functools import cached_property
 
 import sympy
 
-from grader.parse.grammar import TIME, Context, parse_tokens, too_many_digits
+from grader.parse.grammar import TIME, Context, parse_tokens, too_many_digits, within_diff_budget
 from grader.parse.messages import ParseFailure, Refusal, refusal
 from grader.parse.readback import to_latex, to_mathml, to_text
 from grader.parse.tokens import LIMITS, tokenize
 
-__all__ = ["LIMITS", "TIME", "ParsedAnswer", "Refusal", "parse_answer", "too_many_digits"]
+__all__ = ["LIMITS", "TIME", "ParsedAnswer", "Refusal", "parse_answer", "too_many_digits", "within_diff_budget"]
 
 
 @dataclass(frozen=True)

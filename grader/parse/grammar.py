@@ -605,8 +605,7 @@ class _Parser:
             if total > LIMITS.derivative_order:
                 raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
             return self.context.derivative(target.expr, total)
-        # Each differentiation of a product multiplies its terms: see _DIFF_BUDGET.
-        if sympy.count_ops(target, visual=False) ** (order + 1) > _DIFF_BUDGET:
+        if not within_diff_budget(target, order):
             raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
         derivative = sympy.diff(target, TIME, order)
         # d/dt (d/dt (m θ̇)) nests past the order cap that θ⃛ and diff(θ, t, 3) meet
@@ -1051,6 +1050,12 @@ def _float(value) -> complex:
     if function is None or len(value.args) != 1:
         raise ValueError(f"no float estimate for {type(value).__name__}")
     return complex(function(_float(value.args[0])))
+
+
+def within_diff_budget(value, order: int = 1) -> bool:
+    """Whether ``value`` is small enough to differentiate ``order`` times in t: each
+    differentiation of a product multiplies its terms (see :data:`_DIFF_BUDGET`)."""
+    return sympy.count_ops(value, visual=False) ** (order + 1) <= _DIFF_BUDGET
 
 
 def too_many_digits(number: sympy.Rational) -> bool:
