@@ -129,6 +129,7 @@ DERIVATIVES = [
     ("diff(theta, t)", D(theta)),
     ("thetaddot", D(theta, 2)),
     ("theta_ddot", D(theta, 2)),
+    ("theta_dd + theta_d + theta1_dd", D(theta, 2) + D(theta) + D(theta1, 2)),  # as code spells them
     ("theta''", D(theta, 2)),
     ("θ̈", D(theta, 2)),
     ("\\ddot{\\theta}", D(theta, 2)),
@@ -161,6 +162,9 @@ DERIVATIVES = [
 
 LEIBNIZ = [
     ("d/dt(theta)", D(theta)),
+    # as code spells rates: a d or dd before a coordinate
+    ("dtheta^2 + ddx", D(theta) ** 2 + D(x, 2)),
+    ("dtheta1 dθ₂ + ddtheta_1", D(theta1) * D(theta2) + D(theta1, 2)),
     ("dθ/dt", D(theta)),
     ("d^2x/dt^2", D(x, 2)),
     ("d²x/dt²", D(x, 2)),
@@ -334,6 +338,12 @@ def test_leibniz_notation_is_a_time_derivative(text, expected):
 
 def test_d_and_dt_are_symbols_when_the_problem_defines_them():
     assert parse_answer("d/dt x", known=["d"], coords=["x"]).value == x / t  # d·x/(d·t): the problem said d
+    d = sympy.Symbol("d")
+    assert parse_answer("dx + ddx", known=["d"], coords=["x"]).value == d * x + d**2 * x  # not ẋ + ẍ
+
+
+def test_a_d_before_a_name_that_is_no_coordinate_is_part_of_the_name():
+    assert parse_answer("dy + da", coords=["x"]).value == sympy.Symbol("dy") + sympy.Symbol("da")
 
 
 def test_e_is_a_symbol_when_the_problem_defines_one():

@@ -39,6 +39,7 @@ from grader.parse.names import (
     JOINING_WORDS,
     canonical_name,
     split_derivative,
+    split_prefixed_derivative,
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
@@ -710,6 +711,8 @@ class _Parser:
         if canonical in context.known:
             return context.known[canonical]
         derivative = split_derivative(canonical)
+        if derivative is None and "d" not in context.known:
+            derivative = split_prefixed_derivative(canonical)
         if derivative and derivative[0] in context.coords:
             return context.derivative(context.coords[derivative[0]], derivative[1])
         if canonical == "pi":

@@ -7,6 +7,7 @@ Contents:
     SUBSCRIPT_DIGITS, SUBSCRIPT_LETTERS, SUPERSCRIPTS   Unicode sub- and superscript characters
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
+    split_prefixed_derivative(name)  ``dtheta1`` → (``theta_1``, 1)
     unicode_name(name)             ``theta_1`` → ``θ₁``, for reading an answer back
 
 Every spelling of one name is one symbol: ``theta1``, ``theta_1``, ``θ₁`` and
@@ -31,6 +32,7 @@ __all__ = [
     "SUPERSCRIPTS",
     "canonical_name",
     "split_derivative",
+    "split_prefixed_derivative",
     "unicode_name",
 ]
 
@@ -75,7 +77,8 @@ FUNCTION_NAMES: dict[str, str] = {
 
 _TRAILING_DIGITS = re.compile(r"^([A-Za-z]+)_?([0-9]+)$")
 # Lazy base so that ``thetaddot`` is theta + ddot, not thetad + dot.
-_DERIVATIVE = re.compile(r"^(?P<base>[A-Za-z]+?(?:_?[0-9]+)?)_?(?P<dots>d?dot)(?:_?(?P<sub>[0-9]+))?$")
+_DERIVATIVE = re.compile(r"^(?P<base>[A-Za-z]+?(?:_?[0-9]+)?)(?:_?(?P<dots>d?dot)|_(?P<ds>dd?))(?:_?(?P<sub>[0-9]+))?$")
+_PREFIXED = re.compile(r"^(?P<ds>dd?)(?P<base>[A-Za-z]+(?:_[0-9]+)?)$")
 
 
 def canonical_name(raw: str) -> str:
@@ -102,7 +105,7 @@ def _ascii_char(c: str) -> str:
 
 
 def split_derivative(name: str) -> tuple[str, int] | None:
-    """Split a ``dot``/``ddot`` suffix off a canonical name.
+    """Split a ``dot``/``ddot`` suffix (or ``_d``/``_dd``, as in code) off a canonical name.
 
     Returns the canonical base name and the number of dots, or ``None`` when the
     name has no such suffix. Whether the base is a coordinate is the caller's
@@ -110,6 +113,8 @@ def split_derivative(name: str) -> tuple[str, int] | None:
 
     >>> split_derivative("thetaddot"), split_derivative("theta_1dot"), split_derivative("xdot_2")
     (('theta', 2), ('theta_1', 1), ('x_2', 1))
+    >>> split_derivative("theta_dd"), split_derivative("theta_1_d")
+    (('theta', 2), ('theta_1', 1))
     >>> split_derivative("theta") is None
     True
     """
@@ -121,7 +126,22 @@ def split_derivative(name: str) -> tuple[str, int] | None:
         if _TRAILING_DIGITS.match(base):
             return None  # two subscripts, as in theta1dot2: not a name we know
         base = f"{base}_{match['sub']}"
-    return canonical_name(base), 2 if match["dots"] == "ddot" else 1
+    return canonical_name(base), 2 if match["dots"] == "ddot" or match["ds"] == "dd" else 1
+
+
+def split_prefixed_derivative(name: str) -> tuple[str, int] | None:
+    """Split a ``d``/``dd`` prefix off a canonical name, as code spells a rate: ``dtheta``, ``ddx``.
+
+    Only where the problem has no symbol ``d`` (else ``dx`` is d·x), which is the caller's
+    question, as is whether the base is a coordinate.
+
+    >>> split_prefixed_derivative("dtheta_1"), split_prefixed_derivative("ddx")
+    (('theta_1', 1), ('x', 2))
+    """
+    match = _PREFIXED.match(name)
+    if not match:
+        return None
+    return match["base"], len(match["ds"])
 
 
 def unicode_name(name: str, dots: int = 0) -> str:
