@@ -6,9 +6,12 @@ Contents:
     the run        ``python -m grader grade`` as a fresh process, timed from its start to its
                    last file written; its process tree's memory sampled every 20 ms
     output         wall time, verdicts per second, peak memory (the tree's summed RSS), and the
-                   targets: ≤ 20 s on 2 cores, ≤ 500 MB
+                   targets: ≤ 20 s on 2 cores, ≤ 500 MB; and how many distinct answers the class
+                   gave, since an answer given word for word again is graded once a worker
 
-Run: ``python benchmarks/batch.py [--students N] [--jobs N]``.
+Run: ``python benchmarks/batch.py [--students N] [--jobs N] [--all-distinct]``. With
+``--all-distinct`` every answer is made unique (trailing spaces, as many as the student's
+number), so each of the verdicts is graded: the checker's cost alone, as no real class is.
 """
 
 from __future__ import annotations
@@ -45,7 +48,7 @@ def _pool(problem, part) -> list[str]:
     return [answer for answer in answers if answer] + [""]  # and a blank
 
 
-def write_class(folder: Path, students: int) -> tuple[Path, Path]:
+def write_class(folder: Path, students: int, distinct: bool = False) -> tuple[Path, Path]:
     bank = load_bank(ROOT / "problems")
     parts = []
     for problem_id, part_id in PARTS:
@@ -61,8 +64,10 @@ def write_class(folder: Path, students: int) -> tuple[Path, Path]:
         writer.writerow(["id", "name", "email", *(f"{p.id}.{q.id}" for p, q in parts)])
         pools = [_pool(p, q) for p, q in parts]
         for number in range(students):
-            writer.writerow([f"s{number:04d}", f"Student {number}", f"s{number}@example.org",
-                             *(rng.choice(pool) for pool in pools)])  # fmt: skip
+            answers = [rng.choice(pool) for pool in pools]
+            if distinct:
+                answers = [answer + " " * number if answer else answer for answer in answers]
+            writer.writerow([f"s{number:04d}", f"Student {number}", f"s{number}@example.org", *answers])
     assignment = folder / "synthetic.yaml"
     items = {}
     for problem, part in parts:
@@ -71,6 +76,12 @@ def write_class(folder: Path, students: int) -> tuple[Path, Path]:
     lines += [f"  - {{problem: {pid}, parts: [{', '.join(ids)}]}}" for pid, ids in items.items()]
     assignment.write_text("\n".join(lines) + "\n", encoding="utf-8")
     return submissions, assignment
+
+
+def _distinct(submissions: Path) -> int:
+    with submissions.open(newline="", encoding="utf-8") as file:
+        header, *rows = csv.reader(file)
+    return len({(column, row[column]) for row in rows for column in range(3, len(header)) if row[column].strip()})
 
 
 def _tree_rss(pid: int) -> int:
@@ -91,11 +102,12 @@ def _tree_rss(pid: int) -> int:
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--students", type=int, default=300)
+    parser.add_argument("--all-distinct", action="store_true", help="no answer given twice: each one graded")
     parser.add_argument("--jobs", type=int, default=None)
     args = parser.parse_args(argv)
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch)
-        submissions, assignment = write_class(folder, args.students)
+        submissions, assignment = write_class(folder, args.students, args.all_distinct)
         command = [sys.executable, "-m", "grader", "grade", str(submissions), "--assignment", str(assignment),
                    "--out", str(folder / "out"), "--bank", str(ROOT / "problems")]  # fmt: skip
         if args.jobs:
@@ -110,6 +122,8 @@ def main(argv: list[str]) -> int:
         out, err = process.communicate()
         verdicts = args.students * len(PARTS)
         print(f"batch grading, {args.students} students × {len(PARTS)} parts = {verdicts} verdicts")
+        # answers given word for word by several students are graded once a worker: say how many there are
+        print(f"  distinct answers (part, text): {_distinct(submissions)}")
         print(f"  exit status {process.returncode}; {out.strip().splitlines()[0] if out.strip() else err[-500:]}")
         print(f"  wall time, cold start to last file: {wall:.2f} s   (target ≤ {TARGET_SECONDS:g} s on 2 cores)")
         print(f"  verdicts per second: {verdicts / wall:.0f}")

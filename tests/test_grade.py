@@ -26,6 +26,7 @@ from grader.export import (
 )
 from grader.grade import batch
 from grader.grade.batch import assignment_parts, grade_class, grade_submission
+from grader.grade.part import grade_answer
 from grader.grade.results import PartGrade, Student, SubmissionGrade
 from grader.grade.submissions import Submission, read_submissions
 from grader.run import file_name
@@ -167,6 +168,37 @@ def test_equations_right_for_the_students_own_wrong_lagrangian_earn_method_credi
     )
 
 
+def test_an_answer_given_word_for_word_is_graded_once_a_run(tmp_path, monkeypatch):
+    assignment = _pendulum_only(tmp_path)
+    right, wrong = PENDULUM_L, "1/2 m l^2 thetadot^2 - m g l cos(theta)"
+    answers = [right, wrong, right, wrong + " ", right]  # a space makes another answer
+    submissions = [Submission(Student(f"s{i}"), {"plane-pendulum.lagrangian": a}) for i, a in enumerate(answers)]
+    graded = []
+
+    def counted(problem, part, submitted, **options):
+        graded.append((part.id, submitted))
+        return grade_answer(problem, part, submitted, **options)
+
+    monkeypatch.setattr(batch, "grade_answer", counted)
+    grades = grade_class(submissions, assignment, BANK, jobs=1)
+    assert graded == [("lagrangian", right), ("lagrangian", wrong), ("lagrangian", wrong + " ")]
+    scores = [next(p for p in g.parts if p.part == "lagrangian").auto_score for g in grades]
+    assert scores == [4, 0, 4, 0, 4]
+    # and each grade is the one it would get alone
+    alone = [grade_submission(s, assignment, BANK) for s in submissions]
+    assert [g.parts for g in grades] == [g.parts for g in alone]
+
+
+def test_carried_forward_credit_is_not_shared_between_different_lagrangians(tmp_path):
+    assignment = _pendulum_only(tmp_path)
+    motion = "m l^2 thetaddot - m g l sin(theta) = 0"  # what T + V implies
+    own = {"plane-pendulum.lagrangian": "1/2 m l^2 thetadot^2 - m g l cos(theta)", "plane-pendulum.motion": motion}
+    other = {"plane-pendulum.lagrangian": "m g l cos(theta)", "plane-pendulum.motion": motion}
+    grades = grade_class([Submission(Student("a"), own), Submission(Student("b"), other)], assignment, BANK, jobs=1)
+    methods = [next(p for p in g.parts if p.part == "motion").method for g in grades]
+    assert methods[0] == "error carried forward" and methods[1] != "error carried forward"
+
+
 def test_assignment_points_weight_a_problem(tmp_path):
     path = tmp_path / "a.yaml"
     item = "{problem: plane-pendulum, parts: [lagrangian, motion], points: 14}"
@@ -175,7 +207,7 @@ def test_assignment_points_weight_a_problem(tmp_path):
     assert [(part.id, points) for _, part, points in parts] == [("lagrangian", 8.0), ("motion", 6.0)]
 
 
-def _dies_for_s2(submission, assignment, bank, *, timeout):
+def _dies_for_s2(submission, assignment, bank, *, timeout, graded):
     if submission.student.id == "s2":
         os._exit(3)  # a worker killed mid-task, as by the kernel's OOM killer
     return SubmissionGrade(submission.student, ())
@@ -192,7 +224,7 @@ def test_a_worker_that_dies_costs_only_its_own_submission(monkeypatch):
 
 
 def test_an_exception_while_grading_is_that_students_result(monkeypatch):
-    def explode(submission, assignment, bank, *, timeout):
+    def explode(submission, assignment, bank, *, timeout, graded):
         raise RuntimeError("boom")
 
     monkeypatch.setattr(batch, "grade_submission", explode)

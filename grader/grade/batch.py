@@ -49,13 +49,31 @@ def assignment_parts(assignment: Assignment, bank: dict[str, Problem]) -> list[t
 
 
 def grade_submission(
-    submission: Submission, assignment: Assignment, bank: dict[str, Problem], *, timeout: float = DEFAULT_TIMEOUT
+    submission: Submission,
+    assignment: Assignment,
+    bank: dict[str, Problem],
+    *,
+    timeout: float = DEFAULT_TIMEOUT,
+    graded: dict | None = None,
 ) -> SubmissionGrade:
-    """Every part of the assignment for one student."""
+    """Every part of the assignment for one student.
+
+    ``graded``, a dict kept for one grading run, holds every answer's grade as it is made: an
+    answer another student already gave, character for character, takes that grade instead of
+    being graded again. Verdicts are deterministic, so it is the grade it would get anyway.
+    """
     grades = []
     for problem, part, points in assignment_parts(assignment, bank):
         answer = submission.answers.get(f"{problem.id}.{part.id}", "")
-        grades.append(_grade_part(problem, part, points, answer, submission.answers, timeout))
+        # carried-forward credit depends on the answer derived from, too
+        source = submission.answers.get(f"{problem.id}.{part.derive_from}", "") if part.derive_from else None
+        key = (problem.id, part.id, points, answer, source)
+        grade = graded.get(key) if graded is not None else None
+        if grade is None:
+            grade = _grade_part(problem, part, points, answer, submission.answers, timeout)
+            if graded is not None:
+                graded[key] = grade
+        grades.append(grade)
     return SubmissionGrade(submission.student, tuple(grades))
 
 
@@ -111,7 +129,8 @@ def limit_memory() -> None:
 def _grade_one(index: int) -> tuple[int, SubmissionGrade]:
     submission = _WORK["submissions"][index]
     try:
-        return index, grade_submission(submission, _WORK["assignment"], _WORK["bank"], timeout=_WORK["timeout"])
+        arguments = {"timeout": _WORK["timeout"], "graded": _WORK["graded"]}
+        return index, grade_submission(submission, _WORK["assignment"], _WORK["bank"], **arguments)
     except Exception as error:  # one student's failure is that student's result
         return index, _failed(submission, f"could not be graded: {type(error).__name__}: {error}")
 
@@ -134,7 +153,9 @@ def grade_class(
     ``jobs`` worker processes (default: the machine's cores; 1 grades in this process);
     ``progress(n)`` is called as each submission is done.
     """
-    _WORK.update(submissions=list(submissions), assignment=assignment, bank=bank, timeout=timeout)
+    # each worker keeps the grades it makes (forked, it starts from this empty dict): an answer
+    # many students gave word for word is graded once a worker, not once a student
+    _WORK.update(submissions=list(submissions), assignment=assignment, bank=bank, timeout=timeout, graded={})
     jobs = jobs or os.cpu_count() or 1
     results: dict[int, SubmissionGrade] = {}
     pending = list(range(len(submissions)))
