@@ -112,7 +112,9 @@ HOSTILE = [
     # -- LaTeX that is not mathematics ------------------------------------------
     ("\\input{/etc/passwd}", "unknown_command"),
     ("\\def\\x{1}", "unknown_command"),
-    ("\\text{hello}", "unknown_command"),
+    ("\\text{hello}", "latex_words"),
+    ("\\sqrt{g/l}\\,\\mathrm{rad/s}", "latex_words"),  # a unit: said so, not "\\mathrm is unknown"
+    ("\\text{{a}}", "unknown_command"),
     ("\\sqrt\\[3\\]{x}", "unknown_command"),
     ("m ∂θ", "partial"),  # ∂ only in a name before =, as in ∂L/∂θ̇ = …
     ("∂L/∂θ̇ + 1 = m", "partial"),  # \\[ opens the math only where a line starts
@@ -221,6 +223,11 @@ SHOWN = [
         "1234567890" * 4 + "\n" + "^" * 40,
     ),
     ("\\input{x}", "`\\input` is not a LaTeX command this grader knows.", "\\input{x}\n^^^^^^"),
+    (
+        "\\omega = \\sqrt{g/l}\\,\\mathrm{rad/s}",
+        "`\\mathrm{rad/s}` is text, not mathematics: leave units and words out of the answer.",
+        "\\omega = \\sqrt{g/l}\\,\\mathrm{rad/s}\n" + " " * 21 + "^" * 14,
+    ),
     ("m/(l-l)", "This divides by zero.", "m/(l-l)\n ^"),
     ("x" * (CAP + 1), f"Your answer is {CAP + 1} characters long; the limit is {CAP}.", ""),
     ("   ", "Your answer is empty.", ""),

@@ -40,6 +40,7 @@ MESSAGES: dict[str, str] = {
     "bad_name": "`{name}` is not a name an answer can use: names are letters and digits, joined by single underscores.",
     "unknown_function": "`{name}` is not a function this grader knows. Known functions: {known}.",
     "unknown_command": "`\\{name}` is not a LaTeX command this grader knows.",
+    "latex_words": "`{words}` is text, not mathematics: leave units and words out of the answer.",
     "function_inverse": "`{name}^-1` is ambiguous: write a{name}(x) for the inverse function or 1/{name}(x) for the reciprocal.",
     "function_power": "A power written on a function name must be a small whole number, as in sin^2(θ).",
     "missing_argument": "`{name}` needs an argument, as in {name}(θ).",

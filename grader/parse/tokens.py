@@ -149,6 +149,8 @@ _LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
 _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
 # \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop
 _LATEX_ANNOTATIONS = re.compile(r"\s*\{[^{}]{0,40}\}")
+_TEXT_COMMANDS = {"text", "textrm", "mathrm", "operatorname", "mbox"}
+_BRACED_TEXT = re.compile(r"\s*\{[^{}]{0,60}\}")  # a unit or a few words, as \mathrm{rad/s}
 _TEXT_PUNCTUATION = re.compile(r"\s*\{\s*[.,;]?\s*\}")
 _OPERATOR_NAME = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}")
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
@@ -567,12 +569,13 @@ class _Tokenizer:
                 self.tokens.append(Token("func", FUNCTION_NAMES[word[1]], start, self.pos))
             else:  # eq₁ \text{ where } eq₂: the word between two equations
                 self.tokens.append(Token("name", Name(word[1]), start, self.pos))
-        elif command in _LATEX_FONTS:  # \mathcal{F}, \mathrm{d}: the letters, in another typeface
-            braced = _BRACED_LETTERS.match(text, self.pos)
-            if not braced:
-                raise ParseFailure("unknown_command", start, self.pos, name=command)
+        elif command in _LATEX_FONTS and (braced := _BRACED_LETTERS.match(text, self.pos)):
+            # \mathcal{F}, \mathrm{d}: the letters, in another typeface
             self.pos = braced.end()
             self._finish_name(start, braced[1] or braced[2], 0)
+        elif command in _TEXT_COMMANDS and (words := _BRACED_TEXT.match(text, self.pos)):
+            # \,\mathrm{rad/s}, \text{ for small angles}: more than the mathematics
+            raise ParseFailure("latex_words", start, words.end(), words=text[start : words.end()])
         else:
             raise ParseFailure("unknown_command", start, self.pos, name=command)
 
