@@ -117,6 +117,8 @@ NAMES = [
     ("theta(t)", theta),
     ("R", R),
     ("Qᵣ + Q_r + vₓ + v_x", 2 * sympy.Symbol("Q_r") + 2 * sympy.Symbol("v_x")),  # subscript letters
+    # letters typed for Greek ones the problem defines: w for ω, th for θ, ph for φ
+    ("w^2 + th + ph + th1 + w t", omega**2 + theta + phi + theta1 + omega * t),
 ]
 
 DERIVATIVES = [
@@ -340,6 +342,15 @@ def test_d_and_dt_are_symbols_when_the_problem_defines_them():
     assert parse_answer("d/dt x", known=["d"], coords=["x"]).value == x / t  # d·x/(d·t): the problem said d
     d = sympy.Symbol("d")
     assert parse_answer("dx + ddx", known=["d"], coords=["x"]).value == d * x + d**2 * x  # not ẋ + ẍ
+
+
+def test_letters_stand_in_for_a_greek_name_only_where_the_problem_has_it_and_not_them():
+    w, th = sympy.Symbol("w"), sympy.Symbol("th")
+    assert parse_answer("w + th", coords=["x"], known=["m"]).value == w + th  # no ω or θ here
+    assert parse_answer("w", known=["w", "omega"]).value == w  # the problem's own w
+    assert parse_answer("th1'", coords=["theta_1"]).value == D(theta1)
+    h, p = sympy.Symbol("h"), sympy.Symbol("p")
+    assert parse_answer("ph + th", coords=["theta", "phi"], known=["p", "h"]).value == p * h + t * h  # splits first
 
 
 def test_a_d_before_a_name_that_is_no_coordinate_is_part_of_the_name():

@@ -40,6 +40,7 @@ from grader.parse.names import (
     canonical_name,
     split_derivative,
     split_prefixed_derivative,
+    stand_in,
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
@@ -680,6 +681,10 @@ class _Parser:
         pieces = self.split(name.raw, token)
         if pieces:
             return pieces
+        # w for ω, th₁ for θ₁: the last reading of a name, after the problem's own names and splits
+        greek = None if name.tex else stand_in(canonical)
+        if greek is not None and (whole := self.lookup(greek)) is not None:
+            return [whole]
         if name.tex and canonical in CONSTANT_WORDS:
             return [sympy.Symbol(canonical)]  # a word, not c·o·n·s·t: the constant a student may add
         if name.tex:

@@ -8,6 +8,7 @@ Contents:
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
     split_prefixed_derivative(name)  ``dtheta1`` → (``theta_1``, 1)
+    stand_in(name)                 ``w_0`` → ``omega_0``: ASCII letters typed for a Greek one
     unicode_name(name)             ``theta_1`` → ``θ₁``, for reading an answer back
 
 Every spelling of one name is one symbol: ``theta1``, ``theta_1``, ``θ₁`` and
@@ -33,6 +34,7 @@ __all__ = [
     "canonical_name",
     "split_derivative",
     "split_prefixed_derivative",
+    "stand_in",
     "unicode_name",
 ]
 
@@ -127,6 +129,24 @@ def split_derivative(name: str) -> tuple[str, int] | None:
             return None  # two subscripts, as in theta1dot2: not a name we know
         base = f"{base}_{match['sub']}"
     return canonical_name(base), 2 if match["dots"] == "ddot" or match["ds"] == "dd" else 1
+
+
+# Letters typed for a Greek one on a keyboard without it: w for ω (it looks the part), th, ph.
+_STAND_IN = re.compile(r"^(?P<letters>w|th|ph)(?P<rest>(?:_?[0-9]+)?(?:_?d?dot|_dd?)?(?:_?[0-9]+)?)$")
+_STOOD_FOR = {"w": "omega", "th": "theta", "ph": "phi"}
+
+
+def stand_in(name: str) -> str | None:
+    """The Greek name that ASCII letters stand in for, as ``w`` for ω: the caller uses it only
+    where the problem defines that name and not the letters themselves.
+
+    >>> stand_in("w_0"), stand_in("th_1dot"), stand_in("ph"), stand_in("wx")
+    ('omega_0', 'theta_1dot', 'phi', None)
+    """
+    match = _STAND_IN.match(name)
+    if not match:
+        return None
+    return canonical_name(_STOOD_FOR[match["letters"]] + match["rest"])
 
 
 def split_prefixed_derivative(name: str) -> tuple[str, int] | None:
