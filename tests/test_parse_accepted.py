@@ -136,6 +136,7 @@ DERIVATIVES = [
     ("θ̈", D(theta, 2)),
     ("\\ddot{\\theta}", D(theta, 2)),
     ("diff(theta, t, 2)", D(theta, 2)),
+    ("Derivative(theta(t), t) + Derivative(theta(t), (t, 2))", D(theta) + D(theta, 2)),  # as sympy prints them
     ("theta1dot", D(theta1)),
     ("theta1'", D(theta1)),
     ("θ̇₁", D(theta1)),

@@ -139,6 +139,10 @@ HOSTILE = [
     # -- derivatives beyond the limit -------------------------------------------
     ("theta''''", "derivative_order"),
     ("diff(theta, t, 99999999999999999999)", "derivative_order"),
+    ("Derivative(theta(t), (t, 99999999999999999999))", "derivative_order"),
+    ("Derivative(theta(t), (t, x))", "diff_usage"),
+    ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),
+    ("diff(theta, x)", "diff_usage"),
     ("d/dt(d/dt(d/dt(d/dt(theta*m))))", "derivative_order"),  # nested around a product, past the cap
 ]
 

@@ -558,7 +558,8 @@ class _Parser:
         return sympy.Mul(*pieces[:cut]), sympy.Mul(*pieces[cut:-1], self.exponent_of(base))
 
     def diff(self, token: Token):
-        """``diff(θ, t)`` and ``diff(θ, t, 2)``: time derivatives written as a call."""
+        """``diff(θ, t)``, ``diff(θ, t, 2)`` and sympy's ``Derivative(θ(t), (t, 2))``: time
+        derivatives written as a call."""
         if not self.token.is_op("("):
             raise ParseFailure("diff_usage", token.start, token.end)
         opener = self.advance()
@@ -568,12 +569,18 @@ class _Parser:
         while self.token.is_op(","):
             self.advance()
             variable = self.token
-            if variable.kind == "name" and canonical_name(variable.value.raw) == "t" and not variable.value.primes:
+            if self._is_time():
                 self.advance()
                 order += 1
             elif variable.kind == "num" and order == 1 and variable.value.isdigit():
                 self.advance()
                 order = int(variable.value)
+            elif order == 0 and variable.is_op("(") and self._is_time(1) and self.tokens[self.i + 2].is_op(","):
+                counted = self.tokens[self.i + 3]
+                if not (counted.kind == "num" and counted.value.isdigit() and self.tokens[self.i + 4].is_op(")")):
+                    raise ParseFailure("diff_usage", variable.start, counted.end)
+                self.i += 5
+                order = int(counted.value)
             else:
                 raise ParseFailure("diff_usage", variable.start, variable.end)
         if not self.token.is_op(")") or order == 0:
@@ -581,6 +588,10 @@ class _Parser:
         self.advance()
         self.depth -= 1
         return self.differentiate(target, order, token)
+
+    def _is_time(self, ahead: int = 0) -> bool:
+        token = self.tokens[self.i + ahead]
+        return token.kind == "name" and canonical_name(token.value.raw) == "t" and not token.value.primes
 
     def leibniz(self, token: Token):
         """``d/dt (…)``, ``\\frac{d}{dt}\\left(…\\right)``, ``dθ/dt``, ``\\frac{d^2x}{dt^2}``: the time derivative

@@ -144,7 +144,8 @@ _LATEX_FUNCTIONS = {
     "arctan": "atan",
     "ln": "log",
 }
-_CALLABLE = FUNCTION_NAMES | {"diff": "diff"}  # names followed by an argument in plain notation
+# names followed by an argument in plain notation; Derivative(θ(t), t) as sympy prints it
+_CALLABLE = FUNCTION_NAMES | {"diff": "diff", "Derivative": "diff"}
 _LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
 _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
 # \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop
