@@ -23,6 +23,7 @@ if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
 
 from course import BANK, REVIEW  # noqa: E402
 from selenium import webdriver  # noqa: E402  (after the skip: nothing to drive without a browser)
+from selenium.common.exceptions import TimeoutException  # noqa: E402
 from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.support import expected_conditions  # noqa: E402
 from selenium.webdriver.support.ui import WebDriverWait  # noqa: E402
@@ -71,9 +72,15 @@ def _check(driver, status: str):
     part = _part(driver)
     part.find_element(By.CSS_SELECTOR, "button.check").click()
     selector = f'article.part[data-part="{KEY}"] .result.{status}'
-    return WebDriverWait(driver, 20).until(
-        expected_conditions.visibility_of_element_located((By.CSS_SELECTOR, selector))
-    )
+    try:
+        return WebDriverWait(driver, 20).until(
+            expected_conditions.visibility_of_element_located((By.CSS_SELECTOR, selector))
+        )
+    except TimeoutException:  # say what came instead, so that a failure here can be read
+        shown = part.find_element(By.CSS_SELECTOR, ".result")
+        raise AssertionError(
+            f"wanted {status}; the result is {shown.get_attribute('class')!r}: {shown.text!r}"
+        ) from None
 
 
 def test_type_preview_check_and_hint(server, browser):
