@@ -382,6 +382,8 @@ SPHERICAL_EOM = (
         ("m l² sin θ φ̇ = const", "not_equivalent"),  # not the conserved quantity
         ("m l² sin²θ φ̈ = const", "not_equivalent"),  # an acceleration is no conserved quantity: C undefined
         ("m l² sin²θ φ̇ = r", "not_equivalent"),  # r is no word for a constant
+        ("p_φ = m l² sin²θ φ̇ = const", "equivalent"),  # named on the way
+        (r"\frac{\partial L}{\partial\dot\phi} = m l^2 \sin^2\theta\,\dot\phi = C", "equivalent"),
     ],
 )
 def test_a_conserved_quantity_is_read_as_an_equation_of_motion(conserved, status):
@@ -425,6 +427,7 @@ def test_a_defined_name_before_brackets_is_a_product_not_a_name():
     assert compare("m xddot = -k x", "m(ẍ) = -k x", kind="equation", **spring).status == "equivalent"
     # F = m ẍ = −k x: the equation is in the last two sides, not the last one; a person reads it
     assert compare("m xddot = -k x", "F = m ẍ = -k x", kind="equation", **spring).status == "invalid"
+    assert compare("m xddot = -k x", "F = m ẍ = const", kind="equation", **spring).status == "not_equivalent"
 
 
 @pytest.mark.parametrize(

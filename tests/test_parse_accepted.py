@@ -203,6 +203,9 @@ EQUATIONS = [
 
 SYSTEMS = [
     ("a = b; c = d", (Eq(a, b), Eq(c, d))),
+    # a conserved quantity named on the way: p = … = const, beside another equation
+    ("p = a b = const, c = d", (Eq(a * b, sympy.Symbol("const")), Eq(c, d))),
+    ("a = b and p = m l^2 thetadot = C_1", (Eq(a, b), Eq(m * l**2 * D(theta), sympy.Symbol("C_1")))),
     ("a = b\nc = d", (Eq(a, b), Eq(c, d))),
     ("[a = b, c = d]", (Eq(a, b), Eq(c, d))),
     ("{a = b, c = d}", (Eq(a, b), Eq(c, d))),

@@ -13,7 +13,6 @@ checkers only compare.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 
@@ -32,7 +31,7 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
 from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
-from grader.parse.names import CONSTANT_WORDS, unicode_name
+from grader.parse.names import CONSTANT_WORDS, is_arbitrary_constant, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
 
@@ -239,7 +238,7 @@ def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pa
 def _rate_of_conserved(item: sympy.Eq, expected: Expected) -> sympy.Eq | None:
     """``d/dt (quantity) = 0`` for ``quantity = C``, either way round; None for any other equation."""
     for quantity, constant in ((item.lhs, item.rhs), (item.rhs, item.lhs)):
-        if not (constant.is_Symbol and _is_arbitrary(constant.name) and constant.name not in expected.names):
+        if not (constant.is_Symbol and is_arbitrary_constant(constant.name) and constant.name not in expected.names):
             continue
         in_motion = quantity.atoms(AppliedUndef) & set(expected.setting.functions.values())
         names = {symbol.name for symbol in quantity.free_symbols}
@@ -247,11 +246,6 @@ def _rate_of_conserved(item: sympy.Eq, expected: Expected) -> sympy.Eq | None:
         if in_motion and names <= expected.names and velocities_only and within_diff_budget(quantity):
             return sympy.Eq(sympy.diff(quantity, TIME), 0, evaluate=False)
     return None
-
-
-def _is_arbitrary(name: str) -> bool:
-    """``C``, ``const``, ``constant``, or a numbered ``C₁``: what students write for any constant."""
-    return name in _ARBITRARY or re.fullmatch(r"C_[0-9]+", name) is not None
 
 
 def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:

@@ -38,6 +38,7 @@ from grader.parse.names import (
     GREEK_BY_LETTER,
     JOINING_WORDS,
     canonical_name,
+    is_arbitrary_constant,
     split_derivative,
     split_prefixed_derivative,
     stand_in,
@@ -255,8 +256,22 @@ class _Parser:
             self.advance()
             rhs = self.side(label)
         if self.token.is_op("="):
-            raise ParseFailure("too_many_equals", self.token.start, self.token.end)
+            equals = self.advance()
+            if label is not None and self._is_arbitrary_constant(self.i):
+                # p_φ = m l² sin²θ φ̇ = const: a quantity named, then said to be conserved
+                return first, sympy.Eq(rhs, sympy.Symbol(canonical_name(self.advance().value.raw)), evaluate=False)
+            raise ParseFailure("too_many_equals", equals.start, equals.end)
         return first, sympy.Eq(lhs, rhs, evaluate=False)
+
+    def _is_arbitrary_constant(self, i: int) -> bool:
+        """Whether the tokens at ``i`` are a name for any constant (``const``, ``C₁``) that the
+        problem does not define, and the end of an item."""
+        token, after = self.tokens[i], self.tokens[i + 1]
+        if token.kind != "name" or token.value.dots or token.value.primes:
+            return False
+        name = canonical_name(token.value.raw)
+        ends = after.kind in ("end", "sep") or after.is_op(",", ";") or _is_joining_word(after)
+        return ends and is_arbitrary_constant(name) and name not in self.context.known
 
     def _is_variable(self, token: Token) -> bool:
         """Whether a token is what a quantity depends on, as in L(θ, θ̇, t): a coordinate, its
@@ -817,7 +832,8 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
 
 def _as_system(tokens: list[Token]) -> list[Token]:
     """Equations written one after another as people write them: ``eq₁, eq₂``, ``eq₁ and eq₂`` or
-    ``eq₁, where eq₂`` (each side of the comma or the word one equation) separated as ``;`` separates them, and
+    ``eq₁, where eq₂`` (each side of the comma or the word an equation, or a chain such as
+    ``p = … = const``) separated as ``;`` separates them, and
     the numbers of a system's equations, ``(1) eq₁ ⏎ (2) eq₂``, ``eq₁ (1) ⏎ eq₂ (2)``, ``(a) …`` or
     ``(i) …``, left out when every equation has its own, in order: they are labels, not factors.
     """
@@ -827,7 +843,7 @@ def _as_system(tokens: list[Token]) -> list[Token]:
     pieces = _split_at(
         tokens, top, lambda token: token.is_op(",", ";") or token.kind == "sep" or _is_joining_word(token)
     )
-    if len(pieces) > 1 and all(sum(tokens[j].is_op("=") for j in piece if j in top) == 1 for piece in pieces):
+    if len(pieces) > 1 and all(any(tokens[j].is_op("=") for j in piece if j in top) for piece in pieces):
         joins = {j for j in top if tokens[j].is_op(",") or _is_joining_word(tokens[j])}
         tokens = [Token("sep", ";", t.start, t.end) if j in joins else t for j, t in enumerate(tokens)]
     items = _split_at(tokens, top, lambda token: token.is_op(";") or token.kind == "sep")

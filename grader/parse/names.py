@@ -8,6 +8,7 @@ Contents:
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
     split_prefixed_derivative(name)  ``dtheta1`` → (``theta_1``, 1)
+    is_arbitrary_constant(name)    ``C``, ``C_1``, ``const``: a name for any constant
     stand_in(name)                 ``w_0`` → ``omega_0``: ASCII letters typed for a Greek one
     unicode_name(name)             ``theta_1`` → ``θ₁``, for reading an answer back
 
@@ -32,6 +33,7 @@ __all__ = [
     "SUBSCRIPT_LETTERS",
     "SUPERSCRIPTS",
     "canonical_name",
+    "is_arbitrary_constant",
     "split_derivative",
     "split_prefixed_derivative",
     "stand_in",
@@ -42,6 +44,7 @@ __all__ = [
 # runs of letters that are no name are read a letter at a time. The checker leaves them out
 # where a constant is allowed.
 CONSTANT_WORDS = ("const", "constant")
+_ARBITRARY_CONSTANT = re.compile(r"^(?:const|constant|C(?:_[0-9]+)?)$")
 JOINING_WORDS = frozenset({"and", "where", "with"})  # eq₁, where eq₂: a system, the grammar reads
 
 # Unicode letter → ASCII name. Variant forms (ϑ, ϕ, ϵ, ς) are the same letter to a
@@ -147,6 +150,16 @@ def stand_in(name: str) -> str | None:
     if not match:
         return None
     return canonical_name(_STOOD_FOR[match["letters"]] + match["rest"])
+
+
+def is_arbitrary_constant(name: str) -> bool:
+    """Whether a canonical name is what students write for any constant: ``C``, ``C_1``,
+    ``const``, ``constant`` (whether the problem defines it is the caller's question).
+
+    >>> is_arbitrary_constant("C_2"), is_arbitrary_constant("const"), is_arbitrary_constant("c")
+    (True, True, False)
+    """
+    return _ARBITRARY_CONSTANT.match(name) is not None
 
 
 def split_prefixed_derivative(name: str) -> tuple[str, int] | None:
