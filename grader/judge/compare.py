@@ -146,7 +146,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
-                answer, conserved = _conserved(answer, spec, expected)
+                answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 early = _mismatch(spec, expected, answer)
@@ -216,7 +216,7 @@ def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sy
 _ARBITRARY = ("C", *CONSTANT_WORDS)  # what students add for "any constant"
 
 
-def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, int]:
+def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple[ParsedAnswer, int]:
     """``m l² sin²θ φ̇ = const``: a conserved quantity, as the equation of motion of a cyclic
     coordinate is often first written (p_φ = const). Where equations of motion are asked, an
     equation whose one side is an arbitrary constant (``C``, ``C₁``, ``const``, a name the problem
@@ -227,7 +227,10 @@ def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pa
     if spec.shape not in ("equation", "equations") or answer.kind == "expression":
         return answer, 0
     items = answer.value if answer.kind == "equations" else (answer.value,)
-    read = [_rate_of_conserved(item, expected) for item in items]
+    read = []
+    for item in items:  # each is within the differentiation budget; dozens of them take a while
+        deadline.check()
+        read.append(_rate_of_conserved(item, expected))
     count = sum(item is not None for item in read)
     if not count:
         return answer, 0
