@@ -436,6 +436,7 @@ def test_a_defined_name_before_brackets_is_a_product_not_a_name():
         # "+ C" or "+ const" where a constant is allowed: the student's way of saying so
         (L_PENDULUM, L_PENDULUM + " + C", {"kind": "lagrangian"}, "equivalent"),
         (L_PENDULUM, L_PENDULUM + " - 3 const", {"kind": "lagrangian"}, "equivalent"),
+        (L_PENDULUM, L_PENDULUM + " + C₁", {"kind": "lagrangian"}, "equivalent"),
         (L_PENDULUM, r"\frac12 m l^2 \dot\theta^2 + mgl\cos\theta + const", {"kind": "lagrangian"}, "equivalent"),
         ("-m g l cos(theta)", "-m g l cos θ + C", {"up_to_constant": True}, "equivalent"),
         # not a constant term of its own, or no constant allowed: C is a name the problem lacks

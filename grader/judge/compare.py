@@ -31,7 +31,7 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
 from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
-from grader.parse.names import CONSTANT_WORDS, is_arbitrary_constant, unicode_name
+from grader.parse.names import is_arbitrary_constant, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
 
@@ -213,9 +213,6 @@ def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sy
     return base, item.rhs ** sympy.Rational(1, int(power))  # a name for a positive quantity, as parameters are
 
 
-_ARBITRARY = ("C", *CONSTANT_WORDS)  # what students add for "any constant"
-
-
 def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple[ParsedAnswer, int]:
     """``m l² sin²θ φ̇ = const``: a conserved quantity, as the equation of motion of a cyclic
     coordinate is often first written (p_φ = const). Where equations of motion are asked, an
@@ -273,7 +270,7 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
     value = answer.value
     if not allowed or answer.kind != "expression":
         return answer
-    present = {symbol.name for symbol in value.free_symbols} & set(_ARBITRARY)
+    present = {symbol.name for symbol in value.free_symbols if is_arbitrary_constant(symbol.name)}
     for name in sorted(present - expected.names):
         constant = sympy.Symbol(name)
         rest, term = value.as_independent(constant, as_Add=True)

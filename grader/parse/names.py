@@ -44,7 +44,7 @@ __all__ = [
 # runs of letters that are no name are read a letter at a time. The checker leaves them out
 # where a constant is allowed.
 CONSTANT_WORDS = ("const", "constant")
-_ARBITRARY_CONSTANT = re.compile(r"^(?:const|constant|C(?:_[0-9]+)?)$")
+_NUMBERED_CONSTANT = re.compile(r"^C(?:_[0-9]+)?$")  # C, C₁, C₂
 JOINING_WORDS = frozenset({"and", "where", "with"})  # eq₁, where eq₂: a system, the grammar reads
 
 # Unicode letter → ASCII name. Variant forms (ϑ, ϕ, ϵ, ς) are the same letter to a
@@ -159,7 +159,7 @@ def is_arbitrary_constant(name: str) -> bool:
     >>> is_arbitrary_constant("C_2"), is_arbitrary_constant("const"), is_arbitrary_constant("c")
     (True, True, False)
     """
-    return _ARBITRARY_CONSTANT.match(name) is not None
+    return name in CONSTANT_WORDS or _NUMBERED_CONSTANT.match(name) is not None
 
 
 def split_prefixed_derivative(name: str) -> tuple[str, int] | None:
