@@ -148,10 +148,10 @@ _LATEX_FUNCTIONS = {
 _CALLABLE = FUNCTION_NAMES | {"diff": "diff", "Derivative": "diff"}
 _LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
 _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
-# \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop
+# \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop.
+# (A brace this short after \text or \mathrm is a unit or a few words, as \mathrm{rad/s}.)
 _LATEX_ANNOTATIONS = re.compile(r"\s*\{[^{}]{0,40}\}")
-_TEXT_COMMANDS = {"text", "textrm", "mathrm", "operatorname", "mbox"}
-_BRACED_TEXT = re.compile(r"\s*\{[^{}]{0,60}\}")  # a unit or a few words, as \mathrm{rad/s}
+_TEXT_COMMANDS = {"text", "textrm", "mathrm", "operatorname", "mbox"}  # whose braces may hold a unit or words
 _TEXT_PUNCTUATION = re.compile(r"\s*\{\s*[.,;]?\s*\}")
 _OPERATOR_NAME = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}")
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
@@ -574,7 +574,7 @@ class _Tokenizer:
             # \mathcal{F}, \mathrm{d}: the letters, in another typeface
             self.pos = braced.end()
             self._finish_name(start, braced[1] or braced[2], 0)
-        elif command in _TEXT_COMMANDS and (words := _BRACED_TEXT.match(text, self.pos)):
+        elif command in _TEXT_COMMANDS and (words := _LATEX_ANNOTATIONS.match(text, self.pos)):
             # \,\mathrm{rad/s}, \text{ for small angles}: more than the mathematics
             raise ParseFailure("latex_words", start, words.end(), words=text[start : words.end()])
         else:
