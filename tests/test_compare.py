@@ -383,6 +383,7 @@ SPHERICAL_EOM = (
         ("m l² sin²θ φ̈ = const", "not_equivalent"),  # an acceleration is no conserved quantity: C undefined
         ("m l² sin²θ φ̇ = r", "not_equivalent"),  # r is no word for a constant
         ("p_φ = m l² sin²θ φ̇ = const", "equivalent"),  # named on the way
+        ("m l² sin²θ φ̇ = p_φ = const", "equivalent"),
         (r"\frac{\partial L}{\partial\dot\phi} = m l^2 \sin^2\theta\,\dot\phi = C", "equivalent"),
     ],
 )

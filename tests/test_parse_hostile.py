@@ -141,6 +141,12 @@ HOSTILE = [
     ("diff(theta, t, 99999999999999999999)", "derivative_order"),
     ("Derivative(theta(t), (t, 99999999999999999999))", "derivative_order"),
     ("Derivative(theta(t), (t, x))", "diff_usage"),
+    # more than one '=': only a quantity named and said to be conserved (p = … = const) is read
+    ("m = g = l", "too_many_equals"),
+    ("m g = t = const", "too_many_equals"),  # t is time, not a name for the quantity
+    ("m g = l = const", "too_many_equals"),  # l is the problem's own
+    ("p = m g = q", "too_many_equals"),  # q is no word for a constant
+    ("p = m g = const = C", "too_many_equals"),
     ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),
     ("diff(theta, x)", "diff_usage"),
     ("d/dt(d/dt(d/dt(d/dt(theta*m))))", "derivative_order"),  # nested around a product, past the cap

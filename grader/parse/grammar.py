@@ -257,9 +257,11 @@ class _Parser:
             rhs = self.side(label)
         if self.token.is_op("="):
             equals = self.advance()
-            if label is not None and self._is_arbitrary_constant(self.i):
-                # p_φ = m l² sin²θ φ̇ = const: a quantity named, then said to be conserved
-                return first, sympy.Eq(rhs, sympy.Symbol(canonical_name(self.advance().value.raw)), evaluate=False)
+            # p_φ = m l² sin²θ φ̇ = const, or m l² sin²θ φ̇ = p_φ = const: a quantity, named, said to be conserved
+            named = label is not None or (rhs.is_Symbol and rhs is not TIME and rhs.name not in self.context.known)
+            if named and self._is_arbitrary_constant(self.i):
+                quantity = rhs if label is not None else lhs
+                return first, sympy.Eq(quantity, sympy.Symbol(canonical_name(self.advance().value.raw)), evaluate=False)
             raise ParseFailure("too_many_equals", equals.start, equals.end)
         return first, sympy.Eq(lhs, rhs, evaluate=False)
 
