@@ -165,6 +165,9 @@ DERIVATIVES = [
 
 LEIBNIZ = [
     ("d/dt(theta)", D(theta)),
+    # the operator in brackets, with a power
+    ("(d/dt)^2 θ + (d/dt)² x + (d/dt)(m x)", D(theta, 2) + D(x, 2) + m * D(x)),
+    ("\\left(\\frac{d}{dt}\\right)^2 x", D(x, 2)),
     # as code spells rates: a d or dd before a coordinate
     ("dtheta^2 + ddx", D(theta) ** 2 + D(x, 2)),
     ("dtheta1 dθ₂ + ddtheta_1", D(theta1) * D(theta2) + D(theta1, 2)),

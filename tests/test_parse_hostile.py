@@ -140,6 +140,7 @@ HOSTILE = [
     ("theta''''", "derivative_order"),
     ("diff(theta, t, 99999999999999999999)", "derivative_order"),
     ("Derivative(theta(t), (t, 99999999999999999999))", "derivative_order"),
+    ("(d/dt)^99999999999999999999 x", "derivative_order"),
     ("Derivative(theta(t), (t, x))", "diff_usage"),
     # more than one '=': only a quantity named and said to be conserved (p = … = const) is read
     ("m = g = l", "too_many_equals"),

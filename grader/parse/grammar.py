@@ -951,6 +951,16 @@ def _numerator(tokens: list[Token]) -> tuple[int, list[Token]] | None:
 
 def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | None:
     token = tokens[i]
+    if token.is_op("("):  # (d/dt) θ, (d/dt)² θ, (d/dt)^2 θ: the operator in brackets, and its power
+        inner = _leibniz_at(tokens, i + 1)
+        if inner is None or inner[:2] != (1, []) or not tokens[inner[2]].is_op(")"):
+            return None
+        after = inner[2] + 1
+        if tokens[after].kind == "sup":
+            return int(tokens[after].value), [], after + 1
+        if tokens[after].is_op("^") and tokens[after + 1].kind == "num" and tokens[after + 1].value.isdigit():
+            return int(tokens[after + 1].value), [], after + 2
+        return 1, [], after
     if token.kind == "frac" and i + 1 < len(tokens) and tokens[i + 1].is_op("{"):
         numerator_end = _closing(tokens, i + 1)
         if numerator_end is None or not tokens[numerator_end + 1].is_op("{"):
