@@ -417,6 +417,13 @@ def test_definitions_that_would_build_huge_numbers_are_not_put_in_place():
     assert "does not define" in verdict.feedback[0]
 
 
+def test_undefined_names_are_listed_in_order_and_counted_past_six():
+    few = compare("m l^2 thetadot", "x10 + x2 + r", **PENDULUM)
+    assert few.feedback[0].startswith("Your answer uses `r`, `x₂` and `x₁₀`, which")
+    many = compare("m l^2 thetadot", " + ".join(f"x{i}" for i in range(60)), **PENDULUM)
+    assert many.feedback[0].startswith("Your answer uses `x₀`, `x₁`, `x₂`, `x₃`, `x₄` and 55 more, which")
+
+
 def test_partial_derivatives_elsewhere_are_refused_with_a_message():
     verdict = compare("m l^2 thetadot", "∂L/∂θ̇", **PENDULUM)
     assert verdict.status == "invalid"

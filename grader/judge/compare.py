@@ -13,6 +13,7 @@ checkers only compare.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 
@@ -286,8 +287,8 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
     if spec.name in ("integer", "number") and used:
         # "2.006 s", "two": often the right number in words or with a unit. Not a number we can
         # grade, so a person decides, and a student checking first is told to write the number.
-        return Outcome("invalid", 0.0, "not_a_number", {"names": _listing(sorted(s.name for s in used))}, "symbols")
-    undefined = sorted(symbol.name for symbol in used if symbol.name not in expected.names)
+        return Outcome("invalid", 0.0, "not_a_number", {"names": _listing([s.name for s in used])}, "symbols")
+    undefined = [symbol.name for symbol in used if symbol.name not in expected.names]
     if undefined:
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
         return Outcome(
@@ -309,6 +310,16 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
     return None
 
 
+_LISTED = 6  # names a sentence lists before it counts the rest
+
+
 def _listing(names: list[str]) -> str:
-    shown = [f"`{unicode_name(name)}`" for name in names]
+    """``a``, ``b`` and ``c``, in order, x₂ before x₁₀; past six names, "and 54 more"."""
+    shown = [f"`{unicode_name(name)}`" for name in sorted(names, key=_natural)]
+    if len(shown) > _LISTED:
+        return ", ".join(shown[: _LISTED - 1]) + f" and {len(shown) - _LISTED + 1} more"
     return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
+
+
+def _natural(name: str) -> list:
+    return [int(part) if part.isdigit() else part for part in re.split(r"([0-9]+)", name)]
