@@ -81,8 +81,10 @@ FUNCTION_NAMES: dict[str, str] = {
 }  # fmt: skip
 
 _TRAILING_DIGITS = re.compile(r"^([A-Za-z]+)_?([0-9]+)$")
+# A derivative's suffix: dot, ddot, or _d, _dd as code spells them; a subscript may stand either side.
+_SUFFIX = r"(?:_?(?P<dots>d?dot)|_(?P<ds>dd?))"
 # Lazy base so that ``thetaddot`` is theta + ddot, not thetad + dot.
-_DERIVATIVE = re.compile(r"^(?P<base>[A-Za-z]+?(?:_?[0-9]+)?)(?:_?(?P<dots>d?dot)|_(?P<ds>dd?))(?:_?(?P<sub>[0-9]+))?$")
+_DERIVATIVE = re.compile(rf"^(?P<base>[A-Za-z]+?(?:_?[0-9]+)?){_SUFFIX}(?:_?(?P<sub>[0-9]+))?$")
 _PREFIXED = re.compile(r"^(?P<ds>dd?)(?P<base>[A-Za-z]+(?:_[0-9]+)?)$")
 
 
@@ -135,7 +137,7 @@ def split_derivative(name: str) -> tuple[str, int] | None:
 
 
 # Letters typed for a Greek one on a keyboard without it: w for ω (it looks the part), th, ph.
-_STAND_IN = re.compile(r"^(?P<letters>w|th|ph)(?P<rest>(?:_?[0-9]+)?(?:_?d?dot|_dd?)?(?:_?[0-9]+)?)$")
+_STAND_IN = re.compile(rf"^(?P<letters>w|th|ph)(?P<rest>(?:_?[0-9]+)?{_SUFFIX}?(?:_?[0-9]+)?)$")
 _STOOD_FOR = {"w": "omega", "th": "theta", "ph": "phi"}
 
 
