@@ -135,7 +135,7 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Verdict:
-    answer, conserved = None, 0
+    answer, conserved = None, False
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
@@ -214,26 +214,25 @@ def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sy
     return base, item.rhs ** sympy.Rational(1, int(power))  # a name for a positive quantity, as parameters are
 
 
-def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple[ParsedAnswer, int]:
+def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple[ParsedAnswer, bool]:
     """``m l² sin²θ φ̇ = const``: a conserved quantity, as the equation of motion of a cyclic
     coordinate is often first written (p_φ = const). Where equations of motion are asked, an
     equation whose one side is an arbitrary constant (``C``, ``C₁``, ``const``, a name the problem
     does not define) and whose other side is a quantity of the motion (coordinates and
     velocities in the problem's names) is read as its time derivative, d/dt (…) = 0.
 
-    Returns the answer and how many of its equations were so read."""
+    Returns the answer and whether any of its equations was so read."""
     if spec.shape not in ("equation", "equations") or answer.kind == "expression":
-        return answer, 0
+        return answer, False
     items = answer.value if answer.kind == "equations" else (answer.value,)
     read = []
     for item in items:  # each is within the differentiation budget; dozens of them take a while
         deadline.check()
         read.append(_rate_of_conserved(item, expected))
-    count = sum(item is not None for item in read)
-    if not count:
-        return answer, 0
+    if all(item is None for item in read):
+        return answer, False
     items = tuple(new if new is not None else old for new, old in zip(read, items, strict=True))
-    return ParsedAnswer(answer.text, items if answer.kind == "equations" else items[0], answer.kind), count
+    return ParsedAnswer(answer.text, items if answer.kind == "equations" else items[0], answer.kind), True
 
 
 def _rate_of_conserved(item: sympy.Eq, expected: Expected) -> sympy.Eq | None:
