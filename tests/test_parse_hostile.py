@@ -250,6 +250,18 @@ SHOWN = [
     ),
     # The caret is on the line with the mistake, not on the first line.
     ("x = 1\ny = sin(θ", "Unbalanced bracket: the `(` at position 14 is never closed.", "y = sin(θ\n       ^"),
+    # Places as seen: θ̇'s combining dot takes no column, a full-width letter two.
+    (
+        "½ m l² θ̇² + m g l cos θ)",
+        "Unbalanced bracket: the `)` at position 24 has no matching opening bracket.",
+        "½ m l² θ̇² + m g l cos θ)\n" + " " * 23 + "^",
+    ),
+    ("θ̇ θ̇ (x]", "The `(` at position 5 is closed by `]` at position 7.", "θ̇ θ̇ (x]\n      ^"),
+    (
+        "ｍ ｇ ｌ)",
+        "Unbalanced bracket: the `)` at position 6 has no matching opening bracket.",
+        "ｍ ｇ ｌ)\n" + " " * 8 + "^",
+    ),
 ]
 
 

@@ -6,11 +6,14 @@ Contents:
     ParseFailure the internal exception that carries a Refusal out of the parser
 
 Each message says what is wrong in the student's terms and, where there is a
-spot to point at, ``Refusal.pointer`` draws a caret under it.
+spot to point at, ``Refusal.pointer`` draws a caret under it. Places are counted as
+the student sees them: the dot of θ̇ (a combining mark) takes no column of its own,
+a full-width character two.
 """
 
 from __future__ import annotations
 
+import unicodedata
 from dataclasses import dataclass
 
 __all__ = ["MESSAGES", "ParseFailure", "Refusal", "refusal"]
@@ -99,8 +102,8 @@ class Refusal:
         window_end = min(line_end, window_start + _WINDOW)
         prefix = "…" if window_start > line_start else ""
         suffix = "…" if window_end < line_end else ""
-        width = max(1, min(self.end or self.start + 1, window_end) - self.start)
-        column = len(prefix) + self.start - window_start
+        width = max(1, _columns(self.text[self.start : min(self.end or self.start + 1, window_end)]))
+        column = len(prefix) + _columns(self.text[window_start : self.start])
         return f"{prefix}{self.text[window_start:window_end]}{suffix}\n{' ' * column}{'^' * width}"
 
     def __str__(self) -> str:
@@ -111,6 +114,18 @@ def refusal(code: str, text: str, start: int | None = None, end: int | None = No
     """Build a :class:`Refusal`, with the message filled in from :data:`MESSAGES`."""
     shown = {key: _printable(value) if isinstance(value, str) else value for key, value in details.items()}
     return Refusal(code, MESSAGES[code].format(**shown), text, start, end)
+
+
+def _columns(text: str) -> int:
+    """The columns ``text`` takes on a screen: none for a combining mark (θ̇'s dot) or an
+    invisible character, two for a full-width or wide one."""
+    return sum(_column(c) for c in text)
+
+
+def _column(c: str) -> int:
+    if unicodedata.combining(c) or unicodedata.category(c) in ("Mn", "Me", "Cf"):
+        return 0
+    return 2 if unicodedata.east_asian_width(c) in ("W", "F") else 1
 
 
 def _printable(text: str) -> str:
@@ -126,4 +141,14 @@ class ParseFailure(Exception):
         self.code, self.start, self.end, self.details = code, start, end, details
 
     def to_refusal(self, text: str) -> Refusal:
-        return refusal(self.code, text, self.start, self.end, **self.details)
+        # "at position N" counts characters as they are seen: θ̇ is one, not θ and a dot
+        details = {
+            key: _seen_position(text, value) if key.endswith("position") else value
+            for key, value in self.details.items()
+        }
+        return refusal(self.code, text, self.start, self.end, **details)
+
+
+def _seen_position(text: str, position: int) -> int:
+    """A 1-based position in ``text``, in characters as seen rather than code points."""
+    return 1 + sum(1 for c in text[: position - 1] if not (unicodedata.combining(c) or unicodedata.category(c) == "Cf"))
