@@ -250,6 +250,20 @@ SYSTEMS = [
     ("⇒ ẍ = a", Eq(D(x, 2), a)),
     ("ẍ = a ⇒", Eq(D(x, 2), a)),
     ("c ẍ = c a ⇒ ẍ = a\nd θ̈ = d b ⇒ θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
+    # ⇒ ends at `;` as at a line's end: the equation before it stays
+    ("ẍ = a; c θ̈ = c b ⇒ θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
+    ("c ẍ = c a ⇒ ẍ = a; θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
+    ("[ẍ = a; θ̈ = b]", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
+    # every spelling of a step: ⇔ ∴ and typed arrows; → and words only between two equations
+    *(
+        (f"m ẍ = -k x {step} ẍ = -k x / m", Eq(D(x, 2), -k * x / m))
+        for step in ("⇔", "⟺", "∴", "<=>", "==>", "→", "⟶", "->", "-->", "so", "hence", "thus", "therefore")
+    ),
+    ("m ẍ = -k x, so ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    ("m ẍ = -k x ->\nẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    ("m ẍ = -k x\nso ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    ("c ẍ = c a -> ẍ = a; θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
+    ("a - -b = c", Eq(a + b, c)),  # two minus signs are no arrow
     ("a + b\n- c", a + b - c),
     ("(a +\n b) = c", Eq(a + b, c)),
 ]
@@ -317,6 +331,10 @@ LATEX = [
     ("\\dot{\\theta}^2_1 + x^{2}_{1}", D(theta1) ** 2 + sympy.Symbol("x_1") ** 2),
     ("m \\ddot x = -k x \\Rightarrow \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x)),
     ("\\ddot x = a \\implies", Eq(D(x, 2), a)),
+    *(
+        (f"m \\ddot x = -k x {step} \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x))
+        for step in ("\\iff", "\\Leftrightarrow", "\\therefore", "\\to", "\\rightarrow", "\\text{ so }")
+    ),
 ]
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX
@@ -362,6 +380,13 @@ def test_letters_stand_in_for_a_greek_name_only_where_the_problem_has_it_and_not
 
 def test_a_d_before_a_name_that_is_no_coordinate_is_part_of_the_name():
     assert parse_answer("dy + da", coords=["x"]).value == sympy.Symbol("dy") + sympy.Symbol("da")
+
+
+def test_a_word_for_a_step_is_a_name_unless_it_stands_between_two_equations():
+    s, o = sympy.symbols("s o")
+    assert parse_answer("x = so", known=["s", "o", "x"]).value == Eq(sympy.Symbol("x"), s * o)
+    assert parse_answer("a = b so", known=["s", "o", "a", "b"]).value == Eq(a, b * s * o)
+    assert parse_answer("a = b so c = d", known=["a", "b", "c", "d"]).value == Eq(c, d)
 
 
 def test_e_is_a_symbol_when_the_problem_defines_one():

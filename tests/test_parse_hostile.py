@@ -151,6 +151,16 @@ HOSTILE = [
     ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),
     ("diff(theta, x)", "diff_usage"),
     ("d/dt(d/dt(d/dt(d/dt(theta*m))))", "derivative_order"),  # nested around a product, past the cap
+    # an arrow is a derivation's step only between two equations; elsewhere it is a limit or a map
+    ("θ → 0", "arrow"),
+    ("θ̈ = -g/l θ (θ → 0)", "arrow"),
+    ("θ̈ → -g/l θ", "arrow"),
+    ("x -> 1", "arrow"),
+    ("a = b ->", "arrow"),
+    ("-> a = b", "arrow"),
+    ("a = b -> c = d -> e", "arrow"),
+    ("a = b; c -> d = e", "arrow"),  # `;` ends an equation as a line does
+    ("\\theta \\to 0", "arrow"),
 ]
 
 
@@ -261,6 +271,12 @@ SHOWN = [
         "ｍ ｇ ｌ)",
         "Unbalanced bracket: the `)` at position 6 has no matching opening bracket.",
         "ｍ ｇ ｌ)\n" + " " * 8 + "^",
+    ),
+    (
+        "θ̈ = -g/l θ (θ -> 0)",
+        "`->` is read only between two equations, as a step of a derivation (`a = b -> c = d` is read as"
+        " c = d); a limit such as θ → 0 cannot be part of an answer.",
+        "θ̈ = -g/l θ (θ -> 0)\n" + " " * 14 + "^^",
     ),
 ]
 

@@ -222,7 +222,7 @@ class _Parser:
     def list_of_items(self):
         opener = self.advance()  # [ or {
         items = [self.item()]
-        while self.token.is_op(","):
+        while self.token.is_op(",", ";"):  # [eq₁, eq₂] as Maxima writes it, [eq₁; eq₂] as Matlab does
             self.advance()
             items.append(self.item())
         self.expect(_OPENERS[opener.value], opener)

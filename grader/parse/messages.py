@@ -22,6 +22,10 @@ MESSAGES: dict[str, str] = {
     "empty": "Your answer is empty.",
     "too_long": "Your answer is {length} characters long; the limit is {limit}.",
     "bad_character": "`{char}` is not something an answer can contain.",
+    "arrow": (
+        "`{arrow}` is read only between two equations, as a step of a derivation (`a = b {arrow} c = d`"
+        " is read as c = d); a limit such as θ → 0 cannot be part of an answer."
+    ),
     "partial": "`∂` is read only in the name of what an answer writes out, before `=`, as in p = ∂L/∂φ̇ = …",
     "string": "Quotes are not allowed: an answer is mathematics, not text.",
     "prime_position": "A prime (') marks a time derivative and must follow a coordinate's name, as in theta'.",

@@ -4,6 +4,7 @@ Contents:
     GREEK_BY_LETTER, GREEK_NAMES   Unicode Greek letters and their ASCII names
     CONSTANT_WORDS                 "const", "constant": words for an arbitrary constant
     JOINING_WORDS                  "and", "where", "with": words between two equations
+    IMPLYING_WORDS                 "so", "hence", "thus", "therefore": a derivation's steps, as ⇒
     SUBSCRIPT_DIGITS, SUBSCRIPT_LETTERS, SUPERSCRIPTS   Unicode sub- and superscript characters
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
@@ -28,6 +29,7 @@ __all__ = [
     "FUNCTION_NAMES",
     "GREEK_BY_LETTER",
     "GREEK_NAMES",
+    "IMPLYING_WORDS",
     "JOINING_WORDS",
     "SUBSCRIPT_DIGITS",
     "SUBSCRIPT_LETTERS",
@@ -46,6 +48,7 @@ __all__ = [
 CONSTANT_WORDS = ("const", "constant")
 _NUMBERED_CONSTANT = re.compile(r"^C(?:_[0-9]+)?$")  # C, C₁, C₂
 JOINING_WORDS = frozenset({"and", "where", "with"})  # eq₁, where eq₂: a system, the grammar reads
+IMPLYING_WORDS = frozenset({"so", "hence", "thus", "therefore"})  # eq₁ so eq₂: eq₂, the tokenizer reads
 
 # Unicode letter → ASCII name. Variant forms (ϑ, ϕ, ϵ, ς) are the same letter to a
 # student, so they share a name; µ (the micro sign) is how some keyboards type μ.

@@ -41,6 +41,7 @@ from grader.parse.messages import ParseFailure
 from grader.parse.names import (
     FUNCTION_NAMES,
     GREEK_BY_LETTER,
+    IMPLYING_WORDS,
     JOINING_WORDS,
     SUBSCRIPT_DIGITS,
     SUBSCRIPT_LETTERS,
@@ -90,7 +91,9 @@ class Token:
     Kinds: ``num`` (value: digit string), ``name`` (value: :class:`Name`), ``func``
     (value: canonical function name, or ``diff``), ``op`` (value: one of
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
-    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``partial`` (∂), ``end``; the
+    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``partial`` (∂),
+    ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what follows), ``arrow`` (→: the
+    same between two equations, refused elsewhere), ``end``; the
     grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
     """
 
@@ -112,7 +115,13 @@ _OPERATORS = {
 }  # fmt: skip
 _VULGAR_FRACTIONS = {"½": "1/2", "⅓": "1/3", "⅔": "2/3", "¼": "1/4", "¾": "3/4", "⅕": "1/5", "⅛": "1/8"}
 _PRIMES = {"'": 1, "\u2032": 1, "\u2033": 2}
-_IMPLIES = {"\u21d2", "\u27f9"}  # ⇒ ⟹, and => typed: what follows is what was derived
+# A derivation's steps: what follows ⇒ ⟹ ⇔ ⟺ ∴ (and =>, ==>, <=> typed) is what was derived.
+_IMPLIES = {"\u21d2", "\u27f9", "\u21d4", "\u27fa", "\u2234"}
+# → ⟶ (and ->, --> typed) are steps too, but only between two equations: θ → 0 is a limit.
+_ARROWS = {"\u2192", "\u27f6"}
+_TYPED_ARROW = re.compile(r"<=>|==>|=>|-->|->")  # before <= and == (code's tests) and - (minus)
+_LATEX_IMPLIES = {"Rightarrow", "implies", "Longrightarrow", "iff", "Leftrightarrow", "Longleftrightarrow", "therefore"}
+_LATEX_ARROWS = {"to", "rightarrow", "longrightarrow"}
 _COMBINING_DOTS = {"\u0307": 1, "\u0308": 2, "\u20db": 3}
 # [0-9], not \d: \d also matches ٣ and ², which are not numbers to us.
 _NUMBER = re.compile(r"([0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?")
@@ -170,20 +179,60 @@ def tokenize(text: str) -> list[Token]:
         ParseFailure: for any character or word outside the whitelist.
     """
     tokens = _Tokenizer(text, latex="\\" in text).run()
+    if any(token.kind == "arrow" or (token.kind == "name" and token.value.raw in IMPLYING_WORDS) for token in tokens):
+        tokens = _steps_between_equations(tokens, text)
     if any(token.kind == "implies" for token in tokens):
         tokens = _conclusions(tokens)
     _check_brackets(tokens)
     return tokens
 
 
+def _is_implying_word(token: Token) -> bool:
+    return token.kind == "name" and token.value.raw in IMPLYING_WORDS and not (token.value.dots or token.value.primes)
+
+
+def _steps_between_equations(tokens: list[Token], text: str) -> list[Token]:
+    """→ and the words *so*, *hence*, *thus*, *therefore* read as ⇒ where an equation stands on
+    each side (``m ẍ = −k x → ẍ = −(k/m) x``). Elsewhere a word stays a name, and an arrow is
+    refused: ``θ → 0`` is a limit, not part of an answer."""
+    steps = list(tokens)
+    for i, token in enumerate(tokens):
+        if token.kind != "arrow" and not _is_implying_word(token):
+            continue
+        if _equation_beside(tokens, i, -1) and _equation_beside(tokens, i, 1):
+            steps[i] = Token("implies", "⇒", token.start, token.end)
+        elif token.kind == "arrow":
+            raise ParseFailure("arrow", token.start, token.end, arrow=text[token.start : token.end])
+    return steps
+
+
+def _equation_beside(tokens: list[Token], i: int, step: int) -> bool:
+    """Whether an ``=`` stands between the step at ``i`` and the next step, ``;`` or line's end,
+    looking one way; a step at a line's edge looks into the next line that way."""
+    j, seen = i + step, False
+    while 0 <= j < len(tokens) - 1:  # the end token left out
+        token = tokens[j]
+        if token.is_op("="):
+            return True
+        if token.kind in ("implies", "arrow") or _is_implying_word(token) or token.is_op(";"):
+            return False
+        if token.kind == "sep" and seen:
+            return False
+        seen = seen or token.kind != "sep"
+        j += step
+    return False
+
+
 def _conclusions(tokens: list[Token]) -> list[Token]:
-    """What a derivation written with ``⇒`` concludes: on each line, what follows its last ``⇒``.
-    A line that begins with ``⇒``, or follows one that ends with it, continues the derivation:
-    it replaces the lines above. ``m l θ̈ = −m g sin θ ⇒ θ̈ = −(g/l) sin θ`` is the second equation;
-    ``eq₁ ⇒ eq₁′ ⏎ eq₂ ⇒ eq₂′`` is the system of eq₁′ and eq₂′."""
+    """What a derivation written with ``⇒`` concludes: on each line (or between ``;``), what
+    follows its last ``⇒``. A line that begins with ``⇒``, or follows one that ends with it,
+    continues the derivation: it replaces the lines above. ``m l θ̈ = −m g sin θ ⇒ θ̈ = −(g/l) sin θ``
+    is the second equation; ``eq₁ ⇒ eq₁′ ⏎ eq₂ ⇒ eq₂′`` and ``eq₁; eq₂ ⇒ eq₂′`` are systems of two."""
     lines: list[list[Token]] = [[]]
+    depth = 0
     for token in tokens[:-1]:
-        if token.kind == "sep":
+        depth += token.is_op("(", "[", "{") - token.is_op(")", "]", "}")
+        if token.kind == "sep" or (depth == 0 and token.is_op(";")):
             lines.append([])
         else:
             lines[-1].append(token)
@@ -290,10 +339,10 @@ class _Tokenizer:
                 self._emit("sqrt", "√", 1)
             elif text.startswith("**", self.pos):
                 self._emit("op", "^", 2)
+            elif c in _IMPLIES or c in _ARROWS or (c in "<=-" and _TYPED_ARROW.match(text, self.pos)):
+                self._arrow()
             elif text[self.pos : self.pos + 2] in _ASSIGNMENTS:
                 raise ParseFailure("assignment", self.pos, self.pos + 2, op=text[self.pos : self.pos + 2])
-            elif c in _IMPLIES or text.startswith("=>", self.pos):
-                self._emit("implies", "⇒", 1 if c in _IMPLIES else 2)
             elif c == ":" and self._line_label():
                 self.pos += 1  # EOM: …, θ₁: …: the line's label, read past with its colon
             elif c == "_" and self.latex and self._subscript_after_power():
@@ -316,6 +365,14 @@ class _Tokenizer:
     def _emit(self, kind: str, value: object, length: int) -> None:
         self.tokens.append(Token(kind, value, self.pos, self.pos + length))
         self.pos += length
+
+    def _arrow(self) -> None:
+        """⇒ and its spellings as an ``implies`` token; → and its spellings as an ``arrow``,
+        which :func:`tokenize` reads as ⇒ where it stands between two equations."""
+        typed = _TYPED_ARROW.match(self.text, self.pos)
+        spelled = typed[0] if typed else self.text[self.pos]
+        certain = spelled in _IMPLIES or spelled.endswith("=>")
+        self._emit("implies" if certain else "arrow", "⇒" if certain else "→", len(spelled))
 
     def _after_value(self) -> bool:
         return bool(self.tokens) and (self.tokens[-1].kind in ("num", "sup") or self.tokens[-1].is_op(")", "]", "}"))
@@ -545,8 +602,10 @@ class _Tokenizer:
             self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
         elif command == "partial":
             self.tokens.append(Token("partial", "∂", start, self.pos))
-        elif command in ("Rightarrow", "implies", "Longrightarrow"):
+        elif command in _LATEX_IMPLIES:
             self.tokens.append(Token("implies", "⇒", start, self.pos))
+        elif command in _LATEX_ARROWS:
+            self.tokens.append(Token("arrow", "→", start, self.pos))
         elif command in _LATEX_FUNCTIONS:
             self.tokens.append(Token("func", _LATEX_FUNCTIONS[command], start, self.pos))
         elif command in _LATEX_NAMES:
@@ -563,12 +622,12 @@ class _Tokenizer:
         elif (
             command in ("operatorname", "text")
             and (word := _OPERATOR_NAME.match(text, self.pos))
-            and (word[1] in FUNCTION_NAMES or (command == "text" and word[1] in JOINING_WORDS))
+            and (word[1] in FUNCTION_NAMES or (command == "text" and word[1] in JOINING_WORDS | IMPLYING_WORDS))
         ):
             self.pos = word.end()
             if word[1] in FUNCTION_NAMES:  # \operatorname{cos} or \text{cos}, as \cos
                 self.tokens.append(Token("func", FUNCTION_NAMES[word[1]], start, self.pos))
-            else:  # eq₁ \text{ where } eq₂: the word between two equations
+            else:  # eq₁ \text{ where } eq₂, eq₁ \text{ so } eq₂: the word between two equations
                 self.tokens.append(Token("name", Name(word[1]), start, self.pos))
         elif command in _LATEX_FONTS and (braced := _BRACED_LETTERS.match(text, self.pos)):
             # \mathcal{F}, \mathrm{d}: the letters, in another typeface
