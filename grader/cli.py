@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from collections.abc import Sequence
 from dataclasses import fields
@@ -40,6 +41,7 @@ EXIT_WRONG = 1
 EXIT_INVALID = 2
 EXIT_UNDECIDED = 3
 EXIT_SOME_FAILED = 4
+EXIT_PIPE_CLOSED = 141  # as a shell reports a process stopped by SIGPIPE: `grader … | head`
 _EXIT_BY_STATUS = {
     "equivalent": EXIT_OK,
     "not_equivalent": EXIT_WRONG,
@@ -396,7 +398,15 @@ def _run_parse(args: argparse.Namespace) -> int:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
     args = _parser().parse_args(argv)
-    return args.run(args)
+    try:
+        status = args.run(args)
+        sys.stdout.flush()  # here, where a reader that went away can be caught, not at exit
+    except BrokenPipeError:
+        # `grader check … | head` stopped reading: nothing more to say, and no traceback.
+        # Python would still flush at exit into the closed pipe; stdout goes nowhere now.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return EXIT_PIPE_CLOSED
+    return status
 
 
 if __name__ == "__main__":

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 
 import pytest
 
@@ -34,6 +36,17 @@ def test_usage_error_exits_2():
     with pytest.raises(SystemExit) as exit_info:
         main(["parse"])
     assert exit_info.value.code == 2
+
+
+def test_a_reader_that_stops_early_gets_no_traceback():
+    # `grader compare … | head -1`: the pipe closes before the grader has written its lines
+    command = [sys.executable, "-m", "grader", "compare", "--coords", "x", "x^2", "x*x"]
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE) as process:
+        process.stdout.close()  # the reader is gone before the first line
+        errors = process.stderr.read().decode()
+        status = process.wait(timeout=60)
+    assert errors == ""
+    assert status == 141
 
 
 L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
