@@ -148,6 +148,8 @@ HOSTILE = [
     ("m g = l = const", "too_many_equals"),  # l is the problem's own
     ("p = m g = q", "too_many_equals"),  # q is no word for a constant
     ("p = m g = const = C", "too_many_equals"),
+    ("p = m g =", "unexpected_end"),  # a label, a side, and nothing after the last `=`
+    ("m θ = m =", "unexpected_end"),
     ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),
     ("diff(theta, x)", "diff_usage"),
     ("d/dt(d/dt(d/dt(d/dt(theta*m))))", "derivative_order"),  # nested around a product, past the cap

@@ -101,8 +101,8 @@ TOKENS = [
     # operators, brackets, numbers
     "+", "-", "*", "/", "^", "**", "=", ",", ";", "(", ")", "[", "]", "{", "}", "²", "³",
     "0", "1", "2", "9", "0.5", ".25", "1e3", "99", "1/2",
-    # separators
-    " ", " ", "\n",
+    # separators, a derivation's steps, labels, Leibniz and partial derivatives, constants
+    " ", " ", "\n", "->", "→", "=>", "so", "\\to", ":", "d/dt", "d", "dt", "∂", "∂L/∂θ̇", "\\partial", "const", "C",
 ]  # fmt: skip
 token_soup = st.lists(st.sampled_from(TOKENS), max_size=40).map("".join)
 

@@ -262,16 +262,18 @@ class _Parser:
             if named and self._is_arbitrary_constant(self.i):
                 quantity = rhs if label is not None else lhs
                 return first, sympy.Eq(quantity, sympy.Symbol(canonical_name(self.advance().value.raw)), evaluate=False)
+            if self.token.kind == "end":
+                self.fail_here()  # p = m ẋ =: nothing after the last `=`
             raise ParseFailure("too_many_equals", equals.start, equals.end)
         return first, sympy.Eq(lhs, rhs, evaluate=False)
 
     def _is_arbitrary_constant(self, i: int) -> bool:
         """Whether the tokens at ``i`` are a name for any constant (``const``, ``C₁``) that the
         problem does not define, and the end of an item."""
-        token, after = self.tokens[i], self.tokens[i + 1]
+        token = self.tokens[i]
         if token.kind != "name" or token.value.dots or token.value.primes:
-            return False
-        name = canonical_name(token.value.raw)
+            return False  # the end token among them: `p = m ẋ =` has no side after its last `=`
+        name, after = canonical_name(token.value.raw), self.tokens[i + 1]
         ends = after.kind in ("end", "sep") or after.is_op(",", ";") or _is_joining_word(after)
         return ends and is_arbitrary_constant(name) and name not in self.context.known
 
