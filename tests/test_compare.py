@@ -315,6 +315,17 @@ def test_a_momentum_may_be_written_as_its_derivation(submitted):
         ("m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ", "equivalent"),  # as it would be on paper
         ("EOM: θ̈ = −(g/l) sin θ", "equivalent"),
         (r"\ddot\theta = -\frac gl \sin\theta \quad\Rightarrow", "equivalent"),
+        ("m l² θ̈ = −m g l sin θ -> θ̈ = −(g/l) sin θ", "equivalent"),
+        ("m l² θ̈ = −m g l sin θ, so θ̈ = −(g/l) sin θ", "equivalent"),
+        # the Euler–Lagrange operator written out first: what it comes to is the equation
+        ("d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0", "equivalent"),
+        ("d/dt ∂L/∂θ̇ − ∂L/∂θ = m l² θ̈ − m g l sin θ = 0", "not_equivalent"),
+        (
+            r"\frac{d}{dt}\left(\frac{\partial L}{\partial\dot\theta}\right) - \frac{\partial L}{\partial\theta}"
+            r" = ml^2\ddot\theta + mgl\sin\theta = 0",
+            "equivalent",
+        ),
+        ("d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ", "not_equivalent"),  # "= 0" left out: an expression
     ],
 )
 def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status):

@@ -118,6 +118,10 @@ HOSTILE = [
     ("\\sqrt\\[3\\]{x}", "unknown_command"),
     ("m ∂θ", "partial"),  # ∂ only in a name before =, as in ∂L/∂θ̇ = …
     ("∂L/∂θ̇ + 1 = m", "partial"),  # \\[ opens the math only where a line starts
+    ("d/dt(∂L/∂θ̇) = ∂L/∂θ", "partial"),  # the operator is read before an equation, not as one
+    ("d/dt(∂L/∂θ̇) − ∂L/∂θ = m = g = l", "too_many_equals"),
+    ("d/dt(∂L/∂θ̇ − ∂L/∂θ) = m", "partial"),  # the bracket around the momentum only
+    ("d²/dt²(∂L/∂θ̇) − ∂L/∂θ = m = g", "partial"),
     ("\\immediate\\write18{rm -rf /}", "unknown_command"),
     ("\\begin{verbatim}x\\end{verbatim}", "unknown_command"),
     ("\\csname x\\endcsname", "unknown_command"),

@@ -244,6 +244,18 @@ class _Parser:
 
     def item(self):
         first = self.token
+        operator = self._euler_lagrange_operator(self.i)
+        if operator is not None:
+            # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0: the operator, then the equation it gives
+            self.i = operator + 1
+            lhs = self.expr()
+            if not self.token.is_op("="):
+                return first, lhs  # what the operator comes to, without "= 0": an expression
+            self.advance()
+            rhs = self.expr()
+            if self.token.is_op("="):
+                raise ParseFailure("too_many_equals", self.token.start, self.token.end)
+            return first, sympy.Eq(lhs, rhs, evaluate=False)
         label = self.label()
         lhs = label if label is not None else self.expr()
         if not self.token.is_op("="):
@@ -303,6 +315,26 @@ class _Parser:
                 self.i, name = quotient
                 return sympy.Symbol(name)
         return self.expr()
+
+    def _euler_lagrange_operator(self, i: int) -> int | None:
+        """``d/dt(∂L/∂θ̇) − ∂L/∂θ`` at ``i``, bracketed or not, in plain notation or TeX's, and
+        followed by ``=``: the position of that ``=``; None if there is none."""
+        tokens = self.tokens
+        if tokens[i].kind != "deriv" or tokens[i].value != (1, False):
+            return None
+        closer = _OPENERS.get(tokens[i + 1].value) if tokens[i + 1].kind == "op" else None
+        momentum = self._partial_quotient(i + 2 if closer else i + 1)
+        if momentum is None:
+            return None
+        j = momentum[0]
+        if closer:
+            if not tokens[j].is_op(closer):
+                return None
+            j += 1
+        force = self._partial_quotient(j + 1) if tokens[j].is_op("-") else None
+        if force is None or not tokens[force[0]].is_op("="):
+            return None
+        return force[0]
 
     def _partial_quotient(self, i: int) -> tuple[int, str] | None:
         """``∂L/∂φ̇`` or ``\\frac{\\partial L}{\\partial \\dot\\phi}`` at ``i``: the position after it, and

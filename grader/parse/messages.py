@@ -26,7 +26,10 @@ MESSAGES: dict[str, str] = {
         "`{arrow}` is read only between two equations, as a step of a derivation (`a = b {arrow} c = d`"
         " is read as c = d); a limit such as θ → 0 cannot be part of an answer."
     ),
-    "partial": "`∂` is read only in the name of what an answer writes out, before `=`, as in p = ∂L/∂φ̇ = …",
+    "partial": (
+        "`∂` is read only in the name of what an answer writes out, before `=`, as in p = ∂L/∂φ̇ = …"
+        " or d/dt(∂L/∂θ̇) − ∂L/∂θ = … = 0"
+    ),
     "string": "Quotes are not allowed: an answer is mathematics, not text.",
     "prime_position": "A prime (') marks a time derivative and must follow a coordinate's name, as in theta'.",
     "comment": "`#` starts a comment in code; it cannot be part of an answer.",
