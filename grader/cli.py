@@ -1,7 +1,7 @@
 """The ``grader`` command: a thin layer over the library, and the only code that prints or exits.
 
 Commands:
-    grader compare EXPECTED SUBMITTED [--kind K] [--coords q1,q2] [--json]   judge an answer
+    grader compare EXPECTED SUBMITTED [--kind K] [--coords q1,q2] [--given p=…] [--json]   judge an answer
     grader parse ANSWER [--coords q1,q2] [--known m,g,l] [--json]           how an answer is read
     grader problems list | show ID [--answers]                             the problem bank
     grader validate [PATH ...]                                             the bank tests itself
@@ -54,6 +54,13 @@ def _names(value: str) -> list[str]:
     return [name.strip() for name in value.split(",") if name.strip()]
 
 
+def _definition(value: str) -> tuple[str, str]:
+    name, equals, expression = value.partition("=")
+    if not (equals and name.strip() and expression.strip()):
+        raise argparse.ArgumentTypeError(f"expected NAME=VALUE, as p_theta='m R^2 thetadot', not {value!r}")
+    return name.strip(), expression.strip()
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="grader",
@@ -82,6 +89,10 @@ def _parser() -> argparse.ArgumentParser:
     judge.add_argument("--known", type=_names, default=[], help="more symbols the problem defines")
     judge.add_argument("--timeout", type=float, default=2.0, help="seconds before the verdict is 'undecided'")
     judge.add_argument("--up-to-constant", action="store_true", help="expressions: allow an additive constant")
+    judge.add_argument(
+        "--given", type=_definition, action="append", default=[], metavar="NAME=VALUE",
+        help="a name an answer may use for a quantity, e.g. p_theta='m R^2 thetadot' (repeatable)",
+    )  # fmt: skip
     judge.add_argument("--json", action="store_true", help="print JSON")
     judge.set_defaults(run=_run_compare)
 
@@ -346,6 +357,8 @@ def _run_validate(args: argparse.Namespace) -> int:
 
 def _run_compare(args: argparse.Namespace) -> int:
     options = {"up_to_constant": True} if args.up_to_constant else {}
+    if args.given:
+        options["given"] = dict(args.given)
     kind = args.kind or _written_kind(args.expected, args.coords, args.known)
     try:
         verdict = compare(

@@ -32,8 +32,8 @@ BROKEN_MESSAGES = [
      "line 14: field 'kind' is 'lagrangean'; allowed: integer, number, choice, expression, equation, equations,"
      " lagrangian, text"),
     ("misspelled_field", "misspelled_field", "lagrangian",
-     "line 16: unknown field 'anwser' in a part; allowed: answer, choices, derive_from, id, kind, method_credit,"
-     " mistakes, options, points, prompt, rubric, tests"),
+     "line 16: unknown field 'anwser' in a part; allowed: answer, choices, derive_from, given, id, kind,"
+     " method_credit, mistakes, options, points, prompt, rubric, tests"),
     ("negative_points", "negative_points", "lagrangian", "line 15: field 'points' is -2; points must be more than 0"),
     ("duplicate_part_id", "duplicate_part_id", "lagrangian",
      "line 18: part id 'lagrangian' is used twice in this problem"),
@@ -50,6 +50,10 @@ BROKEN_MESSAGES = [
      " position 33 is never closed.\n…2 m l^2 thetadot^2 + m g l cos(theta\n                               ^"),
     ("mistake_equals_reference", "mistake_equals_reference", "lagrangian",
      "mistake 'L = 1/2 m l^2 θ̇^2 + m g l cos θ + 3' is equivalent to the reference answer"),
+    ("given_on_choice", "given_on_choice", "cyclic",
+     "line 14: given applies to kinds expression, equation, equations, lagrangian, not 'choice'"),
+    ("given_undefined_name", "given_undefined_name", "hamiltonian",
+     "the value given for 'p_theta' uses L, which the problem does not define"),
     ("test_gets_another_score", "test_gets_another_score", "lagrangian",
      "test '1/2 m l^2 thetadot^2' gets 0, not 1 (not_equivalent: A term is missing: a term in cos(θ).)"),
 ]  # fmt: skip

@@ -38,6 +38,16 @@ def test_usage_error_exits_2():
     assert exit_info.value.code == 2
 
 
+def test_compare_given_names_a_quantity_an_answer_may_use(capsys):
+    hamiltonian = "1/2 m R^2 thetadot^2 - m g R cos(theta)"
+    arguments = ["compare", "--coords", "theta", "--known", "m,R,g", "--given", "p_theta=m R^2 thetadot"]
+    assert main([*arguments, hamiltonian, "p_θ²/(2 m R²) − m g R cos θ"]) == 0
+    assert "Read with `p_θ` as R^2*m*θ̇" in capsys.readouterr().out
+    with pytest.raises(SystemExit) as exit_info:
+        main(["compare", "--given", "p_theta", "x", "x"])
+    assert exit_info.value.code == 2
+
+
 def test_a_reader_that_stops_early_gets_no_traceback():
     # `grader compare … | head -1`: the pipe closes before the grader has written its lines
     command = [sys.executable, "-m", "grader", "compare", "--coords", "x", "x^2", "x*x"]

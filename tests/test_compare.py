@@ -837,3 +837,50 @@ _PIECES = ["theta", "thetadot", "θ̈", "m", "g", "l", "sin", "(", ")", "+", "-"
 def test_no_answer_glued_from_answer_pieces_makes_compare_raise(expected, kind, text):
     # Found this way: a one-coordinate system answered with a bare expression raised KeyError.
     assert isinstance(compare(expected, text, kind=kind, **PENDULUM), Verdict)
+
+
+HOOP = {"coords": ["theta"], "known": ["m", "R", "g", "omega"]}
+HOOP_H = "1/2 m R^2 thetadot^2 - 1/2 m R^2 omega^2 sin(theta)^2 - m g R cos(theta)"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", "equivalent"),  # the Hamiltonian in the momentum
+        ("p_θ θ̇ − ½ m R² θ̇² − ½ m R² ω² sin²θ − m g R cos θ", "equivalent"),  # p θ̇ − L, as defined
+        (r"H = \frac{p_\theta^2}{2mR^2} - \frac12 mR^2\omega^2\sin^2\theta - mgR\cos\theta", "equivalent"),
+        ("p_θ²/(m R²) − ½ m R² ω² sin²θ − m g R cos θ", "not_equivalent"),
+    ],
+)
+def test_a_given_name_is_put_in_place_and_the_feedback_says_so(submitted, status):
+    verdict = compare(HOOP_H, submitted, given={"p_theta": "m R^2 thetadot"}, up_to_constant=True, **HOOP)
+    assert verdict.status == status
+    assert verdict.feedback[-1] == "Read with `p_θ` as R^2*m*θ̇, as this problem defines it."
+
+
+def test_without_given_a_momentum_is_an_undefined_name_and_with_it_unused_says_nothing():
+    momentum = "p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ"
+    assert compare(HOOP_H, momentum, up_to_constant=True, **HOOP).diagnosis == "undefined_symbol"
+    verdict = compare(HOOP_H, HOOP_H, given={"p_theta": "m R^2 thetadot"}, up_to_constant=True, **HOOP)
+    assert verdict.feedback == ("Correct.",)
+
+
+def test_given_names_apply_to_equations_too():
+    given = {"omega_0": "sqrt(g/l)"}
+    verdict = compare("thetaddot = -g/l sin(theta)", "θ̈ + ω₀² sin θ = 0", kind="equation", given=given, **PENDULUM)
+    assert verdict.status == "equivalent"
+
+
+@pytest.mark.parametrize(
+    ("given", "message"),
+    [
+        ({"p_theta": "q R thetadot"}, "the value given for 'p_theta' uses q, which the problem does not define"),
+        ({"m": "R"}, "given name 'm' is already a name of this problem or of its expected answer"),
+        ({"p_theta": "a = b"}, "the value given for 'p_theta', 'a = b', cannot be read: it is not an expression"),
+        (["p_theta"], "option given must map names to expressions, as {p_theta: m R^2 thetadot}"),
+    ],
+)
+def test_a_wrong_given_is_the_authors_error(given, message):
+    with pytest.raises(AuthorError) as error:
+        compare(HOOP_H, "x", given=given, **HOOP)
+    assert str(error.value) == message

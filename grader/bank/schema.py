@@ -55,6 +55,7 @@ SEED_ID = re.compile(r"[SLAE][0-9]{1,2}")
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*")
 _DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
 _DERIVABLE = ("equation", "equations")
+_MATHEMATICS = ("expression", "equation", "equations", "lagrangian")  # the kinds whose answers are read as mathematics
 
 
 class BankError(AuthorError):
@@ -123,6 +124,7 @@ class Part:
     derive_from: str = ""
     options: Mapping[str, object] = field(default_factory=dict)
     choices: Mapping[str, str] = field(default_factory=dict)
+    given: Mapping[str, str] = field(default_factory=dict)  # names an answer may use: p_theta → m R^2 thetadot
     mistakes: tuple[Mistake, ...] = ()
     rubric: tuple[RubricIdea, ...] = ()
     tests: tuple[PartTest, ...] = ()
@@ -314,6 +316,7 @@ _PART_FIELDS = {
     "derive_from",
     "options",
     "choices",
+    "given",
     "mistakes",
     "rubric",
     "tests",
@@ -362,6 +365,12 @@ def _part(reader: _Reader, raw, location: tuple, taken: set[str]) -> Part:
                     (*location, "answer"),
                     f"answer {label!r} is not one of the choices ({', '.join(map(str, choices))})",
                 )
+    given = reader.get(data, location, "given", dict, {})
+    if given and kind not in _MATHEMATICS:
+        reader.fail((*location, "given"), f"given applies to kinds {', '.join(_MATHEMATICS)}, not {kind!r}")
+    for name, value in given.items():
+        if not (isinstance(name, str) and isinstance(value, str | int | float)):
+            reader.fail((*location, "given", str(name)), "given maps a name to its value, as p_theta: m R^2 thetadot")
     rubric = tuple(_rubric(reader, data, location)) if kind == "text" else ()
     if kind == "text" and not rubric:
         reader.fail(
@@ -372,6 +381,7 @@ def _part(reader: _Reader, raw, location: tuple, taken: set[str]) -> Part:
     return Part(
         id=part_id, kind=kind, points=float(points), prompt=reader.get(data, location, "prompt", str, ""),
         answer=answer, derive_from=derive_from, options=options, choices={str(k): str(v) for k, v in choices.items()},
+        given={name: str(value) for name, value in given.items()},
         mistakes=tuple(_mistakes(reader, data, location)), rubric=rubric, tests=tuple(_tests(reader, data, location)),
         method_credit=float(reader.get(data, location, "method_credit", (int, float), 0.5, check=_score,
                                        what="a share of the points, from 0 to 1")),

@@ -52,8 +52,10 @@ def _frozen(setting: dict) -> dict:
 
 
 def part_options(part: Part) -> dict:
-    """The compare options a part implies: its own, and its choices or rubric."""
+    """The compare options a part implies: its own, its given names, and its choices or rubric."""
     options = dict(part.options)
+    if part.given:
+        options["given"] = dict(part.given)
     if part.kind == "choice":
         options["options"] = tuple(part.choices)
     if part.kind == "text":

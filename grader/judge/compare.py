@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 
 import sympy
 from sympy.core.function import AppliedUndef
@@ -32,7 +33,8 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
 from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
-from grader.parse.names import is_arbitrary_constant, unicode_name
+from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
+from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
 
@@ -90,8 +92,10 @@ def compare(
         coords: the generalized coordinates, functions of time.
         **options: ``known`` (more symbols the problem defines), ``domains``
             (``{"x": "real"}``; by default coordinates are real and other symbols
-            positive), ``timeout`` (seconds, default 2), and the kind's own
-            options (``up_to_constant``, ``rtol``/``atol``, ``options`` for choices…).
+            positive), ``given`` (names an answer may use for a quantity of the problem,
+            ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
+            (seconds, default 2), and the kind's own options (``up_to_constant``,
+            ``rtol``/``atol``, ``options`` for choices…).
 
     Returns:
         A :class:`Verdict`. Nothing a student types makes this raise or hang.
@@ -107,6 +111,7 @@ def compare(
     spec = KINDS[kind]
     known = tuple(options.pop("known", ()))
     domains = tuple(sorted((options.pop("domains", None) or {}).items()))
+    given = options.pop("given", None) or {}
     timeout = float(options.pop("timeout", DEFAULT_TIMEOUT))
     unknown = set(options) - set(spec.options)
     if unknown:
@@ -122,7 +127,7 @@ def compare(
         raise AuthorError(
             f"the expected answer of kind {kind!r} must be {_AN[spec.shape]}, not {_AN[prepared.parsed.kind]}"
         )
-    return _judge(spec, prepared, submitted, timeout)
+    return _judge(spec, prepared, submitted, timeout, _given_values(prepared, given) if spec.parsed else ())
 
 
 _AN = {"expression": "an expression", "equation": "an equation", "equations": "a system of equations"}
@@ -134,19 +139,19 @@ def _hashable(value):
     return value
 
 
-def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Verdict:
-    answer, conserved = None, False
+def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
+    answer, conserved, used = None, False, ()
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
         with time_limit(timeout) as deadline:
             if spec.parsed:
-                answer = parse_answer(
-                    submitted, coords=expected.setting.coords, known=sorted(expected.names), deadline=deadline
-                )
+                names = sorted(expected.names | {symbol.name for symbol, _ in given})
+                answer = parse_answer(submitted, coords=expected.setting.coords, known=names, deadline=deadline)
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
+                answer, used = _with_given(answer, given)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
@@ -160,6 +165,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float) -> Ve
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")
     except _CHECK_FAILURES as failure:
         outcome = Outcome("undecided", 0.0, "undecided", method=f"failed: {type(failure).__name__}")
+    if used:
+        read = "; ".join(f"`{unicode_name(symbol.name)}` as {to_text(value)}" for symbol, value in used)
+        outcome = replace(outcome, more=(*outcome.more, ("given_read", {"read": read})))
     return _verdict(outcome, answer)
 
 
@@ -169,6 +177,57 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
     feedback = list(dict.fromkeys(feedback))  # two terms described alike are one sentence
     diagnosis = None if outcome.status == "equivalent" else outcome.key
     return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer)
+
+
+def _given_values(expected: Expected, given: Mapping) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
+    """The author's ``given`` names with their values, read in the problem's names.
+
+    Raises:
+        AuthorError: for a value that cannot be read, uses a name the problem does not
+            define, or a name the expected answer or the problem already uses.
+    """
+    if not isinstance(given, Mapping) or not all(isinstance(v, str) for v in given.values()):
+        raise AuthorError("option given must map names to expressions, as {p_theta: m R^2 thetadot}")
+    items = tuple(sorted((str(name), value) for name, value in given.items()))
+    return _read_given(items, expected.setting.coords, tuple(sorted(expected.names)))
+
+
+@lru_cache(maxsize=256)
+def _read_given(items: tuple, coords: tuple, names: tuple) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
+    values = []
+    for name, text in items:
+        if canonical_name(name) in names:
+            raise AuthorError(f"given name {name!r} is already a name of this problem or of its expected answer")
+        value = parse_answer(text, coords=coords, known=names)
+        if not value.ok or value.kind != "expression":
+            problem = value.message if not value.ok else "it is not an expression"
+            raise AuthorError(f"the value given for {name!r}, {text!r}, cannot be read: {problem}")
+        undefined = sorted({s.name for s in value.value.free_symbols} - set(names))
+        if undefined:
+            raise AuthorError(
+                f"the value given for {name!r} uses {', '.join(undefined)}, which the problem does not define"
+            )
+        values.append((sympy.Symbol(canonical_name(name)), value.value))
+    return tuple(values)
+
+
+def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple]:
+    """The answer with the author's given names (p_θ) put in place, and those it used."""
+    value = answer.value
+    items = value if isinstance(value, tuple) else (value,)
+    used = tuple((symbol, v) for symbol, v in given if any(symbol in item.free_symbols for item in items))
+    if not used:
+        return answer, ()
+    replacement = dict(used)
+    if isinstance(value, tuple):
+        value = tuple(
+            sympy.Eq(item.lhs.xreplace(replacement), item.rhs.xreplace(replacement), evaluate=False) for item in value
+        )
+    elif isinstance(value, sympy.Eq):
+        value = sympy.Eq(value.lhs.xreplace(replacement), value.rhs.xreplace(replacement), evaluate=False)
+    else:
+        value = value.xreplace(replacement)
+    return ParsedAnswer(answer.text, value, answer.kind), used
 
 
 def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:
