@@ -855,7 +855,14 @@ HOOP_H = "1/2 m R^2 thetadot^2 - 1/2 m R^2 omega^2 sin(theta)^2 - m g R cos(thet
 def test_a_given_name_is_put_in_place_and_the_feedback_says_so(submitted, status):
     verdict = compare(HOOP_H, submitted, given={"p_theta": "m R^2 thetadot"}, up_to_constant=True, **HOOP)
     assert verdict.status == status
-    assert verdict.feedback[-1] == "Read with `p_θ` as R^2*m*θ̇, as this problem defines it."
+    assert verdict.feedback[-1] == "Read with the problem's own meaning of `p_θ`."
+
+
+def test_what_a_given_name_stands_for_is_never_shown():
+    # another part may ask for p_θ itself: neither feedback nor the answer read back may give it
+    verdict = compare(HOOP_H, "p_θ", given={"p_theta": "m R^2 thetadot"}, up_to_constant=True, **HOOP)
+    assert verdict.read_as == "p_θ"
+    assert not any("R^2" in sentence or "R²" in sentence for sentence in verdict.feedback)
 
 
 def test_without_given_a_momentum_is_an_undefined_name_and_with_it_unused_says_nothing():

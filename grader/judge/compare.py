@@ -34,7 +34,6 @@ from grader.judge.text import check_text
 from grader.judge.verdict import Verdict
 from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
-from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
 
@@ -140,7 +139,7 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
-    answer, conserved, used = None, False, ()
+    answer, conserved, used, typed = None, False, (), None
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
@@ -151,7 +150,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
-                answer, used = _with_given(answer, given)
+                typed, (answer, used) = answer, _with_given(answer, given)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
@@ -166,8 +165,11 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
     except _CHECK_FAILURES as failure:
         outcome = Outcome("undecided", 0.0, "undecided", method=f"failed: {type(failure).__name__}")
     if used:
-        read = "; ".join(f"`{unicode_name(symbol.name)}` as {to_text(value)}" for symbol, value in used)
-        outcome = replace(outcome, more=(*outcome.more, ("given_read", {"read": read})))
+        # Neither the note nor the answer shown back says what p_θ stands for: another part
+        # of the problem may ask for just that. The answer is shown as typed.
+        names = _listing([symbol.name for symbol, _ in used])
+        outcome = replace(outcome, more=(*outcome.more, ("given_read", {"names": names})))
+        return _verdict(outcome, typed)
     return _verdict(outcome, answer)
 
 
@@ -212,7 +214,7 @@ def _read_given(items: tuple, coords: tuple, names: tuple) -> tuple[tuple[sympy.
 
 
 def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple]:
-    """The answer with the author's given names (p_θ) put in place, and those it used."""
+    """The answer with the author's given names (p_θ) put in place, and those it used, each with its value."""
     value = answer.value
     items = value if isinstance(value, tuple) else (value,)
     used = tuple((symbol, v) for symbol, v in given if any(symbol in item.free_symbols for item in items))

@@ -38,7 +38,7 @@ FEEDBACK: dict[str, str] = {
     "wrong_equation": "Your equation for {coords} is not right; {right}.",
     "wrong_equations": "Your equations do not determine the right accelerations for {coords}.",
     "dependent_equations": "Your equations are not independent: they do not determine every acceleration.",
-    "given_read": "Read with {read}, as this problem defines it.",
+    "given_read": "Read with the problem's own meaning of {names}.",
     "conserved_read": "`… = const` was read as a conserved quantity: what was compared is its time derivative,"
     " d/dt (…) = 0.",
     "vanishing_factor": "Your equation is right only where a factor of it is not zero: at rest, or where a"
