@@ -117,7 +117,8 @@ def test_an_unreadable_answer_is_pointed_at(server, browser):
     message = WebDriverWait(browser, 20).until(
         expected_conditions.presence_of_element_located((By.CSS_SELECTOR, refusal))
     )
-    assert message.text == "Unbalanced bracket: the `(` at position 4 is never closed."
+    assert message.text == "Unbalanced bracket: the ( at position 4 is never closed."
+    assert [code.text for code in message.find_elements(By.TAG_NAME, "code")] == ["("]  # `(` shown as code
     result = _check(browser, "invalid")
     assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "invalid\ncould not be read"
     assert result.find_element(By.CSS_SELECTOR, ".read pre").text == "sin(theta\n   ^"
@@ -136,8 +137,9 @@ def test_a_number_with_a_unit_is_shown_as_read(server, browser):
         )
     )
     assert [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")] == [
-        "A number is asked for here; your answer contains `s`."
+        "A number is asked for here; your answer contains s."
     ]
+    assert [code.text for code in result.find_elements(By.CSS_SELECTOR, "ul.hints li code")] == ["s"]
     assert result.find_element(By.CSS_SELECTOR, ".read .caption").text == "read as:"
     assert result.find_elements(By.CSS_SELECTOR, ".read math")
 

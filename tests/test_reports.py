@@ -219,6 +219,9 @@ def test_student_report_shows_every_status():
     # feedback, and the line that shows where an unreadable answer fails
     assert BANK["plane-pendulum"].part("lagrangian").mistakes[0].feedback in page.text
     assert "sin(θ\n   ^" in page.text and "sin(θ\n   ^" in markdown
+    # a sentence's `…` is code on the page; the Markdown shows it as written (its backticks escaped)
+    assert "<li>Unbalanced bracket: the <code>(</code> at position 4 is never closed.</li>" in html_page
+    assert "the \\`(\\` at position 4" in markdown
     assert "| plane-pendulum.period | 0 | 1 | ✘ not right |" in markdown
     assert "provisional" in page.text
 
