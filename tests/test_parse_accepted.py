@@ -331,6 +331,10 @@ LATEX = [
     ("\\dot{\\theta}^2_1 + x^{2}_{1}", D(theta1) ** 2 + sympy.Symbol("x_1") ** 2),
     ("m \\ddot x = -k x \\Rightarrow \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x)),
     ("\\ddot x = a \\implies", Eq(D(x, 2), a)),
+    # TeX's prime is a superscript: θ' typeset is \theta^\prime, and its square \theta^{\prime 2}
+    ("\\theta^\\prime + \\theta^{\\prime\\prime} + x^{ \\prime }", D(theta) + D(theta, 2) + D(x)),
+    ("\\theta^{\\prime 2} + \\theta_1^{\\prime\\prime 3}", D(theta) ** 2 + D(theta1, 2) ** 3),
+    ("{\\theta^{\\prime}}^2", D(theta) ** 2),
     *(
         (f"m \\ddot x = -k x {step} \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x))
         for step in ("\\iff", "\\Leftrightarrow", "\\therefore", "\\to", "\\rightarrow", "\\text{ so }")

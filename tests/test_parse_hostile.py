@@ -158,6 +158,8 @@ HOSTILE = [
     ("diff(theta, x)", "diff_usage"),
     ("d/dt(d/dt(d/dt(d/dt(theta*m))))", "derivative_order"),  # nested around a product, past the cap
     # an arrow is a derivation's step only between two equations; elsewhere it is a limit or a map
+    ("\\theta^{\\prime 2", "unclosed"),
+    ("m^\\prime", "derivative_of_constant"),  # TeX's prime marks a derivative, only of a coordinate
     ("θ → 0", "arrow"),
     ("θ̈ = -g/l θ (θ → 0)", "arrow"),
     ("θ̈ → -g/l θ", "arrow"),

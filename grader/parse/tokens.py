@@ -133,6 +133,8 @@ _ENDS_IN_SUBSCRIPT = re.compile(r"_[0-9]+$")
 _SUBSCRIPTS = SUBSCRIPT_DIGITS | SUBSCRIPT_LETTERS  # θ₁, Qᵣ: a subscript typed as one
 _SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+")
 _COMMAND_NAME = re.compile(r"\\([A-Za-z]+)")
+_TEX_PRIME = re.compile(r"\^\s*\\prime(?![A-Za-z])\s*")  # \theta^\prime
+_TEX_PRIMES = re.compile(r"\^\s*(\{)\s*((?:\\prime(?![A-Za-z])\s*)+)")  # \theta^{\prime\prime …
 _COMMAND = re.compile(r"\\([A-Za-z]+\*?|.?)")
 _ENVIRONMENT = re.compile(r"\s*\{([A-Za-z*]+)\}")
 _LEFT_RIGHT = re.compile(r"\\(left|right)(?![A-Za-z])\s*(\.?)")
@@ -554,6 +556,9 @@ class _Tokenizer:
         while self.pos < len(self.text) and self.text[self.pos] in _PRIMES:
             primes += _PRIMES[self.text[self.pos]]
             self.pos += 1
+        exponent = self._tex_primes() if self.latex and not primes else None
+        if exponent is not None:
+            primes, exponent = exponent
         subscript = _UNICODE_SUBSCRIPT.match(self.text, self.pos) if primes else None
         if subscript and not _ENDS_IN_SUBSCRIPT.search(raw):  # θ'₁ is θ₁', and lθ'₁ is lθ₁'
             raw += "_" + "".join(SUBSCRIPT_DIGITS[c] for c in subscript[0])
@@ -568,6 +573,27 @@ class _Tokenizer:
             self.tokens.append(Token("func", FUNCTION_NAMES[raw], start, self.pos))
         else:
             self.tokens.append(Token("name", Name(raw, dots, primes, tex=self.latex), start, self.pos))
+        if exponent:  # \theta^{\prime 2}: θ′ squared, the rest of the brace its exponent
+            caret, brace = exponent
+            self.tokens += [Token("op", "^", caret, caret + 1), Token("op", "{", brace, brace + 1)]
+
+    def _tex_primes(self) -> tuple[int, tuple[int, int] | None] | None:
+        """TeX's primes as a superscript, as its ' is typeset: ``\\theta^\\prime``, ``\\theta^{\\prime\\prime}``,
+        or ``\\theta^{\\prime 2}``: the count, and where a power that follows in the same brace
+        opens (its ``^`` and ``{``), read past; None when there are none."""
+        single = _TEX_PRIME.match(self.text, self.pos)
+        if single:
+            self.pos = single.end()
+            return 1, None
+        braced = _TEX_PRIMES.match(self.text, self.pos)
+        if not braced:
+            return None
+        self.pos = braced.end()
+        count = braced[2].count("\\prime")
+        if self.text.startswith("}", self.pos):
+            self.pos += 1
+            return count, None
+        return count, (braced.start(), braced.start(1))
 
     # -- LaTeX -------------------------------------------------------------------
 
