@@ -298,6 +298,15 @@ LATEX = [
     ("\\begin{aligned} a &= b \\\\ c &= d \\end{aligned}", (Eq(a, b), Eq(c, d))),
     ("\\begin{cases} a = b \\\\ c = d \\end{cases}", (Eq(a, b), Eq(c, d))),
     ("\\left\\{ \\begin{aligned} a &= b \\\\ c &= d \\end{aligned} \\right.", (Eq(a, b), Eq(c, d))),
+    # what equation editors write: an array with its columns, \newline, eqnarray; and wide spaces or
+    # one environment after another between two equations (elsewhere a \quad is a space)
+    ("\\left\\{\\begin{array}{l} a = b \\\\ c = d \\end{array}\\right.", (Eq(a, b), Eq(c, d))),
+    ("\\begin{array}{rcl} a &=& b \\\\ c &=& d \\end{array}", (Eq(a, b), Eq(c, d))),
+    ("\\begin{eqnarray} a &=& b \\\\ c &=& d \\end{eqnarray}", (Eq(a, b), Eq(c, d))),
+    ("a = b \\newline c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b \\qquad c = d \\quad\\text{and}\\quad \\ddot x = d", (Eq(a, b), Eq(c, d), Eq(D(x, 2), d))),
+    ("\\begin{equation} a = b \\end{equation} \\begin{equation} c = d \\end{equation}", (Eq(a, b), Eq(c, d))),
+    ("a = \\quad b \\qquad c", Eq(a, b * c)),
     ("\\left\\{ a + b \\right\\} c", (a + b) * c),  # a brace closed by a brace is a bracket
     ("$\\frac{a}{b}$", a / b),
     ("\\exp(a) + \\ln b", exp(a) + sympy.log(b)),

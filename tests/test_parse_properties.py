@@ -103,6 +103,8 @@ TOKENS = [
     "0", "1", "2", "9", "0.5", ".25", "1e3", "99", "1/2",
     # separators, a derivation's steps, labels, Leibniz and partial derivatives, constants
     " ", " ", "\n", "->", "→", "=>", "so", "\\to", ":", "d/dt", "d", "dt", "∂", "∂L/∂θ̇", "\\partial", "const", "C",
+    "\\quad", "\\qquad", "\\newline", "\\begin{array}{l}", "\\end{array}", "\\begin{equation}", "\\end{equation}",
+    "\\prime", "^\\prime", "^{\\prime", "&",
 ]  # fmt: skip
 token_soup = st.lists(st.sampled_from(TOKENS), max_size=40).map("".join)
 

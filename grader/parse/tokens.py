@@ -167,11 +167,12 @@ _TEXT_PUNCTUATION = re.compile(r"\s*\{\s*[.,;]?\s*\}")
 _OPERATOR_NAME = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}")
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
 _SIZES = {f"{size}{side}" for size in ("big", "Big", "bigg", "Bigg") for side in ("", "l", "r", "m")}
-_LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "quad", "qquad", "limits", *_SIZES}
+_LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "limits", *_SIZES}
 _LATEX_ENVIRONMENTS = {
     "aligned", "align", "align*", "gathered", "gather", "gather*", "split",
-    "cases", "equation", "equation*", "multline",
+    "cases", "equation", "equation*", "multline", "array", "eqnarray", "eqnarray*",
 }  # fmt: skip
+_ARRAY_COLUMNS = re.compile(r"\s*\{[lcr|@ ]*\}")  # \begin{array}{ll}: how its columns align
 
 
 def tokenize(text: str) -> list[Token]:
@@ -181,12 +182,27 @@ def tokenize(text: str) -> list[Token]:
         ParseFailure: for any character or word outside the whitelist.
     """
     tokens = _Tokenizer(text, latex="\\" in text).run()
+    if any(token.kind == "gap" for token in tokens):
+        tokens = _gaps(tokens)
     if any(token.kind == "arrow" or (token.kind == "name" and token.value.raw in IMPLYING_WORDS) for token in tokens):
         tokens = _steps_between_equations(tokens, text)
     if any(token.kind == "implies" for token in tokens):
         tokens = _conclusions(tokens)
     _check_brackets(tokens)
     return tokens
+
+
+def _gaps(tokens: list[Token]) -> list[Token]:
+    """TeX's wide spaces (``\\quad``, ``\\qquad``) and an environment's end, read as a new line
+    where an equation stands on each side (``\\ddot x = -x \\qquad \\ddot y = -y``), and left out
+    elsewhere, as the spaces they are."""
+    kept = []
+    for i, token in enumerate(tokens):
+        if token.kind != "gap":
+            kept.append(token)
+        elif _equation_beside(tokens, i, -1) and _equation_beside(tokens, i, 1):
+            kept.append(Token("sep", "\n", token.start, token.end))
+    return kept
 
 
 def _is_implying_word(token: Token) -> bool:
@@ -606,8 +622,10 @@ class _Tokenizer:
             return  # spaces, and \[ or \( that opens the math, as $ does
         if command in ("]", ")") and _closes_line(text, self.pos):
             return
-        if command == "\\":
+        if command == "\\" or command == "newline":
             self.tokens.append(Token("sep", "\n", start, self.pos))
+        elif command in ("quad", "qquad"):
+            self.tokens.append(Token("gap", command, start, self.pos))
         elif command in ("{", "}"):
             self.tokens.append(Token("op", command, start, self.pos))
         elif command in _LATEX_IGNORED:
@@ -620,6 +638,11 @@ class _Tokenizer:
             if not env or env[1] not in _LATEX_ENVIRONMENTS:
                 raise ParseFailure("unknown_command", start, self.pos, name=command)
             self.pos = env.end()
+            columns = _ARRAY_COLUMNS.match(text, self.pos) if env[1] == "array" and command == "begin" else None
+            if columns:
+                self.pos = columns.end()
+            if command == "end":  # \end{equation} \begin{equation}: one equation, then another
+                self.tokens.append(Token("gap", "end", start, self.pos))
         elif command in _LATEX_OPERATORS:
             self.tokens.append(Token("op", _LATEX_OPERATORS[command], start, self.pos))
         elif command in ("frac", "dfrac", "tfrac"):
