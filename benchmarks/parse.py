@@ -159,6 +159,9 @@ def adversarial() -> list[tuple[str, str, tuple]]:
         ("LaTeX fracs, 39 nested", "\\frac{" * 39 + "x" + "}{2}" * 39, none),
         ("LaTeX fracs, 60 terms", "+".join([r"\frac{1}{2} m l^2 \dot{\theta}^2"] * 60), PENDULUM),
         ("system of 200 equations", "\n".join(["x = m g l"] * 200), ([], ["m", "g", "l"])),
+        # each \quad asks whether an equation stands on either side of it
+        ("280 \\quad, one = at the end", ("x\\quad " * 280)[:1990] + " = 1", ([], ["x"])),
+        ("400 steps of a derivation", "a=b->" * 399 + "a=b", ([], ["a", "b"])),
         ("64 numbers of 30 digits", "*".join(["123456789012345678901234567891"] * 64), none),
         # refused ones: a refusal must be as cheap as an answer
         ("refused: 1999 open brackets", "(" * 1999 + "x", none),

@@ -22,6 +22,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from grader import ParsedAnswer, Refusal, parse_answer
+from grader.parse import tokens
+from grader.parse.messages import ParseFailure
 
 CONTEXTS = [
     ((), ()),
@@ -113,6 +115,23 @@ token_soup = st.lists(st.sampled_from(TOKENS), max_size=40).map("".join)
 @given(text=token_soup, context=contexts)
 def test_token_soup_gets_an_answer(text, context):
     _check(text, *context)
+
+
+STEPS = ["a", "=", "b", "\\quad", "\\qquad", "\\\\", "->", ";", "so", "c", "\\end{aligned}", " ", "\n"]
+
+
+@FUZZ
+@given(text=st.lists(st.sampled_from(STEPS), max_size=24).map(" ".join))
+def test_where_an_equation_stands_beside_every_gap_is_found_in_one_pass(text):
+    # the linear look for all of TeX's wide spaces at once agrees with looking from each alone
+    try:
+        found = tokens._Tokenizer(text, latex=True).run()
+    except ParseFailure:
+        assume(False)
+    gaps = [i for i, token in enumerate(found) if token.kind == "gap"]
+    before, after = tokens._equations_beside(found, gaps, -1), tokens._equations_beside(found, gaps[::-1], 1)
+    assert before == {i: tokens._equation_beside(found, i, -1) for i in gaps}
+    assert after == {i: tokens._equation_beside(found, i, 1) for i in gaps}
 
 
 # -- round trip --------------------------------------------------------------------

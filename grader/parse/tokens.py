@@ -196,13 +196,44 @@ def _gaps(tokens: list[Token]) -> list[Token]:
     """TeX's wide spaces (``\\quad``, ``\\qquad``) and an environment's end, read as a new line
     where an equation stands on each side (``\\ddot x = -x \\qquad \\ddot y = -y``), and left out
     elsewhere, as the spaces they are."""
+    gaps = [i for i, token in enumerate(tokens) if token.kind == "gap"]
+    before, after = _equations_beside(tokens, gaps, -1), _equations_beside(tokens, gaps[::-1], 1)
     kept = []
     for i, token in enumerate(tokens):
         if token.kind != "gap":
             kept.append(token)
-        elif _equation_beside(tokens, i, -1) and _equation_beside(tokens, i, 1):
+        elif before[i] and after[i]:
             kept.append(Token("sep", "\n", token.start, token.end))
     return kept
+
+
+def _equations_beside(tokens: list[Token], positions: list[int], step: int) -> dict[int, bool]:
+    """:func:`_equation_beside` for each of ``positions``, given in the order of ``step``, in
+    linear time: a look that reaches the position before goes on as that one's did (a thousand
+    ``\\quad`` would otherwise each look back over all the others)."""
+    seen_before: dict[int, bool] = {}
+    last = None
+    for i in positions:
+        j, seen, found = i + step, False, False
+        while 0 <= j < len(tokens) - 1:
+            token = tokens[j]
+            if j == last:  # from here on the look is the last one's, unless it would cross a line
+                beyond = j + step
+                crosses = 0 <= beyond < len(tokens) - 1 and tokens[beyond].kind == "sep"
+                found = seen_before[last] and not crosses
+                break
+            if token.is_op("="):
+                found = True
+                break
+            if token.kind in ("implies", "arrow") or _is_implying_word(token) or token.is_op(";"):
+                break
+            if token.kind == "sep" and seen:
+                break
+            seen = seen or token.kind != "sep"
+            j += step
+        seen_before[i] = found
+        last = i
+    return seen_before
 
 
 def _is_implying_word(token: Token) -> bool:
