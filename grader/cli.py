@@ -343,6 +343,8 @@ def _run_show(args: argparse.Namespace) -> int:
             print(f"      {label}) {text}")
         if args.answers:
             print(f"    answer: {expected_answer(problem, part)}")
+            for name, value in part.given.items():  # what an answer may use, and what it stands for
+                print(f"    given: {name} = {value}")
     return EXIT_OK
 
 

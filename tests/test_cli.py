@@ -115,6 +115,11 @@ def test_problems_show_hides_answers_unless_asked(capsys):
     assert "answer:" not in capsys.readouterr().out
     assert main(["problems", "show", "plane-pendulum", "--answers"]) == 0
     assert "answer: 1/2 m l^2 thetadot^2 + m g l cos(theta)" in capsys.readouterr().out
+    # a part's given names stand for parts of the answer, so they are shown with it
+    assert main(["problems", "show", "spherical-pendulum"]) == 0
+    assert "given:" not in capsys.readouterr().out
+    assert main(["problems", "show", "spherical-pendulum", "--answers"]) == 0
+    assert "    given: p_phi = m l^2 sin(theta)^2 phidot\n" in capsys.readouterr().out
 
 
 def test_problems_show_of_an_unknown_problem_is_a_usage_error(capsys):
