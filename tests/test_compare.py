@@ -891,3 +891,8 @@ def test_a_wrong_given_is_the_authors_error(given, message):
     with pytest.raises(AuthorError) as error:
         compare(HOOP_H, "x", given=given, **HOOP)
     assert str(error.value) == message
+
+
+def test_given_is_for_answers_read_as_mathematics():
+    with pytest.raises(AuthorError, match="option given does not apply to kind 'choice'"):
+        compare("a", "a", kind="choice", options=("a", "b"), given={"p": "1"})

@@ -126,7 +126,9 @@ def compare(
         raise AuthorError(
             f"the expected answer of kind {kind!r} must be {_AN[spec.shape]}, not {_AN[prepared.parsed.kind]}"
         )
-    return _judge(spec, prepared, submitted, timeout, _given_values(prepared, given) if spec.parsed else ())
+    if given and not spec.parsed:
+        raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
+    return _judge(spec, prepared, submitted, timeout, _given_values(prepared, given) if given else ())
 
 
 _AN = {"expression": "an expression", "equation": "an equation", "equations": "a system of equations"}
@@ -221,15 +223,19 @@ def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple
     if not used:
         return answer, ()
     replacement = dict(used)
-    if isinstance(value, tuple):
-        value = tuple(
-            sympy.Eq(item.lhs.xreplace(replacement), item.rhs.xreplace(replacement), evaluate=False) for item in value
-        )
-    elif isinstance(value, sympy.Eq):
-        value = sympy.Eq(value.lhs.xreplace(replacement), value.rhs.xreplace(replacement), evaluate=False)
-    else:
-        value = value.xreplace(replacement)
+    value = (
+        tuple(_replaced(item, replacement) for item in value)
+        if isinstance(value, tuple)
+        else _replaced(value, replacement)
+    )
     return ParsedAnswer(answer.text, value, answer.kind), used
+
+
+def _replaced(item, replacement: dict):
+    """An expression, or an equation side by side (left unevaluated), with names put in place."""
+    if isinstance(item, sympy.Eq):
+        return sympy.Eq(item.lhs.xreplace(replacement), item.rhs.xreplace(replacement), evaluate=False)
+    return item.xreplace(replacement)
 
 
 def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:
@@ -251,9 +257,7 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
             break
         position, (symbol, value) = found
         del items[position]
-        items = [
-            sympy.Eq(i.lhs.xreplace({symbol: value}), i.rhs.xreplace({symbol: value}), evaluate=False) for i in items
-        ]
+        items = [_replaced(item, {symbol: value}) for item in items]
         if any(too_many_digits(number) for item in items for number in item.atoms(sympy.Rational)):
             return answer
     if len(items) == len(answer.value):

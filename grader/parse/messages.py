@@ -130,9 +130,14 @@ def _columns(text: str) -> int:
 
 
 def _column(c: str) -> int:
-    if unicodedata.combining(c) or unicodedata.category(c) in ("Mn", "Me", "Cf"):
+    if _takes_no_place(c):
         return 0
     return 2 if unicodedata.east_asian_width(c) in ("W", "F") else 1
+
+
+def _takes_no_place(c: str) -> bool:
+    """A mark on the character before it (θ̇'s dot) or an invisible one (a zero-width space)."""
+    return bool(unicodedata.combining(c)) or unicodedata.category(c) in ("Mn", "Me", "Cf")
 
 
 def _printable(text: str) -> str:
@@ -158,4 +163,4 @@ class ParseFailure(Exception):
 
 def _seen_position(text: str, position: int) -> int:
     """A 1-based position in ``text``, in characters as seen rather than code points."""
-    return 1 + sum(1 for c in text[: position - 1] if not (unicodedata.combining(c) or unicodedata.category(c) == "Cf"))
+    return 1 + sum(1 for c in text[: position - 1] if not _takes_no_place(c))

@@ -93,7 +93,8 @@ class Token:
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
     ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``partial`` (∂),
     ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what follows), ``arrow`` (→: the
-    same between two equations, refused elsewhere), ``end``; the
+    same between two equations, refused elsewhere), ``gap`` (``\\quad``, an environment's end: a
+    ``sep`` between two equations, nothing elsewhere), ``end``; the
     grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
     """
 
@@ -210,7 +211,8 @@ def _gaps(tokens: list[Token]) -> list[Token]:
 def _equations_beside(tokens: list[Token], positions: list[int], step: int) -> dict[int, bool]:
     """:func:`_equation_beside` for each of ``positions``, given in the order of ``step``, in
     linear time: a look that reaches the position before goes on as that one's did (a thousand
-    ``\\quad`` would otherwise each look back over all the others)."""
+    ``\\quad`` would otherwise each look back over all the others). Tokens are never ``gap``s by
+    the time an arrow or a word looks, so each of those looks alone."""
     seen_before: dict[int, bool] = {}
     last = None
     for i in positions:
@@ -256,20 +258,9 @@ def _steps_between_equations(tokens: list[Token], text: str) -> list[Token]:
 
 
 def _equation_beside(tokens: list[Token], i: int, step: int) -> bool:
-    """Whether an ``=`` stands between the step at ``i`` and the next step, ``;`` or line's end,
-    looking one way; a step at a line's edge looks into the next line that way."""
-    j, seen = i + step, False
-    while 0 <= j < len(tokens) - 1:  # the end token left out
-        token = tokens[j]
-        if token.is_op("="):
-            return True
-        if token.kind in ("implies", "arrow") or _is_implying_word(token) or token.is_op(";"):
-            return False
-        if token.kind == "sep" and seen:
-            return False
-        seen = seen or token.kind != "sep"
-        j += step
-    return False
+    """Whether an ``=`` stands between the token at ``i`` and the next step, ``;`` or line's end,
+    looking one way (``step`` −1 or 1); at a line's edge it looks into the next line that way."""
+    return _equations_beside(tokens, [i], step)[i]
 
 
 def _conclusions(tokens: list[Token]) -> list[Token]:
