@@ -326,6 +326,7 @@ def test_a_momentum_may_be_written_as_its_derivation(submitted):
             "equivalent",
         ),
         ("d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ", "not_equivalent"),  # "= 0" left out: an expression
+        ("θ̈ ≈ −(g/l) sin θ", "equivalent"),  # ≈ is the relation written
     ],
 )
 def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status):
@@ -896,3 +897,10 @@ def test_a_wrong_given_is_the_authors_error(given, message):
 def test_given_is_for_answers_read_as_mathematics():
     with pytest.raises(AuthorError, match="option given does not apply to kind 'choice'"):
         compare("a", "a", kind="choice", options=("a", "b"), given={"p": "1"})
+
+
+def test_a_small_angle_equation_written_with_approx_is_read_and_told_apart():
+    small = compare("thetaddot = -g/l theta", "θ̈ ≈ −(g/l) θ", kind="equation", **PENDULUM)
+    full = compare("thetaddot = -g/l sin(theta)", "θ̈ ≈ −(g/l) θ", kind="equation", **PENDULUM)
+    assert small.status == "equivalent"
+    assert full.diagnosis == "small_angle"

@@ -264,6 +264,9 @@ SYSTEMS = [
     ("m ẍ = -k x\nso ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
     ("c ẍ = c a -> ẍ = a; θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
     ("a - -b = c", Eq(a + b, c)),  # two minus signs are no arrow
+    # ≈ is the relation a small-angle equation or a rounded number is written with
+    ("θ̈ ≈ -g/l θ", Eq(D(theta, 2), -g / l * theta)),
+    ("ẍ ≃ a", Eq(D(x, 2), a)),
     ("a + b\n- c", a + b - c),
     ("(a +\n b) = c", Eq(a + b, c)),
 ]
@@ -340,6 +343,7 @@ LATEX = [
     ("\\dot{\\theta}^2_1 + x^{2}_{1}", D(theta1) ** 2 + sympy.Symbol("x_1") ** 2),
     ("m \\ddot x = -k x \\Rightarrow \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x)),
     ("\\ddot x = a \\implies", Eq(D(x, 2), a)),
+    ("\\ddot x \\approx a; \\ddot\\theta \\simeq b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
     # TeX's prime is a superscript: θ' typeset is \theta^\prime, and its square \theta^{\prime 2}
     ("\\theta^\\prime + \\theta^{\\prime\\prime} + x^{ \\prime }", D(theta) + D(theta, 2) + D(x)),
     ("\\theta^{\\prime 2} + \\theta_1^{\\prime\\prime 3}", D(theta) ** 2 + D(theta1, 2) ** 3),

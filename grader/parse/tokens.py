@@ -111,6 +111,7 @@ class Token:
 _OPERATORS = {
     "+": "+", "-": "-", "\u2212": "-", "\u2013": "-", "*": "*", "\u00b7": "*", "\u22c5": "*",
     "\u00d7": "*", "\u2219": "*", "/": "/", "\u00f7": "/", "\u2044": "/", "\u2215": "/", "^": "^", "=": "=",
+    "\u2248": "=", "\u2243": "=",  # ≈ ≃: θ̈ ≈ −(g/l) θ for small angles, T ≈ 2.01: the relation asked for
     ",": ",", ";": ";",
     "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}",
 }  # fmt: skip
@@ -158,7 +159,7 @@ _LATEX_FUNCTIONS = {
 }
 # names followed by an argument in plain notation; Derivative(θ(t), t) as sympy prints it
 _CALLABLE = FUNCTION_NAMES | {"diff": "diff", "Derivative": "diff"}
-_LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/"}
+_LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/", "approx": "=", "simeq": "="}
 _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
 # \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop.
 # (A brace this short after \text or \mathrm is a unit or a few words, as \mathrm{rad/s}.)
