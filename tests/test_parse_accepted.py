@@ -264,6 +264,8 @@ SYSTEMS = [
     ("m ẍ = -k x\nso ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
     ("c ẍ = c a -> ẍ = a; θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
     ("a - -b = c", Eq(a + b, c)),  # two minus signs are no arrow
+    # a dot on a name glued to a coordinate is the coordinate's: ζθ̇ is ζ·θ̇, ζ the answer's own name
+    ("2ζẋ + ζθ̇ + ξx'", 2 * sympy.Symbol("zeta") * D(x) + sympy.Symbol("zeta") * D(theta) + sympy.Symbol("xi") * D(x)),
     # ≈ is the relation a small-angle equation or a rounded number is written with
     ("θ̈ ≈ -g/l θ", Eq(D(theta, 2), -g / l * theta)),
     ("ẍ ≃ a", Eq(D(x, 2), a)),

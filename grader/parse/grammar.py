@@ -56,6 +56,7 @@ _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
 _GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
 # One TeX symbol: a spelled-out Greek letter (from θ typed inside a run) or one letter,
 # each with its subscript; or a run of digits.
+_PLAIN_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*")  # a name as canonical_name spells one
 _TEX_PIECE = re.compile(rf"(?:{_GREEK}|[A-Za-z])(?:_[A-Za-z0-9]+)?|[0-9]+")
 
 
@@ -684,6 +685,8 @@ class _Parser:
         name: Name = token.value
         pieces = list(self.resolve(name, token))  # a copy: a split is kept for the name's next use, undotted
         order = name.dots + name.primes
+        if order and len(pieces) == 1 and not _is_coordinate(pieces[0], self.context):
+            pieces = self._before_a_coordinate(name) or pieces
         if order:
             last = pieces[-1]
             if not _is_coordinate(last, self.context):
@@ -702,6 +705,20 @@ class _Parser:
             value, i = self.chain(pieces, i, token)
             values.append(value)
         return values
+
+    def _before_a_coordinate(self, name: Name) -> list | None:
+        """``γẋ`` where γ is not the problem's (the answer may define it: ``2γ = b/m``): the dot
+        is on x, so the name is γ times ẋ. A glued dotted name that ends in a coordinate is an
+        undefined name times that coordinate; None when it does not end in one."""
+        canonical = canonical_name(name.raw)
+        endings = [c for c in self.context.coords if canonical.endswith(c) and len(canonical) > len(c)]
+        if not endings:
+            return None
+        coordinate = max(endings, key=len)
+        prefix = canonical[: -len(coordinate)].rstrip("_")
+        if not _PLAIN_NAME.fullmatch(prefix):
+            return None
+        return [self.lookup(prefix) or sympy.Symbol(prefix), self.context.coords[coordinate]]
 
     def chain(self, pieces, i, token):
         """Pieces of a split name, where a function piece takes the piece after it (``mglsintheta``)."""
