@@ -904,3 +904,16 @@ def test_a_small_angle_equation_written_with_approx_is_read_and_told_apart():
     full = compare("thetaddot = -g/l sin(theta)", "θ̈ ≈ −(g/l) θ", kind="equation", **PENDULUM)
     assert small.status == "equivalent"
     assert full.diagnosis == "small_angle"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("ẍ + 2γẋ + ω₀²x = 0, 2γ = b/m, ω₀² = k/m", "equivalent"),  # a damping rate named with its 2
+        ("ẍ + 2γẋ + ω₀²x = 0, where 2γ = b/m and ω₀² = 2k/m", "not_equivalent"),
+        ("ẍ + γẋ + ω₀²x = 0, 2γ = b/m, ω₀² = k/m", "not_equivalent"),
+    ],
+)
+def test_a_name_defined_with_a_number_before_it_is_put_in_place(submitted, status):
+    damped = {"coords": ["x"], "known": ["m", "b", "k"]}
+    assert compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **damped).status == status

@@ -268,15 +268,19 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
 
 
 def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sympy.Expr] | None:
-    """(name, its value) when ``item`` defines a name that another of ``items`` uses; else None."""
-    base, power = item.lhs.as_base_exp()
+    """(name, its value) when ``item`` defines a name that another of ``items`` uses; else None.
+    The name may carry a power and a number: ``ω₀² = k/m``, ``2γ = b/m``."""
+    coefficient, named = item.lhs.as_coeff_Mul()
+    base, power = named.as_base_exp()
     if not (base.is_Symbol and base.name not in expected.names and power.is_Integer and power > 0):
+        return None
+    if not (coefficient.is_Rational and coefficient > 0):
         return None
     if any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
         return None
     if not any(base in other.free_symbols for other in items if other is not item):
         return None
-    return base, item.rhs ** sympy.Rational(1, int(power))  # a name for a positive quantity, as parameters are
+    return base, (item.rhs / coefficient) ** sympy.Rational(1, int(power))  # a positive quantity, as parameters are
 
 
 def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple[ParsedAnswer, bool]:
