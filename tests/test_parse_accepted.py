@@ -426,6 +426,16 @@ def test_juxtaposed_names_do_not_split_unless_every_piece_is_known():
     assert parse_answer("mgl", known=["m", "g"]).value == sympy.Symbol("mgl")
 
 
+def test_a_greek_letter_glued_to_names_is_one_piece_never_its_spelling_split():
+    # γ is "gamma" once read: with g, a and m defined it was g·a²·m², and the dot went on all of it
+    gamma, x = sympy.Symbol("gamma"), sympy.Symbol("x")
+    assert parse_answer("γx", known=["m", "g", "a", "x"]).value == gamma * x
+    assert parse_answer("mgalpha", known=["m", "g", "a", "l", "p", "h"]).value == sympy.Symbol("alpha") * sympy.Symbol(
+        "g"
+    ) * sympy.Symbol("m")
+    assert parse_answer("sinu", known=["u"]).value == sympy.sin(sympy.Symbol("u"))  # mu, nu, pi, xi: too short to tell
+
+
 def test_the_whole_name_wins_over_a_split():
     assert parse_answer("mgl", known=["m", "g", "l", "mgl"]).value == sympy.Symbol("mgl")
 

@@ -56,6 +56,10 @@ _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
 _GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
 # One TeX symbol: a spelled-out Greek letter (from θ typed inside a run) or one letter,
 # each with its subscript; or a run of digits.
+# A Greek letter spelled out inside a glued name (γx is "gammax" by then) is a piece of its own even
+# where the problem does not define it: the fewest pieces then make γ·x, never g·a·m·m·a·x.
+# Two-letter spellings (mu, nu, pi, xi) are left out: "sinu" is sin u.
+_SPELLED = frozenset(name for name in GREEK_BY_LETTER.values() if len(name) >= 3)
 _PLAIN_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*")  # a name as canonical_name spells one
 _TEX_PIECE = re.compile(rf"(?:{_GREEK}|[A-Za-z])(?:_[A-Za-z0-9]+)?|[0-9]+")
 
@@ -826,6 +830,8 @@ class _Parser:
                     continue  # an underscore joins a piece to the one before (m_l is m·l, once)
                 piece = raw[start:end].rstrip("_")
                 meaning = self._piece(piece)
+                if meaning is None and piece in _SPELLED:
+                    meaning = sympy.Symbol(canonical_name(piece))  # γ glued to known names: γ·x, γ undefined
                 candidates = [[*split, (piece, meaning)] for split in best[start]]
                 if meaning is None and piece.isdecimal():
                     # a number inside a name only as a function's coefficient, as in sin2θ:
