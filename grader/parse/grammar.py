@@ -54,13 +54,13 @@ _ANGLE_FUNCTIONS = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
 _STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt", "deriv")
 _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
 _GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
-# One TeX symbol: a spelled-out Greek letter (from θ typed inside a run) or one letter,
-# each with its subscript; or a run of digits.
 # A Greek letter spelled out inside a glued name (γx is "gammax" by then) is a piece of its own even
 # where the problem does not define it: the fewest pieces then make γ·x, never g·a·m·m·a·x.
 # Two-letter spellings (mu, nu, pi, xi) are left out: "sinu" is sin u.
 _SPELLED = frozenset(name for name in GREEK_BY_LETTER.values() if len(name) >= 3)
 _PLAIN_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*")  # a name as canonical_name spells one
+# One TeX symbol: a spelled-out Greek letter (from θ typed inside a run) or one letter,
+# each with its subscript; or a run of digits.
 _TEX_PIECE = re.compile(rf"(?:{_GREEK}|[A-Za-z])(?:_[A-Za-z0-9]+)?|[0-9]+")
 
 
