@@ -758,6 +758,34 @@ def test_scalar_kinds(kind, expected, submitted, options, status):
     assert compare(expected, submitted, kind=kind, **options).status == status
 
 
+CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $\phi$"), ("d", "holonomic"))
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read"),
+    [
+        ("b", "Non-holonomic", "equivalent", "b"),  # an option's own words, in any case, spacing or hyphen
+        ("b", "nonholonomic", "equivalent", "b"),
+        ("c", "θ and φ", "equivalent", "c"),  # its TeX as typed letters
+        ("c", r"\theta and \phi", "equivalent", "c"),
+        ("b", "holonomic", "invalid", None),  # the words of two options name neither
+        ("b", "the second one", "invalid", None),
+        ("b", "B", "equivalent", None),  # a label is read as a label first
+    ],
+)
+def test_a_choice_may_be_written_as_the_options_words(expected, submitted, status, read):
+    verdict = compare(expected, submitted, kind="choice", options=CONSTRAINT)
+    assert verdict.status == status
+    assert (verdict.feedback[-1] == f"Read as the option you wrote out: {read}.") == (read is not None)
+
+
+def test_several_choices_may_be_written_out_each_between_commas():
+    options = (("a", "holonomic"), ("b", "scleronomic"), ("c", "rheonomic"))
+    verdict = compare("a, b", "Holonomic, scleronomic", kind="choice", options=options, multiple=True)
+    assert verdict.status == "equivalent"
+    assert verdict.feedback[-1] == "Read as the option you wrote out: a, b."
+
+
 @pytest.mark.parametrize(
     ("kind", "expected", "submitted", "names"),
     [("integer", "2", "two", "`two`"), ("number", "2.006", "2.006 s", "`s`"), ("integer", "3", "x", "`x`")],

@@ -441,15 +441,19 @@ def test_a_port_in_use_raises(server):
 
 
 def _references() -> list[tuple[str, str]]:
-    """(where, text) of every reference and mistake answer in the bank of 6 characters or more."""
+    """(where, text) of every reference and mistake answer in the bank of 6 characters or more;
+    not a choice's own words, which the page shows as the options (a test may answer with them)."""
     found = []
     for problem in BANK.values():
         for part in problem.parts:
+            shown = {text.strip().lower() for text in part.choices.values()}
             texts = [("answer", expected_answer(problem, part))]
             texts += [(f"mistakes[{i}]", str(m.answer)) for i, m in enumerate(part.mistakes)]
             texts += [(f"tests[{i}]", str(t.answer)) for i, t in enumerate(part.tests)]
             found += [
-                (f"{problem.id}.{part.id} {field}", text.strip()) for field, text in texts if len(text.strip()) >= 6
+                (f"{problem.id}.{part.id} {field}", text.strip())
+                for field, text in texts
+                if len(text.strip()) >= 6 and text.strip().lower() not in shown
             ]
     return found
 

@@ -57,7 +57,7 @@ def part_options(part: Part) -> dict:
     if part.given:
         options["given"] = dict(part.given)
     if part.kind == "choice":
-        options["options"] = tuple(part.choices)
+        options["options"] = tuple(part.choices.items())  # labels with their words, which a student may write
     if part.kind == "text":
         options["rubric"] = tuple((idea.idea, idea.points, idea.phrasings) for idea in part.rubric)
     return options

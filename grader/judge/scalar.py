@@ -3,7 +3,7 @@
 Contents:
     check_integer    a whole number, exactly (``6/2`` is 3)
     check_number     a number within a tolerance: |submitted − expected| ≤ atol + rtol·|expected|
-    check_choice     one or several option labels, in any order and case
+    check_choice     one or several option labels, in any order and case, or an option's own words
     choice_labels    the labels in a typed choice answer
 """
 
@@ -16,6 +16,7 @@ import sympy
 from grader.judge.deadline import Deadline
 from grader.judge.expected import Expected, Outcome
 from grader.parse import ParsedAnswer
+from grader.parse.names import GREEK_BY_LETTER
 
 __all__ = ["check_choice", "check_integer", "check_number", "choice_labels"]
 
@@ -74,8 +75,14 @@ def choice_labels(text: str) -> list[str] | None:
 
 def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outcome:
     wanted = set(choice_labels(expected.text) or ())
-    options = [str(option).lower() for option in expected.option("options") or ()]
+    texts = _option_texts(expected.option("options") or ())
+    options = list(texts)
     given = choice_labels(submitted) if isinstance(submitted, str) else None
+    read = None
+    if isinstance(submitted, str) and (given is None or any(label not in texts for label in given)):
+        # "non-holonomic" or "φ" for option b: the option's own words, where they name one option
+        read = _by_text(submitted, texts, multiple=bool(expected.option("multiple")))
+        given = read or given
     if given is None:
         shown = f"`{submitted.strip()[:40]}`" if isinstance(submitted, str) and submitted.strip() else "This"
         details = {"labels": shown, "options": ", ".join(options) or "?"}
@@ -88,9 +95,44 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     if not expected.option("multiple") and len(set(given)) > 1:
         return Outcome("not_equivalent", 0.0, "choice_count", {"count": "one option"}, "labels")
     right = set(given) == wanted
+    more = (("choice_read", {"labels": ", ".join(read)}),) if read else ()
     return Outcome(
         "equivalent" if right else "not_equivalent",
         float(right),
         "equivalent" if right else "choice_wrong",
-        method="labels",
+        method="option text" if read else "labels",
+        more=more,
     )
+
+
+def _option_texts(options) -> dict[str, str]:
+    """label → the option's words, from labels alone (``("a", "b")``) or (label, text) pairs."""
+    pairs = (option if isinstance(option, tuple) else (option, "") for option in options)
+    return {str(label).lower(): str(text) for label, text in pairs}
+
+
+def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[str] | None:
+    """The labels whose options a student wrote out in words, or None: the whole answer one
+    option's words, or (where several may be chosen) each piece between commas one's."""
+    by_words: dict[str, str | None] = {}
+    for label, text in texts.items():
+        words = _plain(text)
+        if words:
+            by_words[words] = None if words in by_words else label  # two options alike name neither
+    if len(submitted) > MAX_CHOICE_LENGTH:
+        return None
+    pieces = [submitted] if not multiple else [submitted, *re.split(r"\s*[,;]\s*|\s+and\s+", submitted)]
+    whole = by_words.get(_plain(submitted))
+    if whole:
+        return [whole]
+    if multiple:
+        labels = [by_words.get(_plain(piece)) for piece in pieces[1:] if piece.strip()]
+        if labels and all(labels):
+            return labels
+    return None
+
+
+def _plain(text: str) -> str:
+    """An option's words as compared: no TeX, markup, case, spaces or hyphens; Greek letters by name."""
+    text = "".join(GREEK_BY_LETTER.get(c, c) for c in text)
+    return re.sub(r"[\s$\\{}*_\-.]", "", text).lower()
