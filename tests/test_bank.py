@@ -131,6 +131,15 @@ def test_a_listed_mistake_gives_its_feedback_and_score():
     assert verdict.diagnosis == "mistake"
 
 
+def test_a_listed_mistake_keeps_how_the_answer_was_read():
+    # the option's words matched option a, a listed mistake: its hint, and what "Holonomic" was read as
+    problem = load_bank(BANK)["constraint-classification"]
+    part = problem.part("rolling-disk-holonomic")
+    verdict = grade_answer(problem, part, "Holonomic")
+    assert verdict.feedback == (part.mistakes[0].feedback, "Read as the option you wrote out: a.")
+    assert verdict.diagnosis == "mistake"
+
+
 def test_equations_of_motion_are_derived_from_the_lagrangian_part():
     problem = load_bank(BANK)["plane-pendulum"]
     assert grade_answer(problem, problem.part("motion"), "θ̈ = -(g/l) sin θ").equivalent

@@ -76,7 +76,9 @@ def grade_answer(problem: Problem, part: Part, submitted: str, *, timeout: float
         return verdict
     for mistake in part.mistakes:
         if compare(mistake.answer, submitted, **arguments).equivalent:
+            # the mistake's hint replaces the diagnosis; how the answer was read is still said
+            feedback = (mistake.feedback, *verdict.notes)
             return dataclasses.replace(
-                verdict, score=mistake.score, feedback=(mistake.feedback,), diagnosis="mistake", method="mistake"
+                verdict, score=mistake.score, feedback=feedback, diagnosis="mistake", method="mistake"
             )
     return verdict

@@ -161,7 +161,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return _verdict(early, answer)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
             if spec.parsed and conserved and outcome.status != "equivalent":
-                outcome = replace(outcome, more=(*outcome.more, ("conserved_read", {})))
+                outcome = replace(outcome, notes=(*outcome.notes, ("conserved_read", {})))
     except CheckTimeout:
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")
     except _CHECK_FAILURES as failure:
@@ -170,7 +170,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
         # Neither the note nor the answer shown back says what p_θ stands for: another part
         # of the problem may ask for just that. The answer is shown as typed.
         names = _listing([symbol.name for symbol, _ in used])
-        outcome = replace(outcome, more=(*outcome.more, ("given_read", {"names": names})))
+        outcome = replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
         return _verdict(outcome, typed)
     return _verdict(outcome, answer)
 
@@ -178,9 +178,10 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
 def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
     feedback = [say(outcome.key, **outcome.details)] if outcome.key else []
     feedback += [say(key, **details) for key, details in outcome.more]
-    feedback = list(dict.fromkeys(feedback))  # two terms described alike are one sentence
+    notes = tuple(say(key, **details) for key, details in outcome.notes)
+    feedback = list(dict.fromkeys([*feedback, *notes]))  # two terms described alike are one sentence
     diagnosis = None if outcome.status == "equivalent" else outcome.key
-    return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer)
+    return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer, notes)
 
 
 def _given_values(expected: Expected, given: Mapping) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:

@@ -125,7 +125,8 @@ class Expected:
 
 @dataclass(frozen=True)
 class Outcome:
-    """A checker's conclusion: status, credit, the feedback's key and details, and the method."""
+    """A checker's conclusion: status, credit, the feedback's key and details, and the method;
+    ``more``, further sentences of the diagnosis; ``notes``, sentences on how the answer was read."""
 
     status: str
     score: float = 0.0
@@ -133,6 +134,7 @@ class Outcome:
     details: Mapping[str, object] = field(default_factory=dict)
     method: str = "numeric"
     more: tuple[tuple[str, Mapping[str, object]], ...] = ()
+    notes: tuple[tuple[str, Mapping[str, object]], ...] = ()
 
 
 def prepare(

@@ -95,13 +95,13 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     if not expected.option("multiple") and len(set(given)) > 1:
         return Outcome("not_equivalent", 0.0, "choice_count", {"count": "one option"}, "labels")
     right = set(given) == wanted
-    more = (("choice_read", {"labels": ", ".join(read)}),) if read else ()
+    notes = (("choice_read", {"labels": ", ".join(read)}),) if read else ()
     return Outcome(
         "equivalent" if right else "not_equivalent",
         float(right),
         "equivalent" if right else "choice_wrong",
         method="option text" if read else "labels",
-        more=more,
+        notes=notes,
     )
 
 

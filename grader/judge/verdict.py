@@ -29,6 +29,9 @@ class Verdict:
             ``"missing_term"``…), or ``None``; reports count answers by it.
         answer: the submitted answer as parsed (a ``ParsedAnswer``), the parser's
             ``Refusal``, or ``None`` for kinds that are not parsed.
+        notes: the last sentences of ``feedback`` when they say how the answer was read
+            (a given p_θ put in place, an option's words, a conserved quantity); they stay
+            when a part's anticipated mistake replaces the rest of the feedback.
 
     ``read_as`` (how the answer was read) is derived from ``answer`` when asked for:
     printing costs more than judging, and a batch may not need it.
@@ -40,6 +43,7 @@ class Verdict:
     method: str = ""
     diagnosis: str | None = None
     answer: object = field(default=None, repr=False, compare=False)
+    notes: tuple[str, ...] = ()
 
     def __post_init__(self):
         if self.status not in STATUSES:
