@@ -78,8 +78,10 @@ def _check(driver, status: str):
         )
     except TimeoutException:  # say what came instead, so that a failure here can be read
         shown = part.find_element(By.CSS_SELECTOR, ".result")
+        button = part.find_element(By.CSS_SELECTOR, "button.check").text  # "Checking…": the request is pending
         raise AssertionError(
-            f"wanted {status}; the result is {shown.get_attribute('class')!r}: {shown.text!r}"
+            f"wanted {status}; the result is {shown.get_attribute('class')!r}: {shown.text!r};"
+            f" the button says {button!r}"
         ) from None
 
 
