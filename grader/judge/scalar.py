@@ -114,22 +114,18 @@ def _option_texts(options) -> dict[str, str]:
 def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[str] | None:
     """The labels whose options a student wrote out in words, or None: the whole answer one
     option's words, or (where several may be chosen) each piece between commas one's."""
+    if len(submitted) > MAX_CHOICE_LENGTH:
+        return None
     by_words: dict[str, str | None] = {}
     for label, text in texts.items():
         words = _plain(text)
         if words:
             by_words[words] = None if words in by_words else label  # two options alike name neither
-    if len(submitted) > MAX_CHOICE_LENGTH:
-        return None
-    pieces = [submitted] if not multiple else [submitted, *re.split(r"\s*[,;]\s*|\s+and\s+", submitted)]
     whole = by_words.get(_plain(submitted))
-    if whole:
-        return [whole]
-    if multiple:
-        labels = [by_words.get(_plain(piece)) for piece in pieces[1:] if piece.strip()]
-        if labels and all(labels):
-            return labels
-    return None
+    if whole or not multiple:
+        return [whole] if whole else None
+    labels = [by_words.get(_plain(piece)) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
+    return labels if labels and all(labels) else None
 
 
 def _plain(text: str) -> str:

@@ -186,7 +186,7 @@ def tokenize(text: str) -> list[Token]:
     tokens = _Tokenizer(text, latex="\\" in text).run()
     if any(token.kind == "gap" for token in tokens):
         tokens = _gaps(tokens)
-    if any(token.kind == "arrow" or (token.kind == "name" and token.value.raw in IMPLYING_WORDS) for token in tokens):
+    if any(token.kind == "arrow" or _is_implying_word(token) for token in tokens):
         tokens = _steps_between_equations(tokens, text)
     if any(token.kind == "implies" for token in tokens):
         tokens = _conclusions(tokens)
