@@ -163,6 +163,9 @@ FEEDBACK = [
      "You used the small-angle approximation, but the full answer is asked for here."),
     (EOM_PENDULUM, "θ̈ = (g/l) sin θ", "equation", PENDULUM, "term_differs",
      "A term differs: the term in sin(θ) has the wrong sign."),
+    # θ̈₁'s coefficient holds cos(θ₁ − θ₂): solved for θ̈₂ instead, each term stays as the student wrote it
+    (EOM_DOUBLE_2, EOM_DOUBLE_2.replace("- l1", "+ l1"), "equation", DOUBLE, "term_differs",
+     "A term differs: the velocity-dependent term in sin(θ₁ - θ₂) has the wrong sign."),
     (EOM_PENDULUM, "m l^2 θ̈ + m g l sin θ", "equation", PENDULUM, "expected_equation",
      "An equation (with `=`) is asked for here, but your answer is an expression."),
     ("sqrt(g/l)", "omega = sqrt(g/l) = 1", "expression", PENDULUM, None, None),

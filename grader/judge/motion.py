@@ -421,16 +421,15 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     expanded (sympy's expansion is most of the cost); only naming the terms when the
     numbers cannot needs g solved and expanded (:func:`_solved`).
     """
-    (coordinate, *_) = _accelerations_in(f, expected)
-    acceleration = expected.setting.acceleration(coordinate)
-    coefficient = g.xreplace({acceleration: sympy.Integer(1)}) - g.xreplace({acceleration: sympy.Integer(0)})
+    key = "equation, normalized"
+    if key not in expected.cache:
+        acceleration = _leading_acceleration(f, expected)
+        expected.cache[key] = acceleration, _solved(f, acceleration)
+    acceleration, normal_f = expected.cache[key]
+    coefficient = _coefficient(g, acceleration)
     if coefficient == 0:  # none of this acceleration: another coordinate's equation
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
     normal_g = g / coefficient
-    key = "equation, normalized"
-    if key not in expected.cache:
-        expected.cache[key] = _solved(f, acceleration)
-    normal_f = expected.cache[key]
     if normal_f is None:  # a reference of too many terms to name them
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
     deadline.check()
@@ -443,6 +442,25 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
     if outcome.key in ("sign", "factor", "wrong"):
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
     return Outcome(outcome.status, 0.0, outcome.key, outcome.details, "accelerations", outcome.more)
+
+
+def _leading_acceleration(f, expected: Expected):
+    """The acceleration an equation is solved for to compare it term by term: the first whose
+    coefficient holds no coordinate or velocity, where there is one.
+
+    Dividing by l₁ cos(θ₁ − θ₂) would turn l₁ θ̇₁² sin(θ₁ − θ₂) into a term in tan(θ₁ − θ₂), one the
+    student never wrote; dividing the same equation by l₂, the coefficient of θ̈₂, keeps every
+    term as written, and a description names the term the student can find."""
+    accelerations = [expected.setting.acceleration(q) for q in _accelerations_in(f, expected)]
+    for acceleration in accelerations:
+        if not any(expected.setting.is_state(symbol) for symbol in _coefficient(f, acceleration).free_symbols):
+            return acceleration
+    return accelerations[0]
+
+
+def _coefficient(g, acceleration):
+    """The coefficient of ``acceleration`` in ``g``, in which it is linear."""
+    return g.xreplace({acceleration: sympy.Integer(1)}) - g.xreplace({acceleration: sympy.Integer(0)})
 
 
 def _solved(g, acceleration):
