@@ -191,6 +191,27 @@ def test_feedback_names_the_mistake(expected, submitted, kind, setting, diagnosi
     assert verdict.feedback[0] == sentence
 
 
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        (f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2.replace('- l1', '+ l1')}",
+         ("Your equation for θ₂ is not right; equation 1 is right.",
+          "A term differs: the velocity-dependent term in sin(θ₁ - θ₂) has the wrong sign.")),
+        # the equations in the other order: the wrong one is named against the equation it is nearest
+        (f"{EOM_DOUBLE_2}; {EOM_DOUBLE_1.replace(' + (m1+m2) g sin(theta1)', '')}",
+         ("Your equation for θ₁ is not right; equation 1 is right.", "A term is missing: a term in sin(θ₁).")),
+        # g and l's swapped everywhere in one equation: too many terms differ to name them
+        (f"{EOM_DOUBLE_1}; l1 theta2ddot + l2 theta1ddot cos(theta1-theta2) - l2 theta1dot^2 sin(theta1-theta2)"
+         " + g sin(theta1) = 0",
+         ("Your equation for θ₂ is not right; equation 1 is right.",)),
+    ],
+)  # fmt: skip
+def test_the_wrong_equation_of_a_system_has_its_terms_named(submitted, feedback):
+    verdict = compare(EOM_DOUBLE, submitted, kind="equations", **DOUBLE)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "wrong_equation")
+    assert verdict.feedback == feedback
+
+
 def test_feedback_shows_velocities_as_typed_never_as_internal_names():
     verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2 + m g l cos(θ̇)", kind="lagrangian", **PENDULUM)
     assert verdict.feedback == (
@@ -412,6 +433,11 @@ def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
     verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)
     assert verdict.feedback[0] == "Your equation for φ is not right; equation 1 is right."
     assert "conserved quantity" in verdict.feedback[1]
+    # the terms compared are its derivative's, which the student did not write: they are not named
+    assert len(verdict.feedback) == 2, verdict.feedback
+    phi = compare(SPHERICAL_EOM.split(";")[1], "m l² sin θ φ̇ = const", kind="equation", **SPHERICAL)
+    assert phi.diagnosis == "wrong_equation_single"
+    assert phi.feedback[0] == "This equation does not say the same as the expected one."
     # energy for one coordinate: its derivative is the equation of motion times θ̇, which vanishes at rest
     energy = compare("thetaddot = -g/l sin(theta)", "½ m l² θ̇² − m g l cos θ = C", kind="equation", **PENDULUM)
     assert (energy.diagnosis, len(energy.feedback)) == ("vanishing_factor", 2)

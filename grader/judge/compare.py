@@ -23,6 +23,7 @@ from sympy.core.function import AppliedUndef
 
 from grader.errors import AuthorError
 from grader.judge.deadline import CheckTimeout, time_limit
+from grader.judge.diagnose import TERM_KEYS
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression
 from grader.judge.feedback import say
@@ -161,7 +162,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return _verdict(early, answer)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
             if spec.parsed and conserved and outcome.status != "equivalent":
-                outcome = replace(outcome, notes=(*outcome.notes, ("conserved_read", {})))
+                outcome = replace(_terms_unnamed(outcome), notes=(*outcome.notes, ("conserved_read", {})))
     except CheckTimeout:
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")
     except _CHECK_FAILURES as failure:
@@ -173,6 +174,15 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
         outcome = replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
         return _verdict(outcome, typed)
     return _verdict(outcome, answer)
+
+
+def _terms_unnamed(outcome: Outcome) -> Outcome:
+    """The outcome without sentences naming terms: those of a conserved quantity's derivative,
+    which the student did not write (``m l² sin θ φ̇ = C`` has no term in cos θ)."""
+    more = tuple((key, details) for key, details in outcome.more if key not in TERM_KEYS)
+    if outcome.key in TERM_KEYS:
+        return replace(outcome, key="wrong_equation_single", details={}, more=more)
+    return replace(outcome, more=more)
 
 
 def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:

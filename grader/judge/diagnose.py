@@ -24,6 +24,7 @@ from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 
 __all__ = [
+    "TERM_KEYS",
     "describe_term",
     "expand_terms",
     "has_angle_functions",
@@ -183,6 +184,10 @@ def _rebuilt(expr):
     """``expr`` multiplied out, as an expression (the very same object where nothing changes)."""
     parts, changed = _expanded(expr)
     return _sum(parts) if changed else expr
+
+
+# The feedback keys of a diagnosis that names terms, as term_changes gives them.
+TERM_KEYS = ("missing_term", "extra_term", "term_differs")
 
 
 def term_changes(expected_terms: dict | None, submitted_terms: dict | None, setting: Setting) -> list[tuple[str, str]]:

@@ -33,7 +33,7 @@ from __future__ import annotations
 import enum
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from functools import cached_property
 
@@ -42,7 +42,7 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import expand_terms, taylor
+from grader.judge.diagnose import TERM_KEYS, expand_terms, taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
@@ -414,14 +414,14 @@ def _multiple(expected_row, submitted_row, expected_scales, submitted_scales, pr
     return worst
 
 
-def _diagnose_motion(expected: Expected, f, g, deadline: Deadline) -> Outcome:
+def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "equation, normalized") -> Outcome:
     """Compare the two equations solved for the same acceleration, term by term.
 
     For the numbers, g divided by its coefficient of the acceleration need not be
     expanded (sympy's expansion is most of the cost); only naming the terms when the
-    numbers cannot needs g solved and expanded (:func:`_solved`).
+    numbers cannot needs g solved and expanded (:func:`_solved`). ``key`` names ``f``
+    among the expressions derived from the expected answer, for the cache.
     """
-    key = "equation, normalized"
     if key not in expected.cache:
         acceleration = _leading_acceleration(f, expected)
         expected.cache[key] = acceleration, _solved(f, acceleration)
@@ -763,7 +763,29 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
     if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
+    if outcome.key == "wrong_equation":
+        wrong_ones = [j for j in range(len(theirs)) if not all(s.verdicts[j] is Closeness.EQUAL for s in states)]
+        if len(wrong_ones) == 1:
+            (j,) = wrong_ones
+            return replace(outcome, more=_terms_named(expected, expected.setting.plain(theirs[j]), j, deadline))
     return outcome
+
+
+def _terms_named(expected: Expected, g, position: int, deadline: Deadline) -> tuple:
+    """What differs in the one wrong equation ``g`` of a system (the ``position``-th), as the
+    sentences of a single equation's diagnosis: against the expected equation it differs
+    from by the fewest terms, one or two, and the one in the same place on a tie. Nothing
+    when no expected equation is so near: the student combined or solved the equations,
+    and the terms they wrote are not the expected ones."""
+    named = []
+    for i, f in enumerate(_equations(expected.value)):
+        if not _accelerations_in(f, expected) or not _accelerations_in(g, expected):
+            continue
+        outcome = _diagnose_motion(expected, f, g, deadline, key=f"equations {i}, normalized")
+        if outcome.key in TERM_KEYS:
+            sentences = ((outcome.key, outcome.details), *outcome.more)
+            named.append((len(sentences), i != position, sentences))
+    return min(named, key=lambda found: found[:2])[2] if named else ()
 
 
 def _states(expected: Expected, expected_fs, submitted_gs, deadline: Deadline) -> list[tuple[int, _State]]:
