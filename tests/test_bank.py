@@ -12,8 +12,10 @@ from pathlib import Path
 import pytest
 
 from grader import KINDS
-from grader.bank import PART_KINDS, load_assignment, load_bank
+from grader.bank import DIMENSIONS, PART_KINDS, load_assignment, load_bank
 from grader.grade import grade_answer, validate_bank
+from grader.judge.setting import DIMENSION_NAMES
+from grader.judge.units import DIMENSIONS as UNITS
 
 ROOT = Path(__file__).resolve().parent.parent
 BANK = ROOT / "problems"
@@ -54,6 +56,10 @@ BROKEN_MESSAGES = [
      "line 14: given applies to kinds expression, equation, equations, lagrangian, not 'choice'"),
     ("given_undefined_name", "given_undefined_name", "hamiltonian",
      "the value given for 'p_theta' uses L, which the problem does not define"),
+    ("unknown_dimension", "unknown_dimension", "",
+     "line 10: field 'dimension' is 'metres'; allowed: dimensionless, angle, mass, length, time, area, velocity,"
+     " acceleration, angular velocity, frequency, angular acceleration, momentum, angular momentum, moment of"
+     " inertia, force, torque, energy, power, force per length, mass per time"),
     ("test_gets_another_score", "test_gets_another_score", "lagrangian",
      "test '1/2 m l^2 thetadot^2' gets 0, not 1 (not_equivalent: A term is missing: a term in cos(θ).)"),
 ]  # fmt: skip
@@ -95,6 +101,19 @@ def test_the_bank_kinds_are_the_checkers_kinds():
     for kind, options in PART_KINDS.items():
         # options the bank lets authors set are options the checker accepts (choices and rubrics come from fields)
         assert options <= set(KINDS[kind].options) - {"options", "rubric"}, kind
+
+
+def test_the_bank_dimensions_are_the_checkers_dimensions():
+    assert DIMENSIONS == DIMENSION_NAMES
+    assert set(DIMENSIONS) == set(UNITS)
+
+
+def test_every_symbol_of_a_mathematical_problem_has_a_dimension():
+    # a wrong answer's units are checked only where every symbol in it has one
+    for problem in load_bank(BANK).values():
+        if any(part.kind in ("expression", "equation", "equations", "lagrangian") for part in problem.parts):
+            symbols = (*problem.coordinates, *problem.parameters)
+            assert all(symbol.dimension for symbol in symbols), problem.id
 
 
 def test_every_kind_appears_in_the_bank():

@@ -11,6 +11,7 @@ The format is documented for authors in docs/problem-format.md.
 
 from grader.bank.load import default_bank_path, load_assignment, load_bank, load_problem, read_yaml
 from grader.bank.schema import (
+    DIMENSIONS,
     PART_KINDS,
     SCHEMA_VERSION,
     Assignment,
@@ -25,6 +26,7 @@ from grader.bank.schema import (
 )
 
 __all__ = [
+    "DIMENSIONS",
     "PART_KINDS",
     "SCHEMA_VERSION",
     "Assignment",

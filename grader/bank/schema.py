@@ -54,6 +54,12 @@ PART_KINDS: dict[str, frozenset[str]] = {
 SEED_ID = re.compile(r"[SLAE][0-9]{1,2}")
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*")
 _DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
+# The dimensions a symbol may have (grader.judge.setting has the same; a test keeps them in step).
+DIMENSIONS = (
+    "dimensionless", "angle", "mass", "length", "time", "area", "velocity", "acceleration",
+    "angular velocity", "frequency", "angular acceleration", "momentum", "angular momentum",
+    "moment of inertia", "force", "torque", "energy", "power", "force per length", "mass per time",
+)  # fmt: skip
 _DERIVABLE = ("equation", "equations")
 _MATHEMATICS = ("expression", "equation", "equations", "lagrangian")  # the kinds whose answers are read as mathematics
 
@@ -301,8 +307,9 @@ def _symbols(reader: _Reader, raw) -> tuple[tuple[Symbol, ...], tuple[Symbol, ..
             spec = reader.mapping(spec if spec is not None else {}, location, {"meaning", "dimension", "domain"}, name)
             domain = reader.get(spec, location, "domain", str, default, check=_DOMAINS.__contains__,
                                 what=f"allowed: {', '.join(_DOMAINS)}")  # fmt: skip
-            found.append(Symbol(str(name), reader.get(spec, location, "meaning", str, ""),
-                                reader.get(spec, location, "dimension", str, ""), domain))  # fmt: skip
+            dimension = reader.get(spec, location, "dimension", str, "", check=("", *DIMENSIONS).__contains__,
+                                   what=f"allowed: {', '.join(DIMENSIONS)}")  # fmt: skip
+            found.append(Symbol(str(name), reader.get(spec, location, "meaning", str, ""), dimension, domain))
         result.append(tuple(found))
     return result[0], result[1]
 

@@ -18,13 +18,15 @@ __all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
 
 
 def setting_of(problem: Problem) -> dict:
-    """The coordinates, known symbols and domains compare needs for this problem."""
+    """The coordinates, known symbols, domains and dimensions compare needs for this problem."""
     domains = {s.name: s.domain for s in problem.coordinates if s.domain != "real"}
     domains |= {s.name: s.domain for s in problem.parameters if s.domain != "positive"}
+    symbols = (*problem.coordinates, *problem.parameters)
     return {
         "coords": [s.name for s in problem.coordinates],
         "known": [s.name for s in problem.parameters],
         "domains": domains,
+        "dimensions": {s.name: s.dimension for s in symbols if s.dimension},
     }
 
 

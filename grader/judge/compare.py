@@ -32,6 +32,7 @@ from grader.judge.motion import check_equation, check_equations
 from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
+from grader.judge.units import Mixed, units_mistake, units_of
 from grader.judge.verdict import Verdict
 from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
@@ -92,7 +93,8 @@ def compare(
         coords: the generalized coordinates, functions of time.
         **options: ``known`` (more symbols the problem defines), ``domains``
             (``{"x": "real"}``; by default coordinates are real and other symbols
-            positive), ``given`` (names an answer may use for a quantity of the problem,
+            positive), ``dimensions`` (``{"l": "length", "g": "acceleration"}``: a wrong
+            answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
             (seconds, default 2), and the kind's own options (``up_to_constant``,
             ``rtol``/``atol``, ``options`` for choices: labels, or (label, words) pairs…).
@@ -111,6 +113,7 @@ def compare(
     spec = KINDS[kind]
     known = tuple(options.pop("known", ()))
     domains = tuple(sorted((options.pop("domains", None) or {}).items()))
+    dimensions = tuple(sorted((options.pop("dimensions", None) or {}).items()))
     given = options.pop("given", None) or {}
     timeout = float(options.pop("timeout", DEFAULT_TIMEOUT))
     unknown = set(options) - set(spec.options)
@@ -121,7 +124,7 @@ def compare(
         )
     settings = {**spec.options, **options}
     frozen = tuple(sorted((key, _hashable(value)) for key, value in settings.items()))
-    prepared = prepare(expected, kind, tuple(coords), known, domains, frozen, parsed=spec.parsed)
+    prepared = prepare(expected, kind, tuple(coords), known, domains, frozen, parsed=spec.parsed, dimensions=dimensions)
     allowed = {spec.shape, "equation"} if spec.shape == "equations" else {spec.shape}  # one coordinate: one equation
     if spec.parsed and spec.shape and prepared.parsed.kind not in allowed:
         raise AuthorError(
@@ -161,6 +164,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if early:
                     return _verdict(early, answer)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+            if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
+                outcome = _with_units(outcome, spec, expected, answer)
             if spec.parsed and conserved and outcome.status != "equivalent":
                 outcome = replace(_terms_unnamed(outcome), notes=(*outcome.notes, ("conserved_read", {})))
     except CheckTimeout:
@@ -174,6 +179,26 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
         outcome = replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
         return _verdict(outcome, typed)
     return _verdict(outcome, answer)
+
+
+def _with_units(outcome: Outcome, spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome:
+    """A wrong answer whose units are wrong, or do not agree among its terms, is told so first:
+    √(l/g) is a time, not an angular frequency. The diagnosis follows."""
+    setting = expected.setting
+    if not setting.dimensions:
+        return outcome
+    equation = spec.shape != "expression"
+    if "units" not in expected.cache:
+        try:
+            expected.cache["units"] = None if equation else units_of(expected.value, setting)
+        except Mixed:
+            expected.cache["units"] = None  # the reference's own units disagree: say nothing
+    mistake = units_mistake(expected.cache["units"], setting.plain(answer.value), setting, equation=equation)
+    if mistake is None:
+        return outcome
+    key, details = mistake
+    said = ((outcome.key, outcome.details),) if outcome.key else ()
+    return replace(outcome, key=key, details=details, more=(*said, *outcome.more))
 
 
 def _terms_unnamed(outcome: Outcome) -> Outcome:

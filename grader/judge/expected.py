@@ -146,6 +146,7 @@ def prepare(
     options: tuple[tuple[str, object], ...] = (),
     *,
     parsed: bool = True,
+    dimensions: tuple[tuple[str, str], ...] = (),
 ) -> Expected:
     """The expected answer, read and cached.
 
@@ -153,12 +154,12 @@ def prepare(
         ReferenceAnswerError: when the expected answer cannot be read; the message
             is addressed to the problem's author.
     """
-    return _prepare(text, kind, coords, known, domains, options, parsed)
+    return _prepare(text, kind, coords, known, domains, options, parsed, dimensions)
 
 
 @lru_cache(maxsize=1024)
-def _prepare(text, kind, coords, known, domains, options, parsed) -> Expected:
-    setting = Setting.build(coords, known, dict(domains))
+def _prepare(text, kind, coords, known, domains, options, parsed, dimensions) -> Expected:
+    setting = Setting.build(coords, known, dict(domains), dict(dimensions))
     if not parsed:
         return Expected(text, kind, setting, None, text, frozenset(), dict(options))
     answer = parse_answer(text, coords=setting.coords, known=setting.known)

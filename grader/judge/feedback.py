@@ -24,6 +24,14 @@ FEEDBACK: dict[str, str] = {
     "missing_term": "A term is missing: {description}.",
     "extra_term": "There is a term too many: {description}.",
     "term_differs": "A term differs: {description}.",
+    "units_differ": "Your answer is measured in {theirs}, but the quantity asked for is measured in {wanted}:"
+    " check the dimensions of each factor.",
+    "units_mixed": "The terms of your {where} are not all measured in the same units ({units}):"
+    " terms that add up must have the same dimensions.",
+    "units_argument": "In your {where}, `{function}` is applied to a quantity measured in {units}:"
+    " the argument of {function} must be a pure number.",
+    "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"
+    " in an exponent, or raised to a power that is not a number.",
     "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",
     "some_signs": "Your answer is right only for some signs of {names}, which may be negative here:"
     " remember that √(x²) is |x|, not x.",

@@ -60,13 +60,17 @@ def euler_lagrange(lagrangian, setting: Setting) -> list:
     return expressions
 
 
-def equations_of_motion(lagrangian: str, *, coords, known=(), domains=None) -> str:
-    """The equations of motion of a Lagrangian, as answer-language text (``eq1 = 0; eq2 = 0``).
+def equations_of_motion(lagrangian: str, *, coords, known=(), domains=None, dimensions=None) -> str:
+    """The equations of motion of a Lagrangian, as answer-language text (``eq1 = 0; eq2 = 0``);
+    ``coords``, ``known``, ``domains`` and ``dimensions`` as :func:`~grader.judge.compare` takes them.
 
     Raises:
         ReferenceAnswerError: when the Lagrangian cannot be read.
     """
-    expected = prepare(lagrangian, "lagrangian", tuple(coords), tuple(known), tuple(sorted((domains or {}).items())))
+    expected = prepare(
+        lagrangian, "lagrangian", tuple(coords), tuple(known), tuple(sorted((domains or {}).items())),
+        dimensions=tuple(sorted((dimensions or {}).items())),
+    )  # fmt: skip
     back = {symbol: node for node, symbol in expected.setting.aliases.items()}
     equations = euler_lagrange(expected.value, expected.setting)
     return "; ".join(f"{to_text(sympy.expand(e).xreplace(back))} = 0" for e in equations)

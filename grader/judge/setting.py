@@ -24,9 +24,15 @@ from grader.judge.numeric import sample_points
 from grader.parse import TIME
 from grader.parse.names import canonical_name, unicode_name
 
-__all__ = ["DOMAINS", "Setting"]
+__all__ = ["DIMENSION_NAMES", "DOMAINS", "Setting"]
 
 DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
+# The dimensions a symbol may have; grader.judge.units holds what each is in mass, length and time.
+DIMENSION_NAMES = (
+    "dimensionless", "angle", "mass", "length", "time", "area", "velocity", "acceleration",
+    "angular velocity", "frequency", "angular acceleration", "momentum", "angular momentum",
+    "moment of inertia", "force", "torque", "energy", "power", "force per length", "mass per time",
+)  # fmt: skip
 MAX_ORDER = 3
 
 
@@ -39,22 +45,37 @@ class Setting:
         known: canonical names of the other symbols (parameters).
         domains: canonical name → domain, overriding the defaults (coordinates,
             their derivatives and t are real; every other symbol is positive).
+        dimensions: canonical name → its dimension (``length``), where the problem says;
+            a coordinate's derivatives are divided by time.
         seed: seeds the sample points, so a verdict is the same on every run.
     """
 
     coords: tuple[str, ...]
     known: tuple[str, ...] = ()
     domains: Mapping[str, str] = field(default_factory=dict)
+    dimensions: Mapping[str, str] = field(default_factory=dict)
     seed: int = 20261121
 
     @classmethod
-    def build(cls, coords: Iterable[str] = (), known: Iterable[str] = (), domains: Mapping[str, str] | None = None):
-        """A setting from names in any spelling; raises :class:`AuthorError` for an unknown domain."""
+    def build(
+        cls,
+        coords: Iterable[str] = (),
+        known: Iterable[str] = (),
+        domains: Mapping[str, str] | None = None,
+        dimensions: Mapping[str, str] | None = None,
+    ):
+        """A setting from names in any spelling; raises :class:`AuthorError` for an unknown domain
+        or dimension."""
         domains = {canonical_name(name): domain for name, domain in (domains or {}).items()}
         for name, domain in domains.items():
             if domain not in DOMAINS:
                 raise AuthorError(f"domain of {name!r} is {domain!r}; allowed: {', '.join(DOMAINS)}")
-        return cls(tuple(canonical_name(q) for q in coords), tuple(canonical_name(k) for k in known), domains)
+        dimensions = {canonical_name(name): dimension for name, dimension in (dimensions or {}).items()}
+        for name, dimension in dimensions.items():
+            if dimension not in DIMENSION_NAMES:
+                raise AuthorError(f"dimension of {name!r} is {dimension!r}; allowed: {', '.join(DIMENSION_NAMES)}")
+        coords, known = tuple(canonical_name(q) for q in coords), tuple(canonical_name(k) for k in known)
+        return cls(coords, known, domains, dimensions)
 
     @cached_property
     def functions(self) -> dict[str, sympy.Expr]:

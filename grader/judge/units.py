@@ -1,0 +1,178 @@
+"""Dimensional analysis: what an answer is measured in, from the dimensions of the problem's symbols.
+
+Contents:
+    DIMENSIONS                   a dimension's name → its powers of mass, length and time
+    units_of(expr, setting)      the powers of an expression in plain symbols; None where unknown
+    Mixed                        raised where terms of a sum, or a function's argument, disagree
+    units_mistake(expected, value)  what a wrong answer's units say, as a feedback key and details
+    si(units)                    powers as a student reads them: ``kg·m²/s²``
+
+A problem declares each symbol's dimension (``m: mass``, ``g: acceleration``); a coordinate's
+derivatives are divided by time once per dot, and t is a time. ``√(l/g)`` is then a time and
+cannot be the angular frequency √(g/l), and ``θ̈ = −g θ`` adds 1/s² to m/s². Only a wrong answer
+is looked at, and only when every symbol in it has a declared dimension.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import sympy
+from sympy.core.function import AppliedUndef
+
+from grader.judge.setting import Setting
+from grader.parse import TIME
+
+__all__ = ["DIMENSIONS", "Mixed", "si", "units_mistake", "units_of"]
+
+Units = tuple[Fraction, Fraction, Fraction]  # powers of mass, length, time
+
+_NONE: Units = (Fraction(0), Fraction(0), Fraction(0))
+
+DIMENSIONS: dict[str, Units] = {
+    name: tuple(Fraction(power) for power in powers)
+    for name, powers in {
+        "dimensionless": (0, 0, 0), "angle": (0, 0, 0),
+        "mass": (1, 0, 0), "length": (0, 1, 0), "time": (0, 0, 1), "area": (0, 2, 0),
+        "velocity": (0, 1, -1), "acceleration": (0, 1, -2),
+        "angular velocity": (0, 0, -1), "frequency": (0, 0, -1), "angular acceleration": (0, 0, -2),
+        "momentum": (1, 1, -1), "angular momentum": (1, 2, -1), "moment of inertia": (1, 2, 0),
+        "force": (1, 1, -2), "torque": (1, 2, -2), "energy": (1, 2, -2), "power": (1, 2, -3),
+        "force per length": (1, 0, -2), "mass per time": (1, 0, -1),
+    }.items()
+}  # fmt: skip
+
+# Functions whose argument must be a pure number, and so is their value.
+_PURE = {"sin", "cos", "tan", "cot", "sec", "csc", "asin", "acos", "atan", "sinh", "cosh", "tanh", "coth",
+         "sech", "csch", "asinh", "acosh", "atanh", "exp", "log", "sign"}  # fmt: skip
+
+
+class Mixed(Exception):
+    """Terms of a sum in different units (``found``: each, in order), or a function of a quantity
+    with units (``function``: its name, ``found``: the argument's; ``power`` for an exponent, or
+    the base of a variable exponent)."""
+
+    def __init__(self, found: list[Units], function: str = ""):
+        super().__init__(function or "a sum of unlike terms")
+        self.found, self.function = found, function
+
+
+def units_of(expr, setting: Setting) -> Units | None:
+    """The powers of mass, length and time of ``expr`` (plain symbols, as :meth:`Setting.plain`
+    gives them); None when a symbol in it has no declared dimension, or it holds an object this
+    does not know.
+
+    Raises:
+        Mixed: terms of a sum in different units, or a function of a quantity with units.
+    """
+    if expr.is_Number or expr.is_NumberSymbol or expr is sympy.I:
+        return _NONE
+    if expr.is_Symbol:
+        return _symbol_units(expr, setting)
+    if expr.is_Add:
+        found = [units_of(term, setting) for term in expr.args]
+        if any(units is None for units in found):
+            return None
+        if len(set(found)) > 1:
+            raise Mixed(found)
+        return found[0]
+    if expr.is_Mul:
+        total = _NONE
+        for factor in expr.args:
+            units = units_of(factor, setting)
+            if units is None:
+                return None
+            total = tuple(a + b for a, b in zip(total, units, strict=True))
+        return total
+    if expr.is_Pow:
+        base, exponent = units_of(expr.base, setting), units_of(expr.exp, setting)
+        if base is None or exponent is None:
+            return None
+        if expr.exp.is_Rational:
+            return tuple(power * Fraction(int(expr.exp.p), int(expr.exp.q)) for power in base)
+        for units, what in ((exponent, "power"), (base, "power")):
+            if units != _NONE:
+                raise Mixed([units], what)
+        return _NONE
+    name = type(expr).__name__
+    if len(expr.args) == 1 and (name in _PURE or name in ("Abs", "re", "im")):
+        units = units_of(expr.args[0], setting)
+        if units is None or name not in _PURE:
+            return units
+        if units != _NONE:
+            raise Mixed([units], name)
+        return _NONE
+    return None
+
+
+def _symbol_units(symbol: sympy.Symbol, setting: Setting) -> Units | None:
+    if symbol == TIME:
+        return DIMENSIONS["time"]
+    name, order = symbol.name, 0
+    if setting.is_state(symbol) and "__" in name:
+        name, dots = name.split("__")
+        order = int(dots)
+    dimension = setting.dimensions.get(name)
+    if dimension is None:
+        return None
+    mass, length, time = DIMENSIONS[dimension]
+    return mass, length, time - order
+
+
+def units_mistake(expected, value, setting: Setting, *, equation: bool) -> tuple[str, dict] | None:
+    """What the units of a wrong answer say: (feedback key, details), or None when they are
+    right, or cannot be known.
+
+    ``value`` is the answer in plain symbols: an expression, an ``Eq`` or a tuple of them;
+    ``expected`` is the expected answer's units (for an expression), or None. An equation's
+    terms must agree with each other; an expression must also be measured as the expected one is.
+    """
+    items = value if isinstance(value, tuple) else (value,)
+    for number, item in enumerate(items, 1):
+        whole = item.lhs - item.rhs if isinstance(item, sympy.Eq) else item
+        if whole.atoms(AppliedUndef, sympy.Derivative):
+            return None  # a function of time the plain symbols do not cover
+        if whole == 0:
+            continue  # zero has whatever units it needs
+        where = f"equation {number}" if len(items) > 1 else ("equation" if equation else "answer")
+        try:
+            units = units_of(whole, setting)
+        except Mixed as mixed:
+            if mixed.function == "power":
+                return "units_power", {"where": where, "units": si(mixed.found[0])}
+            if mixed.function:
+                return "units_argument", {"where": where, "function": mixed.function, "units": si(mixed.found[0])}
+            shown = list(dict.fromkeys(si(found) for found in mixed.found))
+            return "units_mixed", {"where": where, "units": " and ".join(shown)}
+        if not equation and units is not None and expected is not None and units != expected:
+            return "units_differ", {"theirs": si(units), "wanted": si(expected)}
+    return None
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def si(units: Units) -> str:
+    """Powers of mass, length and time in SI units, as a student writes them.
+
+    >>> si((Fraction(1), Fraction(2), Fraction(-2))), si((Fraction(0), Fraction(0), Fraction(-1)))
+    ('kg·m²/s²', '1/s')
+    >>> si((Fraction(0), Fraction(1, 2), Fraction(0))), si(_NONE)
+    ('m^(1/2)', 'no units (a pure number)')
+    """
+    if units == _NONE:
+        return "no units (a pure number)"
+    above = [_power(unit, power) for unit, power in zip(("kg", "m", "s"), units, strict=True) if power > 0]
+    below = [_power(unit, -power) for unit, power in zip(("kg", "m", "s"), units, strict=True) if power < 0]
+    top = "·".join(above) or "1"
+    if not below:
+        return top
+    return f"{top}/{below[0]}" if len(below) == 1 else f"{top}/({'·'.join(below)})"
+
+
+def _power(unit: str, power: Fraction) -> str:
+    if power == 1:
+        return unit
+    if power.denominator == 1:
+        return unit + str(power.numerator).translate(_SUPERSCRIPTS)
+    return f"{unit}^({power})"

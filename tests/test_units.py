@@ -1,0 +1,147 @@
+"""Dimensional analysis of answers: what they are measured in, and what a student is told when
+a wrong answer's units are wrong."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+import sympy
+
+from grader import AuthorError, compare
+from grader.bank import default_bank_path, load_bank
+from grader.grade import grade_answer
+from grader.judge.setting import Setting
+from grader.judge.units import Mixed, si, units_of
+from grader.parse import TIME
+
+PENDULUM = {
+    "coords": ["theta"],
+    "known": ["m", "g", "l"],
+    "dimensions": {"theta": "angle", "m": "mass", "l": "length", "g": "acceleration"},
+}
+FALLING = {"coords": ["x", "y"], "known": ["g"], "dimensions": {"x": "length", "y": "length", "g": "acceleration"}}
+SETTING = Setting.build(PENDULUM["coords"], PENDULUM["known"], dimensions=PENDULUM["dimensions"])
+L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
+theta, velocity, acceleration, m, l, g = sympy.symbols("theta theta__1 theta__2 m l g")
+t = TIME
+
+
+def units(mass, length, time):
+    return (Fraction(mass), Fraction(length), Fraction(time))
+
+
+@pytest.mark.parametrize(
+    ("expr", "expected"),
+    [
+        (m * l**2 * velocity**2 / 2 + m * g * l * sympy.cos(theta), units(1, 2, -2)),  # an energy
+        (sympy.sqrt(g / l), units(0, 0, -1)),
+        (2 * sympy.pi * sympy.sqrt(l / g), units(0, 0, 1)),
+        (acceleration + g / l * sympy.sin(theta), units(0, 0, -2)),  # a dot divides by time
+        (l * velocity * t, units(0, 1, 0)),  # t is a time
+        (sympy.sqrt(l), units(0, Fraction(1, 2), 0)),
+        (sympy.exp(-g * t**2 / l) * m, units(1, 0, 0)),
+        (sympy.Integer(3), units(0, 0, 0)),
+    ],
+)
+def test_units_of_an_expression(expr, expected):
+    assert units_of(expr, SETTING) == expected
+
+
+@pytest.mark.parametrize(
+    ("expr", "found", "function"),
+    [
+        (acceleration + g * theta, [units(0, 0, -2), units(0, 1, -2)], ""),
+        (m * g * sympy.cos(theta) + m * l**2 * velocity**2, [units(1, 1, -2), units(1, 2, -2)], ""),
+        (sympy.cos(l * theta), [units(0, 1, 0)], "cos"),
+        (g**l, [units(0, 1, 0)], "power"),
+        (1 + velocity, None, ""),  # a pure number beside 1/s
+    ],
+)
+def test_terms_or_arguments_in_different_units_are_mixed(expr, found, function):
+    with pytest.raises(Mixed) as mixed:
+        units_of(expr, SETTING)
+    assert mixed.value.function == function
+    if found is not None:
+        assert sorted(mixed.value.found) == sorted(found)
+
+
+def test_a_symbol_without_a_dimension_makes_the_units_unknown():
+    assert units_of(m * sympy.Symbol("k") + g * theta, SETTING) is None
+    assert units_of(g * l, Setting.build(["theta"], ["g", "l"])) is None
+
+
+@pytest.mark.parametrize(
+    ("powers", "text"),
+    [
+        ((1, 2, -2), "kg·m²/s²"),
+        ((0, 0, -1), "1/s"),
+        ((0, 1, -2), "m/s²"),
+        ((1, 0, 0), "kg"),
+        ((-1, 0, -1), "1/(kg·s)"),
+        ((0, Fraction(1, 2), 0), "m^(1/2)"),
+        ((0, 0, 0), "no units (a pure number)"),
+    ],
+)
+def test_units_are_shown_in_si(powers, text):
+    assert si(units(*powers)) == text
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "diagnosis", "sentence"),
+    [
+        ("sqrt(g/l)", "sqrt(l/g)", "expression", "units_differ",
+         "Your answer is measured in s, but the quantity asked for is measured in 1/s: check the dimensions of each"
+         " factor."),
+        ("sqrt(g/l)", "g/l", "expression", "units_differ",
+         "Your answer is measured in 1/s², but the quantity asked for is measured in 1/s: check the dimensions of"
+         " each factor."),
+        ("thetaddot = -(g/l) theta", "θ̈ = -g θ", "equation", "units_mixed",
+         "The terms of your equation are not all measured in the same units (1/s² and m/s²): terms that add up must"
+         " have the same dimensions."),
+        (L_PENDULUM, "1/2 m l θ̇^2 + m g l cos θ", "lagrangian", "units_mixed",
+         "The terms of your answer are not all measured in the same units (kg·m/s² and kg·m²/s²): terms that add up"
+         " must have the same dimensions."),
+        (L_PENDULUM, "1/2 m l^2 θ̇^2 + m g l cos(l θ)", "lagrangian", "units_argument",
+         "In your answer, `cos` is applied to a quantity measured in m: the argument of cos must be a pure number."),
+        ("xddot = -g; yddot = -g", "ẍ = -g; ÿ = -x", "equations", "units_mixed",
+         "The terms of your equation 2 are not all measured in the same units (m and m/s²): terms that add up"
+         " must have the same dimensions."),
+    ],
+)  # fmt: skip
+def test_a_wrong_answer_in_the_wrong_units_is_told_so_first(expected, submitted, kind, diagnosis, sentence):
+    setting = FALLING if kind == "equations" else PENDULUM
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", diagnosis)
+    assert verdict.feedback[0] == sentence
+    assert len(verdict.feedback) >= 2  # the diagnosis it replaced follows
+    without = compare(expected, submitted, kind=kind, **{**setting, "dimensions": {}})
+    assert verdict.feedback[1:] == without.feedback
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind"),
+    [
+        (L_PENDULUM, "1/2 m l^2 θ̇^2 - m g l cos θ", "lagrangian"),  # T + V: the units are right
+        (L_PENDULUM, "1/2 l^2 θ̇^2 + g l cos θ", "lagrangian"),  # per unit mass: partial credit, said as such
+        ("sqrt(g/l)", "0", "expression"),  # zero has any units
+        ("thetaddot = -(g/l) theta", "θ̈ = -(g/l) sin θ", "equation"),
+        ("sqrt(g/l)", "sqrt(g/l)", "expression"),
+    ],
+)
+def test_answers_in_the_right_units_are_not_told_about_units(expected, submitted, kind):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert not verdict.diagnosis or not verdict.diagnosis.startswith("units"), verdict
+    assert verdict == compare(expected, submitted, kind=kind, **{**PENDULUM, "dimensions": {}})
+
+
+def test_an_unknown_dimension_is_the_authors_error():
+    with pytest.raises(AuthorError, match="dimension of 'l' is 'metres'"):
+        compare("sqrt(g/l)", "1", **{**PENDULUM, "dimensions": {"l": "metres"}})
+
+
+def test_the_bank_passes_its_dimensions_to_the_checker():
+    problem = load_bank(default_bank_path())["plane-pendulum"]
+    verdict = grade_answer(problem, problem.part("frequency"), "2 pi sqrt(l/g)")
+    assert verdict.diagnosis == "units_differ"
+    assert verdict.feedback[0].startswith("Your answer is measured in s, but")
