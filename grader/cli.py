@@ -1,7 +1,8 @@
 """The ``grader`` command: a thin layer over the library, and the only code that prints or exits.
 
 Commands:
-    grader compare EXPECTED SUBMITTED [--kind K] [--coords q1,q2] [--given p=…] [--json]   judge an answer
+    grader compare EXPECTED SUBMITTED [--kind K] [--coords q1,q2] [--json]    judge an answer
+                   [--given p=…] [--dimension l=length]
     grader parse ANSWER [--coords q1,q2] [--known m,g,l] [--json]           how an answer is read
     grader problems list | show ID [--answers]                             the problem bank
     grader validate [PATH ...]                                             the bank tests itself
@@ -57,7 +58,7 @@ def _names(value: str) -> list[str]:
 def _definition(value: str) -> tuple[str, str]:
     name, equals, expression = value.partition("=")
     if not (equals and name.strip() and expression.strip()):
-        raise argparse.ArgumentTypeError(f"expected NAME=VALUE, as p_theta='m R^2 thetadot', not {value!r}")
+        raise argparse.ArgumentTypeError(f"expected NAME=VALUE, as p_theta='m R^2 thetadot' or l=length, not {value!r}")
     return name.strip(), expression.strip()
 
 
@@ -92,6 +93,10 @@ def _parser() -> argparse.ArgumentParser:
     judge.add_argument(
         "--given", type=_definition, action="append", default=[], metavar="NAME=VALUE",
         help="a name an answer may use for a quantity, e.g. p_theta='m R^2 thetadot' (repeatable)",
+    )  # fmt: skip
+    judge.add_argument(
+        "--dimension", type=_definition, action="append", default=[], metavar="NAME=DIMENSION", dest="dimensions",
+        help="a symbol's dimension, e.g. l=length or g=acceleration (repeatable): a wrong answer's units are checked",
     )  # fmt: skip
     judge.add_argument("--json", action="store_true", help="print JSON")
     judge.set_defaults(run=_run_compare)
@@ -361,6 +366,8 @@ def _run_compare(args: argparse.Namespace) -> int:
     options = {"up_to_constant": True} if args.up_to_constant else {}
     if args.given:
         options["given"] = dict(args.given)
+    if args.dimensions:
+        options["dimensions"] = dict(args.dimensions)
     kind = args.kind or _written_kind(args.expected, args.coords, args.known)
     try:
         verdict = compare(

@@ -48,6 +48,14 @@ def test_compare_given_names_a_quantity_an_answer_may_use(capsys):
     assert exit_info.value.code == 2
 
 
+def test_compare_dimensions_check_a_wrong_answers_units(capsys):
+    arguments = ["compare", "--known", "g,l", "--dimension", "g=acceleration", "--dimension", "l=length"]
+    assert main([*arguments, "sqrt(g/l)", "sqrt(l/g)"]) == 1
+    assert "Your answer is measured in s, but the quantity asked for is measured in 1/s" in capsys.readouterr().out
+    assert main(["compare", "--known", "g,l", "--dimension", "g=metres", "sqrt(g/l)", "sqrt(l/g)"]) == 2
+    assert "dimension of 'g' is 'metres'" in capsys.readouterr().err
+
+
 def test_a_reader_that_stops_early_gets_no_traceback():
     # `grader compare … | head -1`: the pipe closes before the grader has written its lines
     command = [sys.executable, "-m", "grader", "compare", "--coords", "x", "x^2", "x*x"]
