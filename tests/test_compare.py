@@ -212,6 +212,22 @@ def test_the_wrong_equation_of_a_system_has_its_terms_named(submitted, feedback)
     assert verdict.feedback == feedback
 
 
+def test_each_wrong_equation_of_a_system_has_its_terms_named_with_its_number():
+    first = EOM_DOUBLE_1.replace(" + (m1+m2) g sin(theta1)", "")
+    second = EOM_DOUBLE_2.replace("- l1", "+ l1")
+    verdict = compare(EOM_DOUBLE, f"{second}; {first}", kind="equations", **DOUBLE)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "wrong_equations")
+    assert verdict.feedback == (
+        "Your equations do not determine the right accelerations for θ₁, θ₂.",
+        "In your equation 1, a term differs: the velocity-dependent term in sin(θ₁ - θ₂) has the wrong sign.",
+        "In your equation 2, a term is missing: a term in sin(θ₁).",
+    )
+    # a conserved quantity's terms are its derivative's, which the student did not write
+    spherical = compare(SPHERICAL_EOM, "θ̈ = sin θ φ̇²; m l² sin θ φ̇ = const", kind="equations", **SPHERICAL)
+    assert spherical.diagnosis == "wrong_equations"
+    assert not any(sentence.startswith("In your equation 2") for sentence in spherical.feedback), spherical.feedback
+
+
 def test_feedback_shows_velocities_as_typed_never_as_internal_names():
     verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2 + m g l cos(θ̇)", kind="lagrangian", **PENDULUM)
     assert verdict.feedback == (

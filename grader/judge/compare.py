@@ -204,7 +204,7 @@ def _with_units(outcome: Outcome, spec: Kind, expected: Expected, answer: Parsed
 def _terms_unnamed(outcome: Outcome) -> Outcome:
     """The outcome without sentences naming terms: those of a conserved quantity's derivative,
     which the student did not write (``m l² sin θ φ̇ = C`` has no term in cos θ)."""
-    more = tuple((key, details) for key, details in outcome.more if key not in TERM_KEYS)
+    more = tuple((key, details) for key, details in outcome.more if key.removesuffix("_in") not in TERM_KEYS)
     if outcome.key in TERM_KEYS:
         return replace(outcome, key="wrong_equation_single", details={}, more=more)
     return replace(outcome, more=more)

@@ -24,6 +24,9 @@ FEEDBACK: dict[str, str] = {
     "missing_term": "A term is missing: {description}.",
     "extra_term": "There is a term too many: {description}.",
     "term_differs": "A term differs: {description}.",
+    "missing_term_in": "In your equation {index}, a term is missing: {description}.",
+    "extra_term_in": "In your equation {index}, there is a term too many: {description}.",
+    "term_differs_in": "In your equation {index}, a term differs: {description}.",
     "units_differ": "Your answer is measured in {theirs}, but the quantity asked for is measured in {wanted}:"
     " check the dimensions of each factor.",
     "units_mixed": "The terms of your {where} are not all measured in the same units ({units}):"

@@ -763,16 +763,23 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
     if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
-    if outcome.key == "wrong_equation":
-        wrong_ones = [j for j in range(len(theirs)) if not all(s.verdicts[j] is Closeness.EQUAL for s in states)]
-        if len(wrong_ones) == 1:
-            (j,) = wrong_ones
-            return replace(outcome, more=_terms_named(expected, expected.setting.plain(theirs[j]), j, deadline))
+    wrong_ones = [j for j in range(len(theirs)) if not all(s.verdicts[j] is Closeness.EQUAL for s in states)]
+    if outcome.key == "wrong_equation" and len(wrong_ones) == 1:
+        (j,) = wrong_ones
+        return replace(outcome, more=_terms_named(expected, expected.setting.plain(theirs[j]), j, deadline))
+    if outcome.key == "wrong_equations" and len(theirs) > 1:
+        # several wrong: each named with its number, as far as it is near an expected equation
+        more = tuple(
+            (f"{key}_in", {**details, "index": j + 1})
+            for j in wrong_ones
+            for key, details in _terms_named(expected, expected.setting.plain(theirs[j]), j, deadline)
+        )
+        return replace(outcome, more=more)
     return outcome
 
 
 def _terms_named(expected: Expected, g, position: int, deadline: Deadline) -> tuple:
-    """What differs in the one wrong equation ``g`` of a system (the ``position``-th), as the
+    """What differs in a wrong equation ``g`` of a system (the ``position``-th), as the
     sentences of a single equation's diagnosis: against the expected equation it differs
     from by the fewest terms, one or two, and the one in the same place on a tie. Nothing
     when no expected equation is so near: the student combined or solved the equations,
