@@ -879,11 +879,16 @@ HOSTILE = [
 ]
 
 
+# with dimensions, a wrong answer's units are analysed too
+PENDULUM_UNITS = {**PENDULUM, "dimensions": {"theta": "angle", "m": "mass", "g": "acceleration", "l": "length"}}
+
+
+@pytest.mark.parametrize("setting", [PENDULUM, PENDULUM_UNITS], ids=["plain", "units"])
 @pytest.mark.parametrize("kind", ["expression", "lagrangian", "equation"])
 @pytest.mark.parametrize("submitted", HOSTILE)
-def test_nothing_a_student_types_makes_compare_raise(kind, submitted):
+def test_nothing_a_student_types_makes_compare_raise(kind, submitted, setting):
     expected = EOM_PENDULUM if kind == "equation" else L_PENDULUM
-    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    verdict = compare(expected, submitted, kind=kind, **setting)
     assert isinstance(verdict, Verdict)
     assert verdict.status != "equivalent"
 
@@ -910,7 +915,7 @@ _PIECES = ["theta", "thetadot", "θ̈", "m", "g", "l", "sin", "(", ")", "+", "-"
 )
 def test_no_answer_glued_from_answer_pieces_makes_compare_raise(expected, kind, text):
     # Found this way: a one-coordinate system answered with a bare expression raised KeyError.
-    assert isinstance(compare(expected, text, kind=kind, **PENDULUM), Verdict)
+    assert isinstance(compare(expected, text, kind=kind, **PENDULUM_UNITS), Verdict)
 
 
 HOOP = {"coords": ["theta"], "known": ["m", "R", "g", "omega"]}
