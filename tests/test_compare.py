@@ -15,6 +15,7 @@ from sympy.core.cache import clear_cache
 
 from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare
 from grader.judge.expected import prepare
+from grader.judge.lagrangian import equations_of_motion
 
 PENDULUM = {"coords": ["theta"], "known": ["m", "g", "l"]}
 L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
@@ -210,6 +211,22 @@ def test_the_wrong_equation_of_a_system_has_its_terms_named(submitted, feedback)
     verdict = compare(EOM_DOUBLE, submitted, kind="equations", **DOUBLE)
     assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "wrong_equation")
     assert verdict.feedback == feedback
+
+
+def test_a_wrong_equation_is_named_against_equations_derived_from_a_lagrangian():
+    # derived, the θ₁ equation has (m₁ + m₂) l₁² θ̈₁ multiplied out into two terms; the student's
+    # (m₁ + m₂) l₁ θ̈₁ has one l₁ less: both are solved for θ̈₁ alike, and their terms agree
+    lagrangian = (
+        "1/2 (m1+m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot cos(theta1-theta2)"
+        " + (m1+m2) g l1 cos(theta1) + m2 g l2 cos(theta2)"
+    )
+    derived = equations_of_motion(lagrangian, coords=DOUBLE["coords"], known=DOUBLE["known"])
+    submitted = f"{EOM_DOUBLE_1.replace(' + (m1+m2) g sin(theta1)', '')}; {EOM_DOUBLE_2}"
+    verdict = compare(derived, submitted, kind="equations", **DOUBLE)
+    assert verdict.feedback == (
+        "Your equation for θ₁ is not right; equation 2 is right.",
+        "A term is missing: a term in sin(θ₁).",
+    )
 
 
 def test_each_wrong_equation_of_a_system_has_its_terms_named_with_its_number():

@@ -485,6 +485,13 @@ def _solved(g, acceleration):
             break
     if coefficients is not None and len(coefficients) <= 1:
         return sympy.Add(*(term / coefficients[0] for term in terms)) if coefficients else None
+    if coefficients is not None:
+        # (m₁ + m₂) l₁² θ̈₁ + …, expanded into two terms: their sum, factored, so that l₁ cancels from
+        # each term as it does from the student's (m₁ + m₂) l₁ θ̈₁ + …, and the shapes of the two agree
+        # (multiplied out again, as the expected terms are: 1/(l₁m₁ + l₁m₂) for 1/(l₁(m₁ + m₂)))
+        lead = sympy.factor(sympy.Add(*coefficients))
+        quotient = expand_terms(sympy.Add(*(term / lead for term in terms)))
+        return None if quotient is None else sympy.Add(*(c * shape for shape, c in quotient.items()))
     lead = sympy.diff(g, acceleration)
     return None if lead == 0 else sympy.expand(g / lead)
 
