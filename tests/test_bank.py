@@ -60,6 +60,11 @@ BROKEN_MESSAGES = [
      "line 10: field 'dimension' is 'metres'; allowed: dimensionless, angle, mass, length, time, area, velocity,"
      " acceleration, angular velocity, frequency, angular acceleration, momentum, angular momentum, moment of"
      " inertia, force, torque, energy, power, force per length, mass per time"),
+    ("reference_units_mixed", "reference_units_mixed", "lagrangian",
+     "in the reference answer, the terms have units kg·m/s² and kg·m²/s²: check it, or the dimensions of its"
+     " symbols"),
+    ("lagrangian_not_an_energy", "lagrangian_not_an_energy", "lagrangian",
+     "a Lagrangian is an energy (kg·m²/s²), but the reference answer is measured in m²/s²"),
     ("test_gets_another_score", "test_gets_another_score", "lagrangian",
      "test '1/2 m l^2 thetadot^2' gets 0, not 1 (not_equivalent: A term is missing: a term in cos(θ).)"),
 ]  # fmt: skip

@@ -12,10 +12,14 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
+import sympy
+
 from grader.bank import BankError, Part, Problem, load_assignment, load_problem
 from grader.errors import AuthorError
 from grader.grade.part import expected_answer, grade_answer, part_options, setting_of
 from grader.judge import compare
+from grader.judge.expected import prepare
+from grader.judge.units import DIMENSIONS, Mixed, si, units_of
 
 __all__ = ["Failure", "validate_bank", "validate_problem"]
 
@@ -53,6 +57,7 @@ def _check_part(problem: Problem, part: Part) -> Iterable[str]:
     if part.kind == "text":
         yield from _check_rubric(problem, part)
     else:
+        yield from _check_units(problem, part, expected)
         verdict = grade_answer(problem, part, expected)
         if not (verdict.equivalent and verdict.score == 1):
             yield f"the reference answer does not grade as full credit against itself ({_said(verdict)})"
@@ -78,6 +83,36 @@ def _check_part(problem: Problem, part: Part) -> Iterable[str]:
             yield f"test {test.answer!r} gets {verdict.score:g}, not {test.score:g} ({_said(verdict)})"
         elif test.feedback_contains and test.feedback_contains not in " ".join(verdict.feedback):
             yield f"test {test.answer!r}: the feedback lacks {test.feedback_contains!r} ({_said(verdict)})"
+
+
+_ENERGY = DIMENSIONS["energy"]
+
+
+def _check_units(problem: Problem, part: Part, expected: str) -> Iterable[str]:
+    """The reference answer's units, where every symbol in it has a dimension: its terms agree,
+    and a Lagrangian is an energy. A slip here is the author's, or a symbol's dimension is."""
+    setting = setting_of(problem)
+    if part.kind not in _UNITS_CHECKED or not setting["dimensions"]:
+        return
+    prepared = prepare(
+        expected, part.kind, tuple(setting["coords"]), tuple(setting["known"]),
+        tuple(sorted(setting["domains"].items())), dimensions=tuple(sorted(setting["dimensions"].items())),
+    )  # fmt: skip
+    items = prepared.value if isinstance(prepared.value, tuple) else (prepared.value,)
+    for number, item in enumerate(items, 1):
+        where = f"equation {number} of the reference answer" if len(items) > 1 else "the reference answer"
+        try:
+            units = units_of(item.lhs - item.rhs if isinstance(item, sympy.Eq) else item, prepared.setting)
+        except Mixed as mixed:
+            shown = " and ".join(dict.fromkeys(si(found) for found in mixed.found))
+            inside = {"": "the terms have", "power": "a power has"}.get(mixed.function, f"{mixed.function} has")
+            yield f"in {where}, {inside} units {shown}: check it, or the dimensions of its symbols"
+            continue
+        if part.kind == "lagrangian" and units is not None and units != _ENERGY:
+            yield f"a Lagrangian is an energy ({si(_ENERGY)}), but {where} is measured in {si(units)}"
+
+
+_UNITS_CHECKED = ("expression", "equation", "equations", "lagrangian")
 
 
 def _said(verdict) -> str:
