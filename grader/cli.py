@@ -90,6 +90,7 @@ def _parser() -> argparse.ArgumentParser:
     judge.add_argument("--known", type=_names, default=[], help="more symbols the problem defines")
     judge.add_argument("--timeout", type=float, default=2.0, help="seconds before the verdict is 'undecided'")
     judge.add_argument("--up-to-constant", action="store_true", help="expressions: allow an additive constant")
+    judge.add_argument("--unit", help="numbers: the unit asked for, e.g. s or m/s^2; an answer may carry its unit")
     judge.add_argument(
         "--given", type=_definition, action="append", default=[], metavar="NAME=VALUE",
         help="a name an answer may use for a quantity, e.g. p_theta='m R^2 thetadot' (repeatable)",
@@ -364,6 +365,8 @@ def _run_validate(args: argparse.Namespace) -> int:
 
 def _run_compare(args: argparse.Namespace) -> int:
     options = {"up_to_constant": True} if args.up_to_constant else {}
+    if args.unit:
+        options["unit"] = args.unit
     if args.given:
         options["given"] = dict(args.given)
     if args.dimensions:

@@ -56,6 +56,11 @@ def test_compare_dimensions_check_a_wrong_answers_units(capsys):
     assert "dimension of 'g' is 'metres'" in capsys.readouterr().err
 
 
+def test_compare_unit_lets_a_number_carry_its_unit(capsys):
+    assert main(["compare", "--kind", "number", "--unit", "s", "2.006", "2006 ms"]) == 0
+    assert "Read as 2.006 s." in capsys.readouterr().out
+
+
 def test_a_reader_that_stops_early_gets_no_traceback():
     # `grader compare … | head -1`: the pipe closes before the grader has written its lines
     command = [sys.executable, "-m", "grader", "compare", "--coords", "x", "x^2", "x*x"]

@@ -145,3 +145,46 @@ def test_the_bank_passes_its_dimensions_to_the_checker():
     verdict = grade_answer(problem, problem.part("frequency"), "2 pi sqrt(l/g)")
     assert verdict.diagnosis == "units_differ"
     assert verdict.feedback[0].startswith("Your answer is measured in s, but")
+
+
+PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback", "read_as"),
+    [
+        ("2.006", "equivalent", ("Correct.",), "2.006"),  # a number alone is in the unit asked
+        ("2.006 s", "equivalent", ("Correct.",), "2.006"),
+        (r"2.006\,\mathrm{s}", "equivalent", ("Correct.",), "2.006"),
+        ("2.006 seconds", "equivalent", ("Correct.",), "2.006"),
+        ("2006 ms", "equivalent", ("Correct.", "Read as 2.006 s."), "2.006"),
+        ("0.03343 min", "equivalent", ("Correct.", "Read as 2.0058 s."), "2.0058"),
+        ("3 min", "not_equivalent", ("Not within the accepted tolerance.", "Read as 180 s."), "180"),
+        ("2.006 m", "not_equivalent", ("Your answer is in m, but the quantity asked for is measured in s.",),
+         "1003*m/500"),
+        ("2.006 s^2", "not_equivalent", ("Your answer is in s², but the quantity asked for is measured in s.",),
+         "1003*s^2/500"),
+        ("2.006 x", "invalid", ("A number is asked for here; your answer contains `x`.",), "1003*x/500"),
+    ],
+)  # fmt: skip
+def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback, read_as):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
+    assert (verdict.status, verdict.feedback, verdict.read_as) == (status, feedback, read_as)
+
+
+def test_without_a_unit_a_number_with_one_is_for_a_person():
+    verdict = compare(PERIOD, "2.006 s", kind="number", rtol=0.005)
+    assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")
+
+
+def test_a_compound_unit_converts_each_factor():
+    assert compare("9.81", "981 cm/s^2", kind="number", unit="m/s^2").status == "equivalent"
+    assert compare("9.81", "0.00981 km/s^2", kind="number", unit="m/s^2").status == "equivalent"
+    assert compare("3.13", "3.13 rad/s", kind="number", unit="1/s").status == "equivalent"
+
+
+def test_a_unit_we_cannot_read_is_the_authors_error():
+    with pytest.raises(AuthorError, match="unit 'furlong' is not a product of powers of the units we know"):
+        compare("2", "2", kind="number", unit="furlong")
+    with pytest.raises(AuthorError, match="unit '2 s'"):
+        compare("2", "2", kind="number", unit="2 s")

@@ -43,7 +43,7 @@ SCHEMA_VERSION = 1
 # answer kinds; a test keeps the two in step, since the bank may not import the checker).
 PART_KINDS: dict[str, frozenset[str]] = {
     "integer": frozenset(),
-    "number": frozenset({"rtol", "atol"}),
+    "number": frozenset({"rtol", "atol", "unit"}),
     "choice": frozenset({"multiple"}),
     "expression": frozenset({"up_to_constant"}),
     "equation": frozenset(),

@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
+from fractions import Fraction
 from functools import lru_cache
 
 import sympy
@@ -32,7 +33,7 @@ from grader.judge.motion import check_equation, check_equations
 from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
-from grader.judge.units import Mixed, units_mistake, units_of
+from grader.judge.units import SI_UNITS, Mixed, in_units, si, units_mistake, units_of
 from grader.judge.verdict import Verdict
 from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
@@ -69,7 +70,7 @@ KINDS: dict[str, Kind] = {
         Kind("equations", check_equations, shape="equations"),
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5}, shape="expression"),
         Kind("integer", check_integer, shape="expression"),
-        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0}, shape="expression"),
+        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None}, shape="expression"),
         Kind("choice", check_choice, {"options": (), "multiple": False}, parsed=False),
         Kind("text", check_text, {"rubric": ()}, parsed=False),
     )
@@ -132,6 +133,8 @@ def compare(
         )
     if given and not spec.parsed:
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
+    if settings.get("unit"):
+        _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
     return _judge(spec, prepared, submitted, timeout, _given_values(prepared, given) if given else ())
 
 
@@ -145,7 +148,7 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
-    answer, conserved, used, typed = None, False, (), None
+    answer, conserved, used, typed, read_in = None, False, (), None, None
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
@@ -160,10 +163,13 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
-                early = _mismatch(spec, expected, answer)
+                shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
+                early = early or _mismatch(spec, expected, answer)
                 if early:
-                    return _verdict(early, answer)
+                    return _verdict(early, shown)  # as typed: 2.006 m is not read as a time
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+            if read_in:
+                outcome = replace(outcome, notes=(*outcome.notes, read_in))
             if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
                 outcome = _with_units(outcome, spec, expected, answer)
             if spec.parsed and conserved and outcome.status != "equivalent":
@@ -178,7 +184,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
         names = _listing([symbol.name for symbol, _ in used])
         outcome = replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
         return _verdict(outcome, typed)
-    return _verdict(outcome, answer)
+    return _verdict(outcome, answer)  # a number with a unit is shown in the part's unit, the note says so
 
 
 def _with_units(outcome: Outcome, spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome:
@@ -382,6 +388,45 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
         if term.free_symbols == {constant} and term.is_polynomial(constant) and sympy.degree(term, constant) == 1:
             return ParsedAnswer(answer.text, rest, "expression")
     return answer
+
+
+@lru_cache(maxsize=64)
+def _unit(text: str) -> tuple[Fraction, tuple]:
+    """A part's unit (``s``, ``m/s^2``, ``rad/s``): its size in SI units and its powers.
+
+    Raises:
+        AuthorError: for a unit that is not a product of the units we know.
+    """
+    read = parse_answer(text)
+    found = in_units(read.value) if read.ok and read.kind == "expression" else None
+    if found is None or found[0] != 1:
+        known = ", ".join(sorted(SI_UNITS, key=str.lower))
+        raise AuthorError(f"unit {text!r} is not a product of powers of the units we know ({known})")
+    return found[1], found[2]
+
+
+def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, Outcome | None, tuple | None]:
+    """A number written with its unit, where the part names one: ``2.006 s``, or ``2006 ms`` for a
+    time asked in seconds, is the number in the part's unit. Another quantity (``2.006 m``) is
+    not equivalent, and the student is told what the unit measures. A number alone is taken to
+    be in the part's unit, as the question asks.
+
+    Returns the answer to judge, an outcome already decided (or None), and a note saying how a
+    number in another unit was read (or None)."""
+    wanted = expected.option("unit") if spec.name == "number" else None
+    if not wanted or not answer.value.free_symbols:
+        return answer, None, None
+    found = in_units(answer.value)
+    if found is None:
+        return answer, None, None  # not a number with a unit: a number is asked for
+    number, size, powers = found
+    wanted_size, wanted_powers = _unit(str(wanted))
+    if powers != wanted_powers:
+        details = {"theirs": si(powers), "wanted": si(wanted_powers)}
+        return answer, Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
+    value = number * sympy.Rational(size / wanted_size)
+    read_in = ("unit_read", {"value": f"{float(value):.6g}", "unit": str(wanted)}) if size != wanted_size else None
+    return ParsedAnswer(answer.text, value, "expression"), None, read_in
 
 
 def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome | None:

@@ -33,6 +33,8 @@ FEEDBACK: dict[str, str] = {
     " terms that add up must have the same dimensions.",
     "units_argument": "In your {where}, `{function}` is applied to a quantity measured in {units}:"
     " the argument of {function} must be a pure number.",
+    "unit_read": "Read as {value} {unit}.",
+    "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
     "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"
     " in an exponent, or raised to a power that is not a number.",
     "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",

@@ -6,6 +6,7 @@ Contents:
     Mixed                        raised where terms of a sum, or a function's argument, disagree
     units_mistake(expected, value)  what a wrong answer's units say, as a feedback key and details
     si(units)                    powers as a student reads them: ``kg·m²/s²``
+    SI_UNITS, in_units(value)    a number written with its unit: ``2006 ms`` is 2006 × 1/1000 s
 
 A problem declares each symbol's dimension (``m: mass``, ``g: acceleration``); a coordinate's
 derivatives are divided by time once per dot, and t is a time. ``√(l/g)`` is then a time and
@@ -23,7 +24,7 @@ from sympy.core.function import AppliedUndef
 from grader.judge.setting import Setting
 from grader.parse import TIME
 
-__all__ = ["DIMENSIONS", "Mixed", "si", "units_mistake", "units_of"]
+__all__ = ["DIMENSIONS", "SI_UNITS", "Mixed", "in_units", "si", "units_mistake", "units_of"]
 
 Units = tuple[Fraction, Fraction, Fraction]  # powers of mass, length, time
 
@@ -147,6 +148,49 @@ def units_mistake(expected, value, setting: Setting, *, equation: bool) -> tuple
         if not equation and units is not None and expected is not None and units != expected:
             return "units_differ", {"theirs": si(units), "wanted": si(expected)}
     return None
+
+
+def _si_unit(scale, *powers) -> tuple[Fraction, Units]:
+    return Fraction(scale), tuple(Fraction(power) for power in powers)
+
+
+# The units a number may be written in, by the names the parser reads them as: name → (its size
+# in SI units, its powers of mass, length and time).
+SI_UNITS: dict[str, tuple[Fraction, Units]] = {
+    **dict.fromkeys(("s", "second", "seconds"), _si_unit(1, 0, 0, 1)),
+    "ms": _si_unit(Fraction(1, 1000), 0, 0, 1),
+    **dict.fromkeys(("min", "minute", "minutes"), _si_unit(60, 0, 0, 1)),
+    **dict.fromkeys(("h", "hour", "hours"), _si_unit(3600, 0, 0, 1)),
+    **dict.fromkeys(("m", "metre", "metres", "meter", "meters"), _si_unit(1, 0, 1, 0)),
+    "cm": _si_unit(Fraction(1, 100), 0, 1, 0),
+    "mm": _si_unit(Fraction(1, 1000), 0, 1, 0),
+    "km": _si_unit(1000, 0, 1, 0),
+    "kg": _si_unit(1, 1, 0, 0),
+    **dict.fromkeys(("g", "gram", "grams"), _si_unit(Fraction(1, 1000), 1, 0, 0)),
+    **dict.fromkeys(("N", "newton", "newtons"), _si_unit(1, 1, 1, -2)),
+    **dict.fromkeys(("J", "joule", "joules"), _si_unit(1, 1, 2, -2)),
+    **dict.fromkeys(("W", "watt", "watts"), _si_unit(1, 1, 2, -3)),
+    **dict.fromkeys(("Hz", "hertz"), _si_unit(1, 0, 0, -1)),
+    **dict.fromkeys(("rad", "radian", "radians"), _si_unit(1, 0, 0, 0)),
+}
+
+
+def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:
+    """``value`` (an expression) as a number times units: (the number, the units' size in SI,
+    their powers); None when it holds a symbol that is no unit, or a unit other than to an
+    integer power. ``9.81 m/s^2`` is (9.81, 1, m/s²); ``2006 ms`` is (2006, 1/1000, s)."""
+    number, size, powers = [], Fraction(1), [Fraction(0)] * 3
+    for factor in sympy.Mul.make_args(value):
+        base, exponent = factor.as_base_exp()
+        if not factor.free_symbols:
+            number.append(factor)
+        elif base.is_Symbol and base.name in SI_UNITS and exponent.is_Integer:
+            unit_size, unit_powers = SI_UNITS[base.name]
+            size *= unit_size ** int(exponent)
+            powers = [have + int(exponent) * power for have, power in zip(powers, unit_powers, strict=True)]
+        else:
+            return None
+    return sympy.Mul(*number), size, tuple(powers)
 
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
