@@ -858,6 +858,28 @@ def test_a_number_with_words_or_units_is_invalid_and_goes_to_a_person(kind, expe
     assert verdict.feedback == (f"A number is asked for here; your answer contains {names}.",)
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status", "read_as"),
+    [
+        ("2,01", "equivalent", "2.01"),
+        ("2,0061", "equivalent", "2.0061"),
+        ("-2,01", "not_equivalent", "-2.01"),
+        ("2,006", "invalid", None),  # 2006 in English: the student is asked for a point
+        ("2,01, 3", "invalid", None),  # a list, not a number
+    ],
+)
+def test_a_decimal_comma_is_read_as_a_point_in_a_number(submitted, status, read_as):
+    verdict = compare("2*pi*sqrt(1/9.81)", submitted, kind="number", rtol=0.005)
+    assert verdict.status == status
+    if read_as is None:
+        assert verdict.feedback[0].startswith("A comma is not understood here")
+    else:
+        assert verdict.read_as == read_as
+        assert verdict.notes == (f"Read `{submitted}` as {read_as}: a decimal comma.",)
+    # only numbers: in an expression the comma separates, and the parser says so
+    assert compare("x", "1,5", known=["x"]).status == "invalid"
+
+
 def test_out_of_time_is_undecided_and_flagged_for_a_person():
     verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2", kind="lagrangian", timeout=1e-9, **PENDULUM)
     assert verdict.status == "undecided"

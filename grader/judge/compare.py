@@ -148,13 +148,14 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
-    answer, conserved, used, typed, read_in = None, False, (), None, None
+    answer, conserved, used, typed, read_in, comma = None, False, (), None, None, None
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
         with time_limit(timeout) as deadline:
             if spec.parsed:
                 names = sorted(expected.names | {symbol.name for symbol, _ in given})
+                submitted, comma = _decimal_point(submitted) if spec.name == "number" else (submitted, None)
                 answer = parse_answer(submitted, coords=expected.setting.coords, known=names, deadline=deadline)
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
@@ -168,8 +169,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if early:
                     return _verdict(early, shown)  # as typed: 2.006 m is not read as a time
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
-            if read_in:
-                outcome = replace(outcome, notes=(*outcome.notes, read_in))
+            for note in (comma, read_in):
+                if note:
+                    outcome = replace(outcome, notes=(*outcome.notes, note))
             if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
                 outcome = _with_units(outcome, spec, expected, answer)
             if spec.parsed and conserved and outcome.status != "equivalent":
@@ -388,6 +390,22 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
         if term.free_symbols == {constant} and term.is_polynomial(constant) and sympy.degree(term, constant) == 1:
             return ParsedAnswer(answer.text, rest, "expression")
     return answer
+
+
+# 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English
+_DECIMAL_COMMA = re.compile(r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,})(?![0-9,])(.*)", re.DOTALL)
+
+
+def _decimal_point(submitted: str) -> tuple[str, tuple | None]:
+    """A number written with a decimal comma, as much of Europe writes it, with a point; and the
+    note that says so. Three digits after the comma may be thousands: those are left alone, and the
+    parser asks for a point."""
+    match = _DECIMAL_COMMA.fullmatch(submitted) if len(submitted) < 200 else None
+    if match is None or "," in match.group(3):
+        return submitted, None
+    whole, fraction, rest = match.groups()
+    number = f"{whole}.{fraction}"
+    return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
 
 
 @lru_cache(maxsize=64)

@@ -33,6 +33,7 @@ FEEDBACK: dict[str, str] = {
     " terms that add up must have the same dimensions.",
     "units_argument": "In your {where}, `{function}` is applied to a quantity measured in {units}:"
     " the argument of {function} must be a pure number.",
+    "decimal_comma": "Read `{typed}` as {number}: a decimal comma.",
     "unit_read": "Read as {value} {unit}.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
     "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"
