@@ -127,23 +127,35 @@ def test_an_unreadable_answer_is_pointed_at(server, browser):
     assert result.find_element(By.CSS_SELECTOR, ".read .caption").text == "where:"
 
 
-def test_a_number_with_a_unit_is_shown_as_read(server, browser):
-    browser.get(server.url)
+def _check_period(browser, answer: str, status: str):
     period = "plane-pendulum.period"
     part = browser.find_element(By.CSS_SELECTOR, f'article.part[data-part="{period}"]')
-    part.find_element(By.ID, f"answer-{period}").send_keys("2.006 s")
+    box = part.find_element(By.ID, f"answer-{period}")
+    box.clear()
+    box.send_keys(answer)
     part.find_element(By.CSS_SELECTOR, "button.check").click()
-    result = WebDriverWait(browser, 20).until(
+    return WebDriverWait(browser, 20).until(
         expected_conditions.visibility_of_element_located(
-            (By.CSS_SELECTOR, f'article.part[data-part="{period}"] .result.invalid')
+            (By.CSS_SELECTOR, f'article.part[data-part="{period}"] .result.{status}')
         )
     )
+
+
+def test_a_number_with_a_word_is_shown_as_read(server, browser):
+    browser.get(server.url)
+    result = _check_period(browser, "2.006 x", "invalid")
     assert [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")] == [
-        "A number is asked for here; your answer contains s."
+        "A number is asked for here; your answer contains x."
     ]
-    assert [code.text for code in result.find_elements(By.CSS_SELECTOR, "ul.hints li code")] == ["s"]
+    assert [code.text for code in result.find_elements(By.CSS_SELECTOR, "ul.hints li code")] == ["x"]
     assert result.find_element(By.CSS_SELECTOR, ".read .caption").text == "read as:"
     assert result.find_elements(By.CSS_SELECTOR, ".read math")
+
+
+def test_a_number_in_another_unit_is_read_in_the_one_asked(server, browser):
+    browser.get(server.url)
+    result = _check_period(browser, "2006 ms", "equivalent")
+    assert [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")] == ["Read as 2.006 s."]
 
 
 def test_hostile_text_stays_text(server, browser):

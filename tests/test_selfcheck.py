@@ -34,10 +34,13 @@ CHECK_EXITS = [
      "  Unbalanced bracket: the `(` at position 4 is never closed.\n"
      "  where: sin(theta\n            ^\n"),
     # read, but not a number: shown as read, and a person will decide
-    (["plane-pendulum.period", "2.006 s"], 2,
+    (["plane-pendulum.period", "2.006 x"], 2,
      "invalid plane-pendulum.period: could not be read\n"
-     "  A number is asked for here; your answer contains `s`.\n"
-     "  read as: 1003*s/500\n"),
+     "  A number is asked for here; your answer contains `x`.\n"
+     "  read as: 1003*x/500\n"),
+    # a number in the unit asked (s) written in another (ms): read in the part's unit, and said so
+    (["plane-pendulum.period", "2006 ms"], 0,
+     "✔ plane-pendulum.period: right\n  Read as 2.006 s.\n  read as: 2.006\n"),
     (["constraint-classification.rigid-body-holonomic", "A"], 0,
      "✔ constraint-classification.rigid-body-holonomic: right\n"),
 ]  # fmt: skip
