@@ -42,7 +42,7 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import TERM_KEYS, expand_terms, taylor
+from grader.judge.diagnose import MAX_TERMS, TERM_KEYS, expand_terms, taylor
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
@@ -472,8 +472,8 @@ def _solved(g, acceleration):
     ``expand`` were most of the time spent on a wrong equation).
     """
     expansion = expand_terms(g)
-    if expansion is None:
-        return None  # too many terms to name
+    if expansion is None or len(expansion) > MAX_TERMS:
+        return None  # too many terms to name (and dividing each by a power of a sum would cost seconds)
     terms = [coefficient * shape for shape, coefficient in expansion.items()]
     coefficients = []
     for term in terms:
