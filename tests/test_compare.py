@@ -932,6 +932,13 @@ def test_nothing_a_student_types_makes_compare_raise(kind, submitted, setting):
     assert verdict.status != "equivalent"
 
 
+@pytest.mark.parametrize("submitted", [*HOSTILE, "x = 1; y = 2", "2.006 s = T", "T = 2006 ms", "1,5; 2", "2,01 = 2,01"])
+def test_nothing_a_student_types_makes_a_number_with_a_unit_raise(submitted):
+    verdict = compare("2*pi*sqrt(1/9.81)", submitted, kind="number", unit="s", rtol=0.005)
+    assert isinstance(verdict, Verdict)
+    assert verdict.status != "equivalent" or submitted == "T = 2006 ms"
+
+
 def test_an_equation_that_holds_for_every_motion_is_named():
     verdict = compare(EOM_DOUBLE, f"{EOM_DOUBLE_1}; theta1 = theta1", kind="equations", **DOUBLE)
     assert verdict.feedback == ("Equation 2 holds for every motion, so it says nothing about this one.",)

@@ -432,7 +432,7 @@ def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pars
     Returns the answer to judge, an outcome already decided (or None), and a note saying how a
     number in another unit was read (or None)."""
     wanted = expected.option("unit") if spec.name == "number" else None
-    if not wanted or not answer.value.free_symbols:
+    if not wanted or answer.kind != "expression" or not answer.value.free_symbols:
         return answer, None, None
     found = in_units(answer.value)
     if found is None:
