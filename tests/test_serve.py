@@ -89,7 +89,12 @@ def test_the_page_shows_prompts_and_choices_as_text(server):
     assert '<span class="tex" title="\\theta_1">θ<sub>1</sub></span>' in page
     assert '<li><span class="label">a)</span> holonomic</li>' in page
     assert '<li><span class="label">b)</span> non-holonomic</li>' in page
-    assert '<span class="sym">θ₁</span> <code>theta1</code> angle of the upper rod from the downward vertical;' in page
+    assert (
+        '<span class="sym">θ₁</span> <code>theta1</code> angle of the upper rod from the downward vertical'
+        ' <span class="unit">(rad)</span>;' in page
+    )
+    # each symbol's unit, as the feedback on units writes it
+    assert 'gravitational acceleration <span class="unit">(m/s²)</span>' in page
 
 
 HOSTILE = "<script>alert(1)</script> {{ 7*7 }} $</span><img src=x onerror=alert(1)>$ **<b>x</b>**"

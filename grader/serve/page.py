@@ -23,6 +23,7 @@ import jinja2
 from grader.bank import Assignment, Part, Problem
 from grader.bank.markup import Segment, inline, paragraphs
 from grader.grade.part import setting_of
+from grader.judge.units import DIMENSIONS, si
 from grader.parse import parse_answer
 from grader.report import TEMPLATES
 
@@ -67,7 +68,8 @@ class ProblemView:
     id: str
     title: str
     prompt: tuple[tuple[Segment, ...], ...]
-    symbols: tuple[tuple[str, str, str], ...]  # (name as typed, as shown, meaning): the names a student may use
+    # (name as typed, as shown, meaning, SI unit or ""): the names a student may use
+    symbols: tuple[tuple[str, str, str, str], ...]
     parts: tuple[PartView, ...]
 
 
@@ -82,6 +84,16 @@ def _part_view(problem: Problem, part: Part) -> PartView:
         multiple=bool(part.options.get("multiple", False)),
         placeholder=_PLACEHOLDERS.get(part.kind, ""),
     )
+
+
+def _unit(dimension: str) -> str:
+    """A dimension's SI unit, as the feedback on units writes it (``m/s²``); ``rad`` for an angle,
+    nothing for a pure number or a symbol without a dimension."""
+    if dimension == "angle":
+        return "rad"
+    if dimension not in DIMENSIONS or dimension == "dimensionless":
+        return ""
+    return si(DIMENSIONS[dimension])
 
 
 def _shown(name: str, problem: Problem) -> str:
@@ -100,7 +112,9 @@ def problem_views(bank: Mapping[str, Problem], assignment: Assignment | None = N
     views = []
     for problem, part_ids in chosen:
         names = (*problem.coordinates, *problem.parameters)
-        symbols = tuple((symbol.name, _shown(symbol.name, problem), symbol.meaning) for symbol in names)
+        symbols = tuple(
+            (symbol.name, _shown(symbol.name, problem), symbol.meaning, _unit(symbol.dimension)) for symbol in names
+        )
         parts = tuple(_part_view(problem, p) for p in problem.parts if not part_ids or p.id in part_ids)
         views.append(ProblemView(problem.id, problem.title, paragraphs(problem.prompt), symbols, parts))
     return tuple(views)
