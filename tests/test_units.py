@@ -188,3 +188,18 @@ def test_a_unit_we_cannot_read_is_the_authors_error():
         compare("2", "2", kind="number", unit="furlong")
     with pytest.raises(AuthorError, match="unit '2 s'"):
         compare("2", "2", kind="number", unit="2 s")
+
+
+@pytest.mark.parametrize(
+    ("submitted", "sentence"),
+    [
+        ("2006", "Not within the accepted tolerance. Is your number in ms? The answer is asked in s."),
+        ("0.03343", "Not within the accepted tolerance. Is your number in min? The answer is asked in s."),
+        ("3", "Not within the accepted tolerance."),  # no unit makes 3 s right
+    ],
+)
+def test_a_number_right_in_another_unit_is_asked_about_its_unit(submitted, sentence):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,))
+    # without a unit nothing is known of other units
+    assert compare(PERIOD, submitted, kind="number", rtol=0.005).feedback == ("Not within the accepted tolerance.",)

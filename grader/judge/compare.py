@@ -33,7 +33,7 @@ from grader.judge.motion import check_equation, check_equations
 from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
-from grader.judge.units import SI_UNITS, Mixed, in_units, si, units_mistake, units_of
+from grader.judge.units import SI_UNITS, Mixed, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
 from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
@@ -408,19 +408,17 @@ def _decimal_point(submitted: str) -> tuple[str, tuple | None]:
     return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
 
 
-@lru_cache(maxsize=64)
 def _unit(text: str) -> tuple[Fraction, tuple]:
     """A part's unit (``s``, ``m/s^2``, ``rad/s``): its size in SI units and its powers.
 
     Raises:
         AuthorError: for a unit that is not a product of the units we know.
     """
-    read = parse_answer(text)
-    found = in_units(read.value) if read.ok and read.kind == "expression" else None
-    if found is None or found[0] != 1:
+    found = unit_named(text)
+    if found is None:
         known = ", ".join(sorted(SI_UNITS, key=str.lower))
         raise AuthorError(f"unit {text!r} is not a product of powers of the units we know ({known})")
-    return found[1], found[2]
+    return found
 
 
 def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, Outcome | None, tuple | None]:

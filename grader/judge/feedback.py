@@ -34,6 +34,7 @@ FEEDBACK: dict[str, str] = {
     "units_argument": "In your {where}, `{function}` is applied to a quantity measured in {units}:"
     " the argument of {function} must be a pure number.",
     "decimal_comma": "Read `{typed}` as {number}: a decimal comma.",
+    "other_unit": "Not within the accepted tolerance. Is your number in {unit}? The answer is asked in {wanted}.",
     "unit_read": "Read as {value} {unit}.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
     "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"

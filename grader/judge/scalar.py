@@ -15,6 +15,7 @@ import sympy
 
 from grader.judge.deadline import Deadline
 from grader.judge.expected import Expected, Outcome
+from grader.judge.units import other_units
 from grader.parse import ParsedAnswer
 from grader.parse.names import GREEK_BY_LETTER
 
@@ -56,10 +57,16 @@ def check_number(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -
     target = complex(expected.parsed.value.evalf(DIGITS))
     deadline.check()
     value = complex(answer.value.evalf(DIGITS))
-    within = abs(value - target) <= atol + rtol * abs(target)
-    if within:
-        return Outcome("equivalent", 1.0, "equivalent", method=f"tolerance rtol={rtol:g} atol={atol:g}")
-    return Outcome("not_equivalent", 0.0, "out_of_tolerance", method=f"tolerance rtol={rtol:g} atol={atol:g}")
+    method = f"tolerance rtol={rtol:g} atol={atol:g}"
+    if abs(value - target) <= atol + rtol * abs(target):
+        return Outcome("equivalent", 1.0, "equivalent", method=method)
+    unit = expected.option("unit")
+    for name, size in other_units(str(unit)) if unit else ():
+        # 2006 for a period asked in s: the right number in ms, written without its unit
+        in_other = target / complex(size)
+        if abs(value - in_other) <= atol / float(size) + rtol * abs(in_other):
+            return Outcome("not_equivalent", 0.0, "other_unit", {"unit": name, "wanted": str(unit)}, method)
+    return Outcome("not_equivalent", 0.0, "out_of_tolerance", method=method)
 
 
 def choice_labels(text: str) -> list[str] | None:

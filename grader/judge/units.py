@@ -7,6 +7,7 @@ Contents:
     units_mistake(expected, value)  what a wrong answer's units say, as a feedback key and details
     si(units)                    powers as a student reads them: ``kg·m²/s²``
     SI_UNITS, in_units(value)    a number written with its unit: ``2006 ms`` is 2006 × 1/1000 s
+    unit_named(text), other_units(text)   a part's unit, and the others that measure the same
 
 A problem declares each symbol's dimension (``m: mass``, ``g: acceleration``); a coordinate's
 derivatives are divided by time once per dot, and t is a time. ``√(l/g)`` is then a time and
@@ -17,14 +18,25 @@ is looked at, and only when every symbol in it has a declared dimension.
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import lru_cache
 
 import sympy
 from sympy.core.function import AppliedUndef
 
 from grader.judge.setting import Setting
-from grader.parse import TIME
+from grader.parse import TIME, parse_answer
 
-__all__ = ["DIMENSIONS", "SI_UNITS", "Mixed", "in_units", "si", "units_mistake", "units_of"]
+__all__ = [
+    "DIMENSIONS",
+    "SI_UNITS",
+    "Mixed",
+    "in_units",
+    "other_units",
+    "si",
+    "unit_named",
+    "units_mistake",
+    "units_of",
+]
 
 Units = tuple[Fraction, Fraction, Fraction]  # powers of mass, length, time
 
@@ -191,6 +203,22 @@ def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:
         else:
             return None
     return sympy.Mul(*number), size, tuple(powers)
+
+
+@lru_cache(maxsize=64)
+def unit_named(text: str) -> tuple[Fraction, Units] | None:
+    """A unit as an author writes it (``s``, ``m/s^2``, ``rad/s``): its size in SI units and its
+    powers; None when it is not a product of powers of :data:`SI_UNITS`."""
+    read = parse_answer(text)
+    found = in_units(read.value) if read.ok and read.kind == "expression" else None
+    return None if found is None or found[0] != 1 else (found[1], found[2])
+
+
+def other_units(text: str) -> list[tuple[str, Fraction]]:
+    """The units of :data:`SI_UNITS` that measure what ``text`` does, each with its size in
+    ``text``'s units: ms for s is 1/1000. The part's own unit, and other names of it, are left out."""
+    size, powers = unit_named(text)
+    return [(name, other / size) for name, (other, its) in SI_UNITS.items() if its == powers and other != size]
 
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
