@@ -34,6 +34,7 @@ from grader.bank import BankError, default_bank_path, load_assignment, load_bank
 from grader.grade import expected_answer, validate_bank
 from grader.grade.batch import assignment_parts
 from grader.grade.selfcheck import check, find_part
+from grader.judge.units import unit_of
 from grader.run import EXPORTS, export_grades, grade_assignment
 from grader.serve import make_server
 
@@ -338,11 +339,19 @@ def _run_show(args: argparse.Namespace) -> int:
     if problem is None:
         print(f"grader: no problem {args.id!r} in {args.bank} (see: grader problems list)", file=sys.stderr)
         return EXIT_INVALID
-    print(f"{problem.title} [{problem.id}] — seed {', '.join(problem.seed)}, {problem.points:g} points\n")
+    print(f"{problem.title} [{problem.id}] — seed {', '.join(problem.seed)}, {_points(problem.points)}\n")
     if problem.prompt:
         print(problem.prompt.rstrip() + "\n")
+    symbols = (*problem.coordinates, *problem.parameters)
+    if symbols:  # the names an answer may use, as it types them
+        width = max(len(symbol.name) for symbol in symbols)
+        print("Symbols:")
+        for symbol in symbols:
+            unit = unit_of(symbol.dimension)
+            print(f"  {symbol.name:<{width}}  {symbol.meaning}{f' ({unit})' if unit else ''}".rstrip())
+        print()
     for part in problem.parts:
-        print(f"({part.id}) {part.kind}, {part.points:g} points")
+        print(f"({part.id}) {part.kind}, {_points(part.points)}")
         if part.prompt:
             print(f"    {part.prompt.strip()}")
         for label, text in part.choices.items():
@@ -352,6 +361,10 @@ def _run_show(args: argparse.Namespace) -> int:
             for name, value in part.given.items():  # what an answer may use, and what it stands for
                 print(f"    given: {name} = {value}")
     return EXIT_OK
+
+
+def _points(points: float) -> str:
+    return f"{points:g} point{'' if points == 1 else 's'}"
 
 
 def _run_validate(args: argparse.Namespace) -> int:

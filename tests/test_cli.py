@@ -135,6 +135,14 @@ def test_problems_show_hides_answers_unless_asked(capsys):
     assert "    given: p_phi = m l^2 sin(theta)^2 phidot\n" in capsys.readouterr().out
 
 
+def test_problems_show_lists_the_symbols_to_type_with_their_units(capsys):
+    assert main(["problems", "show", "plane-pendulum"]) == 0
+    out = capsys.readouterr().out
+    assert "Symbols:\n  theta  angle of the string from the downward vertical (rad)\n" in out
+    assert "  g      gravitational acceleration (m/s²)\n" in out
+    assert "(frequency) expression, 1 point\n" in out and "(lagrangian) lagrangian, 4 points\n" in out
+
+
 def test_problems_show_of_an_unknown_problem_is_a_usage_error(capsys):
     assert main(["problems", "show", "no-such-problem"]) == 2
     assert "no problem 'no-such-problem'" in capsys.readouterr().err

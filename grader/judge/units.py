@@ -5,7 +5,7 @@ Contents:
     units_of(expr, setting)      the powers of an expression in plain symbols; None where unknown
     Mixed                        raised where terms of a sum, or a function's argument, disagree
     units_mistake(expected, value)  what a wrong answer's units say, as a feedback key and details
-    si(units)                    powers as a student reads them: ``kg·m²/s²``
+    si(units), unit_of(dimension)  powers as a student reads them: ``kg·m²/s²``; a dimension's unit
     SI_UNITS, in_units(value)    a number written with its unit: ``2006 ms`` is 2006 × 1/1000 s
     unit_named(text), other_units(text)   a part's unit, and the others that measure the same
 
@@ -34,6 +34,7 @@ __all__ = [
     "other_units",
     "si",
     "unit_named",
+    "unit_of",
     "units_mistake",
     "units_of",
 ]
@@ -219,6 +220,16 @@ def other_units(text: str) -> list[tuple[str, Fraction]]:
     ``text``'s units: ms for s is 1/1000. The part's own unit, and other names of it, are left out."""
     size, powers = unit_named(text)
     return [(name, other / size) for name, (other, its) in SI_UNITS.items() if its == powers and other != size]
+
+
+def unit_of(dimension: str) -> str:
+    """A dimension's SI unit as a student reads it (``m/s²``); ``rad`` for an angle, and nothing
+    for a pure number or a dimension we do not know (a symbol given none)."""
+    if dimension == "angle":
+        return "rad"
+    if dimension not in DIMENSIONS or dimension == "dimensionless":
+        return ""
+    return si(DIMENSIONS[dimension])
 
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")

@@ -23,7 +23,7 @@ import jinja2
 from grader.bank import Assignment, Part, Problem
 from grader.bank.markup import Segment, inline, paragraphs
 from grader.grade.part import setting_of
-from grader.judge.units import DIMENSIONS, si
+from grader.judge.units import unit_of
 from grader.parse import parse_answer
 from grader.report import TEMPLATES
 
@@ -86,16 +86,6 @@ def _part_view(problem: Problem, part: Part) -> PartView:
     )
 
 
-def _unit(dimension: str) -> str:
-    """A dimension's SI unit, as the feedback on units writes it (``m/s²``); ``rad`` for an angle,
-    nothing for a pure number or a symbol without a dimension."""
-    if dimension == "angle":
-        return "rad"
-    if dimension not in DIMENSIONS or dimension == "dimensionless":
-        return ""
-    return si(DIMENSIONS[dimension])
-
-
 def _shown(name: str, problem: Problem) -> str:
     """A symbol as the grader prints it back (theta1 as θ₁)."""
     setting = setting_of(problem)
@@ -113,7 +103,7 @@ def problem_views(bank: Mapping[str, Problem], assignment: Assignment | None = N
     for problem, part_ids in chosen:
         names = (*problem.coordinates, *problem.parameters)
         symbols = tuple(
-            (symbol.name, _shown(symbol.name, problem), symbol.meaning, _unit(symbol.dimension)) for symbol in names
+            (symbol.name, _shown(symbol.name, problem), symbol.meaning, unit_of(symbol.dimension)) for symbol in names
         )
         parts = tuple(_part_view(problem, p) for p in problem.parts if not part_ids or p.id in part_ids)
         views.append(ProblemView(problem.id, problem.title, paragraphs(problem.prompt), symbols, parts))
