@@ -42,6 +42,8 @@ def units(mass, length, time):
         (sympy.sqrt(l), units(0, Fraction(1, 2), 0)),
         (sympy.exp(-g * t**2 / l) * m, units(1, 0, 0)),
         (sympy.Integer(3), units(0, 0, 0)),
+        (-m * g * sympy.sign(velocity), units(1, 1, -2)),  # friction: sign takes any quantity
+        (sympy.Abs(l * velocity), units(0, 1, -1)),
     ],
 )
 def test_units_of_an_expression(expr, expected):

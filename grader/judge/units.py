@@ -56,9 +56,10 @@ DIMENSIONS: dict[str, Units] = {
     }.items()
 }  # fmt: skip
 
-# Functions whose argument must be a pure number, and so is their value.
+# Functions whose argument must be a pure number, and so is their value. (sign takes any
+# quantity, as in friction's −μ m g sign(ẋ), and is a pure number; |x| keeps x's units.)
 _PURE = {"sin", "cos", "tan", "cot", "sec", "csc", "asin", "acos", "atan", "sinh", "cosh", "tanh", "coth",
-         "sech", "csch", "asinh", "acosh", "atanh", "exp", "log", "sign"}  # fmt: skip
+         "sech", "csch", "asinh", "acosh", "atanh", "exp", "log"}  # fmt: skip
 
 
 class Mixed(Exception):
@@ -109,8 +110,10 @@ def units_of(expr, setting: Setting) -> Units | None:
                 raise Mixed([units], what)
         return _NONE
     name = type(expr).__name__
-    if len(expr.args) == 1 and (name in _PURE or name in ("Abs", "re", "im")):
+    if len(expr.args) == 1 and (name in _PURE or name in ("Abs", "re", "im", "sign")):
         units = units_of(expr.args[0], setting)
+        if name == "sign" and units is not None:
+            return _NONE
         if units is None or name not in _PURE:
             return units
         if units != _NONE:
