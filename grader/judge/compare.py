@@ -98,7 +98,7 @@ def compare(
             answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
             (seconds, default 2), and the kind's own options (``up_to_constant``,
-            ``rtol``/``atol``, ``options`` for choices: labels, or (label, words) pairs…).
+            ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs…).
 
     Returns:
         A :class:`Verdict`. Nothing a student types makes this raise or hang.
