@@ -755,8 +755,8 @@ class _State:
 
 
 def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    theirs = _equations(answer.value)
-    expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(_equations(expected.value))]
+    theirs, references = _equations(answer.value), _equations(expected.value)
+    expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(references)]
     submitted_gs = [expected.compile(g) for g in theirs]
     numbered = _states(expected, expected_fs, submitted_gs, deadline)
     states = [state for _, state in numbered]
@@ -770,31 +770,34 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
     if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
+    if not wrong:
+        return outcome
     wrong_ones = [j for j in range(len(theirs)) if not all(s.verdicts[j] is Closeness.EQUAL for s in states)]
     if outcome.key == "wrong_equation" and len(wrong_ones) == 1:
         (j,) = wrong_ones
-        return replace(outcome, more=_terms_named(expected, theirs[j], j, deadline))
+        return replace(outcome, more=_terms_named(expected, references, theirs[j], j, deadline))
     if outcome.key == "wrong_equations" and len(theirs) > 1:
         # several wrong: each named with its number, as far as it is near an expected equation
         more = tuple(
             (f"{key}_in", {**details, "index": j + 1})
             for j in wrong_ones
-            for key, details in _terms_named(expected, theirs[j], j, deadline)
+            for key, details in _terms_named(expected, references, theirs[j], j, deadline)
         )
         return replace(outcome, more=more)
     return outcome
 
 
-def _terms_named(expected: Expected, g, position: int, deadline: Deadline) -> tuple:
+def _terms_named(expected: Expected, references: Sequence, g, position: int, deadline: Deadline) -> tuple:
     """What differs in a wrong equation ``g`` (as parsed) of a system (the ``position``-th), as the
-    sentences of a single equation's diagnosis: against the expected equation it differs
+    sentences of a single equation's diagnosis: against the expected equation (of ``references``,
+    the expected answer's, each as an expression = 0) it differs
     from by the fewest terms, one or two, and the one in the same place on a tie; only
     equations with the same accelerations are compared. Nothing when no expected equation is
     so near: the student combined or solved the equations, and the terms they wrote are not
     the expected ones."""
     named, accelerations, plain = [], set(_accelerations_in(g, expected)), None
-    equations = list(enumerate(_equations(expected.value)))
-    for i, f in sorted(equations, key=lambda item: item[0] != position):  # the one in the same place first
+    # the one in the same place first: of two equally near, min keeps the first
+    for i, f in sorted(enumerate(references), key=lambda item: item[0] != position):
         if not accelerations or set(_accelerations_in(f, expected)) != accelerations:
             continue  # θ̈₁ = … solved is no term or two away from an equation in θ̈₁ and θ̈₂
         plain = plain if plain is not None else expected.setting.plain(g)  # built only when compared
@@ -803,8 +806,8 @@ def _terms_named(expected: Expected, g, position: int, deadline: Deadline) -> tu
             sentences = ((outcome.key, outcome.details), *outcome.more)
             if len(sentences) == 1:
                 return sentences  # none can be nearer
-            named.append((len(sentences), i != position, sentences))
-    return min(named, key=lambda found: found[:2])[2] if named else ()
+            named.append(sentences)
+    return min(named, key=len) if named else ()
 
 
 def _states(expected: Expected, expected_fs, submitted_gs, deadline: Deadline) -> list[tuple[int, _State]]:
