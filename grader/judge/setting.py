@@ -21,18 +21,13 @@ import sympy
 
 from grader.errors import AuthorError
 from grader.judge.numeric import sample_points
+from grader.judge.units import DIMENSIONS
 from grader.parse import TIME
 from grader.parse.names import canonical_name, unicode_name
 
-__all__ = ["DIMENSION_NAMES", "DOMAINS", "Setting"]
+__all__ = ["DOMAINS", "Setting"]
 
 DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
-# The dimensions a symbol may have; grader.judge.units holds what each is in mass, length and time.
-DIMENSION_NAMES = (
-    "dimensionless", "angle", "mass", "length", "time", "area", "velocity", "acceleration",
-    "angular velocity", "frequency", "angular acceleration", "momentum", "angular momentum",
-    "moment of inertia", "force", "torque", "energy", "power", "force per length", "mass per time",
-)  # fmt: skip
 MAX_ORDER = 3
 
 
@@ -45,8 +40,8 @@ class Setting:
         known: canonical names of the other symbols (parameters).
         domains: canonical name → domain, overriding the defaults (coordinates,
             their derivatives and t are real; every other symbol is positive).
-        dimensions: canonical name → its dimension (``length``), where the problem says;
-            a coordinate's derivatives are divided by time.
+        dimensions: canonical name → its dimension (one of :data:`grader.judge.units.DIMENSIONS`),
+            where the problem says; a coordinate's derivatives are divided by time.
         seed: seeds the sample points, so a verdict is the same on every run.
     """
 
@@ -72,8 +67,8 @@ class Setting:
                 raise AuthorError(f"domain of {name!r} is {domain!r}; allowed: {', '.join(DOMAINS)}")
         dimensions = {canonical_name(name): dimension for name, dimension in (dimensions or {}).items()}
         for name, dimension in dimensions.items():
-            if dimension not in DIMENSION_NAMES:
-                raise AuthorError(f"dimension of {name!r} is {dimension!r}; allowed: {', '.join(DIMENSION_NAMES)}")
+            if dimension not in DIMENSIONS:
+                raise AuthorError(f"dimension of {name!r} is {dimension!r}; allowed: {', '.join(DIMENSIONS)}")
         coords, known = tuple(canonical_name(q) for q in coords), tuple(canonical_name(k) for k in known)
         return cls(coords, known, domains, dimensions)
 

@@ -19,12 +19,15 @@ from __future__ import annotations
 
 from fractions import Fraction
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 import sympy
 from sympy.core.function import AppliedUndef
 
-from grader.judge.setting import Setting
 from grader.parse import TIME, parse_answer
+
+if TYPE_CHECKING:  # setting.py reads DIMENSIONS from here
+    from grader.judge.setting import Setting
 
 __all__ = [
     "DIMENSIONS",
