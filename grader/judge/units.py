@@ -169,28 +169,28 @@ def units_mistake(expected, value, setting: Setting, *, equation: bool) -> tuple
     return None
 
 
-def _si_unit(scale, *powers) -> tuple[Fraction, Units]:
-    return Fraction(scale), tuple(Fraction(power) for power in powers)
+def _si_unit(size, dimension: str) -> tuple[Fraction, Units]:
+    return Fraction(size), DIMENSIONS[dimension]
 
 
 # The units a number may be written in, by the names the parser reads them as: name → (its size
-# in SI units, its powers of mass, length and time).
+# in SI units, what it measures).
 SI_UNITS: dict[str, tuple[Fraction, Units]] = {
-    **dict.fromkeys(("s", "second", "seconds"), _si_unit(1, 0, 0, 1)),
-    "ms": _si_unit(Fraction(1, 1000), 0, 0, 1),
-    **dict.fromkeys(("min", "minute", "minutes"), _si_unit(60, 0, 0, 1)),
-    **dict.fromkeys(("h", "hour", "hours"), _si_unit(3600, 0, 0, 1)),
-    **dict.fromkeys(("m", "metre", "metres", "meter", "meters"), _si_unit(1, 0, 1, 0)),
-    "cm": _si_unit(Fraction(1, 100), 0, 1, 0),
-    "mm": _si_unit(Fraction(1, 1000), 0, 1, 0),
-    "km": _si_unit(1000, 0, 1, 0),
-    "kg": _si_unit(1, 1, 0, 0),
-    **dict.fromkeys(("g", "gram", "grams"), _si_unit(Fraction(1, 1000), 1, 0, 0)),
-    **dict.fromkeys(("N", "newton", "newtons"), _si_unit(1, 1, 1, -2)),
-    **dict.fromkeys(("J", "joule", "joules"), _si_unit(1, 1, 2, -2)),
-    **dict.fromkeys(("W", "watt", "watts"), _si_unit(1, 1, 2, -3)),
-    **dict.fromkeys(("Hz", "hertz"), _si_unit(1, 0, 0, -1)),
-    **dict.fromkeys(("rad", "radian", "radians"), _si_unit(1, 0, 0, 0)),
+    **dict.fromkeys(("s", "second", "seconds"), _si_unit(1, "time")),
+    "ms": _si_unit(Fraction(1, 1000), "time"),
+    **dict.fromkeys(("min", "minute", "minutes"), _si_unit(60, "time")),
+    **dict.fromkeys(("h", "hour", "hours"), _si_unit(3600, "time")),
+    **dict.fromkeys(("m", "metre", "metres", "meter", "meters"), _si_unit(1, "length")),
+    "cm": _si_unit(Fraction(1, 100), "length"),
+    "mm": _si_unit(Fraction(1, 1000), "length"),
+    "km": _si_unit(1000, "length"),
+    "kg": _si_unit(1, "mass"),
+    **dict.fromkeys(("g", "gram", "grams"), _si_unit(Fraction(1, 1000), "mass")),
+    **dict.fromkeys(("N", "newton", "newtons"), _si_unit(1, "force")),
+    **dict.fromkeys(("J", "joule", "joules"), _si_unit(1, "energy")),
+    **dict.fromkeys(("W", "watt", "watts"), _si_unit(1, "power")),
+    **dict.fromkeys(("Hz", "hertz"), _si_unit(1, "frequency")),
+    **dict.fromkeys(("rad", "radian", "radians"), _si_unit(1, "angle")),
 }
 
 
