@@ -54,7 +54,7 @@ PART_KINDS: dict[str, frozenset[str]] = {
 SEED_ID = re.compile(r"[SLAE][0-9]{1,2}")
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*")
 _DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
-# The dimensions a symbol may have (grader.judge.setting has the same; a test keeps them in step).
+# The dimensions a symbol may have (grader.judge.units.DIMENSIONS has the same; a test keeps them in step).
 DIMENSIONS = (
     "dimensionless", "angle", "mass", "length", "time", "area", "velocity", "acceleration",
     "angular velocity", "frequency", "angular acceleration", "momentum", "angular momentum",
