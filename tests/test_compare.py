@@ -181,6 +181,34 @@ FEEDBACK = [
 ]  # fmt: skip
 
 
+DRY_FRICTION = "m xddot + b xdot + k x + mu m g sign(xdot) = 0"
+FRICTION = {"coords": ["x"], "known": ["m", "b", "k", "mu", "g"]}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "sentence"),
+    [
+        (DRY_FRICTION, "xddot = -(b/m) xdot - (k/m) x - mu g sgn(xdot)", "equation", "equivalent", "Correct."),
+        (DRY_FRICTION, "m xddot + b xdot + k x - mu m g sgn(xdot) = 0", "equation", "not_equivalent",
+         "A term differs: the velocity-dependent term has the wrong sign."),
+        (DRY_FRICTION, "m xddot + b xdot + k x = 0", "equation", "not_equivalent",
+         "A term is missing: a velocity-dependent term."),
+        # a V-shaped well: its force −k sign(x) has no small-oscillation form to compare with
+        ("1/2 m xdot^2 - k abs(x)", "1/2 m xdot^2 - k x sign(x)", "lagrangian", "equivalent",
+         "Correct."),
+        ("1/2 m xdot^2 - k abs(x)", "1/2 m xdot^2 + k abs(x)", "lagrangian", "not_equivalent",
+         "It looks like you wrote L = T + V; the Lagrangian is L = T − V."),
+        ("1/2 m xdot^2 - k abs(x)", "1/2 m xdot^2 - k x", "lagrangian", "not_equivalent",
+         "A term differs: a term in x is not right."),
+    ],
+)  # fmt: skip
+def test_sign_of_a_velocity_or_a_coordinate_is_judged_though_it_has_no_derivative_at_rest(
+    expected, submitted, kind, status, sentence
+):
+    verdict = compare(expected, submitted, kind=kind, **FRICTION)
+    assert (verdict.status, verdict.feedback[0]) == (status, sentence)
+
+
 @pytest.mark.parametrize(("expected", "submitted", "kind", "setting", "diagnosis", "sentence"), FEEDBACK)
 def test_feedback_names_the_mistake(expected, submitted, kind, setting, diagnosis, sentence):
     verdict = compare(expected, submitted, kind=kind, **setting)

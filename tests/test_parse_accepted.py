@@ -71,6 +71,9 @@ FUNCTIONS = [
     ("exp(a) + log(b) + ln(c)", exp(a) + sympy.log(b) + sympy.log(c)),
     ("sqrt(g/l)", sqrt(g / l)),
     ("abs(a - b)", sympy.Abs(a - b)),
+    # dry friction's direction: −μ m g sign(ẋ)
+    ("sign(a) + sgn(b) + signum(c)", sympy.sign(a) + sympy.sign(b) + sympy.sign(c)),
+    ("\\operatorname{sgn}(a - b)", sympy.sign(a - b)),
     ("sin θ", sin(theta)),
     ("cos theta1", cos(theta1)),
     ("sin θ cos φ", sin(theta) * cos(phi)),

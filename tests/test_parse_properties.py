@@ -97,6 +97,7 @@ TOKENS = [
     "theta1dot", "thetadot", "thetaddot", "theta'", "theta''", "x'", "phi", "φ̇", "p_theta", "m_1", "l_2", "lambda",
     # functions
     "sin", "cos", "tan", "exp", "log", "ln", "sqrt", "abs", "asin", "arctan", "sinh", "atanh", "coth", "diff", "√",
+    "sign", "sgn",
     # LaTeX
     "\\frac", "\\dot{", "\\ddot", "\\theta", "\\phi_1", "\\sqrt", "\\sqrt[3]", "\\cdot", "\\left(", "\\right)",
     "\\sin", "\\pi", "\\\\", "\\begin{aligned}", "\\end{aligned}", "&", "_{", "^{",

@@ -275,13 +275,16 @@ def small_angle(expr, setting: Setting) -> list:
 
 
 def taylor(expr, setting: Setting, order: int):
-    """The expansion of ``expr`` to ``order`` about q = q̇ = q̈ = 0 (the equilibrium at the origin)."""
+    """The expansion of ``expr`` to ``order`` about q = q̇ = q̈ = 0 (the equilibrium at the origin);
+    nan where there is none, as for dry friction's sign(q̇), which has no derivative at rest."""
     variables = sorted(expr.free_symbols & set(setting.state.values()), key=str)
     at_zero = dict.fromkeys(variables, 0)
     result = expr.subs(at_zero)
     for degree in range(1, order + 1):
         for combination in itertools.combinations_with_replacement(variables, degree):
             derivative = sympy.diff(expr, *combination).subs(at_zero)
+            if derivative.has(sympy.Derivative, sympy.DiracDelta):
+                return sympy.nan
             if derivative != 0:
                 multiplicity = sympy.Mul(*(sympy.factorial(combination.count(v)) for v in set(combination)))
                 result += derivative * sympy.Mul(*combination) / multiplicity

@@ -280,6 +280,8 @@ def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> 
             ("small_angle", taylor(lagrangian, setting, 2), "small angle"),
         )
     for key, form, name in expected.cache["mistaken forms"]:
+        if form.has(sympy.nan):
+            continue  # no small-angle form: the Lagrangian has no expansion at rest
         deadline.check()
         _, pairs = same_values(expected, form, submitted, deadline, key=name)
         if constant_difference(pairs):

@@ -91,7 +91,7 @@ _FLOAT = _Backend(
     number=lambda p, q: complex(p / q),
     functions={
         **COMPLEX,
-        "sign": lambda z: 0 if z == 0 else z / abs(z), "re": lambda z: complex(z.real), "im": lambda z: complex(z.imag),
+        "re": lambda z: complex(z.real), "im": lambda z: complex(z.imag),
     },
     pi=lambda: complex(math.pi), e=lambda: complex(math.e),
 )  # fmt: skip

@@ -25,7 +25,7 @@ SYMPY = {
     "csc": sympy.csc, "asin": sympy.asin, "acos": sympy.acos, "atan": sympy.atan,
     "sinh": sympy.sinh, "cosh": sympy.cosh, "tanh": sympy.tanh, "coth": sympy.coth, "sech": sympy.sech,
     "csch": sympy.csch, "asinh": sympy.asinh, "acosh": sympy.acosh, "atanh": sympy.atanh, "exp": sympy.exp,
-    "log": sympy.log, "sqrt": sympy.sqrt, "abs": sympy.Abs,
+    "log": sympy.log, "sqrt": sympy.sqrt, "abs": sympy.Abs, "sign": sympy.sign,
 }  # fmt: skip
 
 
@@ -61,5 +61,5 @@ COMPLEX = with_reciprocals({
     "asin": principal(cmath.asin), "acos": principal(cmath.acos), "atan": cmath.atan,
     "sinh": cmath.sinh, "cosh": cmath.cosh, "tanh": cmath.tanh,
     "asinh": principal(cmath.asinh), "acosh": principal(cmath.acosh), "atanh": principal(cmath.atanh),
-    "exp": cmath.exp, "log": principal(cmath.log), "Abs": abs,
+    "exp": cmath.exp, "log": principal(cmath.log), "Abs": abs, "sign": lambda z: 0j if z == 0 else z / abs(z),
 })  # fmt: skip

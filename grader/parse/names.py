@@ -81,6 +81,7 @@ FUNCTION_NAMES: dict[str, str] = {
     "coth": "coth", "sech": "sech", "csch": "csch", "asinh": "asinh", "arsinh": "asinh", "arcsinh": "asinh",
     "acosh": "acosh", "arcosh": "acosh", "arccosh": "acosh", "atanh": "atanh", "artanh": "atanh", "arctanh": "atanh",
     "exp": "exp", "log": "log", "ln": "log", "sqrt": "sqrt", "abs": "abs",
+    "sign": "sign", "sgn": "sign", "signum": "sign",
 }  # fmt: skip
 
 _TRAILING_DIGITS = re.compile(r"^([A-Za-z]+)_?([0-9]+)$")
