@@ -71,6 +71,15 @@ FUNCTIONS = [
     ("exp(a) + log(b) + ln(c)", exp(a) + sympy.log(b) + sympy.log(c)),
     ("sqrt(g/l)", sqrt(g / l)),
     ("abs(a - b)", sympy.Abs(a - b)),
+    # |x| is abs(x): a bar after a value closes the innermost open bar, any other opens one
+    ("|a - b|", sympy.Abs(a - b)),
+    ("k|a|", k * sympy.Abs(a)),
+    ("|a||b|", sympy.Abs(a) * sympy.Abs(b)),
+    ("||a| - b|", sympy.Abs(sympy.Abs(a) - b)),
+    ("|a|b|c|", sympy.Abs(a) * b * sympy.Abs(c)),
+    ("sin |a| + |b|^2", sin(sympy.Abs(a)) + sympy.Abs(b) ** 2),
+    ("\\left| a \\right| + \\lvert b \\rvert + \\vert c \\vert", sympy.Abs(a) + sympy.Abs(b) + sympy.Abs(c)),
+    ("(|a| + 1)", sympy.Abs(a) + 1),
     # dry friction's direction: −μ m g sign(ẋ)
     ("sign(a) + sgn(b) + signum(c)", sympy.sign(a) + sympy.sign(b) + sympy.sign(c)),
     ("\\operatorname{sgn}(a - b)", sympy.sign(a - b)),

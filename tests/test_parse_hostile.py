@@ -104,6 +104,11 @@ HOSTILE = [
     ("}", "unopened"),
     ("(x]", "mismatched"),
     ("[x}", "mismatched"),
+    ("|x", "unclosed"),  # an absolute value's bars
+    ("m |x - a", "unclosed"),
+    ("||", "unclosed"),
+    ("|a)", "mismatched"),
+    ("(a|)", "mismatched"),
     # -- nothing to read --------------------------------------------------------
     ("", "empty"),
     ("   ", "empty"),

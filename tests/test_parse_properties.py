@@ -97,7 +97,7 @@ TOKENS = [
     "theta1dot", "thetadot", "thetaddot", "theta'", "theta''", "x'", "phi", "φ̇", "p_theta", "m_1", "l_2", "lambda",
     # functions
     "sin", "cos", "tan", "exp", "log", "ln", "sqrt", "abs", "asin", "arctan", "sinh", "atanh", "coth", "diff", "√",
-    "sign", "sgn",
+    "sign", "sgn", "|",
     # LaTeX
     "\\frac", "\\dot{", "\\ddot", "\\theta", "\\phi_1", "\\sqrt", "\\sqrt[3]", "\\cdot", "\\left(", "\\right)",
     "\\sin", "\\pi", "\\\\", "\\begin{aligned}", "\\end{aligned}", "&", "_{", "^{",
@@ -235,3 +235,13 @@ def test_corner_reads_back_as_itself(text, context):
     assert first.ok, str(first)
     again = parse_answer(first.read_as_text, coords=coords, known=known)
     assert again.ok and _same_value(again.value, first.value), f"{text!r} → {first.read_as_text!r}"
+
+
+@pytest.mark.parametrize("text", ["abs(m - g) + sign(theta')", "|m - g| sgn(θ̇)"])
+def test_absolute_value_and_sign_read_back_from_their_latex(text):
+    """sympy's LaTeX writes |x| as \\left|{x}\\right| and sign as \\operatorname{sign}: a student
+    who copies the read-back into the answer box is read the same."""
+    coords, known = PENDULUM
+    first = _check(text, coords, known)
+    again = parse_answer(first.read_as_latex, coords=coords, known=known)
+    assert again.ok and _same_value(again.value, first.value), first.read_as_latex

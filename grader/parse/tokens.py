@@ -113,7 +113,7 @@ _OPERATORS = {
     "\u00d7": "*", "\u2219": "*", "/": "/", "\u00f7": "/", "\u2044": "/", "\u2215": "/", "^": "^", "=": "=",
     "\u2248": "=", "\u2243": "=",  # ≈ ≃: θ̈ ≈ −(g/l) θ for small angles, T ≈ 2.01: the relation asked for
     ",": ",", ";": ";",
-    "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}",
+    "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}", "|": "|", "\u2223": "|",
 }  # fmt: skip
 _VULGAR_FRACTIONS = {"½": "1/2", "⅓": "1/3", "⅔": "2/3", "¼": "1/4", "¾": "3/4", "⅕": "1/5", "⅛": "1/8"}
 _PRIMES = {"'": 1, "\u2032": 1, "\u2033": 2}
@@ -159,7 +159,10 @@ _LATEX_FUNCTIONS = {
 }
 # names followed by an argument in plain notation; Derivative(θ(t), t) as sympy prints it
 _CALLABLE = FUNCTION_NAMES | {"diff": "diff", "Derivative": "diff"}
-_LATEX_OPERATORS = {"cdot": "*", "times": "*", "ast": "*", "div": "/", "approx": "=", "simeq": "="}
+_LATEX_OPERATORS = {
+    "cdot": "*", "times": "*", "ast": "*", "div": "/", "approx": "=", "simeq": "=",
+    "vert": "|", "lvert": "|", "rvert": "|",
+}  # fmt: skip
 _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
 # \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop.
 # (A brace this short after \text or \mathrm is a unit or a few words, as \mathrm{rad/s}.)
@@ -190,8 +193,47 @@ def tokenize(text: str) -> list[Token]:
         tokens = _steps_between_equations(tokens, text)
     if any(token.kind == "implies" for token in tokens):
         tokens = _conclusions(tokens)
+    if any(token.is_op("|") for token in tokens):
+        tokens = _absolute_values(tokens)
     _check_brackets(tokens)
     return tokens
+
+
+def _absolute_values(tokens: list[Token]) -> list[Token]:
+    """``|x|`` as ``abs(x)``: a bar after a value closes the innermost open bar, if that is the
+    innermost bracket; any other bar opens one. So ``|a||b|`` is |a|·|b| and ``||a| − b|`` nests;
+    ``|a|b|c|`` is |a|·b·|c|, as it must be read one way."""
+    result: list[Token] = []
+    stack: list[Token] = []  # the open brackets, a bar as its ``|`` token
+    for token in tokens:
+        if token.kind == "op" and token.value in _CLOSERS:
+            stack.append(token)
+        elif token.kind == "op" and token.value in _CLOSERS.values():
+            if stack and stack[-1].is_op("|"):
+                opener = stack[-1]
+                raise ParseFailure(
+                    "mismatched", token.start, token.end, open="|", open_position=opener.start + 1,
+                    close=token.value, position=token.start + 1,
+                )  # fmt: skip
+            if stack:
+                stack.pop()
+        elif token.is_op("|"):
+            previous = result[-1] if result else None
+            after_value = previous is not None and (
+                previous.kind in ("num", "name", "sup") or previous.is_op(")", "]", "}")
+            )
+            if after_value and stack and stack[-1].is_op("|"):
+                stack.pop()
+                result.append(Token("op", ")", token.start, token.end))
+            else:
+                stack.append(token)
+                result += [Token("func", "abs", token.start, token.end), Token("op", "(", token.start, token.end)]
+            continue
+        result.append(token)
+    bars = [token for token in stack if token.is_op("|")]
+    if bars:
+        raise ParseFailure("unclosed", bars[-1].start, bars[-1].end, open="|", position=bars[-1].start + 1)
+    return result
 
 
 def _gaps(tokens: list[Token]) -> list[Token]:
