@@ -412,6 +412,10 @@ def test_a_momentum_may_be_written_as_its_derivation(submitted):
         ),
         ("d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ", "not_equivalent"),  # "= 0" left out: an expression
         ("θ̈ ≈ −(g/l) sin θ", "equivalent"),  # ≈ is the relation written
+        # a force named, then the equation of motion it stands in: F = m ẍ = −k x says m ẍ = −k x
+        ("F = m l θ̈ = −m g sin θ", "equivalent"),
+        ("F_θ = −m g l sin θ = m l² θ̈", "equivalent"),
+        ("F = m l θ̈ = m g sin θ", "not_equivalent"),
     ],
 )
 def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status):
@@ -535,8 +539,9 @@ def test_partial_derivatives_elsewhere_are_refused_with_a_message():
 def test_a_defined_name_before_brackets_is_a_product_not_a_name():
     spring = {"coords": ["x"], "known": ["m", "k"]}
     assert compare("m xddot = -k x", "m(ẍ) = -k x", kind="equation", **spring).status == "equivalent"
-    # F = m ẍ = −k x: the equation is in the last two sides, not the last one; a person reads it
-    assert compare("m xddot = -k x", "F = m ẍ = -k x", kind="equation", **spring).status == "invalid"
+    # F = m ẍ = −k x: the equation is in the last two sides, not the last one alone
+    assert compare("m xddot = -k x", "F = m ẍ = -k x", kind="equation", **spring).status == "equivalent"
+    assert compare("m xddot = -k x", "F = m ẍ = k x", kind="equation", **spring).status == "not_equivalent"
     assert compare("m xddot = -k x", "F = m ẍ = const", kind="equation", **spring).status == "not_equivalent"
 
 

@@ -157,6 +157,9 @@ HOSTILE = [
     ("m g = l = const", "too_many_equals"),  # l is the problem's own
     ("p = m g = q", "too_many_equals"),  # q is no word for a constant
     ("p = m g = const = C", "too_many_equals"),
+    ("F = m θ̈ = −g = 0", "too_many_equals"),  # a chain past the named equation of motion
+    ("F = m θ̇ = −m g", "too_many_equals"),  # no acceleration: no equation of motion named
+    ("ω = √(g/l) = 3.13", "too_many_equals"),
     ("p = m g =", "unexpected_end"),  # a label, a side, and nothing after the last `=`
     ("m θ = m =", "unexpected_end"),
     ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),

@@ -269,7 +269,7 @@ class _Parser:
         rhs = self.side(label)
         while label is not None and self.token.is_op("=") and self._defines(rhs):
             # L = T − V = ½ m l² θ̇² + …: the quantity, its definition, and the answer, which is the last
-            # side. Not F = m ẍ = −k x, whose middle side is part of an equation: that stays ambiguous.
+            # side. Not F = m ẍ = −k x, whose middle side is part of an equation (see _chained).
             self.advance()
             rhs = self.side(label)
         if self.token.is_op("="):
@@ -281,8 +281,23 @@ class _Parser:
                 return first, sympy.Eq(quantity, sympy.Symbol(canonical_name(self.advance().value.raw)), evaluate=False)
             if self.token.kind == "end":
                 self.fail_here()  # p = m ẋ =: nothing after the last `=`
-            raise ParseFailure("too_many_equals", equals.start, equals.end)
+            chained = self._chained(rhs) if label is not None else None
+            if chained is None:
+                raise ParseFailure("too_many_equals", equals.start, equals.end)
+            return first, chained
         return first, sympy.Eq(lhs, rhs, evaluate=False)
+
+    def _chained(self, middle):
+        """``F = m ẍ = −k x``: a quantity named, then the equation of motion it stands in, which
+        the chain says too (m ẍ = −k x). Both sides are in the problem's names and one holds an
+        acceleration; anything else (``ω = √(g/l) = 3.13``) is None, the cursor left as it was."""
+        start = self.i
+        last = self.expr()
+        accelerating = any(d.derivative_count >= 2 for side in (middle, last) for d in side.atoms(sympy.Derivative))
+        if self.token.is_op("=") or not accelerating or self._defines(middle) or self._defines(last):
+            self.i = start
+            return None
+        return sympy.Eq(middle, last, evaluate=False)
 
     def _is_arbitrary_constant(self, i: int) -> bool:
         """Whether the tokens at ``i`` are a name for any constant (``const``, ``C₁``) that the
