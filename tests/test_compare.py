@@ -291,6 +291,8 @@ def test_feedback_shows_velocities_as_typed_never_as_internal_names():
          "A term is missing: a term in θ."),
         ("-(g/l) sin(theta) - b thetadot", "-(g/l) sin θ + b θ̇", "expression", {},
          "A term differs: the velocity-dependent term has the wrong sign."),
+        ("-(g/l) sin(theta) - 2 b cos(theta) thetadot / sin(theta)", "-(g/l) sin θ - b cot θ θ̇", "expression", {},
+         "A term differs: the velocity-dependent term in cot(θ) has the wrong factor."),
     ],
 )  # fmt: skip
 def test_one_term_missing_or_off_is_named_without_expanding_the_answer(
@@ -314,6 +316,31 @@ def test_a_term_written_with_another_function_is_named_as_typed():
     hoop = "1/2 m R^2 (thetadot^2 + omega^2 sin(theta)^2) + m g R cos(theta)"
     verdict = compare(hoop, "1/2 m R^2 (θ̇² + ω² cos²θ) + m g R cos θ", kind="lagrangian", coords=["theta"])
     assert verdict.feedback == ("A term is missing: a term in sin(θ).", "There is a term too many: a term in cos(θ).")
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "sentences"),
+    [
+        # φ̈ = −2 cot θ θ̇ φ̇ against the derived −2 cos θ θ̇ φ̇ / sin θ: the term is there, as cot θ
+        ("m l^2 sin(theta)^2 phiddot + 2 m l^2 sin(theta) cos(theta) thetadot phidot = 0", "φ̈ = −cot θ θ̇ φ̇",
+         ("A term differs: the velocity-dependent term in cot(θ) has the wrong factor.",)),
+        ("phiddot = -2 cot(theta) thetadot phidot", "sin θ φ̈ + cos θ θ̇ φ̇ = 0",
+         ("A term differs: the velocity-dependent term in cos(θ) has the wrong factor.",)),
+        ("phiddot = -2 tan(theta) thetadot phidot", "φ̈ = 2 sin θ θ̇ φ̇ / cos θ",
+         ("A term differs: the velocity-dependent term in cos(θ) has the wrong sign.",)),  # the first by name
+        # two terms off: named by sympy's terms, matched however the trigonometry is written
+        ("phiddot = -2 cot(theta) thetadot phidot - g/l sin(theta)",
+         "φ̈ = −2 cos θ θ̇ φ̇ / sin θ + 3 (g/l) sin θ + g/l",
+         ("A term differs: the term in sin(θ) has the wrong factor.",
+          "There is a term too many: a gravity term.")),
+        ("phiddot = -2 cot(theta) thetadot phidot - g/l sin(theta)", "φ̈ = −cot θ θ̇ φ̇",
+         ("A term is missing: a term in sin(θ).",
+          "A term differs: the velocity-dependent term in cot(θ) has the wrong factor.")),
+    ],
+)  # fmt: skip
+def test_a_term_in_cot_or_tan_is_the_same_term_in_sin_and_cos(expected, submitted, sentences):
+    verdict = compare(expected, submitted, kind="equation", **SPHERICAL)
+    assert verdict.feedback == sentences, verdict
 
 
 def test_a_term_the_answer_does_not_have_is_not_said_to_differ():

@@ -5,6 +5,7 @@ Contents:
     expand_terms(expr)                            multiplied out as sympy.expand does, without building the sum
     term_changes(expected, submitted, setting)    missing / extra / differing terms, from two such
     describe_term(term, setting)                  "a velocity-dependent term", "a term in cos(θ₁ − θ₂)"
+    in_sines_and_cosines(expr), as_written(shape, answer)   cot θ as cos θ / sin θ, and back as typed
     small_angle(expr, setting)                    sin u → u, cos u → 1 (and 1 − u²/2)
     taylor(expr, setting, order)                  expansion about the equilibrium q = q̇ = q̈ = 0
     symbolic_zero(expr, setting)                  sympy's last word, with the problem's assumptions
@@ -201,17 +202,50 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
         return []
     if len(expected_terms) > MAX_TERMS or len(submitted_terms) > MAX_TERMS:
         return []
+    # cot θ is cos θ / sin θ: a term is matched whichever the student wrote, and named as written
+    theirs = {in_sines_and_cosines(shape): (shape, coefficient) for shape, coefficient in submitted_terms.items()}
+    ours = {in_sines_and_cosines(shape) for shape in expected_terms}
     changes = []
     for shape, coefficient in expected_terms.items():
-        if shape not in submitted_terms:
+        written = theirs.get(in_sines_and_cosines(shape))
+        if written is None:
             changes.append(("missing_term", describe_term(shape, setting)))
-        elif submitted_terms[shape] != coefficient:
-            how = "has the wrong sign" if submitted_terms[shape] == -coefficient else "has the wrong factor"
-            changes.append(("term_differs", f"{describe_term(shape, setting, definite=True)} {how}"))
-    for shape in submitted_terms:
-        if shape not in expected_terms:
+        elif written[1] != coefficient:
+            how = "has the wrong sign" if written[1] == -coefficient else "has the wrong factor"
+            changes.append(("term_differs", f"{describe_term(written[0], setting, definite=True)} {how}"))
+    for key, (shape, _) in theirs.items():
+        if key not in ours:
             changes.append(("extra_term", describe_term(shape, setting)))
     return changes
+
+
+_AS_SINES_AND_COSINES = {
+    sympy.tan: lambda u: sympy.sin(u) / sympy.cos(u),
+    sympy.cot: lambda u: sympy.cos(u) / sympy.sin(u),
+    sympy.sec: lambda u: 1 / sympy.cos(u),
+    sympy.csc: lambda u: 1 / sympy.sin(u),
+}
+
+
+def in_sines_and_cosines(expr):
+    """``expr`` with tan, cot, sec and csc written as quotients of sin and cos: one form for a
+    term however its trigonometry was written (the very same object where there is none)."""
+    found = expr.atoms(*_AS_SINES_AND_COSINES)
+    if not found:
+        return expr
+    return expr.xreplace({f: _AS_SINES_AND_COSINES[type(f)](f.args[0]) for f in found})
+
+
+def as_written(shape, answer):
+    """``shape`` with its trigonometry in the functions ``answer`` uses where they differ only
+    in form: cos θ / sin θ as cot θ where the answer has cot θ, and the reverse."""
+    theirs = answer.atoms(*_TRIG)
+    unwritten = [f for f in shape.atoms(*_AS_SINES_AND_COSINES) if f not in theirs]
+    shape = shape.xreplace({f: _AS_SINES_AND_COSINES[type(f)](f.args[0]) for f in unwritten})
+    for f in theirs:
+        if type(f) in _AS_SINES_AND_COSINES and f not in shape.atoms(type(f)):
+            shape = shape.subs(_AS_SINES_AND_COSINES[type(f)](f.args[0]), f)
+    return shape
 
 
 def describe_term(term, setting: Setting, *, definite: bool = False) -> str:

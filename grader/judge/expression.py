@@ -23,6 +23,7 @@ from sympy.core.function import AppliedUndef
 from grader.judge.deadline import Deadline
 from grader.judge.diagnose import (
     MAX_TERMS,
+    as_written,
     describe_term,
     has_angle_functions,
     small_angle,
@@ -209,6 +210,8 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     (shape, multiple), setting = found[0], expected.setting
     if abs(multiple + 1) < 1e-9:
         return "missing_term", describe_term(shape, setting)
+    if _function_names(shape) - _function_names(s):  # the term in cot θ where the student wrote cot θ
+        shape = as_written(shape, expected.setting.plain(s))
     if _function_names(shape) - _function_names(s) or _symbol_names(shape) - _symbol_names(s):
         # cos²θ written for sin²θ is, up to a constant, sin²θ with the wrong sign; but the
         # student wrote no sin. Against (m₁ − m₂)g/(m₁ + m₂), ẍ = g has "the gravity term in
