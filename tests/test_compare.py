@@ -1101,3 +1101,25 @@ def test_a_small_angle_equation_written_with_approx_is_read_and_told_apart():
 def test_a_name_defined_with_a_number_before_it_is_put_in_place(submitted, status):
     damped = {"coords": ["x"], "known": ["m", "b", "k"]}
     assert compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **damped).status == status
+
+
+HOOP_EOM = "R thetaddot = R omega^2 sin(theta) cos(theta) - g sin(theta)"
+HOOP = {"coords": ["theta"], "known": ["m", "g", "R", "omega"]}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "sentences"),
+    [
+        # ω² sin θ for ω² sin θ cos θ: one term not right, named by the function both have
+        (HOOP_EOM, "θ̈ = ω² sin θ − (g/R) sin θ", HOOP, ("A term differs: a term in sin(θ) is not right.",)),
+        (SPHERICAL_EOM, "θ̈ = sin θ φ̇² − (g/l) sin θ; φ̈ = −2 cot θ θ̇ φ̇", SPHERICAL,
+         ("Your equation for θ is not right; equation 2 is right.",
+          "A term differs: a velocity-dependent term in sin(θ) is not right.")),
+        # nothing shared: a term lost, another gained
+        (HOOP_EOM, "θ̈ = ω² sin θ cos θ − (g/R) cos θ", HOOP,
+         ("A term is missing: a term in sin(θ).", "There is a term too many: a term in cos(θ).")),
+    ],
+)  # fmt: skip
+def test_a_term_that_lost_a_function_is_one_term_not_right(expected, submitted, setting, sentences):
+    kind = "equations" if ";" in submitted else "equation"
+    assert compare(expected, submitted, kind=kind, **setting).feedback == sentences

@@ -216,7 +216,28 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
     for key, (shape, _) in theirs.items():
         if key not in ours:
             changes.append(("extra_term", describe_term(shape, setting)))
-    return changes
+    return _one_term_changed(changes, expected_terms, theirs, ours, setting)
+
+
+def _one_term_changed(changes, expected_terms, theirs, ours, setting):
+    """One term lost and one gained that share a function of the coordinates, as ω² sin θ
+    written for ω² sin θ cos θ: one term that is not right, named by what they share. Said as
+    a term in cos θ missing and one in sin θ too many, it would send the student to look for a
+    cos θ they never wrote."""
+    lost = [shape for shape in expected_terms if in_sines_and_cosines(shape) not in theirs]
+    gained = [shape for key, (shape, _) in theirs.items() if key not in ours]
+    if len(changes) != 2 or len(lost) != 1 or len(gained) != 1:
+        return changes
+    shared = _angle_functions(lost[0], setting) & _angle_functions(gained[0], setting)
+    if not shared:
+        return changes
+    first, second = (describe_term(shape, setting, within=shared) for shape in (lost[0], gained[0]))
+    return [("term_differs", f"{first} is not right")] if first == second else changes
+
+
+def _angle_functions(shape, setting: Setting) -> set:
+    state = set(setting.state.values())
+    return {f for f in in_sines_and_cosines(shape).atoms(*_TRIG) if f.args[0].free_symbols & state}
 
 
 _AS_SINES_AND_COSINES = {
@@ -248,7 +269,7 @@ def as_written(shape, answer):
     return shape
 
 
-def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
+def describe_term(term, setting: Setting, *, definite: bool = False, within: set | None = None) -> str:
     """What kind of term this is, in words a student can act on.
 
     >>> s = Setting.build(["theta_1", "theta_2"], ["m", "g", "l"])
@@ -262,6 +283,8 @@ def describe_term(term, setting: Setting, *, definite: bool = False) -> str:
     velocities = {setting.velocity(q) for q in setting.coords}
     accelerations = {setting.acceleration(q) for q in setting.coords}
     trig = [f for f in term.atoms(*_TRIG) if f.args[0].free_symbols & set(setting.state.values())]
+    if within is not None:  # named by these alone (a function the term has, though maybe as cot)
+        trig = sorted(within, key=str)
     if trig:  # the first by its printed form, when there are several
         first = trig[0] if len(trig) == 1 else min(trig, key=str)
         within = f" in {to_text(setting.as_typed(first))}"  # θ̇, not theta__1
