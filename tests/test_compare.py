@@ -1123,3 +1123,18 @@ HOOP = {"coords": ["theta"], "known": ["m", "g", "R", "omega"]}
 def test_a_term_that_lost_a_function_is_one_term_not_right(expected, submitted, setting, sentences):
     kind = "equations" if ";" in submitted else "equation"
     assert compare(expected, submitted, kind=kind, **setting).feedback == sentences
+
+
+@pytest.mark.parametrize(
+    ("submitted", "sentence"),
+    [
+        ("m g cos θ + k (r − l0)", "A term differs: the term in r has the wrong sign."),
+        ("m g cos θ − 2 k (r − l0)", "A term differs: the term in r has the wrong factor."),
+        ("m g cos θ", "A term is missing: a term in r."),
+    ],
+)
+def test_a_term_written_as_a_product_with_a_sum_is_named_as_one_term(submitted, sentence):
+    # expanded, k(r − l₀) is two terms, k r and k l₀; the student wrote, and got wrong, one
+    spring = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"]}
+    verdict = compare("m g cos(theta) - k (r - l0)", submitted, **spring)
+    assert verdict.feedback == (sentence,)

@@ -196,15 +196,23 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
         expected.compile(s).many(points),
     )
     difference, scale = s_values - e_values, np.maximum(e_scales, s_scales)
-    found = []
-    for number, (shape, coefficient) in enumerate(shapes.items()):
-        if not shape.free_symbols:
-            continue  # any constant difference is a multiple of a number: the numbers cannot say which
-        term = expected.compiled(f"{key}, term {number}{' varying' if varying else ''}", coefficient * shape)
-        t_values, t_scales = term.many(points)
-        multiple = _multiple_of(difference, t_values, np.maximum(scale, t_scales), varying is not None)
-        if multiple is not None:
-            found.append((shape, multiple))
+
+    def multiples(candidates: list, name: str) -> list:
+        found = []
+        for number, (shape, coefficient) in enumerate(candidates):
+            if not shape.free_symbols:
+                continue  # any constant difference is a multiple of a number: the numbers cannot say which
+            term = expected.compiled(f"{key}, {name} {number}{' varying' if varying else ''}", coefficient * shape)
+            t_values, t_scales = term.many(points)
+            multiple = _multiple_of(difference, t_values, np.maximum(scale, t_scales), varying is not None)
+            if multiple is not None:
+                found.append((shape, multiple))
+        return found
+
+    found = multiples(list(shapes.items()), "term")
+    if not found:
+        # k(r − l₀) with the wrong sign is two expanded terms off, but one term as the answer is written
+        found = multiples(_written_terms(e, shapes, varying), "written term")
     if len(found) != 1:
         return None
     (shape, multiple), setting = found[0], expected.setting
@@ -220,6 +228,16 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
         return None
     how = "has the wrong sign" if abs(multiple + 2) < 1e-9 else "has the wrong factor"
     return "term_differs", f"{describe_term(shape, setting, definite=True)} {how}"
+
+
+def _written_terms(e, shapes: dict, varying: set | None) -> list:
+    """The terms of ``e`` as written that expanding splits (k(r − l₀)), as (shape, coefficient)."""
+    written = []
+    for term in sympy.Add.make_args(e):
+        coefficient, shape = term.as_coeff_Mul()
+        if shape not in shapes and shape.has(sympy.Add) and (varying is None or shape.free_symbols & varying):
+            written.append((shape, coefficient))
+    return written
 
 
 def _function_names(expr) -> set[str]:
