@@ -24,7 +24,6 @@ from fractions import Fraction
 
 import mpmath
 import numpy as np
-import sympy
 
 from grader.judge.deadline import Deadline
 from grader.judge.numeric import FLOAT_DIFFERENT, UNDEFINED, Closeness, Compiled, closeness
@@ -210,23 +209,25 @@ def short_fraction(x: float) -> Fraction | None:
 
 
 def nice_number(k: complex) -> str | None:
-    """A short exact form of ``k`` (1/2, 2, -3/4, 2π, π/2), or None when it has none.
+    """A short exact form of ``k`` (1/2, 2, -3/4, 2π, π/2, 1/(2π)), or None when it has none.
 
     >>> nice_number(0.5), nice_number(2 * 3.141592653589793), nice_number(0.123456789)
     ('1/2', '2π', None)
+    >>> nice_number(1 / (2 * 3.141592653589793))
+    '1/(2π)'
     """
     if abs(k.imag) > 1e-9 * abs(k):
         return None
     value = k.real
-    for unit, suffix in ((1.0, ""), (float(sympy.pi), "π")):
-        fraction = short_fraction(value / unit)
-        if fraction is not None:
-            if suffix and fraction.denominator != 1:
-                numerator = (
-                    "" if fraction.numerator == 1 else "-" if fraction.numerator == -1 else str(fraction.numerator)
-                )
-                return f"{numerator}π/{fraction.denominator}"
-            if suffix:
-                return f"{'' if fraction.numerator == 1 else fraction.numerator}π"
-            return str(fraction)
+    fraction = short_fraction(value)
+    if fraction is not None:
+        return str(fraction)
+    fraction = short_fraction(value / math.pi)
+    if fraction is not None:  # 2π, π/2, -3π/4
+        numerator = "" if fraction.numerator == 1 else "-" if fraction.numerator == -1 else str(fraction.numerator)
+        return f"{numerator}π" if fraction.denominator == 1 else f"{numerator}π/{fraction.denominator}"
+    fraction = short_fraction(value * math.pi)
+    if fraction is not None:  # 1/(2π): a frequency for an angular one
+        below = "π" if fraction.denominator == 1 else f"({fraction.denominator}π)"
+        return f"{fraction.numerator}/{below}"
     return None
