@@ -152,7 +152,8 @@ FEEDBACK = [
     ("1/2 m l^2 thetadot^2", "-1/2 m l^2 θ̇^2", "expression", PENDULUM, "sign", "The overall sign is wrong."),
     ("sqrt(g/l)", "2 π √(g/l)", "expression", PENDULUM, "factor",
      "Your answer is off by a constant factor: missing a factor 1/(2π)?"),  # ω for a frequency, the other way
-    ("sqrt(g/l)", "√(g/l)/π", "expression", PENDULUM, "factor", "Your answer is off by a constant factor: missing a factor π?"),
+    ("sqrt(g/l)", "√(g/l)/π", "expression", PENDULUM, "factor",
+     "Your answer is off by a constant factor: missing a factor π?"),
     (L_PENDULUM, "1/2 m l^2 θ̇^2 - m g l cos θ", "lagrangian", PENDULUM, "t_plus_v",
      "It looks like you wrote L = T + V; the Lagrangian is L = T − V."),
     (L_PENDULUM, "m l^2 θ̇^2 + 2 m g l cos θ", "lagrangian", PENDULUM, "normalization",

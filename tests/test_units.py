@@ -160,6 +160,9 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
         (r"2.006\,\mathrm{s}", "equivalent", ("Correct.",), "2.006"),
         ("2.006 seconds", "equivalent", ("Correct.",), "2.006"),
         ("2006 ms", "equivalent", ("Correct.", "Read as 2.006 s."), "2.006"),
+        ("2.006 sec", "equivalent", ("Correct.",), "2.006"),  # seconds, not the secant
+        ("2.006secs.", "equivalent", ("Correct.",), "2.006"),
+        ("2006 msec", "equivalent", ("Correct.", "Read as 2.006 s."), "2.006"),
         ("0.03343 min", "equivalent", ("Correct.", "Read as 2.0058 s."), "2.0058"),
         ("3 min", "not_equivalent", ("Not within the accepted tolerance.", "Read as 180 s."), "180"),
         ("2.006 m", "not_equivalent", ("Your answer is in m, but the quantity asked for is measured in s.",),
@@ -172,6 +175,11 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
 def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback, read_as):
     verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
     assert (verdict.status, verdict.feedback, verdict.read_as) == (status, feedback, read_as)
+
+
+def test_sec_is_the_secant_where_no_unit_is_asked_for():
+    assert compare("2", "2 sec", kind="number").status == "invalid"  # sec needs an argument
+    assert compare("1 + 1/cos(1)", "1 + sec 1", kind="number", unit="s").status == "equivalent"
 
 
 def test_without_a_unit_a_number_with_one_is_for_a_person():

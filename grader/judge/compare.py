@@ -156,6 +156,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
             if spec.parsed:
                 names = sorted(expected.names | {symbol.name for symbol, _ in given})
                 submitted, comma = _decimal_point(submitted) if spec.name == "number" else (submitted, None)
+                if spec.name == "number" and expected.option("unit"):
+                    submitted = _seconds(submitted)
                 answer = parse_answer(submitted, coords=expected.setting.coords, known=names, deadline=deadline)
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
@@ -406,6 +408,16 @@ def _decimal_point(submitted: str) -> tuple[str, tuple | None]:
     whole, fraction, rest = match.groups()
     number = f"{whole}.{fraction}"
     return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
+
+
+# ``2.006 sec``, ``2006 msec``: after a number, at the end, the word for seconds, not the secant
+_SEC = re.compile(r"([0-9.]\s*)(m?)secs?\.?\s*$")
+
+
+def _seconds(submitted: str) -> str:
+    """``2.006 sec`` as ``2.006 s`` where a number with a unit is asked for: the parser would take
+    ``sec`` for the secant, missing its argument."""
+    return _SEC.sub(r"\1\2s", submitted) if len(submitted) < 200 else submitted
 
 
 def _unit(text: str) -> tuple[Fraction, tuple]:
