@@ -905,6 +905,29 @@ def test_a_choice_may_be_written_as_the_options_words(expected, submitted, statu
     assert (verdict.feedback[-1] == f"Read as the option you wrote out: {read}.") == (read is not None)
 
 
+HOOP_CONSTRAINT = (
+    ("a", "scleronomic, since the hoop's shape and size are fixed"),
+    ("b", "rheonomic, since the constraint depends explicitly on time"),
+    ("c", "it is not holonomic, so neither applies"),
+    ("d", "rheonomic because the hoop turns"),
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "read"),
+    [
+        ("scleronomic", "not_equivalent", "a"),  # the option's claim, without its reason
+        ("It is not holonomic", "not_equivalent", "c"),
+        ("rheonomic", "invalid", None),  # the claim of two options names neither
+        ("since the constraint depends explicitly on time", "invalid", None),  # a reason is no claim
+    ],
+)
+def test_a_choice_may_be_written_as_its_claim_without_the_reason(submitted, status, read):
+    verdict = compare("b", submitted, kind="choice", options=HOOP_CONSTRAINT)
+    assert verdict.status == status
+    assert (verdict.feedback[-1] == f"Read as the option you wrote out: {read}.") == (read is not None)
+
+
 def test_several_choices_may_be_written_out_each_between_commas():
     options = (("a", "holonomic"), ("b", "scleronomic"), ("c", "rheonomic"))
     verdict = compare("a, b", "Holonomic, scleronomic", kind="choice", options=options, multiple=True)

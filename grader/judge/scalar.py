@@ -120,19 +120,26 @@ def _option_texts(options) -> dict[str, str]:
 
 def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[str] | None:
     """The labels whose options a student wrote out in words, or None: the whole answer one
-    option's words, or (where several may be chosen) each piece between commas one's."""
+    option's words, or its claim before the reason (``rheonomic`` for "rheonomic, since the
+    constraint depends explicitly on time"); or (where several may be chosen) each piece
+    between commas one's."""
     if len(submitted) > MAX_CHOICE_LENGTH:
         return None
     by_words: dict[str, str | None] = {}
     for label, text in texts.items():
-        words = _plain(text)
-        if words:
-            by_words[words] = None if words in by_words else label  # two options alike name neither
+        claim = _REASON.split(text, maxsplit=1)[0]
+        for words in {_plain(text), _plain(claim)}:
+            if words:
+                by_words[words] = None if words in by_words else label  # two options alike name neither
     whole = by_words.get(_plain(submitted))
     if whole or not multiple:
         return [whole] if whole else None
     labels = [by_words.get(_plain(piece)) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
     return labels if labels and all(labels) else None
+
+
+# where an option's reason begins: "rheonomic, since …", "holonomic because …"
+_REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
 
 
 def _plain(text: str) -> str:
