@@ -294,7 +294,7 @@ def test_feedback_shows_velocities_as_typed_never_as_internal_names():
         ("m g l (1 - cos(theta)) + 1/2 k theta^2", "-m g l cos θ + 7", "expression", {"up_to_constant": True},
          "A term is missing: a term in θ."),
         ("-(g/l) sin(theta) - b thetadot", "-(g/l) sin θ + b θ̇", "expression", {},
-         "A term differs: the velocity-dependent term has the wrong sign."),
+         "A term differs: the velocity-dependent term in θ̇ has the wrong sign."),
         ("-(g/l) sin(theta) - 2 b cos(theta) thetadot / sin(theta)", "-(g/l) sin θ - b cot θ θ̇", "expression", {},
          "A term differs: the velocity-dependent term in cot(θ) has the wrong factor."),
     ],
@@ -1165,3 +1165,24 @@ def test_a_term_written_as_a_product_with_a_sum_is_named_as_one_term(submitted, 
     spring = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"]}
     verdict = compare("m g cos(theta) - k (r - l0)", submitted, **spring)
     assert verdict.feedback == (sentence,)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "sentences"),
+    [
+        # three velocity-dependent terms: the student's own is named by its velocities
+        ("m l^2 alphadot^2 + 1/2 m l^2 betadot^2 + m l^2 alphadot betadot cos(alpha - beta)",
+         "½ m l² α̇² + ½ m l² β̇² + m l² α̇ β̇ cos(α − β)", "lagrangian",
+         ("A term differs: the velocity-dependent term in α̇² has the wrong factor.",)),
+        ("m xddot + b xdot + k x = 0", "m ẍ + b ẋ² + k x = 0", "equation",
+         ("A term differs: a velocity-dependent term in ẋ² is not right.",)),  # one term changed
+        ("1/2 m xdot^2 - 1/2 k x^2", "½ m ẋ² − ½ k x² + b x ẋ", "expression",
+         ("There is a term too many: a velocity-dependent term in ẋ.",)),  # (a total derivative in L)
+        # a term the answer lacks is not described by its velocities: that would give it away
+        ("1/2 m xdot^2 + b x xdot - 1/2 k x^2", "½ m ẋ² − ½ k x²", "expression",
+         ("A term is missing: a velocity-dependent term.",)),
+    ],
+)  # fmt: skip
+def test_the_students_own_velocity_dependent_term_is_named_by_its_velocities(expected, submitted, kind, sentences):
+    setting = {"coords": ["x", "alpha", "beta"], "known": ["m", "l", "b", "k"]}
+    assert compare(expected, submitted, kind=kind, **setting).feedback == sentences

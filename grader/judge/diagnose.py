@@ -212,22 +212,25 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             changes.append(("missing_term", describe_term(shape, setting)))
         elif written[1] != coefficient:
             how = "has the wrong sign" if written[1] == -coefficient else "has the wrong factor"
-            changes.append(("term_differs", f"{describe_term(written[0], setting, definite=True)} {how}"))
+            changes.append(("term_differs", f"{describe_term(written[0], setting, definite=True, own=True)} {how}"))
     for key, (shape, _) in theirs.items():
         if key not in ours:
-            changes.append(("extra_term", describe_term(shape, setting)))
+            changes.append(("extra_term", describe_term(shape, setting, own=True)))
     return _one_term_changed(changes, expected_terms, theirs, ours, setting)
 
 
 def _one_term_changed(changes, expected_terms, theirs, ours, setting):
-    """One term lost and one gained that share a function of the coordinates, as ω² sin θ
-    written for ω² sin θ cos θ: one term that is not right, named by what they share. Said as
-    a term in cos θ missing and one in sin θ too many, it would send the student to look for a
-    cos θ they never wrote."""
+    """One term lost and one gained of the same kind: one term that is not right, named as the
+    student wrote it (b ẋ² for b ẋ: the velocity-dependent term in ẋ²). Where they share a
+    function of the coordinates, as ω² sin θ written for ω² sin θ cos θ, they are named by it:
+    said as a term in cos θ missing and one in sin θ too many, it would send the student to
+    look for a cos θ they never wrote."""
     lost = [shape for shape in expected_terms if in_sines_and_cosines(shape) not in theirs]
     gained = [shape for key, (shape, _) in theirs.items() if key not in ours]
     if len(changes) != 2 or len(lost) != 1 or len(gained) != 1:
         return changes
+    if describe_term(lost[0], setting) == describe_term(gained[0], setting):
+        return [("term_differs", f"{describe_term(gained[0], setting, own=True)} is not right")]
     shared = _angle_functions(lost[0], setting) & _angle_functions(gained[0], setting)
     if not shared:
         return changes
@@ -269,7 +272,9 @@ def as_written(shape, answer):
     return shape
 
 
-def describe_term(term, setting: Setting, *, definite: bool = False, within: set | None = None) -> str:
+def describe_term(
+    term, setting: Setting, *, definite: bool = False, within: set | None = None, own: bool = False
+) -> str:
     """What kind of term this is, in words a student can act on.
 
     >>> s = Setting.build(["theta_1", "theta_2"], ["m", "g", "l"])
@@ -293,6 +298,8 @@ def describe_term(term, setting: Setting, *, definite: bool = False, within: set
     if symbols & accelerations:
         return f"{article} term with an acceleration{within}"
     if symbols & velocities:
+        if own and not within:  # the student's own term: which velocities, as ½ m l² α̇² beside ½ m l² β̇²
+            within = _velocities(term, velocities, setting)
         return f"{article} velocity-dependent term{within}"
     if trig:
         return f"{article} term{within}"
@@ -305,6 +312,18 @@ def describe_term(term, setting: Setting, *, definite: bool = False, within: set
     coordinates = sorted(symbols & set(setting.state.values()), key=str)
     shown = [unicode_name(s.name) if "__" not in s.name else to_text(setting.as_typed(s)) for s in coordinates]
     return f"{article} term in {', '.join(shown)}"
+
+
+_SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _velocities(term, velocities: set, setting: Setting) -> str:
+    """ " in α̇²", " in θ̇₁ θ̇₂": the velocities a term is a product of, as typed; "" if it is not one."""
+    powers = [(v, p) for v, p in term.as_powers_dict().items() if v in velocities]
+    if not powers or not all(p.is_Integer and p > 0 for _, p in powers):
+        return ""
+    shown = [to_text(setting.as_typed(v)) + ("" if p == 1 else str(p).translate(_SUPERSCRIPT)) for v, p in powers]
+    return " in " + " ".join(sorted(shown))
 
 
 def has_angle_functions(expr, setting: Setting) -> bool:

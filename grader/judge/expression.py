@@ -227,7 +227,7 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
         # is there: naming the terms as typed (sympy's comparison) says more.
         return None
     how = "has the wrong sign" if abs(multiple + 2) < 1e-9 else "has the wrong factor"
-    return "term_differs", f"{describe_term(shape, setting, definite=True)} {how}"
+    return "term_differs", f"{describe_term(shape, setting, definite=True, own=True)} {how}"
 
 
 def _written_terms(e, shapes: dict, varying: set | None) -> list:
