@@ -80,6 +80,8 @@ FUNCTIONS = [
     ("sin |a| + |b|^2", sin(sympy.Abs(a)) + sympy.Abs(b) ** 2),
     ("\\left| a \\right| + \\lvert b \\rvert + \\vert c \\vert", sympy.Abs(a) + sympy.Abs(b) + sympy.Abs(c)),
     ("(|a| + 1)", sympy.Abs(a) + 1),
+    # sine as Spanish and Portuguese write it, and babel's \sen
+    ("sen a + senh b + arcsen c + \\sen d", sin(a) + sympy.sinh(b) + sympy.asin(c) + sin(d)),
     # dry friction's direction: −μ m g sign(ẋ)
     ("sign(a) + sgn(b) + signum(c)", sympy.sign(a) + sympy.sign(b) + sympy.sign(c)),
     ("\\operatorname{sgn}(a - b)", sympy.sign(a - b)),

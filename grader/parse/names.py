@@ -82,6 +82,7 @@ FUNCTION_NAMES: dict[str, str] = {
     "acosh": "acosh", "arcosh": "acosh", "arccosh": "acosh", "atanh": "atanh", "artanh": "atanh", "arctanh": "atanh",
     "exp": "exp", "log": "log", "ln": "log", "sqrt": "sqrt", "abs": "abs",
     "sign": "sign", "sgn": "sign", "signum": "sign",
+    "sen": "sin", "senh": "sinh", "arcsen": "asin",  # sine as Spanish and Portuguese write it
 }  # fmt: skip
 
 _TRAILING_DIGITS = re.compile(r"^([A-Za-z]+)_?([0-9]+)$")

@@ -156,6 +156,7 @@ _LATEX_FUNCTIONS = {
     "arccos": "acos",
     "arctan": "atan",
     "ln": "log",
+    "sen": "sin",  # babel's Spanish \sen
 }
 # names followed by an argument in plain notation; Derivative(θ(t), t) as sympy prints it
 _CALLABLE = FUNCTION_NAMES | {"diff": "diff", "Derivative": "diff"}
