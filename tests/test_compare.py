@@ -84,7 +84,10 @@ def test_author_mistakes_in_the_call_raise_author_error(call, message):
 def test_symbols_the_problem_does_not_define_are_named():
     verdict = compare(L_PENDULUM, "1/2 m r^2 thetadot^2 + m g l cos(theta)", kind="lagrangian", **PENDULUM)
     assert verdict.status == "not_equivalent"
-    assert verdict.feedback == ("Your answer uses `r`, which this problem does not define (it uses g, l, m, θ).",)
+    assert verdict.feedback == (
+        "Your answer uses `r`, which this problem does not define (it uses g, l, m, θ)."
+        " Write your answer in those, or say what it stands for: …, where r = ….",
+    )
     assert verdict.diagnosis == "undefined_symbol"
 
 
@@ -559,6 +562,12 @@ def test_undefined_names_are_listed_in_order_and_counted_past_six():
     assert few.feedback[0].startswith("Your answer uses `r`, `x₂` and `x₁₀`, which")
     many = compare("m l^2 thetadot", " + ".join(f"x{i}" for i in range(60)), **PENDULUM)
     assert many.feedback[0].startswith("Your answer uses `x₀`, `x₁`, `x₂`, `x₃`, `x₄` and 55 more, which")
+    # the way out the feedback offers is one the checker takes: the name defined in the answer
+    assert many.feedback[0].endswith("or say what each stands for: …, where x₀ = ….")
+    defined = compare("thetaddot = -g/l sin(theta)", "θ̈ = −ω₀² sin θ", kind="equation", **PENDULUM)
+    assert defined.feedback[0].endswith("or say what it stands for: …, where ω₀ = ….")
+    written = compare("thetaddot = -g/l sin(theta)", "θ̈ = −ω₀² sin θ, where ω₀ = √(g/l)", kind="equation", **PENDULUM)
+    assert written.equivalent
 
 
 def test_partial_derivatives_elsewhere_are_refused_with_a_message():

@@ -470,7 +470,9 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
         return Outcome(
             "not_equivalent", 0.0, "undefined_symbol",
-            {"names": _listing(undefined), "defined": expected.setting.describe(defined)}, method="symbols",
+            {"names": _listing(undefined), "defined": expected.setting.describe(defined),
+             "which": "it" if len(undefined) == 1 else "each", "first": unicode_name(min(undefined, key=_natural))},
+            method="symbols",
         )  # fmt: skip
     wanted, given = spec.shape, answer.kind
     if wanted in ("equation", "equations") and given == "expression":

@@ -43,7 +43,8 @@ FEEDBACK: dict[str, str] = {
     "some_signs": "Your answer is right only for some signs of {names}, which may be negative here:"
     " remember that √(x²) is |x|, not x.",
     "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",
-    "undefined_symbol": "Your answer uses {names}, which this problem does not define (it uses {defined}).",
+    "undefined_symbol": "Your answer uses {names}, which this problem does not define (it uses {defined})."
+    " Write your answer in those, or say what {which} stands for: …, where {first} = ….",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
     "expected_one_equation": "One equation is asked for here; your answer has {count}.",
     "expected_expression": "An expression is asked for here, but your answer is an equation.",
