@@ -484,6 +484,29 @@ def test_a_lagrangian_may_define_its_own_names():
     assert wrong.feedback == ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.",)
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status"),
+    [
+        # an expression, unnamed, then the definitions of its names: as the feedback on an undefined name offers
+        (L_PENDULUM, "½ m v² + m g l cos θ, where v = l θ̇", "lagrangian", "equivalent"),
+        (L_PENDULUM, "½ m v² + m g l cos θ, v = l θ̇", "lagrangian", "equivalent"),
+        (L_PENDULUM, "½ m v² + m g l cos θ\nv = l θ̇", "lagrangian", "equivalent"),
+        (L_PENDULUM, "½ m v² + m g l cos θ, where v = 2 l θ̇", "lagrangian", "not_equivalent"),
+        ("sqrt(g/l)", "ω₀, where ω₀ = √(g/l)", "expression", "equivalent"),
+        # an equation is asked for: an expression, whatever it defines, is not one
+        (EOM_PENDULUM, "l θ̈ + g s, where s = sin θ", "equation", "not_equivalent"),
+        # a definition the expression does not use, or a system's equation without its `=`
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, where u = l θ̇", "lagrangian", "invalid"),
+        (EOM_PENDULUM, "θ̈ + (g/l) sin θ; θ = 0", "equations", "invalid"),
+    ],
+)
+def test_an_expression_may_be_followed_by_the_definitions_of_its_names(expected, submitted, kind, status):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert verdict.status == status, verdict
+    if status == "invalid":
+        assert verdict.feedback[0].startswith("The first item of your answer has no `=`.")
+
+
 def test_a_system_may_define_its_own_names():
     double = {"coords": ["theta_1", "theta_2"], "known": ["m", "g", "l"]}
     expected = (

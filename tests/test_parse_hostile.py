@@ -160,6 +160,8 @@ HOSTILE = [
     ("F = m θ̈ = −g = 0", "too_many_equals"),  # a chain past the named equation of motion
     ("F = m θ̇ = −m g", "too_many_equals"),  # no acceleration: no equation of motion named
     ("ω = √(g/l) = 3.13", "too_many_equals"),
+    ("x = 1; m g", "not_an_equation"),  # an expression only first, before the definitions of its names
+    ("9,81 θ + l = 0", "comma"),  # a decimal comma, not an expression and a definition
     ("p = m g =", "unexpected_end"),  # a label, a side, and nothing after the last `=`
     ("m θ = m =", "unexpected_end"),
     ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),

@@ -35,7 +35,7 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import SI_UNITS, Mixed, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
-from grader.parse import TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
+from grader.parse import ANSWER, TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
@@ -162,6 +162,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
+                if _loose_definitions(answer):
+                    return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
                 typed, (answer, used) = answer, _with_given(answer, given)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer = _unwrap_named(answer, spec, expected)
@@ -313,6 +315,12 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
     return ParsedAnswer(answer.text, tuple(items), "equations")
 
 
+def _loose_definitions(answer: ParsedAnswer) -> bool:
+    """Whether an expression came with equations that define none of its names (``½ m v²; u = ẋ``),
+    or an equation of a system lacks its ``=``: what is left after the definitions are put in place."""
+    return answer.kind == "equations" and answer.value[0].lhs == ANSWER
+
+
 def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sympy.Expr] | None:
     """(name, its value) when ``item`` defines a name that another of ``items`` uses; else None.
     The name may carry a power and a number: ``ω₀² = k/m``, ``2γ = b/m``."""
@@ -367,6 +375,8 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` or ``ẍ = …`` for an expression: the name is not
     the answer. Nor is ``T − V = …``, a left side only in names the problem does not define."""
     value = answer.value
+    if isinstance(value, sympy.Eq) and value.lhs == ANSWER:
+        return ParsedAnswer(answer.text, value.rhs, "expression")  # ½ m v², where v = l θ̇: an expression
     if spec.shape != "expression" or not isinstance(value, sympy.Eq) or value.rhs.has(value.lhs):
         return answer
     named = isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)

@@ -48,6 +48,8 @@ FEEDBACK: dict[str, str] = {
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
     "expected_one_equation": "One equation is asked for here; your answer has {count}.",
     "expected_expression": "An expression is asked for here, but your answer is an equation.",
+    "loose_definitions": "The first item of your answer has no `=`. An expression may be followed only by"
+    " definitions of the names it uses (…, where v = l θ̇); in a list of equations, every item needs an `=`.",
     "expected_system": "A system of {count} equations is asked for here (one per coordinate: {coords}).",
     "missing_equation": "The equation for {coords} is missing.",
     "extra_equation": "You gave {given} equations; this system needs exactly {count}, one per coordinate.",

@@ -5,6 +5,7 @@ Contents:
     ParsedAnswer                         the answer as sympy objects, and how to show it back
     Refusal                              why an answer could not be read, and where
     TIME                                 the symbol t the coordinates depend on
+    ANSWER                               the name an expression stands under beside its definitions
     too_many_digits(number)              whether a constant is beyond the parser's cap on digits
     within_diff_budget(value, order)     whether a value is small enough to differentiate in t
 
@@ -21,12 +22,21 @@ from functools import cached_property
 
 import sympy
 
-from grader.parse.grammar import TIME, Context, parse_tokens, too_many_digits, within_diff_budget
+from grader.parse.grammar import ANSWER, TIME, Context, parse_tokens, too_many_digits, within_diff_budget
 from grader.parse.messages import ParseFailure, Refusal, refusal
 from grader.parse.readback import to_latex, to_mathml, to_text
 from grader.parse.tokens import LIMITS, tokenize
 
-__all__ = ["LIMITS", "TIME", "ParsedAnswer", "Refusal", "parse_answer", "too_many_digits", "within_diff_budget"]
+__all__ = [
+    "ANSWER",
+    "LIMITS",
+    "TIME",
+    "ParsedAnswer",
+    "Refusal",
+    "parse_answer",
+    "too_many_digits",
+    "within_diff_budget",
+]
 
 
 @dataclass(frozen=True)

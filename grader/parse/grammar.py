@@ -45,9 +45,12 @@ from grader.parse.names import (
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
-__all__ = ["TIME", "Context", "parse_tokens", "too_many_digits"]
+__all__ = ["ANSWER", "TIME", "Context", "parse_tokens", "too_many_digits"]
 
 TIME = sympy.Symbol("t", real=True)
+# The name an expression followed by the definitions of its names stands under: ``½ m v², v = l θ̇``
+# reads as answer = ½ m v²; v = l θ̇, as ``L = ½ m v², v = l θ̇`` reads L = …
+ANSWER = sympy.Symbol("answer")
 
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
 _ANGLE_FUNCTIONS = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
@@ -200,6 +203,9 @@ class _Parser:
             self.fail_here()
         if len(items) == 1:
             return items[0][1]
+        (token, first), rest = items[0], items[1:]
+        if not isinstance(first, sympy.Eq) and all(isinstance(item, sympy.Eq) for _, item in rest):
+            items[0] = (token, sympy.Eq(ANSWER, first, evaluate=False))  # ½ m v², where v = l θ̇
         for index, (token, item) in enumerate(items, start=1):
             if not isinstance(item, sympy.Eq):
                 raise ParseFailure("not_an_equation", token.start, token.end, index=index)
@@ -917,7 +923,11 @@ def _as_system(tokens: list[Token]) -> list[Token]:
     pieces = _split_at(
         tokens, top, lambda token: token.is_op(",", ";") or token.kind == "sep" or _is_joining_word(token)
     )
-    if len(pieces) > 1 and all(any(tokens[j].is_op("=") for j in piece if j in top) for piece in pieces):
+    equations = [any(tokens[j].is_op("=") for j in piece if j in top) for piece in pieces]
+    # every piece an equation; or an expression, then definitions (½ m v², where v = l θ̇), each of
+    # a name: 9,81 θ + θ̈ = 0 is a decimal comma, which the parser then asks to be a point
+    defined = all(tokens[piece[0]].kind == "name" for piece in pieces[1:])
+    if len(pieces) > 1 and all(equations[1:]) and (equations[0] or defined):
         joins = {j for j in top if tokens[j].is_op(",") or _is_joining_word(tokens[j])}
         tokens = [Token("sep", ";", t.start, t.end) if j in joins else t for j, t in enumerate(tokens)]
     items = _split_at(tokens, top, lambda token: token.is_op(";") or token.kind == "sep")
