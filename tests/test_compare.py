@@ -174,6 +174,10 @@ FEEDBACK = [
     # θ̈₁'s coefficient holds cos(θ₁ − θ₂): solved for θ̈₂ instead, each term stays as the student wrote it
     (EOM_DOUBLE_2, EOM_DOUBLE_2.replace("- l1", "+ l1"), "equation", DOUBLE, "term_differs",
      "A term differs: the velocity-dependent term in sin(θ₁ - θ₂) has the wrong sign."),
+    # Newton's equations for the bob, with the string's tension T still in them
+    (EOM_PENDULUM, "m l θ̈ = −m g sin θ; 0 = T − m g cos θ − m l θ̇²", "equation", PENDULUM, "eliminate_unknowns",
+     "One equation is asked for here; your answer has 2, with `T`, which this problem does not define."
+     " Eliminate it between your equations, to leave one in the problem's own names."),
     (EOM_PENDULUM, "m l^2 θ̈ + m g l sin θ", "equation", PENDULUM, "expected_equation",
      "An equation (with `=`) is asked for here, but your answer is an expression."),
     ("sqrt(g/l)", "omega = sqrt(g/l) = 1", "expression", PENDULUM, None, None),

@@ -476,6 +476,14 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
         # grade, so a person decides, and a student checking first is told to write the number.
         return Outcome("invalid", 0.0, "not_a_number", {"names": _listing([s.name for s in used])}, "symbols")
     undefined = [symbol.name for symbol in used if symbol.name not in expected.names]
+    if undefined and spec.shape == "equation" and answer.kind == "equations":
+        # m₁ẍ = m₁g − T; m₂ẍ = T − m₂g: Newton's equations, with the string's tension still in them
+        details = {
+            "count": len(answer.value),
+            "names": _listing(undefined),
+            "them": "it" if len(undefined) == 1 else "them",
+        }
+        return Outcome("not_equivalent", 0.0, "eliminate_unknowns", details, method="symbols")
     if undefined:
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
         return Outcome(

@@ -47,6 +47,8 @@ FEEDBACK: dict[str, str] = {
     " Write your answer in those, or say what {which} stands for: …, where {first} = ….",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
     "expected_one_equation": "One equation is asked for here; your answer has {count}.",
+    "eliminate_unknowns": "One equation is asked for here; your answer has {count}, with {names}, which this problem"
+    " does not define. Eliminate {them} between your equations, to leave one in the problem's own names.",
     "expected_expression": "An expression is asked for here, but your answer is an equation.",
     "loose_definitions": "The first item of your answer has no `=`. An expression may be followed only by"
     " definitions of the names it uses (…, where v = l θ̇); in a list of equations, every item needs an `=`.",
