@@ -204,37 +204,38 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
         return []
     # cot θ is cos θ / sin θ: a term is matched whichever the student wrote, and named as written
     theirs = {in_sines_and_cosines(shape): (shape, coefficient) for shape, coefficient in submitted_terms.items()}
-    ours = {in_sines_and_cosines(shape) for shape in expected_terms}
-    changes = []
-    for shape, coefficient in expected_terms.items():
-        written = theirs.get(in_sines_and_cosines(shape))
+    ours = {in_sines_and_cosines(shape): (shape, coefficient) for shape, coefficient in expected_terms.items()}
+    changes, lost, gained = [], [], []
+    for key, (shape, coefficient) in ours.items():
+        written = theirs.get(key)
         if written is None:
+            lost.append(shape)
             changes.append(("missing_term", describe_term(shape, setting)))
         elif written[1] != coefficient:
             how = "has the wrong sign" if written[1] == -coefficient else "has the wrong factor"
             changes.append(("term_differs", f"{describe_term(written[0], setting, definite=True, own=True)} {how}"))
     for key, (shape, _) in theirs.items():
         if key not in ours:
+            gained.append(shape)
             changes.append(("extra_term", describe_term(shape, setting, own=True)))
-    return _one_term_changed(changes, expected_terms, theirs, ours, setting)
+    if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
+        return _one_term_changed(changes, lost[0], gained[0], setting)
+    return changes
 
 
-def _one_term_changed(changes, expected_terms, theirs, ours, setting):
-    """One term lost and one gained of the same kind: one term that is not right, named as the
-    student wrote it (b ẋ² for b ẋ: the velocity-dependent term in ẋ²). Where they share a
-    function of the coordinates, as ω² sin θ written for ω² sin θ cos θ, they are named by it:
-    said as a term in cos θ missing and one in sin θ too many, it would send the student to
-    look for a cos θ they never wrote."""
-    lost = [shape for shape in expected_terms if in_sines_and_cosines(shape) not in theirs]
-    gained = [shape for key, (shape, _) in theirs.items() if key not in ours]
-    if len(changes) != 2 or len(lost) != 1 or len(gained) != 1:
-        return changes
-    if describe_term(lost[0], setting) == describe_term(gained[0], setting):
-        return [("term_differs", f"{describe_term(gained[0], setting, own=True)} is not right")]
-    shared = _angle_functions(lost[0], setting) & _angle_functions(gained[0], setting)
+def _one_term_changed(changes: list, lost, gained, setting: Setting) -> list:
+    """One term lost and one gained (as ``changes`` names them) of the same kind: one term that
+    is not right, named as the student wrote it (b ẋ² for b ẋ: the velocity-dependent term in
+    ẋ²). Where they share a function of the coordinates, as ω² sin θ written for ω² sin θ cos θ,
+    they are named by it: said as a term in cos θ missing and one in sin θ too many, it would
+    send the student to look for a cos θ they never wrote."""
+    (_, lost_kind), (_, gained_as_written) = changes
+    if describe_term(gained, setting) == lost_kind:
+        return [("term_differs", f"{gained_as_written} is not right")]
+    shared = _angle_functions(lost, setting) & _angle_functions(gained, setting)
     if not shared:
         return changes
-    first, second = (describe_term(shape, setting, within=shared) for shape in (lost[0], gained[0]))
+    first, second = (describe_term(shape, setting, within=shared) for shape in (lost, gained))
     return [("term_differs", f"{first} is not right")] if first == second else changes
 
 
