@@ -339,6 +339,9 @@ def test_a_term_written_with_another_function_is_named_as_typed():
          ("A term differs: the velocity-dependent term in cos(θ) has the wrong factor.",)),
         ("phiddot = -2 tan(theta) thetadot phidot", "φ̈ = 2 sin θ θ̇ φ̇ / cos θ",
          ("A term differs: the velocity-dependent term in cos(θ) has the wrong sign.",)),  # the first by name
+        # cot θ and cos θ / sin θ written side by side are one term: only the term in sin θ is missing
+        ("phiddot = -2 cot(theta) thetadot phidot - g/l sin(theta)", "φ̈ = −cot θ θ̇ φ̇ − cos θ θ̇ φ̇ / sin θ",
+         ("A term is missing: a term in sin(θ).",)),
         # two terms off: named by sympy's terms, matched however the trigonometry is written
         ("phiddot = -2 cot(theta) thetadot phidot - g/l sin(theta)",
          "φ̈ = −2 cos θ θ̇ φ̇ / sin θ + 3 (g/l) sin θ + g/l",

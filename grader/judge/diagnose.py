@@ -203,8 +203,7 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
     if len(expected_terms) > MAX_TERMS or len(submitted_terms) > MAX_TERMS:
         return []
     # cot θ is cos θ / sin θ: a term is matched whichever the student wrote, and named as written
-    theirs = {in_sines_and_cosines(shape): (shape, coefficient) for shape, coefficient in submitted_terms.items()}
-    ours = {in_sines_and_cosines(shape): (shape, coefficient) for shape, coefficient in expected_terms.items()}
+    theirs, ours = _by_form(submitted_terms), _by_form(expected_terms)
     changes, lost, gained = [], [], []
     for key, (shape, coefficient) in ours.items():
         written = theirs.get(key)
@@ -223,6 +222,17 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
     return changes
 
 
+def _by_form(collected: dict) -> dict:
+    """{form in sines and cosines: (a shape as written, the coefficients of that form summed)}:
+    cot θ θ̇ and cos θ θ̇ / sin θ, written side by side, are one term."""
+    by_form: dict = {}
+    for shape, coefficient in collected.items():
+        form = in_sines_and_cosines(shape)
+        written, before = by_form.get(form, (shape, 0))
+        by_form[form] = (written, before + coefficient)
+    return by_form
+
+
 def _one_term_changed(changes: list, lost, gained, setting: Setting) -> list:
     """One term lost and one gained (as ``changes`` names them) of the same kind: one term that
     is not right, named as the student wrote it (b ẋ² for b ẋ: the velocity-dependent term in
@@ -235,7 +245,7 @@ def _one_term_changed(changes: list, lost, gained, setting: Setting) -> list:
     shared = _angle_functions(lost, setting) & _angle_functions(gained, setting)
     if not shared:
         return changes
-    first, second = (describe_term(shape, setting, within=shared) for shape in (lost, gained))
+    first, second = (describe_term(shape, setting, functions=shared) for shape in (lost, gained))
     return [("term_differs", f"{first} is not right")] if first == second else changes
 
 
@@ -274,7 +284,7 @@ def as_written(shape, answer):
 
 
 def describe_term(
-    term, setting: Setting, *, definite: bool = False, within: set | None = None, own: bool = False
+    term, setting: Setting, *, definite: bool = False, functions: set | None = None, own: bool = False
 ) -> str:
     """What kind of term this is, in words a student can act on.
 
@@ -289,8 +299,8 @@ def describe_term(
     velocities = {setting.velocity(q) for q in setting.coords}
     accelerations = {setting.acceleration(q) for q in setting.coords}
     trig = [f for f in term.atoms(*_TRIG) if f.args[0].free_symbols & set(setting.state.values())]
-    if within is not None:  # named by these alone (a function the term has, though maybe as cot)
-        trig = sorted(within, key=str)
+    if functions is not None:  # named by these alone (a function the term has, though maybe as cot)
+        trig = sorted(functions, key=str)
     if trig:  # the first by its printed form, when there are several
         first = trig[0] if len(trig) == 1 else min(trig, key=str)
         within = f" in {to_text(setting.as_typed(first))}"  # θ̇, not theta__1
@@ -319,7 +329,7 @@ _SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 def _velocities(term, velocities: set, setting: Setting) -> str:
-    """ " in α̇²", " in θ̇₁ θ̇₂": the velocities a term is a product of, as typed; "" if it is not one."""
+    """The velocities a term is a product of, as typed (" in α̇²", " in θ̇₁ θ̇₂"); "" if it is not one."""
     powers = [(v, p) for v, p in term.as_powers_dict().items() if v in velocities]
     if not powers or not all(p.is_Integer and p > 0 for _, p in powers):
         return ""
