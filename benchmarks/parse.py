@@ -163,9 +163,14 @@ def adversarial() -> list[tuple[str, str, tuple]]:
         ("280 \\quad, one = at the end", ("x\\quad " * 280)[:1990] + " = 1", ([], ["x"])),
         ("400 steps of a derivation", "a=b->" * 399 + "a=b", ([], ["a", "b"])),
         ("64 numbers of 30 digits", "*".join(["123456789012345678901234567891"] * 64), none),
+        # the densest function calls: three characters each, and two
+        ("666 absolute values |x|", "".join(["|x|"] * 666), none),
+        ("999 square roots √x", "√x" * 999, none),
+        ("a definition chain of 120 names", ", ".join(["x"] + [f"a{i} = x" for i in range(120)])[:1999], none),
         # refused ones: a refusal must be as cheap as an answer
         ("refused: 1999 open brackets", "(" * 1999 + "x", none),
         ("refused: 1999 minus signs", "-" * 1999 + "x", none),
+        ("refused: 1999 bars", "|" * 1999, none),
         ("refused: unknown command at the end", "x+" * 990 + "\\input{x}", none),
         ("refused: bad character at the end", "x+" * 999 + "@", none),
         ("refused: 2001 characters", "x" * (CAP + 1), none),
