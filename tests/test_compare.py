@@ -342,6 +342,9 @@ def test_a_term_written_with_another_function_is_named_as_typed():
         # cot θ and cos θ / sin θ written side by side are one term: only the term in sin θ is missing
         ("phiddot = -2 cot(theta) thetadot phidot - g/l sin(theta)", "φ̈ = −cot θ θ̇ φ̇ − cos θ θ̇ φ̇ / sin θ",
          ("A term is missing: a term in sin(θ).",)),
+        ("phiddot = -2 cot(theta) thetadot phidot - g/l sin(theta)",
+         "φ̈ = −cot θ θ̇ φ̇ − cos θ θ̇ φ̇ / sin θ + (g/l) sin θ + g/l",
+         ("A term differs: the term in sin(θ) has the wrong sign.", "There is a term too many: a gravity term.")),
         # two terms off: named by sympy's terms, matched however the trigonometry is written
         ("phiddot = -2 cot(theta) thetadot phidot - g/l sin(theta)",
          "φ̈ = −2 cos θ θ̇ φ̇ / sin θ + 3 (g/l) sin θ + g/l",
