@@ -955,6 +955,13 @@ HOOP_CONSTRAINT = (
 )
 
 
+def test_words_that_name_no_option_are_shown_as_typed_and_a_missing_label_alone():
+    words = compare("b", "the first one", kind="choice", options=HOOP_CONSTRAINT)
+    assert words.feedback == ("`the first one` is not one of the options (a, b, c, d).",)
+    label = compare("b", "a, e", kind="choice", options=HOOP_CONSTRAINT)
+    assert label.feedback == ("e is not one of the options (a, b, c, d).",)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status", "read"),
     [

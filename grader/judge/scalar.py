@@ -96,9 +96,10 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
         return Outcome("invalid", 0.0, "choice_unknown", details, "labels")
     unknown = [label for label in given if options and label not in options]
     if unknown:
-        return Outcome(
-            "invalid", 0.0, "choice_unknown", {"labels": ", ".join(unknown), "options": ", ".join(options)}, "labels"
-        )
+        # "e" is a label that is not there; "the first one" is words, shown as typed
+        words = any(len(label) > 2 for label in unknown)
+        shown = f"`{submitted.strip()[:40]}`" if words else ", ".join(unknown)
+        return Outcome("invalid", 0.0, "choice_unknown", {"labels": shown, "options": ", ".join(options)}, "labels")
     if not expected.option("multiple") and len(set(given)) > 1:
         return Outcome("not_equivalent", 0.0, "choice_count", {"count": "one option"}, "labels")
     right = set(given) == wanted
