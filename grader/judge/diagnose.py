@@ -21,7 +21,7 @@ import itertools
 import sympy
 
 from grader.judge.setting import Setting
-from grader.parse.names import unicode_name
+from grader.parse.names import superscript, unicode_name
 from grader.parse.readback import to_text
 
 __all__ = [
@@ -325,15 +325,12 @@ def describe_term(
     return f"{article} term in {', '.join(shown)}"
 
 
-_SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
-
-
 def _velocities(term, velocities: set, setting: Setting) -> str:
     """The velocities a term is a product of, as typed (" in α̇²", " in θ̇₁ θ̇₂"); "" if it is not one."""
     powers = [(v, p) for v, p in term.as_powers_dict().items() if v in velocities]
     if not powers or not all(p.is_Integer and p > 0 for _, p in powers):
         return ""
-    shown = [to_text(setting.as_typed(v)) + ("" if p == 1 else str(p).translate(_SUPERSCRIPT)) for v, p in powers]
+    shown = [to_text(setting.as_typed(v)) + ("" if p == 1 else superscript(int(p))) for v, p in powers]
     return " in " + " ".join(sorted(shown))
 
 

@@ -25,6 +25,7 @@ import sympy
 from sympy.core.function import AppliedUndef
 
 from grader.parse import TIME, parse_answer
+from grader.parse.names import superscript
 
 if TYPE_CHECKING:  # setting.py reads DIMENSIONS from here
     from grader.judge.setting import Setting
@@ -238,9 +239,6 @@ def unit_of(dimension: str) -> str:
     return si(DIMENSIONS[dimension])
 
 
-_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-
-
 def si(units: Units) -> str:
     """Powers of mass, length and time in SI units, as a student writes them.
 
@@ -263,5 +261,5 @@ def _power(unit: str, power: Fraction) -> str:
     if power == 1:
         return unit
     if power.denominator == 1:
-        return unit + str(power.numerator).translate(_SUPERSCRIPTS)
+        return unit + superscript(power.numerator)
     return f"{unit}^({power})"

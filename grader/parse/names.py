@@ -12,6 +12,7 @@ Contents:
     is_arbitrary_constant(name)    ``C``, ``C_1``, ``const``: a name for any constant
     stand_in(name)                 ``w_0`` → ``omega_0``: ASCII letters typed for a Greek one
     unicode_name(name)             ``theta_1`` → ``θ₁``, for reading an answer back
+    superscript(number)            ``-2`` → ``⁻²``, for a power written out
 
 Every spelling of one name is one symbol: ``theta1``, ``theta_1``, ``θ₁`` and
 ``\\theta_1`` all become the canonical ``theta_1``. Canonical names are ASCII
@@ -39,6 +40,7 @@ __all__ = [
     "split_derivative",
     "split_prefixed_derivative",
     "stand_in",
+    "superscript",
     "unicode_name",
 ]
 
@@ -72,6 +74,7 @@ SUBSCRIPT_DIGITS = {chr(0x2080 + d): str(d) for d in range(10)}
 SUBSCRIPT_LETTERS = dict(zip("ₐₑₒₓₕₖₗₘₙₚₛₜᵢᵣᵤᵥⱼ", "aeoxhklmnpstiruvj", strict=True))
 SUPERSCRIPTS = {"²": "2", "³": "3", "¹": "1", "⁰": "0", "⁻": "-"} | {chr(0x2070 + d): str(d) for d in range(4, 10)}
 _SUBSCRIPT_OUT = {v: k for k, v in SUBSCRIPT_DIGITS.items()}
+_SUPERSCRIPT_OUT = str.maketrans({v: k for k, v in SUPERSCRIPTS.items()})
 
 # The whitelist of functions, by every name a student may use, to the canonical one.
 FUNCTION_NAMES: dict[str, str] = {
@@ -199,3 +202,12 @@ def unicode_name(name: str, dots: int = 0) -> str:
         else:
             text += "_" + GREEK_NAMES.get(sub, sub)
     return unicodedata.normalize("NFC", text)  # ẋ as one character where Unicode has one
+
+
+def superscript(number: int) -> str:
+    """An integer in Unicode superscripts, as a power is written out.
+
+    >>> superscript(2), superscript(-12)
+    ('²', '⁻¹²')
+    """
+    return str(number).translate(_SUPERSCRIPT_OUT)
