@@ -986,12 +986,95 @@ def test_several_choices_may_be_written_out_each_between_commas():
 
 @pytest.mark.parametrize(
     ("kind", "expected", "submitted", "names"),
-    [("integer", "2", "two", "`two`"), ("number", "2.006", "2.006 s", "`s`"), ("integer", "3", "x", "`x`")],
+    [
+        ("integer", "2", "2 θ", "`θ`"),
+        ("number", "2.006", "2.006 s", "`s`"),  # a unit, where the part names none
+        ("integer", "3", "x", "`x`"),
+        ("integer", "6", "3N", "`N`"),  # a formula: 3N is not a count
+        ("integer", "1", "3 Np - k", "`Np` and `k`"),  # arithmetic after the number is not a remark
+    ],
 )
-def test_a_number_with_words_or_units_is_invalid_and_goes_to_a_person(kind, expected, submitted, names):
+def test_a_number_with_symbols_is_invalid_and_goes_to_a_person(kind, expected, submitted, names):
     verdict = compare(expected, submitted, kind=kind)
     assert (verdict.status, verdict.score, verdict.diagnosis) == ("invalid", 0.0, "not_a_number")
     assert verdict.feedback == (f"A number is asked for here; your answer contains {names}.",)
+
+
+PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m and g = 9.81 m/s²
+PERIOD_PART = {"kind": "number", "rtol": 0.005, "unit": "s", "known": ["l", "g"]}
+
+
+def _remark(value, rest):
+    return f"Graded the number `{value}`; what follows it (`{rest}`) is not graded."
+
+
+def _number(value):
+    return f"Graded the number `{value}`; the rest of your answer is not graded."
+
+
+def _comma(typed):
+    return f"Read `{typed}` as {typed.replace(',', '.')}: a decimal comma."
+
+
+def _final(value):
+    return f"Graded your final value, `{value}`; the working before it is not graded."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status", "read_as", "notes"),
+    [
+        # a count, then the coordinates it counts or what it is
+        ("2", "2 (θ1 and θ2)", {}, "equivalent", "2", (_remark(2, "(θ1 and θ2)"),)),
+        ("2", "2 (theta1, theta2)", {}, "equivalent", "2", (_remark(2, "(theta1, theta2)"),)),
+        ("2", "2: θ1 and θ2", {}, "equivalent", "2", (_remark(2, "θ1 and θ2"),)),
+        ("2", "2 degrees of freedom", {}, "equivalent", "2", (_remark(2, "degrees of freedom"),)),
+        ("2", "four (x1, y1, x2, y2)", {}, "not_equivalent", "4", (_remark("four", "(x1, y1, x2, y2)"),)),
+        ("2", "Two.", {}, "equivalent", "2", ("Read `Two.` as 2.",)),
+        # working, then the final value
+        ("2", "6 - 4 = 2", {}, "equivalent", "2", (_final(2),)),
+        ("2", "6 - 3 = 3", {}, "not_equivalent", "3", (_final(3),)),
+        (PERIOD, "T ≈ 2π√(l/g) ≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", (_final("2.01 s"),)),
+        (PERIOD, "2π√(1/9.81) = 3 s", PERIOD_PART, "not_equivalent", "3", (_final("3 s"),)),
+        (PERIOD, "2.01 s = T", PERIOD_PART, "equivalent", "2.01", (_number("2.01 s"),)),
+        (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"), _final("2,01 s"))),
+        # approximately: the tolerance says how near
+        (PERIOD, "≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", ()),
+        (PERIOD, "about 2.0 s", PERIOD_PART, "equivalent", "2", ()),
+        (PERIOD, "2.0 s (approx.)", PERIOD_PART, "equivalent", "2", ()),
+        # as typed first: 2 (3) is 6, and a unit is checked, not taken for a remark
+        ("2", "2 (3)", {}, "not_equivalent", "6", ()),
+        (PERIOD, "2.006 m (roughly)", PERIOD_PART, "not_equivalent", "1003*m/500", ()),
+    ],
+)  # fmt: skip
+def test_the_number_is_found_in_what_a_student_wrote_around_it(expected, submitted, options, status, read_as, notes):
+    verdict = compare(expected, submitted, **{"kind": "integer", **options})
+    assert (verdict.status, verdict.read_as, verdict.notes) == (status, read_as, notes)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "names"),
+    [
+        ("2 pi sqrt(l/g)", "`g` and `l`"),  # a formula where a number is asked for: √(l/g) is no remark
+        ("2 pi (l/g)^(1/2) s", "`g`, `l` and `s`"),
+        ("T = 2 pi sqrt(l/g)", "`g` and `l`"),
+    ],
+)
+def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitted, names):
+    verdict = compare(PERIOD, submitted, **PERIOD_PART)
+    assert (verdict.status, verdict.feedback) == (
+        "invalid",
+        (f"A number is asked for here; your answer contains {names}.",),
+    )
+
+
+def test_seconds_written_sec_are_not_a_remark_where_no_unit_is_asked_for():
+    assert compare(PERIOD, "2.006 sec", kind="number", rtol=0.005).status == "invalid"
+    assert compare(PERIOD, "2.006 sec", kind="number", rtol=0.005, unit="s").status == "equivalent"
+
+
+def test_a_long_answer_is_read_only_as_typed():
+    verdict = compare("2", "2 (" + "the angle and " * 20 + "θ)", kind="integer")
+    assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")
 
 
 @pytest.mark.parametrize(
@@ -1072,7 +1155,8 @@ def test_nothing_a_student_types_makes_compare_raise(kind, submitted, setting):
 def test_nothing_a_student_types_makes_a_number_with_a_unit_raise(submitted):
     verdict = compare("2*pi*sqrt(1/9.81)", submitted, kind="number", unit="s", rtol=0.005)
     assert isinstance(verdict, Verdict)
-    assert verdict.status != "equivalent" or submitted == "T = 2006 ms"
+    # the number's value, named, reversed or repeated: T = 2006 ms, 2.006 s = T, 2,01 = 2,01
+    assert verdict.status != "equivalent" or submitted in ("T = 2006 ms", "2.006 s = T", "2,01 = 2,01")
 
 
 def test_an_equation_that_holds_for_every_motion_is_named():

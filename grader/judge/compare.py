@@ -17,7 +17,7 @@ import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
-from functools import lru_cache
+from functools import lru_cache, partial
 
 import sympy
 from sympy.core.function import AppliedUndef
@@ -30,6 +30,7 @@ from grader.judge.expression import check_expression
 from grader.judge.feedback import say
 from grader.judge.lagrangian import check_lagrangian
 from grader.judge.motion import check_equation, check_equations
+from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
@@ -148,17 +149,21 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
-    answer, conserved, used, typed, read_in, comma = None, False, (), None, None, None
+    answer, conserved, used, typed, read_in, number_notes = None, False, (), None, None, ()
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
         with time_limit(timeout) as deadline:
             if spec.parsed:
                 names = sorted(expected.names | {symbol.name for symbol, _ in given})
-                submitted, comma = _decimal_point(submitted) if spec.name == "number" else (submitted, None)
-                if spec.name == "number" and expected.option("unit"):
-                    submitted = _seconds(submitted)
-                answer = parse_answer(submitted, coords=expected.setting.coords, known=names, deadline=deadline)
+                if spec.name in ("integer", "number"):
+                    unit = spec.name == "number" and bool(expected.option("unit"))
+                    reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
+                    submitted, answer, number_notes = read_number(
+                        submitted, reads, names, decimal_comma=spec.name == "number", seconds=unit
+                    )
+                if answer is None:
+                    answer = parse_answer(submitted, coords=expected.setting.coords, known=names, deadline=deadline)
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
@@ -173,7 +178,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if early:
                     return _verdict(early, shown)  # as typed: 2.006 m is not read as a time
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
-            for note in (comma, read_in):
+            for note in (*number_notes, read_in):
                 if note:
                     outcome = replace(outcome, notes=(*outcome.notes, note))
             if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
@@ -404,30 +409,18 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
     return answer
 
 
-# 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English
-_DECIMAL_COMMA = re.compile(r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,})(?![0-9,])(.*)", re.DOTALL)
-
-
-def _decimal_point(submitted: str) -> tuple[str, tuple | None]:
-    """A number written with a decimal comma, as much of Europe writes it, with a point; and the
-    note that says so. Three digits after the comma may be thousands: those are left alone, and the
-    parser asks for a point."""
-    match = _DECIMAL_COMMA.fullmatch(submitted) if len(submitted) < 200 else None
-    if match is None or "," in match.group(3):
-        return submitted, None
-    whole, fraction, rest = match.groups()
-    number = f"{whole}.{fraction}"
-    return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
-
-
-# ``2.006 sec``, ``2006 msec``: after a number, at the end, the word for seconds, not the secant
-_SEC = re.compile(r"([0-9.]\s*)(m?)secs?\.?\s*$")
-
-
-def _seconds(submitted: str) -> str:
-    """``2.006 sec`` as ``2.006 s`` where a number with a unit is asked for: the parser would take
-    ``sec`` for the secant, missing its argument."""
-    return _SEC.sub(r"\1\2s", submitted) if len(submitted) < 200 else submitted
+def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadline) -> ParsedAnswer | None:
+    """``text`` read, if it is a number, a number with units where the part has a unit, or a name
+    for one (``n = 2``); else None."""
+    answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
+    if not answer.ok:
+        return None
+    value = _unwrap_named(answer, spec, expected).value
+    if not isinstance(value, sympy.Expr):
+        return None
+    if not value.free_symbols or (spec.name == "number" and expected.option("unit") and in_units(value)):
+        return answer
+    return None
 
 
 def _unit(text: str) -> tuple[Fraction, tuple]:

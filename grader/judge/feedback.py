@@ -36,6 +36,10 @@ FEEDBACK: dict[str, str] = {
     "decimal_comma": "Read `{typed}` as {number}: a decimal comma.",
     "other_unit": "Not within the accepted tolerance. Is your number in {unit}? The answer is asked in {wanted}.",
     "unit_read": "Read as {value} {unit}.",
+    "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
+    "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
+    "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
+    "number_word": "Read `{typed}` as {number}.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
     "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"
     " in an exponent, or raised to a power that is not a number.",

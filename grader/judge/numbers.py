@@ -1,0 +1,145 @@
+"""Where a part asks for a number or a count: the number a student means, in what they typed.
+
+Contents:
+    read_number(text, reads, names, ...)   the text to judge, its reading, and notes saying how it was read
+
+Students write a number inside a sentence, as they would on paper: ``≈ 2.01 s``, ``T = 2π√(l/g)
+= 2.01 s``, ``2 (θ₁ and θ₂)``, ``2 degrees of freedom``, ``two``, ``2,01``. The number is what the part
+grades, so it is found and graded, and the student is told what was not. Each reading is tried
+only when the answer as typed is not a number: ``2 (3)`` is still 6.
+
+A remark after the number must be words, not mathematics: in ``2 π √(l/g)`` for a period, the
+√(l/g) is part of the answer, which is a formula where a number is asked for, and is refused as one.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Collection
+
+from grader.judge.units import SI_UNITS
+from grader.parse import ParsedAnswer, parse_answer
+
+__all__ = ["read_number"]
+
+# 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English
+_DECIMAL_COMMA = re.compile(r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,})(?![0-9,])(.*)", re.DOTALL)
+
+# ``2.006 sec``, ``2006 msec``: after a number, at the end, the word for seconds, not the secant
+_SEC = re.compile(r"([0-9.]\s*)(m?)secs?\.?\s*$")
+
+# ``≈ 2.01 s``, ``about 2 s``, ``2.0 s (approx.)``: the tolerance says how near is near enough
+_ABOUT = re.compile(r"^\s*(?:≈|≃|~|\\approx|\\simeq|\\sim|about|approx\.?|approximately|roughly|ca\.|circa)\s*", re.I)
+_ABOUT_AFTER = re.compile(r"\s*\(?\s*(?:approx\.?|approximately|roughly)\s*\)?\s*$", re.I)
+
+# the signs a chain of working is written with: T = 2π√(l/g) ≈ 2.01 s
+_EQUALS = re.compile(r"\\approx|\\simeq|[=≈≃]")
+
+_SEPARATED = re.compile(r"[;\n]|\\\\")
+
+# where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, or a word
+_REMARK = re.compile(r"[(\[{,:;–—]|\s-\s|(?<![A-Za-z0-9_\\])[A-Za-z]{2,}")
+_MATH_SIGNS = set("+-−*/^=√·×")
+_UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
+_REMARKS_TRIED = 12
+_SHOWN = 60  # characters of a remark repeated back to the student
+
+_WORDS = [
+    "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+    "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty",
+]  # fmt: skip
+NUMBER_WORDS = {word: str(value) for value, word in enumerate(_WORDS)}
+
+_LENGTH = 200  # longer answers are read as typed: these readings are for a number and a few words
+
+
+def read_number(
+    text: str,
+    reads: Callable[[str], ParsedAnswer | None],
+    names: Collection[str],
+    *,
+    decimal_comma: bool = False,
+    seconds: bool = False,
+) -> tuple[str, ParsedAnswer | None, tuple]:
+    """The text to judge, its reading (None: read it as typed, and say why it fails), and notes.
+
+    ``reads(text)`` is the reading of ``text`` if it is a number (with its unit, where the part has
+    one), else None; ``names`` are the problem's, which a remark after the number does not use.
+    ``decimal_comma`` reads 2,01 as 2.01; ``seconds`` reads 2.006 sec as 2.006 s.
+    """
+    prepared, notes = _spelled(text, decimal_comma, seconds)
+    answer = reads(prepared)
+    if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
+        return prepared, answer, notes  # x = 1; y = 2 is a system, not working
+    bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
+    pieces = [piece.strip() for piece in _EQUALS.split(bare)]
+    last = len(pieces) - 1
+    for index in dict.fromkeys((last, 0)):  # the final value, else (2.01 s = T) the first side
+        for typed, rest in _number_then_remark(pieces[index]):
+            words = NUMBER_WORDS.get(typed.lower().rstrip("."))
+            prepared, notes = _spelled(words or typed, decimal_comma, seconds)
+            answer = reads(prepared)
+            if answer is None or (rest and not _is_remark(rest, names)):
+                continue
+            if rest:
+                rest = rest.lstrip(",:;–—- ")
+                shown = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+                notes += (("remark_ignored", {"value": typed, "rest": shown}),)
+            elif last and index == last:
+                notes += (("final_value", {"value": typed}),)
+            elif last:
+                notes += (("number_read", {"value": typed}),)
+            elif words:
+                notes += (("number_word", {"typed": typed, "number": words}),)
+            return prepared, answer, notes
+    prepared, notes = _spelled(text, decimal_comma, seconds)
+    return prepared, None, notes
+
+
+def _spelled(text: str, decimal_comma: bool, seconds: bool) -> tuple[str, tuple]:
+    notes = ()
+    if decimal_comma:
+        text, comma = _decimal_point(text)
+        notes = (comma,) if comma else ()
+    if seconds and len(text) < _LENGTH:
+        text = _SEC.sub(r"\1\2s", text)
+    return text, notes
+
+
+def _decimal_point(text: str) -> tuple[str, tuple | None]:
+    """A number written with a decimal comma, as much of Europe writes it, with a point; and the
+    note that says so. Three digits after the comma may be thousands: those are left alone, and the
+    parser asks for a point."""
+    match = _DECIMAL_COMMA.fullmatch(text) if len(text) < _LENGTH else None
+    if match is None or "," in match.group(3):
+        return text, None
+    whole, fraction, rest = match.groups()
+    number = f"{whole}.{fraction}"
+    return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
+
+
+def _number_then_remark(piece: str):
+    """``(number, remark)`` splits of ``piece``: the whole of it first, then before each place a
+    remark may begin, the longest number first."""
+    if piece:
+        yield piece, ""
+    starts = [match.start() for match in _REMARK.finditer(piece)][:_REMARKS_TRIED]
+    for start in reversed(starts):
+        number, rest = piece[:start].strip(), piece[start:].strip()
+        if number:
+            yield number, rest
+
+
+def _is_remark(rest: str, names: Collection[str]) -> bool:
+    """Whether ``rest`` is words about the number, not more of the answer. After the mark that
+    opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit; and it
+    cannot be read, or it uses a name that is neither the problem's nor a unit."""
+    words = rest.lstrip("([{,:;–—- ")
+    if not words or words[0] in "0123456789." or _MATH_SIGNS & set(words) or words.rstrip(".").lower() in _UNIT_WORDS:
+        return False  # 2,01, 3 is a list; 2 s^-1 a unit
+    read = parse_answer(words, known=names)
+    if not read.ok:
+        return True
+    items = read.value if isinstance(read.value, tuple) else (read.value,)
+    used = set().union(*(item.free_symbols for item in items))
+    return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in used)
