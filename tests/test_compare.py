@@ -1067,6 +1067,13 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
     )
 
 
+@pytest.mark.parametrize("submitted", ["2 or 3", "2 (or 3)", "2 or three", "2 (the 2 angles)"])
+def test_a_remark_with_another_number_is_a_hedge_not_a_remark(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")
+    assert compare("2", "2 (θ_1 and θ_2)", kind="integer").status == "equivalent"  # digits of names are not numbers
+
+
 def test_seconds_written_sec_are_not_a_remark_where_no_unit_is_asked_for():
     assert compare(PERIOD, "2.006 sec", kind="number", rtol=0.005).status == "invalid"
     assert compare(PERIOD, "2.006 sec", kind="number", rtol=0.005, unit="s").status == "equivalent"

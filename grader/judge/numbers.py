@@ -40,6 +40,8 @@ _SEPARATED = re.compile(r"[;\n]|\\\\")
 # where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, or a word
 _REMARK = re.compile(r"[(\[{,:;–—]|\s-\s|(?<![A-Za-z0-9_\\])[A-Za-z]{2,}")
 _MATH_SIGNS = set("+-−*/^=√·×")
+# a number of its own in the remark, or "or": 2 or 3, 2 (or 3) is not one answer
+_HEDGE = re.compile(r"(?<!\w)[0-9]|\bor\b", re.I)
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
 _REMARKS_TRIED = 12
 _SHOWN = 60  # characters of a remark repeated back to the student
@@ -132,11 +134,14 @@ def _number_then_remark(piece: str):
 
 def _is_remark(rest: str, names: Collection[str]) -> bool:
     """Whether ``rest`` is words about the number, not more of the answer. After the mark that
-    opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit; and it
+    opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit, it names
+    no other number and says no "or"; and it
     cannot be read, or it uses a name that is neither the problem's nor a unit."""
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or _MATH_SIGNS & set(words) or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 s^-1 a unit
+    if _HEDGE.search(words):
+        return False
     read = parse_answer(words, known=names)
     if not read.ok:
         return True
