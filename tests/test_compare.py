@@ -1277,8 +1277,10 @@ HOOP = {"coords": ["theta"], "known": ["m", "g", "R", "omega"]}
 @pytest.mark.parametrize(
     ("expected", "submitted", "setting", "sentences"),
     [
-        # ω² sin θ for ω² sin θ cos θ: one term not right, named by the function both have
-        (HOOP_EOM, "θ̈ = ω² sin θ − (g/R) sin θ", HOOP, ("A term differs: a term in sin(θ) is not right.",)),
+        # ω² sin θ for ω² sin θ cos θ: one term not right, named by the function both have, and
+        # shown as read where the student's other term has that function too; not where the
+        # other term is named otherwise, as (g/l) sin θ beside a velocity-dependent term
+        (HOOP_EOM, "θ̈ = ω² sin θ − (g/R) sin θ", HOOP, ("A term differs: the term in ω^2*sin(θ) is not right.",)),
         (SPHERICAL_EOM, "θ̈ = sin θ φ̇² − (g/l) sin θ; φ̈ = −2 cot θ θ̇ φ̇", SPHERICAL,
          ("Your equation for θ is not right; equation 2 is right.",
           "A term differs: a velocity-dependent term in sin(θ) is not right.")),

@@ -218,7 +218,7 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             gained.append(shape)
             changes.append(("extra_term", describe_term(shape, setting, own=True)))
     if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
-        return _one_term_changed(changes, lost[0], gained[0], setting)
+        return _one_term_changed(changes, lost[0], gained[0], setting, [shape for shape, _ in theirs.values()])
     return changes
 
 
@@ -233,12 +233,13 @@ def _by_form(collected: dict) -> dict:
     return by_form
 
 
-def _one_term_changed(changes: list, lost, gained, setting: Setting) -> list:
+def _one_term_changed(changes: list, lost, gained, setting: Setting, written: list) -> list:
     """One term lost and one gained (as ``changes`` names them) of the same kind: one term that
     is not right, named as the student wrote it (b ẋ² for b ẋ: the velocity-dependent term in
     ẋ²). Where they share a function of the coordinates, as ω² sin θ written for ω² sin θ cos θ,
     they are named by it: said as a term in cos θ missing and one in sin θ too many, it would
-    send the student to look for a cos θ they never wrote."""
+    send the student to look for a cos θ they never wrote. Where another of the student's terms
+    (``written``) would be named so too, as (g/R) sin θ beside it, the term is shown as read."""
     (_, lost_kind), (_, gained_as_written) = changes
     if describe_term(gained, setting) == lost_kind:
         return [("term_differs", f"{gained_as_written} is not right")]
@@ -246,7 +247,12 @@ def _one_term_changed(changes: list, lost, gained, setting: Setting) -> list:
     if not shared:
         return changes
     first, second = (describe_term(shape, setting, functions=shared) for shape in (lost, gained))
-    return [("term_differs", f"{first} is not right")] if first == second else changes
+    if first != second:
+        return changes
+    others = [shape for shape in written if shape != gained and shared <= _angle_functions(shape, setting)]
+    if any(describe_term(shape, setting, functions=shared) == first for shape in others):
+        return [("term_differs", f"the term in {to_text(setting.as_typed(gained))} is not right")]
+    return [("term_differs", f"{first} is not right")]
 
 
 def _angle_functions(shape, setting: Setting) -> set:
