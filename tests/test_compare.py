@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from sympy.core.cache import clear_cache
 
-from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare
+from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare, parse_answer
 from grader.judge.expected import prepare
 from grader.judge.lagrangian import equations_of_motion
 
@@ -515,6 +515,15 @@ def test_an_expression_may_be_followed_by_the_definitions_of_its_names(expected,
     assert verdict.status == status, verdict
     if status == "invalid":
         assert verdict.feedback[0].startswith("The first item of your answer has no `=`.")
+        assert "answer" not in verdict.read_as  # the parser's name for the expression is not shown
+
+
+def test_an_expression_before_definitions_is_shown_back_without_a_name():
+    verdict = compare(L_PENDULUM, "½ m l² θ̇² + m g l cos θ, where u = l θ̇", kind="lagrangian", **PENDULUM)
+    assert verdict.read_as == "g*l*m*cos(θ) + l^2*m*θ̇^2/2; u = l*θ̇"
+    read = parse_answer("½ m v², where v = l θ̇", coords=["theta"], known=["m", "l"])
+    assert read.read_as_latex == r"\begin{aligned}\frac{m v^{2}}{2} \\ v = l \dot{\theta}\end{aligned}"
+    assert "answer" not in read.read_as_mathml
 
 
 def test_a_system_may_define_its_own_names():

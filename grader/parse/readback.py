@@ -18,6 +18,7 @@ from sympy.printing.latex import LatexPrinter
 from sympy.printing.mathml import MathMLPresentationPrinter
 from sympy.printing.str import StrPrinter
 
+from grader.parse.grammar import ANSWER
 from grader.parse.names import unicode_name
 
 __all__ = ["to_latex", "to_mathml", "to_text"]
@@ -161,7 +162,10 @@ def _decimal(number) -> str | None:
 
 
 def _items(value) -> list:
-    return list(value) if isinstance(value, tuple) else [value]
+    """The items shown, in order; the parser's name for an expression before its definitions
+    (``answer = ½ m v²; v = l θ̇``) is not the student's, and is not shown."""
+    items = list(value) if isinstance(value, tuple) else [value]
+    return [item.rhs if isinstance(item, sympy.Eq) and item.lhs == ANSWER else item for item in items]
 
 
 def to_text(value) -> str:
