@@ -1219,6 +1219,41 @@ def test_a_given_name_is_put_in_place_and_the_feedback_says_so(submitted, status
     assert verdict.feedback[-1] == "Read with the problem's own meaning of `p_θ`."
 
 
+SPHERICAL_H = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"
+MOMENTA = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "sentences"),
+    [
+        # p_φ²/(2 m l²): in the velocities a term in sin⁴θ, which the student never wrote
+        ("p_θ²/(2 m l²) + p_φ²/(2 m l²) − m g l cos θ",
+         ("A term is missing: a term in p_φ and sin(θ).", "There is a term too many: a term in p_φ².")),
+        ("p_θ²/(2 m l²) + p_φ²/(m l² sin²θ) − m g l cos θ",
+         ("A term differs: the term in p_φ² and sin(θ) has the wrong factor.",)),
+        ("p_θ²/(2 m) + p_φ²/(2 m l² sin²θ) − m g l cos θ", ("A term differs: a term in p_θ² is not right.",)),
+        # a missing term is named in the momenta too, by the name alone
+        ("p_φ²/(2 m l² sin²θ) − m g l cos θ", ("A term is missing: a term in p_θ.",)),
+        # written in the velocities, it is said in the velocities
+        ("½ m l² θ̇² + ½ m l² φ̇² − m g l cos θ",
+         ("A term is missing: a velocity-dependent term in sin(θ).",
+          "There is a term too many: a velocity-dependent term in φ̇².")),
+    ],
+)  # fmt: skip
+def test_an_answer_in_the_given_names_is_diagnosed_in_them(submitted, sentences):
+    verdict = compare(SPHERICAL_H, submitted, given=MOMENTA, up_to_constant=True, **SPHERICAL)
+    assert verdict.status == "not_equivalent"
+    assert verdict.feedback[: len(sentences)] == sentences
+    assert not any("velocity" in sentence for sentence in verdict.feedback) or "φ̇" in submitted
+
+
+def test_given_names_that_do_not_determine_the_velocities_leave_the_diagnosis_in_them():
+    # one name for two velocities: the answer cannot be written in it, and is said in the velocities
+    given = {"K": "m l^2 (thetadot^2 + phidot^2)"}
+    verdict = compare(SPHERICAL_H, "K/2 − m g l cos θ", given=given, up_to_constant=True, **SPHERICAL)
+    assert verdict.feedback[0] == "A term is missing: a velocity-dependent term in sin(θ)."
+
+
 def test_what_a_given_name_stands_for_is_never_shown():
     # another part may ask for p_θ itself: neither feedback nor the answer read back may give it
     verdict = compare(HOOP_H, "p_θ", given={"p_theta": "m R^2 thetadot"}, up_to_constant=True, **HOOP)

@@ -17,7 +17,7 @@ import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
-from functools import lru_cache, partial
+from functools import partial
 
 import sympy
 from sympy.core.function import AppliedUndef
@@ -28,6 +28,7 @@ from grader.judge.diagnose import TERM_KEYS
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression
 from grader.judge.feedback import say
+from grader.judge.given import given_values, in_given_names
 from grader.judge.lagrangian import check_lagrangian
 from grader.judge.motion import check_equation, check_equations
 from grader.judge.numbers import read_number
@@ -37,7 +38,7 @@ from grader.judge.text import check_text
 from grader.judge.units import SI_UNITS, Mixed, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
 from grader.parse import ANSWER, TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
-from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
+from grader.parse.names import is_arbitrary_constant, unicode_name
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
 
@@ -136,7 +137,7 @@ def compare(
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
     if settings.get("unit"):
         _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
-    return _judge(spec, prepared, submitted, timeout, _given_values(prepared, given) if given else ())
+    return _judge(spec, prepared, submitted, timeout, given_values(prepared, given) if given else ())
 
 
 _AN = {"expression": "an expression", "equation": "an equation", "equations": "a system of equations"}
@@ -183,6 +184,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     outcome = replace(outcome, notes=(*outcome.notes, note))
             if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
                 outcome = _with_units(outcome, spec, expected, answer)
+            if used and spec.name == "expression" and _names_terms(outcome):
+                outcome = _terms_in_given_names(outcome, spec, expected, answer, given, deadline)
             if spec.parsed and conserved and outcome.status != "equivalent":
                 outcome = replace(_terms_unnamed(outcome), notes=(*outcome.notes, ("conserved_read", {})))
     except CheckTimeout:
@@ -218,6 +221,25 @@ def _with_units(outcome: Outcome, spec: Kind, expected: Expected, answer: Parsed
     return replace(outcome, key=key, details=details, more=(*said, *outcome.more))
 
 
+def _names_terms(outcome: Outcome) -> bool:
+    return any(key.removesuffix("_in") in TERM_KEYS for key in (outcome.key or "", *(k for k, _ in outcome.more)))
+
+
+def _terms_in_given_names(
+    outcome: Outcome, spec: Kind, expected: Expected, answer: ParsedAnswer, given: tuple, deadline
+) -> Outcome:
+    """A wrong answer written in the given names (a Hamiltonian in p_θ, p_φ), diagnosed in those
+    names: said in the velocities, its terms are ones the student did not write. Where the given
+    names do not determine the velocities, it is said in the velocities."""
+    written = in_given_names(expected, given)
+    if written is None:
+        return outcome
+    in_names, replacement = written
+    value = answer.value.xreplace(replacement)
+    redone = spec.check(in_names, ParsedAnswer(answer.text, value, answer.kind), deadline)
+    return replace(redone, notes=outcome.notes) if redone.status == "not_equivalent" else outcome
+
+
 def _terms_unnamed(outcome: Outcome) -> Outcome:
     """The outcome without sentences naming terms: those of a conserved quantity's derivative,
     which the student did not write (``m l² sin θ φ̇ = C`` has no term in cos θ)."""
@@ -234,38 +256,6 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
     feedback = list(dict.fromkeys([*feedback, *notes]))  # two terms described alike are one sentence
     diagnosis = None if outcome.status == "equivalent" else outcome.key
     return Verdict(outcome.status, outcome.score, tuple(feedback), outcome.method, diagnosis, answer, notes)
-
-
-def _given_values(expected: Expected, given: Mapping) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
-    """The author's ``given`` names with their values, read in the problem's names.
-
-    Raises:
-        AuthorError: for a value that cannot be read, uses a name the problem does not
-            define, or a name the expected answer or the problem already uses.
-    """
-    if not isinstance(given, Mapping) or not all(isinstance(v, str) for v in given.values()):
-        raise AuthorError("option given must map names to expressions, as {p_theta: m R^2 thetadot}")
-    items = tuple(sorted((str(name), value) for name, value in given.items()))
-    return _read_given(items, expected.setting.coords, tuple(sorted(expected.names)))
-
-
-@lru_cache(maxsize=256)
-def _read_given(items: tuple, coords: tuple, names: tuple) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
-    values = []
-    for name, text in items:
-        if canonical_name(name) in names:
-            raise AuthorError(f"given name {name!r} is already a name of this problem or of its expected answer")
-        value = parse_answer(text, coords=coords, known=names)
-        if not value.ok or value.kind != "expression":
-            problem = value.message if not value.ok else "it is not an expression"
-            raise AuthorError(f"the value given for {name!r}, {text!r}, cannot be read: {problem}")
-        undefined = sorted({s.name for s in value.value.free_symbols} - set(names))
-        if undefined:
-            raise AuthorError(
-                f"the value given for {name!r} uses {', '.join(undefined)}, which the problem does not define"
-            )
-        values.append((sympy.Symbol(canonical_name(name)), value.value))
-    return tuple(values)
 
 
 def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple]:

@@ -312,6 +312,10 @@ def describe_term(
         within = f" in {to_text(setting.as_typed(first))}"  # θ̇, not theta__1
     else:
         within = ""
+    given = {sympy.Symbol(name) for name in setting.given} & symbols
+    if given:  # p_φ²/(2 m l²) in a Hamiltonian written in the momenta: named by them
+        named = (_powers(term, given, setting) if own else "") or " ".join(sorted(unicode_name(s.name) for s in given))
+        return f"{article} term in {named}{within.replace(' in ', ' and ', 1)}"
     if symbols & accelerations:
         return f"{article} term with an acceleration{within}"
     if symbols & velocities:
@@ -333,11 +337,17 @@ def describe_term(
 
 def _velocities(term, velocities: set, setting: Setting) -> str:
     """The velocities a term is a product of, as typed (" in α̇²", " in θ̇₁ θ̇₂"); "" if it is not one."""
-    powers = [(v, p) for v, p in term.as_powers_dict().items() if v in velocities]
+    shown = _powers(term, velocities, setting)
+    return f" in {shown}" if shown else ""
+
+
+def _powers(term, symbols: set, setting: Setting) -> str:
+    """The powers of ``symbols`` a term is a product of, as typed ("α̇²", "p_φ²"); "" if it is not one."""
+    powers = [(v, p) for v, p in term.as_powers_dict().items() if v in symbols]
     if not powers or not all(p.is_Integer and p > 0 for _, p in powers):
         return ""
     shown = [to_text(setting.as_typed(v)) + ("" if p == 1 else superscript(int(p))) for v, p in powers]
-    return " in " + " ".join(sorted(shown))
+    return " ".join(sorted(shown))
 
 
 def has_angle_functions(expr, setting: Setting) -> bool:

@@ -135,7 +135,7 @@ def diagnose_difference(
         if same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")[0]:
             return Outcome("not_equivalent", 0.0, "small_angle")
     # where a constant is allowed, do not point at one
-    varying = set(expected.setting.state.values()) if expected.option("up_to_constant") else None
+    varying = set(expected.setting.varying) if expected.option("up_to_constant") else None
     change = single_term_change(expected, key, e, s, varying)
     if change:
         return term_outcome([change])

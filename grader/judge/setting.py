@@ -42,6 +42,8 @@ class Setting:
             their derivatives and t are real; every other symbol is positive).
         dimensions: canonical name → its dimension (one of :data:`grader.judge.units.DIMENSIONS`),
             where the problem says; a coordinate's derivatives are divided by time.
+        given: the names among ``known`` that stand for a quantity of the problem (p_θ for
+            m l² θ̇), where answers are diagnosed in them (see :mod:`grader.judge.given`).
         seed: seeds the sample points, so a verdict is the same on every run.
     """
 
@@ -49,6 +51,7 @@ class Setting:
     known: tuple[str, ...] = ()
     domains: Mapping[str, str] = field(default_factory=dict)
     dimensions: Mapping[str, str] = field(default_factory=dict)
+    given: tuple[str, ...] = ()
     seed: int = 20261121
 
     @classmethod
@@ -132,12 +135,13 @@ class Setting:
         return self.state[(name, 2)]
 
     def is_state(self, symbol: sympy.Symbol) -> bool:
-        """Coordinates, their derivatives, and time: what varies along a motion."""
-        return symbol == TIME or symbol in self._state_symbols
+        """Coordinates, their derivatives, given names (a momentum), and time: what varies along a motion."""
+        return symbol == TIME or symbol in self.varying
 
     @cached_property
-    def _state_symbols(self) -> frozenset:
-        return frozenset(self.state.values())
+    def varying(self) -> frozenset:
+        """The plain symbols of the coordinates and their derivatives, and the given names."""
+        return frozenset(self.state.values()) | {sympy.Symbol(name) for name in self.given}
 
     def domain(self, symbol: sympy.Symbol) -> str:
         if self.is_state(symbol):
