@@ -213,3 +213,40 @@ def test_a_number_right_in_another_unit_is_asked_about_its_unit(submitted, sente
     assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,))
     # without a unit nothing is known of other units
     assert compare(PERIOD, submitted, kind="number", rtol=0.005).feedback == ("Not within the accepted tolerance.",)
+
+
+OMEGA = "sqrt(g/l)"
+LEFT_OUT = "Read without its unit, `{}`: the formula is what is graded."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "setting", "status", "feedback"),
+    [
+        # a formula, then its unit: the formula is graded, and the note says the unit was left out
+        ("√(g/l) rad/s", PENDULUM, "equivalent", ("Correct.", LEFT_OUT.format("rad/s"))),
+        ("ω = √(g/l) s^-1", PENDULUM, "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
+        ("√(g/l) [rad/s]", {"coords": ["theta"], "known": ["m", "g", "l"]}, "equivalent",
+         ("Correct.", LEFT_OUT.format("rad/s"))),
+        ("2 √(g/l) Hz", PENDULUM, "not_equivalent",
+         ("Your answer is off by a constant factor: missing a factor 1/2?", LEFT_OUT.format("Hz"))),
+        # a unit that does not measure the quantity asked for, where the problem gives dimensions
+        ("√(l/g) seconds", PENDULUM, "not_equivalent",
+         ("Your answer is in s, but the quantity asked for is measured in 1/s.",)),
+        ("√(g/l) kg", PENDULUM, "not_equivalent",
+         ("Your answer is in kg, but the quantity asked for is measured in 1/s.",)),
+        # a number with units, where a formula is asked for
+        ("3.13 rad/s", PENDULUM, "not_equivalent",
+         ("Your answer uses `rad` and `s`, which this problem does not define: units, it seems. A formula in the"
+          " problem's own symbols is asked for here, and its units follow from theirs.",)),
+    ],
+)  # fmt: skip
+def test_a_formula_may_be_followed_by_its_unit(submitted, setting, status, feedback):
+    verdict = compare(OMEGA, submitted, **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+@pytest.mark.parametrize("submitted", ["√(g/l) h", "√(g/l) + 3 s", "√(g/l) s"])
+def test_a_single_letter_is_a_name_to_define_not_a_unit_to_leave_out(submitted):
+    # m g h: h is the student's height sooner than hours, and a unit inside a sum is no unit of the answer
+    verdict = compare(OMEGA, submitted, known=["m", "g", "l"], coords=["theta"])
+    assert verdict.diagnosis == "undefined_symbol"

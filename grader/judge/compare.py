@@ -39,6 +39,7 @@ from grader.judge.units import SI_UNITS, Mixed, in_units, si, unit_named, units_
 from grader.judge.verdict import Verdict
 from grader.parse import ANSWER, TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import is_arbitrary_constant, unicode_name
+from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
 
@@ -208,17 +209,24 @@ def _with_units(outcome: Outcome, spec: Kind, expected: Expected, answer: Parsed
     if not setting.dimensions:
         return outcome
     equation = spec.shape != "expression"
-    if "units" not in expected.cache:
-        try:
-            expected.cache["units"] = None if equation else units_of(expected.value, setting)
-        except Mixed:
-            expected.cache["units"] = None  # the reference's own units disagree: say nothing
-    mistake = units_mistake(expected.cache["units"], setting.plain(answer.value), setting, equation=equation)
+    mistake = units_mistake(_expected_units(spec, expected), setting.plain(answer.value), setting, equation=equation)
     if mistake is None:
         return outcome
     key, details = mistake
     said = ((outcome.key, outcome.details),) if outcome.key else ()
     return replace(outcome, key=key, details=details, more=(*said, *outcome.more))
+
+
+def _expected_units(spec: Kind, expected: Expected):
+    """The units of the quantity asked for, where the problem gives its symbols' dimensions and an
+    expression is asked for; else None."""
+    if "units" not in expected.cache:
+        try:
+            known = expected.setting.dimensions and spec.shape == "expression"
+            expected.cache["units"] = units_of(expected.value, expected.setting) if known else None
+        except Mixed:
+            expected.cache["units"] = None  # the reference's own units disagree: say nothing
+    return expected.cache["units"]
 
 
 def _names_terms(outcome: Outcome) -> bool:
@@ -434,6 +442,8 @@ def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pars
 
     Returns the answer to judge, an outcome already decided (or None), and a note saying how a
     number in another unit was read (or None)."""
+    if spec.name == "expression":
+        return _formula_in_unit(answer, spec, expected)
     wanted = expected.option("unit") if spec.name == "number" else None
     if not wanted or answer.kind != "expression" or not answer.value.free_symbols:
         return answer, None, None
@@ -448,6 +458,40 @@ def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pars
     value = number * sympy.Rational(size / wanted_size)
     read_in = ("unit_read", {"value": f"{float(value):.6g}", "unit": str(wanted)}) if size != wanted_size else None
     return ParsedAnswer(answer.text, value, "expression"), None, read_in
+
+
+def _formula_in_unit(
+    answer: ParsedAnswer, spec: Kind, expected: Expected
+) -> tuple[ParsedAnswer, Outcome | None, tuple | None]:
+    """``√(g/l) rad/s``, ``√(g/l) s^-1``: a formula, then its unit, where a formula is asked for.
+    The formula is judged, and the note says the unit was left out; a unit none of whose names
+    the problem uses, in SI units, multiplying the whole formula. Where the problem gives its
+    symbols' dimensions, a unit that does not measure the quantity asked for is said so."""
+    value, unchanged = answer.value, (answer, None, None)
+    units = _units_named(answer, expected)
+    if answer.kind != "expression" or not units:
+        return unchanged
+    factors = sympy.Mul.make_args(value)
+    unit = sympy.Mul(*(factor for factor in factors if factor.free_symbols & units))
+    formula = sympy.Mul(*(factor for factor in factors if not factor.free_symbols & units))
+    found = in_units(unit)
+    if found is None or found[:2] != (1, 1) or not formula.free_symbols:
+        return unchanged  # a unit inside the formula, one of another size (ms), or a number with a unit
+    if not any(len(symbol.name) > 1 for symbol in units) and unit != sympy.Symbol("s") ** -1:
+        return unchanged  # m g h: h is the student's height sooner than hours; 1/s is a unit
+    wanted = _expected_units(spec, expected)
+    if wanted is not None and found[2] != wanted:
+        details = {"theirs": si(found[2]), "wanted": si(wanted)}
+        return answer, Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
+    return ParsedAnswer(answer.text, formula, "expression"), None, ("unit_left_out", {"unit": to_text(unit)})
+
+
+def _units_named(answer: ParsedAnswer, expected: Expected) -> set[sympy.Symbol]:
+    """The names an answer uses that the problem does not, when every one is a unit's; else none."""
+    items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
+    used = set().union(*(item.free_symbols for item in items))
+    undefined = {symbol for symbol in used if symbol.name not in expected.names}
+    return undefined if all(symbol.name in SI_UNITS for symbol in undefined) else set()
 
 
 def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome | None:
@@ -467,6 +511,9 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
             "them": "it" if len(undefined) == 1 else "them",
         }
         return Outcome("not_equivalent", 0.0, "eliminate_unknowns", details, method="symbols")
+    if undefined and any(len(symbol.name) > 1 for symbol in _units_named(answer, expected)):
+        # 3.13 rad/s where a formula is asked for: units, not names to define
+        return Outcome("not_equivalent", 0.0, "undefined_units", {"names": _listing(undefined)}, method="symbols")
     if undefined:
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
         return Outcome(

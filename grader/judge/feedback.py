@@ -36,6 +36,7 @@ FEEDBACK: dict[str, str] = {
     "decimal_comma": "Read `{typed}` as {number}: a decimal comma.",
     "other_unit": "Not within the accepted tolerance. Is your number in {unit}? The answer is asked in {wanted}.",
     "unit_read": "Read as {value} {unit}.",
+    "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
@@ -49,6 +50,8 @@ FEEDBACK: dict[str, str] = {
     "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",
     "undefined_symbol": "Your answer uses {names}, which this problem does not define (it uses {defined})."
     " Write your answer in those, or say what {which} stands for: …, where {first} = ….",
+    "undefined_units": "Your answer uses {names}, which this problem does not define: units, it seems."
+    " A formula in the problem's own symbols is asked for here, and its units follow from theirs.",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
     "expected_one_equation": "One equation is asked for here; your answer has {count}.",
     "eliminate_unknowns": "One equation is asked for here; your answer has {count}, with {names}, which this problem"
