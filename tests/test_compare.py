@@ -1025,6 +1025,10 @@ def _comma(typed):
     return f"Read `{typed}` as {typed.replace(',', '.')}: a decimal comma."
 
 
+def _sentence(value):
+    return f"Graded the number `{value}`; the words around it are not graded."
+
+
 def _final(value):
     return f"Graded your final value, `{value}`; the working before it is not graded."
 
@@ -1038,7 +1042,11 @@ def _final(value):
         ("2", "2: θ1 and θ2", {}, "equivalent", "2", (_remark(2, "θ1 and θ2"),)),
         ("2", "2 degrees of freedom", {}, "equivalent", "2", (_remark(2, "degrees of freedom"),)),
         ("2", "four (x1, y1, x2, y2)", {}, "not_equivalent", "4", (_remark("four", "(x1, y1, x2, y2)"),)),
-        ("2", "Two.", {}, "equivalent", "2", ("Read `Two.` as 2.",)),
+        ("2", "Two.", {}, "equivalent", "2", ("Read `Two` as 2.",)),
+        # in a sentence, after words that are not mathematics
+        ("2", "The system has 2 degrees of freedom", {}, "equivalent", "2", (_sentence(2),)),
+        ("2", "It has 2 degrees of freedom: θ1 and θ2.", {}, "equivalent", "2", (_sentence(2),)),
+        (PERIOD, "The period is about 2.01 s.", PERIOD_PART, "equivalent", "2.01", (_sentence("2.01 s"),)),
         # working, then the final value
         ("2", "6 - 4 = 2", {}, "equivalent", "2", (_final(2),)),
         ("2", "6 - 3 = 3", {}, "not_equivalent", "3", (_final(3),)),
@@ -1076,7 +1084,9 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
     )
 
 
-@pytest.mark.parametrize("submitted", ["2 or 3", "2 (or 3)", "2 or three", "2 (the 2 angles)"])
+@pytest.mark.parametrize(
+    "submitted", ["2 or 3", "2 (or 3)", "2 or three", "2 (the 2 angles)", "either 2 or 3", "not 3 but 2", "not 2"]
+)
 def test_a_remark_with_another_number_is_a_hedge_not_a_remark(submitted):
     verdict = compare("2", submitted, kind="integer")
     assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")

@@ -39,9 +39,11 @@ _SEPARATED = re.compile(r"[;\n]|\\\\")
 
 # where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, or a word
 _REMARK = re.compile(r"[(\[{,:;–—]|\s-\s|(?<![A-Za-z0-9_\\])[A-Za-z]{2,}")
+_SENTENCE_END = re.compile(r"(?<=[^\d\s.])\.$")
+_NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its own, not of θ1
 _MATH_SIGNS = set("+-−*/^=√·×")
-# a number of its own in the remark, or "or": 2 or 3, 2 (or 3) is not one answer
-_HEDGE = re.compile(r"(?<!\w)[0-9]|\bor\b", re.I)
+# a number of its own in the remark, "or", or "not": 2 or 3, 2 (or 3), not 2 is not one answer
+_HEDGE = re.compile(r"(?<!\w)[0-9]|\b(?:or|not|never|isn't)\b", re.I)
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
 _REMARKS_TRIED = 12
 _SHOWN = 60  # characters of a remark repeated back to the student
@@ -77,13 +79,16 @@ def read_number(
     pieces = [piece.strip() for piece in _EQUALS.split(bare)]
     last = len(pieces) - 1
     for index in dict.fromkeys((last, 0)):  # the final value, else (2.01 s = T) the first side
-        for typed, rest in _number_then_remark(pieces[index]):
+        for before, typed, rest in _number_in(pieces[index], names):
             words = NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, seconds)
             answer = reads(prepared)
             if answer is None or (rest and not _is_remark(rest, names)):
                 continue
-            if rest:
+            typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
+            if before:
+                notes += (("number_in_sentence", {"value": typed}),)
+            elif rest:
                 rest = rest.lstrip(",:;–—- ")
                 shown = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
                 notes += (("remark_ignored", {"value": typed, "rest": shown}),)
@@ -120,6 +125,17 @@ def _decimal_point(text: str) -> tuple[str, tuple | None]:
     return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
 
 
+def _number_in(piece: str, names: Collection[str]):
+    """``(words before, number, remark)`` readings of ``piece``: the number first, then in a
+    sentence (``The system has 2 degrees of freedom``), after words that are not mathematics."""
+    for number, rest in _number_then_remark(piece):
+        yield "", number, rest
+    first = _NUMBER.search(piece)
+    if first and first.start() and _is_remark(piece[: first.start()], names):
+        for number, rest in _number_then_remark(piece[first.start() :]):
+            yield piece[: first.start()].strip(), number, rest
+
+
 def _number_then_remark(piece: str):
     """``(number, remark)`` splits of ``piece``: the whole of it first, then before each place a
     remark may begin, the longest number first."""
@@ -135,7 +151,7 @@ def _number_then_remark(piece: str):
 def _is_remark(rest: str, names: Collection[str]) -> bool:
     """Whether ``rest`` is words about the number, not more of the answer. After the mark that
     opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit, it names
-    no other number and says no "or"; and it
+    no other number and says neither "or" nor "not"; and it
     cannot be read, or it uses a name that is neither the problem's nor a unit."""
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or _MATH_SIGNS & set(words) or words.rstrip(".").lower() in _UNIT_WORDS:
