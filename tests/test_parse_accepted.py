@@ -364,6 +364,9 @@ LATEX = [
     ("\\theta^\\prime + \\theta^{\\prime\\prime} + x^{ \\prime }", D(theta) + D(theta, 2) + D(x)),
     ("\\theta^{\\prime 2} + \\theta_1^{\\prime\\prime 3}", D(theta) ** 2 + D(theta1, 2) ** 3),
     ("{\\theta^{\\prime}}^2", D(theta) ** 2),
+    # a compound unit in roman type: its words whole names (rad, not r·a·d), for the checker to read as units
+    ("a\\,\\text{kg\\cdot s^{-2}}", a * sympy.Symbol("kg") * sympy.Symbol("s") ** -2),
+    ("\\sqrt{g}\\,\\mathrm{rad/s}", sympy.sqrt(g) * sympy.Symbol("rad") / sympy.Symbol("s")),  # a, d known
     *(
         (f"m \\ddot x = -k x {step} \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x))
         for step in ("\\iff", "\\Leftrightarrow", "\\therefore", "\\to", "\\rightarrow", "\\text{ so }")

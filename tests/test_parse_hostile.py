@@ -118,7 +118,8 @@ HOSTILE = [
     ("\\input{/etc/passwd}", "unknown_command"),
     ("\\def\\x{1}", "unknown_command"),
     ("\\text{hello}", "latex_words"),
-    ("\\sqrt{g/l}\\,\\mathrm{rad/s}", "latex_words"),  # a unit: said so, not "\\mathrm is unknown"
+    ("\\sqrt{g/l}\\,\\mathrm{radians per second}", "latex_words"),  # words: said so, not "\\mathrm is unknown"
+    ("\\sqrt{g/l}\\,\\mathrm{m/s}", "unit_is_a_name"),  # m is the problem's mass: which is it?
     ("\\text{{a}}", "unknown_command"),
     ("\\sqrt\\[3\\]{x}", "unknown_command"),
     ("m ∂θ", "partial"),  # ∂ only in a name before =, as in ∂L/∂θ̇ = …
@@ -263,9 +264,9 @@ SHOWN = [
     ),
     ("\\input{x}", "`\\input` is not a LaTeX command this grader knows.", "\\input{x}\n^^^^^^"),
     (
-        "\\omega = \\sqrt{g/l}\\,\\mathrm{rad/s}",
-        "`\\mathrm{rad/s}` is text, not mathematics: leave units and words out of the answer.",
-        "\\omega = \\sqrt{g/l}\\,\\mathrm{rad/s}\n" + " " * 21 + "^" * 14,
+        "\\omega = \\sqrt{g/l}\\,\\text{for small angles}",
+        "`\\text{for small angles}` is text, not mathematics: leave units and words out of the answer.",
+        "\\omega = \\sqrt{g/l}\\,\\text{for small angles}\n" + " " * 21 + "^" * 23,
     ),
     ("m/(l-l)", "This divides by zero.", "m/(l-l)\n ^"),
     ("x" * (CAP + 1), f"Your answer is {CAP + 1} characters long; the limit is {CAP}.", ""),

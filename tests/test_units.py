@@ -225,6 +225,8 @@ LEFT_OUT = "Read without its unit, `{}`: the formula is what is graded."
         # a formula, then its unit: the formula is graded, and the note says the unit was left out
         ("√(g/l) rad/s", PENDULUM, "equivalent", ("Correct.", LEFT_OUT.format("rad/s"))),
         ("ω = √(g/l) s^-1", PENDULUM, "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
+        (r"\omega=\sqrt{\frac{g}{l}}\,\mathrm{rad/s}", PENDULUM, "equivalent", ("Correct.", LEFT_OUT.format("rad/s"))),
+        (r"\sqrt{g/l}\;\text{s^{-1}}", PENDULUM, "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
         ("√(g/l) [rad/s]", {"coords": ["theta"], "known": ["m", "g", "l"]}, "equivalent",
          ("Correct.", LEFT_OUT.format("rad/s"))),
         ("2 √(g/l) Hz", PENDULUM, "not_equivalent",

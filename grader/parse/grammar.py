@@ -775,6 +775,10 @@ class _Parser:
         """The meaning of a name: one piece, or several when known symbols are juxtaposed."""
         canonical = canonical_name(name.raw)
         whole = self.lookup(canonical)
+        if name.unit:  # rad in \mathrm{rad/s}: a unit's own name, unless the problem uses it for one of its own
+            if whole is not None:
+                raise ParseFailure("unit_is_a_name", token.start, token.end, name=self.source(token))
+            return [sympy.Symbol(canonical)]
         if whole is not None:
             return [whole]
         if _GREEK_NAME.match(canonical):

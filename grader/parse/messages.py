@@ -51,6 +51,7 @@ MESSAGES: dict[str, str] = {
     "unknown_function": "`{name}` is not a function this grader knows. Known functions: {known}.",
     "unknown_command": "`\\{name}` is not a LaTeX command this grader knows.",
     "latex_words": "`{words}` is text, not mathematics: leave units and words out of the answer.",
+    "unit_is_a_name": "`{name}` in this unit is also a name of the problem's: leave the unit out of the answer.",
     "function_inverse": "`{name}^-1` is ambiguous: write a{name}(x) for the inverse function or 1/{name}(x) for the reciprocal.",
     "function_power": "A power written on a function name must be a small whole number, as in sin^2(θ).",
     "missing_argument": "`{name}` needs an argument, as in {name}(θ).",

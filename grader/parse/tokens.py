@@ -82,6 +82,7 @@ class Name:
     dots: int = 0
     primes: int = 0
     tex: bool = False
+    unit: bool = False  # a word of a unit in roman type (\mathrm{rad/s}): one symbol, never split
 
 
 @dataclass(frozen=True)
@@ -169,6 +170,9 @@ _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "b
 # (A brace this short after \text or \mathrm is a unit or a few words, as \mathrm{rad/s}.)
 _LATEX_ANNOTATIONS = re.compile(r"\s*\{[^{}]{0,40}\}")
 _TEXT_COMMANDS = {"text", "textrm", "mathrm", "operatorname", "mbox"}  # whose braces may hold a unit or words
+# rad/s, m/s^2, kg·m^2: words joined by / ^ or ·, as a compound unit is written in \mathrm or \text
+_COMPOUND_UNIT = re.compile(r"\s*\{\s*[A-Za-z]+(?:\s*(?:/|\^|·|\\cdot)\s*\{?-?[A-Za-z0-9]+\}?)+\s*\}")
+_UNIT_PIECE = re.compile(r"(?P<word>[A-Za-z]+)|(?P<number>[0-9]+)|(?P<op>\\cdot|[/^·{}-])")
 _TEXT_PUNCTUATION = re.compile(r"\s*\{\s*[.,;]?\s*\}")
 _OPERATOR_NAME = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}")
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
@@ -632,6 +636,20 @@ class _Tokenizer:
             raise ParseFailure("bad_name", self.pos - len(inner) - 1, self.pos, name="_" + inner)
         raw.append("_" + sub)
 
+    def _compound_unit(self, unit: re.Match) -> None:
+        """``\\mathrm{rad/s}``, ``\\text{m/s^2}``: the unit in its braces, its words whole names (in
+        TeX's roman type, rad is one word, not r·a·d); the checker decides they are units."""
+        for piece in _UNIT_PIECE.finditer(self.text, unit.start(), unit.end()):
+            word, number, operator = piece.group("word", "number", "op")
+            if word:
+                token = Token("name", Name(word, unit=True), piece.start(), piece.end())
+            elif number:
+                token = Token("num", number, piece.start(), piece.end())
+            else:  # · or \cdot multiplies
+                token = Token("op", "*" if operator in ("·", "\\cdot") else operator, piece.start(), piece.end())
+            self.tokens.append(token)
+        self.pos = unit.end()
+
     def _finish_name(self, start: int, raw: str, dots: int) -> None:
         end_of_name = self.pos
         primes = 0
@@ -748,6 +766,8 @@ class _Tokenizer:
             # \mathcal{F}, \mathrm{d}: the letters, in another typeface
             self.pos = braced.end()
             self._finish_name(start, braced[1] or braced[2], 0)
+        elif command in _TEXT_COMMANDS and (unit := _COMPOUND_UNIT.match(text, self.pos)):
+            self._compound_unit(unit)
         elif command in _TEXT_COMMANDS and (words := _LATEX_ANNOTATIONS.match(text, self.pos)):
             # \,\mathrm{rad/s}, \text{ for small angles}: more than the mathematics
             raise ParseFailure("latex_words", start, words.end(), words=text[start : words.end()])
