@@ -986,6 +986,37 @@ def test_a_choice_may_be_written_as_its_claim_without_the_reason(submitted, stat
     assert (verdict.feedback[-1] == f"Read as the option you wrote out: {read}.") == (read is not None)
 
 
+TIME_CHOICE = {"kind": "choice", "options": (("a", "scleronomic"), ("b", "rheonomic"))}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # a label, then its option's words, or after a mark a reason: the label
+        ("b (rheonomic)", "equivalent", ("Correct.",)),
+        ("b) rheonomic", "equivalent", ("Correct.",)),
+        ("(b) Rheonomic", "equivalent", ("Correct.",)),
+        ("b. rheonomic", "equivalent", ("Correct.",)),
+        ("b, since l = l(t)", "equivalent", ("Correct.",)),
+        ("b - it depends on time", "equivalent", ("Correct.",)),
+        ("a: scleronomic", "not_equivalent", ("Not the right choice.",)),
+        # the claim, then the reason
+        ("rheonomic because l depends on t", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        # a label and words that name another option: which one is meant?
+        ("a (rheonomic)", "invalid",
+         ("Your label a and your words `rheonomic` name different options: give one of them.",)),
+        # a label, a space, and words that are no reason
+        ("b foo", "invalid", ("`b foo` is not one of the options (a, b).",)),
+        ("b or a", "invalid", ("or is not one of the options (a, b).",)),
+        ("b, e", "invalid", ("e is not one of the options (a, b).",)),
+        ("b - or maybe a", "invalid", ("`b - or maybe a` is not one of the options (a, b).",)),
+    ],
+)  # fmt: skip
+def test_a_label_may_come_with_its_options_words_or_a_reason(submitted, status, feedback):
+    verdict = compare("b", submitted, **TIME_CHOICE)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 def test_several_choices_may_be_written_out_each_between_commas():
     options = (("a", "holonomic"), ("b", "scleronomic"), ("c", "rheonomic"))
     verdict = compare("a, b", "Holonomic, scleronomic", kind="choice", options=options, multiple=True)

@@ -88,6 +88,7 @@ FEEDBACK: dict[str, str] = {
     "choice_unknown": "{labels} is not one of the options ({options}).",
     "choice_count": "Choose {count}.",
     "choice_wrong": "Not the right choice.",
+    "choice_conflict": "Your label {label} and your words `{words}` name different options: give one of them.",
     "choice_read": "Read as the option you wrote out: {labels}.",
     "text_review": "A person will read this answer; the rubric found {found} of its {total} ideas.",
     "mistake": "{feedback}",

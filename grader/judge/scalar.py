@@ -89,7 +89,11 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     if isinstance(submitted, str) and (given is None or any(label not in texts for label in given)):
         # "non-holonomic" or "φ" for option b: the option's own words, where they name one option
         read = _by_text(submitted, texts, multiple=bool(expected.option("multiple")))
-        given = read or given
+        labelled = None if read else _labelled(submitted, texts)
+        if labelled and labelled[1]:
+            details = {"label": labelled[0], "words": labelled[1]}
+            return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
+        given = read or ([labelled[0]] if labelled else given)
     if given is None:
         shown = f"`{submitted.strip()[:40]}`" if isinstance(submitted, str) and submitted.strip() else "This"
         details = {"labels": shown, "options": ", ".join(options) or "?"}
@@ -133,11 +137,33 @@ def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[s
             if words:
                 by_words[words] = None if words in by_words else label  # two options alike name neither
     whole = by_words.get(_plain(submitted))
+    if not whole and not multiple:  # "rheonomic because l depends on t": the claim, then the reason
+        whole = by_words.get(_plain(_REASON.split(submitted, maxsplit=1)[0]))
     if whole or not multiple:
         return [whole] if whole else None
     labels = [by_words.get(_plain(piece)) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
     return labels if labels and all(labels) else None
 
+
+def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
+    """``b (rheonomic)``, ``b) rheonomic``, ``b: rheonomic``, ``b, since l = l(t)``: a label, then its
+    option's words, or after a mark of punctuation a reason naming no other option. Returns the
+    label and "" ; or the label and the words where they name another option (``b (scleronomic)``);
+    or None."""
+    match = _LABELLED.fullmatch(submitted) if len(submitted) <= MAX_CHOICE_LENGTH else None
+    if match is None or match["label"].lower() not in texts:
+        return None
+    label, words = match["label"].lower(), match["words"].strip(" ()[].")
+    named = _by_text(words, texts, multiple=False)
+    if named:
+        return (label, "") if named == [label] else (label, words)
+    if all(len(other) <= 2 for other in choice_labels(words) or ["words"]) or re.search(r"\bor\b", words, re.I):
+        return None  # a, e: labels, one of them no option's; b - or maybe a: a hedge
+    return (label, "") if match["mark"].strip() or _REASON.match(" " + words) else None
+
+
+# a label, then words: b (rheonomic), (b) rheonomic, b. rheonomic, b - since …
+_LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;–—-]\s*|\s+)(?P<words>\S.*?)\s*", re.S)
 
 # where an option's reason begins: "rheonomic, since …", "holonomic because …"
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
