@@ -438,10 +438,11 @@ def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pars
     """A number written with its unit, where the part names one: ``2.006 s``, or ``2006 ms`` for a
     time asked in seconds, is the number in the part's unit. Another quantity (``2.006 m``) is
     not equivalent, and the student is told what the unit measures. A number alone is taken to
-    be in the part's unit, as the question asks.
+    be in the part's unit, as the question asks. Where a formula is asked for, see
+    :func:`_formula_in_unit`.
 
     Returns the answer to judge, an outcome already decided (or None), and a note saying how a
-    number in another unit was read (or None)."""
+    number in another unit, or a formula with its unit, was read (or None)."""
     if spec.name == "expression":
         return _formula_in_unit(answer, spec, expected)
     wanted = expected.option("unit") if spec.name == "number" else None

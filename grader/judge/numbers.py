@@ -52,7 +52,7 @@ _WORDS = [
     "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
     "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty",
 ]  # fmt: skip
-NUMBER_WORDS = {word: str(value) for value, word in enumerate(_WORDS)}
+_NUMBER_WORDS = {word: str(value) for value, word in enumerate(_WORDS)}
 
 _LENGTH = 200  # longer answers are read as typed: these readings are for a number and a few words
 
@@ -80,7 +80,7 @@ def read_number(
     last = len(pieces) - 1
     for index in dict.fromkeys((last, 0)):  # the final value, else (2.01 s = T) the first side
         for before, typed, rest in _number_in(pieces[index], names):
-            words = NUMBER_WORDS.get(typed.lower().rstrip("."))
+            words = _NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, seconds)
             answer = reads(prepared)
             if answer is None or (rest and not _is_remark(rest, names)):
@@ -150,9 +150,9 @@ def _number_then_remark(piece: str):
 
 def _is_remark(rest: str, names: Collection[str]) -> bool:
     """Whether ``rest`` is words about the number, not more of the answer. After the mark that
-    opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit, it names
-    no other number and says neither "or" nor "not"; and it
-    cannot be read, or it uses a name that is neither the problem's nor a unit."""
+    opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit; it names
+    no other number and says neither "or" nor "not"; and it cannot be read, or it uses a name that
+    is neither the problem's nor a unit."""
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or _MATH_SIGNS & set(words) or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 s^-1 a unit

@@ -641,6 +641,8 @@ class _Tokenizer:
         TeX's roman type, rad is one word, not r·a·d); the checker decides they are units."""
         for piece in _UNIT_PIECE.finditer(self.text, unit.start(), unit.end()):
             word, number, operator = piece.group("word", "number", "op")
+            if word and len(word) > LIMITS.name:
+                raise ParseFailure("name_too_long", piece.start(), piece.end(), name=word[:20] + "…", limit=LIMITS.name)
             if word:
                 token = Token("name", Name(word, unit=True), piece.start(), piece.end())
             elif number:
