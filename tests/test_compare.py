@@ -1078,6 +1078,8 @@ def _final(value):
         ("2", "The system has 2 degrees of freedom", {}, "equivalent", "2", (_sentence(2),)),
         ("2", "It has 2 degrees of freedom: θ1 and θ2.", {}, "equivalent", "2", (_sentence(2),)),
         (PERIOD, "The period is about 2.01 s.", PERIOD_PART, "equivalent", "2.01", (_sentence("2.01 s"),)),
+        ("2", "It has two degrees of freedom", {}, "equivalent", "2", (_sentence("two"),)),
+        ("2", "2 (the two angles)", {}, "equivalent", "2", (_remark(2, "(the two angles)"),)),
         # working, then the final value
         ("2", "6 - 4 = 2", {}, "equivalent", "2", (_final(2),)),
         ("2", "6 - 3 = 3", {}, "not_equivalent", "3", (_final(3),)),
@@ -1116,7 +1118,18 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
 
 
 @pytest.mark.parametrize(
-    "submitted", ["2 or 3", "2 (or 3)", "2 or three", "2 (the 2 angles)", "either 2 or 3", "not 3 but 2", "not 2"]
+    "submitted",
+    [
+        "2 or 3",
+        "2 (or 3)",
+        "2 or three",
+        "2 (three minus one)",
+        "2 (the 2 angles)",
+        "either 2 or 3",
+        "not 3 but 2",
+        "not 2",
+        "the one that swings",  # "one" after an article is a pronoun
+    ],
 )
 def test_a_remark_with_another_number_is_a_hedge_not_a_remark(submitted):
     verdict = compare("2", submitted, kind="integer")

@@ -44,6 +44,8 @@ _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its o
 _MATH_SIGNS = set("+-−*/^=√·×")
 # a number of its own in the remark, "or", or "not": 2 or 3, 2 (or 3), not 2 is not one answer
 _HEDGE = re.compile(r"(?<!\w)[0-9]|\b(?:or|not|never|isn't)\b", re.I)
+# "one" after these is a pronoun (the one that swings), not a number
+_PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
 _REMARKS_TRIED = 12
 _SHOWN = 60  # characters of a remark repeated back to the student
@@ -53,6 +55,7 @@ _WORDS = [
     "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty",
 ]  # fmt: skip
 _NUMBER_WORDS = {word: str(value) for value, word in enumerate(_WORDS)}
+_NUMBER_WORD = re.compile(r"\b(?:" + "|".join(_WORDS) + r")\b", re.I)
 
 _LENGTH = 200  # longer answers are read as typed: these readings are for a number and a few words
 
@@ -83,7 +86,7 @@ def read_number(
             words = _NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, seconds)
             answer = reads(prepared)
-            if answer is None or (rest and not _is_remark(rest, names)):
+            if answer is None or (rest and not _is_remark(rest, names, words or typed)):
                 continue
             typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
             if before:
@@ -130,10 +133,19 @@ def _number_in(piece: str, names: Collection[str]):
     sentence (``The system has 2 degrees of freedom``), after words that are not mathematics."""
     for number, rest in _number_then_remark(piece):
         yield "", number, rest
-    first = _NUMBER.search(piece)
-    if first and first.start() and _is_remark(piece[: first.start()], names):
-        for number, rest in _number_then_remark(piece[first.start() :]):
-            yield piece[: first.start()].strip(), number, rest
+    starts = [found.start() for found in (_NUMBER.search(piece), _first_number_word(piece)) if found]
+    start = min(starts, default=0)
+    if start and _is_remark(piece[:start], names):
+        for number, rest in _number_then_remark(piece[start:]):
+            yield piece[:start].strip(), number, rest
+
+
+def _first_number_word(piece: str) -> re.Match | None:
+    """The first number in words (It has two degrees of freedom), where "one" is no pronoun."""
+    for found in _NUMBER_WORD.finditer(piece):
+        if found[0].lower() != "one" or not _PRONOUN_ONE.search(piece[: found.start()]):
+            return found
+    return None
 
 
 def _number_then_remark(piece: str):
@@ -148,16 +160,17 @@ def _number_then_remark(piece: str):
             yield number, rest
 
 
-def _is_remark(rest: str, names: Collection[str]) -> bool:
+def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     """Whether ``rest`` is words about the number, not more of the answer. After the mark that
     opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit; it names
-    no other number and says neither "or" nor "not"; and it cannot be read, or it uses a name that
-    is neither the problem's nor a unit."""
+    no number in digits, nor in words another than ``number``, and says neither "or" nor "not"; and
+    it cannot be read, or it uses a name that is neither the problem's nor a unit."""
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or _MATH_SIGNS & set(words) or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 s^-1 a unit
-    if _HEDGE.search(words):
-        return False
+    others = [word for word in _NUMBER_WORD.findall(words) if _NUMBER_WORDS[word.lower()] != number]
+    if _HEDGE.search(words) or others:
+        return False  # 2 or 3; 2 (or three); but 2 (the two angles)
     read = parse_answer(words, known=names)
     if not read.ok:
         return True
