@@ -248,6 +248,12 @@ SYSTEMS = [
     ("  1) a = b\n\n  2) c = d\n", (Eq(a, b), Eq(c, d))),
     ("1.5 a = b\n2.5 c = d", (Eq(3 * a / 2, b), Eq(5 * c / 2, d))),  # decimals, not a list
     ("1. ẍ = -k x.\n2. a = b.", (Eq(D(x, 2), -k * x), Eq(a, b))),
+    # a bulleted list: the same bullet on every line, or a • alone, which is never mathematics
+    ("• a = b\n• c = d", (Eq(a, b), Eq(c, d))),
+    ("  * a = b\n  * c = d\n", (Eq(a, b), Eq(c, d))),
+    ("• a = b", Eq(a, b)),
+    # Markdown's "- " stays a minus sign: on every line it may as well be one
+    ("- a = b\n- c = d", (Eq(-a, b), Eq(-c, d))),
     ("θ̈₁ = a; θ̈₂ = b", (Eq(D(theta1, 2), a), Eq(D(theta2, 2), b))),
     ("a = b +\nc", Eq(a, b + c)),
     ("a = b\n+ c", Eq(a, b + c)),

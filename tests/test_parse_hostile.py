@@ -121,6 +121,7 @@ HOSTILE = [
     ("\\sqrt{g/l}\\,\\mathrm{radians per second}", "latex_words"),  # words: said so, not "\\mathrm is unknown"
     ("\\sqrt{g/l}\\,\\mathrm{m/s}", "unit_is_a_name"),  # m is the problem's mass: which is it?
     ("\\mathrm{" + "a" * 41 + "/s}", "name_too_long"),  # a unit's words keep the cap on a name
+    ("* a = b\n• c = d", "bad_character"),  # two bullets: not one list, and • is no mathematics
     ("\\text{{a}}", "unknown_command"),
     ("\\sqrt\\[3\\]{x}", "unknown_command"),
     ("m ∂θ", "partial"),  # ∂ only in a name before =, as in ∂L/∂θ̇ = …

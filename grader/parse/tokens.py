@@ -355,6 +355,8 @@ _READ_AS = str.maketrans(_SPACING_DOTS | _LOOKALIKES | _INVISIBLE)  # all three,
 
 
 _LIST_MARKER = re.compile(r"[ \t]*([0-9]{1,3})[.)][ \t]+")
+_BULLETS = "•◦▪‣⁃"  # never mathematics, so one alone is a bullet too
+_BULLET = re.compile(rf"[ \t]*([{_BULLETS}]|\*(?=[ \t]))[ \t]*")
 
 
 # the rest of a line after its math: closing delimiters, \end{…}, then the line's end or TeX's \\
@@ -373,16 +375,24 @@ def _closes_line(text: str, position: int) -> bool:
 
 
 def _list_markers(text: str) -> dict[int, int]:
-    """Where ``1. …`` or ``1) …`` numbers every line of an answer in order: start → end of each
-    number, to be read past. Otherwise none: ``2. l θ̈`` alone may be a factor, as typed."""
+    """Where ``1. …`` or ``1) …`` numbers every line of an answer in order, or the same bullet
+    (``•``, or ``*`` and a space, as Markdown lists) starts every line: start → end of each
+    marker, to be read past. Otherwise none: ``2. l θ̈`` alone may be a factor, as typed. A
+    Markdown ``- `` is not read as a bullet: ``- 2 l θ̈₁ + … = 0`` on every line may as well be
+    minus signs, and either reading could be wrong."""
     lines, at = [], 0
     for line in text.split("\n"):
         if line.strip():
-            lines.append((at, _LIST_MARKER.match(line)))
+            lines.append((at, line))
         at += len(line) + 1
-    if len(lines) < 2 or not all(m and int(m[1]) == k for k, (_, m) in enumerate(lines, start=1)):
-        return {}
-    return {start: start + m.end() for start, m in lines}
+    numbers = [_LIST_MARKER.match(line) for _, line in lines]
+    if len(lines) > 1 and all(m and int(m[1]) == k for k, m in enumerate(numbers, start=1)):
+        return {start: start + m.end() for (start, _), m in zip(lines, numbers, strict=True)}
+    bullets = [_BULLET.match(line) for _, line in lines]
+    marks = {m[1] for m in bullets if m}
+    if all(bullets) and len(marks) == 1 and (len(lines) > 1 or marks <= set(_BULLETS)):
+        return {start: start + m.end() for (start, _), m in zip(lines, bullets, strict=True)}
+    return {}
 
 
 class _Tokenizer:
@@ -390,7 +400,7 @@ class _Tokenizer:
         self.text, self.latex = text.translate(_READ_AS), latex
         self.pos = 0
         self.tokens: list[Token] = []
-        self.markers = _list_markers(self.text) if "\n" in text else {}
+        self.markers = _list_markers(self.text) if "\n" in text or text.lstrip()[:1] in _BULLETS else {}
         self.in_math = self.math_closed = False  # between $ … $, and whether a $ has closed math yet
 
     def run(self) -> list[Token]:
