@@ -518,6 +518,47 @@ def test_an_expression_may_be_followed_by_the_definitions_of_its_names(expected,
         assert "answer" not in verdict.read_as  # the parser's name for the expression is not shown
 
 
+def _words(words):
+    return f"Read without the words after it, `{words}`: the formula is what is graded."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "notes"),
+    [
+        (EOM_PENDULUM, "θ̈ = −(g/l) sin θ for all angles", "equation", "equivalent", (_words("for all angles"),)),
+        (EOM_PENDULUM, "m l θ̈ = −m g sin θ (Newton)", "equation", "equivalent", (_words("(Newton)"),)),
+        ("sqrt(g/l)", "ω = √(g/l) for small oscillations", "expression", "equivalent",
+         (_words("for small oscillations"),)),
+        # words of arithmetic, or its signs: refused as typed
+        ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),
+    ],
+)  # fmt: skip
+def test_words_after_a_formula_are_read_past_and_said_so(expected, submitted, kind, status, notes):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.notes) == (status, notes)
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "√(g/l) times l",  # a word of arithmetic: the words may be part of the formula
+        "√(g/l) or √(l/g)",  # a hedge
+        "√(g/l) but negative",
+        "√(g/l) for angles below 10 degrees",  # a number
+    ],
+)
+def test_words_that_may_be_part_of_the_formula_are_not_read_past(submitted):
+    verdict = compare("sqrt(g/l)", submitted, **PENDULUM)
+    assert verdict.diagnosis == "undefined_symbol"
+    assert not verdict.notes
+
+
+def test_a_name_left_in_the_formula_before_the_words_is_said_as_usual():
+    verdict = compare(L_PENDULUM, "½ m v² + m g l cos θ, where v is the speed", kind="lagrangian", **PENDULUM)
+    assert verdict.feedback[0].startswith("Your answer uses `v`, which this problem does not define")
+
+
 def test_an_expression_before_definitions_is_shown_back_without_a_name():
     verdict = compare(L_PENDULUM, "½ m l² θ̇² + m g l cos θ, where u = l θ̇", kind="lagrangian", **PENDULUM)
     assert verdict.read_as == "g*l*m*cos(θ) + l^2*m*θ̇^2/2; u = l*θ̇"

@@ -37,7 +37,8 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import SI_UNITS, Mixed, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
-from grader.parse import ANSWER, TIME, ParsedAnswer, parse_answer, too_many_digits, within_diff_budget
+from grader.judge.words import formula_then_words
+from grader.parse import ANSWER, TIME, ParsedAnswer, Refusal, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
@@ -151,21 +152,14 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
-    answer, conserved, used, typed, read_in, number_notes = None, False, (), None, None, ()
+    answer, conserved, used, typed, read_in, read_notes = None, False, (), None, None, ()
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
         with time_limit(timeout) as deadline:
             if spec.parsed:
                 names = sorted(expected.names | {symbol.name for symbol, _ in given})
-                if spec.name in ("integer", "number"):
-                    unit = spec.name == "number" and bool(expected.option("unit"))
-                    reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
-                    submitted, answer, number_notes = read_number(
-                        submitted, reads, names, decimal_comma=spec.name == "number", seconds=unit
-                    )
-                if answer is None:
-                    answer = parse_answer(submitted, coords=expected.setting.coords, known=names, deadline=deadline)
+                answer, read_notes = _read(spec, expected, submitted, names, deadline)
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
@@ -180,7 +174,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if early:
                     return _verdict(early, shown)  # as typed: 2.006 m is not read as a time
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
-            for note in (*number_notes, read_in):
+            for note in (*read_notes, read_in):
                 if note:
                     outcome = replace(outcome, notes=(*outcome.notes, note))
             if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
@@ -405,6 +399,48 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
         if term.free_symbols == {constant} and term.is_polynomial(constant) and sympy.degree(term, constant) == 1:
             return ParsedAnswer(answer.text, rest, "expression")
     return answer
+
+
+def _read(
+    spec: Kind, expected: Expected, submitted: str, names: list, deadline
+) -> tuple[ParsedAnswer | Refusal, tuple]:
+    """The submitted answer read, and notes on how: a number found in what was written around it
+    (:func:`~grader.judge.numbers.read_number`), or a formula without the words after it."""
+    coords = expected.setting.coords
+    if spec.name not in ("integer", "number"):
+        answer = parse_answer(submitted, coords=coords, known=names, deadline=deadline)
+        answer, note = _without_words(answer, submitted, expected, names, deadline)
+        return answer, (note,) if note else ()
+    reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
+    unit = spec.name == "number" and bool(expected.option("unit"))
+    text, answer, notes = read_number(submitted, reads, names, decimal_comma=spec.name == "number", seconds=unit)
+    if answer is None:  # what read_number could not read: as typed, and said why
+        answer = parse_answer(text, coords=coords, known=names, deadline=deadline)
+    return answer, notes
+
+
+def _without_words(
+    answer: ParsedAnswer, submitted: str, expected: Expected, names: list, deadline
+) -> tuple[ParsedAnswer, tuple | None]:
+    """``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ (conserved)``: the formula, read without
+    the words after it, where the answer as typed cannot be read or uses names the problem does
+    not have; and the note that says so. Otherwise the answer as it was read."""
+    if answer.ok and not _undefined(answer, names):
+        return answer, None
+    split = formula_then_words(submitted, names, expected.setting.coords)
+    if split is None:
+        return answer, None
+    formula, words = split
+    read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
+    if not read.ok:
+        return answer, None  # a name of its own left in the formula (v, where v is the speed) is said as usual
+    shown = words if len(words) <= 60 else words[:59] + "…"
+    return read, ("words_left_out", {"words": shown})
+
+
+def _undefined(answer: ParsedAnswer, names: list) -> bool:
+    items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
+    return any(symbol.name not in names for item in items for symbol in item.free_symbols)
 
 
 def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadline) -> ParsedAnswer | None:

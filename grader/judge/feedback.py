@@ -36,6 +36,7 @@ FEEDBACK: dict[str, str] = {
     "decimal_comma": "Read `{typed}` as {number}: a decimal comma.",
     "other_unit": "Not within the accepted tolerance. Is your number in {unit}? The answer is asked in {wanted}.",
     "unit_read": "Read as {value} {unit}.",
+    "words_left_out": "Read without the words after it, `{words}`: the formula is what is graded.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",

@@ -17,8 +17,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Collection
 
-from grader.judge.units import SI_UNITS
-from grader.parse import ParsedAnswer, parse_answer
+from grader.judge.words import is_prose
+from grader.parse import ParsedAnswer
 
 __all__ = ["read_number"]
 
@@ -41,9 +41,6 @@ _SEPARATED = re.compile(r"[;\n]|\\\\")
 _REMARK = re.compile(r"[(\[{,:;–—]|\s-\s|(?<![A-Za-z0-9_\\])[A-Za-z]{2,}")
 _SENTENCE_END = re.compile(r"(?<=[^\d\s.])\.$")
 _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its own, not of θ1
-_MATH_SIGNS = set("+-−*/^=√·×")
-# a number of its own in the remark, "or", or "not": 2 or 3, 2 (or 3), not 2 is not one answer
-_HEDGE = re.compile(r"(?<!\w)[0-9]|\b(?:or|not|never|isn't)\b", re.I)
 # "one" after these is a pronoun (the one that swings), not a number
 _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
@@ -161,19 +158,12 @@ def _number_then_remark(piece: str):
 
 
 def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
-    """Whether ``rest`` is words about the number, not more of the answer. After the mark that
-    opens it, it does not begin with a digit, has no sign of arithmetic and is not a unit; it names
-    no number in digits, nor in words another than ``number``, and says neither "or" nor "not"; and
-    it cannot be read, or it uses a name that is neither the problem's nor a unit."""
+    """Whether ``rest`` is words about the number, not more of the answer: after the mark that
+    opens it, prose (:func:`~grader.judge.words.is_prose`) that does not begin with a digit, is not
+    a unit, and names no number in words but ``number`` (2 (the two angles), not 2 (or three))."""
     words = rest.lstrip("([{,:;–—- ")
-    if not words or words[0] in "0123456789." or _MATH_SIGNS & set(words) or words.rstrip(".").lower() in _UNIT_WORDS:
-        return False  # 2,01, 3 is a list; 2 s^-1 a unit
-    others = [word for word in _NUMBER_WORD.findall(words) if _NUMBER_WORDS[word.lower()] != number]
-    if _HEDGE.search(words) or others:
-        return False  # 2 or 3; 2 (or three); but 2 (the two angles)
-    read = parse_answer(words, known=names)
-    if not read.ok:
-        return True
-    items = read.value if isinstance(read.value, tuple) else (read.value,)
-    used = set().union(*(item.free_symbols for item in items))
-    return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in used)
+    if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
+        return False  # 2,01, 3 is a list; 2 sec a unit
+    if any(_NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(words)):
+        return False
+    return is_prose(words, names)
