@@ -259,6 +259,8 @@ SYSTEMS = [
     ("a = b\n+ c", Eq(a, b + c)),
     # a label before a colon names the equation that follows it
     ("EOM: ẍ = -k x", Eq(D(x, 2), -k * x)),
+    ("Lagrangian: a + b", a + b),  # before an expression, a word that starts the answer
+    ("Answer: 2 m", 2 * m),
     ("θ₁: a = b\nθ₂: c = d", (Eq(a, b), Eq(c, d))),
     ("eq 1: a = b; eq 2: c = d", (Eq(a, b), Eq(c, d))),
     ("EOM:\nẍ = -k x", Eq(D(x, 2), -k * x)),

@@ -87,6 +87,9 @@ HOSTILE = [
     ("m g:", "bad_character"),
     ("θ̈: -g sin θ = 0", "bad_character"),
     ("a b c d: x = 1", "bad_character"),
+    ("m g: x", "bad_character"),  # before an expression, names are no label: only a word is
+    ("sin: x", "bad_character"),
+    ("a + b\nLagrangian: c", "bad_character"),  # and only where the answer starts
     ("x^2_1", "bad_character"),  # a subscript after a power is TeX's, not plain notation's
     ("x # comment", "comment"),
     ("#", "comment"),

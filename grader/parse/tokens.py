@@ -374,6 +374,16 @@ def _closes_line(text: str, position: int) -> bool:
     return bool(_LINE_END.match(text, position))
 
 
+def _is_word(token: Token) -> bool:
+    """Whether a token is a word (``Lagrangian``, ``Answer``): three ASCII letters or more, and no
+    Greek letter's or function's name."""
+    raw = token.value.raw if token.kind == "name" else ""
+    return len(raw) >= 3 and raw.isascii() and raw.isalpha() and raw.lower() not in _NOT_WORDS
+
+
+_NOT_WORDS = {name.lower() for name in (*GREEK_BY_LETTER.values(), *FUNCTION_NAMES, *_CALLABLE)}
+
+
 def _list_markers(text: str) -> dict[int, int]:
     """Where ``1. …`` or ``1) …`` numbers every line of an answer in order, or the same bullet
     (``•``, or ``*`` and a space, as Markdown lists) starts every line: start → end of each
@@ -478,13 +488,15 @@ class _Tokenizer:
     def _line_label(self) -> bool:
         """Whether a colon ends the label of an equation, ``EOM:`` or ``θ₁:``, which is then dropped:
         one to three undotted names (the first perhaps followed by a number: ``eq 1:``) that start
-        the answer, a line, or an item after ``;`` or ``,``."""
-        if "=" not in self.text[self.pos + 1 :]:
-            return False  # an equation's label only: `m g:` is no answer, `lambda x: x` is code
+        the answer, a line, or an item after ``;`` or ``,``. Before an expression, only a word of
+        three letters or more that starts the answer (``Lagrangian: …``): ``m g:`` is no answer,
+        and ``lambda x: x`` is code."""
         start = len(self.tokens)
         while start and not (self.tokens[start - 1].kind == "sep" or self.tokens[start - 1].is_op(";", ",")):
             start -= 1
         label = self.tokens[start:]
+        if "=" not in self.text[self.pos + 1 :] and not (start == 0 and len(label) == 1 and _is_word(label[0])):
+            return False
         if not 1 <= len(label) <= 3 or label[0].kind != "name":
             return False
         if not all(t.kind == "num" or (t.kind == "name" and not t.value.dots and not t.value.primes) for t in label):
