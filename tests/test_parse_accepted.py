@@ -259,6 +259,12 @@ SYSTEMS = [
     ("a = b\n+ c", Eq(a, b + c)),
     # a label before a colon names the equation that follows it
     ("EOM: ẍ = -k x", Eq(D(x, 2), -k * x)),
+    # a step's word or arrow that starts the answer, before an equation: the step's conclusion
+    ("so ẍ = -k x", Eq(D(x, 2), -k * x)),
+    ("Therefore ẍ = a", Eq(D(x, 2), a)),
+    ("→ ẍ = a", Eq(D(x, 2), a)),
+    ("-> a = b", Eq(a, b)),  # as ⇒ a = b
+    ("a = b\nSo c = d", Eq(c, d)),
     ("Lagrangian: a + b", a + b),  # before an expression, a word that starts the answer
     ("Answer: 2 m", 2 * m),
     ("θ₁: a = b\nθ₂: c = d", (Eq(a, b), Eq(c, d))),

@@ -181,7 +181,6 @@ HOSTILE = [
     ("θ̈ → -g/l θ", "arrow"),
     ("x -> 1", "arrow"),
     ("a = b ->", "arrow"),
-    ("-> a = b", "arrow"),
     ("a = b -> c = d -> e", "arrow"),
     ("a = b; c -> d = e", "arrow"),  # `;` ends an equation as a line does
     ("\\theta \\to 0", "arrow"),

@@ -287,19 +287,21 @@ def _equations_beside(tokens: list[Token], positions: list[int], step: int) -> d
 
 
 def _is_implying_word(token: Token) -> bool:
-    return token.kind == "name" and token.value.raw in IMPLYING_WORDS and not (token.value.dots or token.value.primes)
+    name = token.value if token.kind == "name" else None
+    return name is not None and name.raw.lower() in IMPLYING_WORDS and not (name.dots or name.primes)
 
 
 def _steps_between_equations(tokens: list[Token], text: str) -> list[Token]:
     """→ and the words *so*, *hence*, *thus*, *therefore* read as ⇒ where an equation stands on
-    each side (``m ẍ = −k x → ẍ = −(k/m) x``). Elsewhere a word stays a name, and an arrow is
-    refused: ``θ → 0`` is a limit, not part of an answer."""
+    each side (``m ẍ = −k x → ẍ = −(k/m) x``), or starts the answer before one (``So θ̈ = …``).
+    Elsewhere a word stays a name, and an arrow is refused: ``θ → 0`` is a limit, not part of an
+    answer."""
     steps = list(tokens)
     for i, token in enumerate(tokens):
         if token.kind != "arrow" and not _is_implying_word(token):
             continue
-        if _equation_beside(tokens, i, -1) and _equation_beside(tokens, i, 1):
-            steps[i] = Token("implies", "⇒", token.start, token.end)
+        if (i == 0 or _equation_beside(tokens, i, -1)) and _equation_beside(tokens, i, 1):
+            steps[i] = Token("implies", "⇒", token.start, token.end)  # or "so θ̈ = …", where the answer starts
         elif token.kind == "arrow":
             raise ParseFailure("arrow", token.start, token.end, arrow=text[token.start : token.end])
     return steps
