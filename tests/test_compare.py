@@ -527,6 +527,8 @@ def _words(words):
     [
         (EOM_PENDULUM, "θ̈ = −(g/l) sin θ for all angles", "equation", "equivalent", (_words("for all angles"),)),
         (EOM_PENDULUM, "m l θ̈ = −m g sin θ (Newton)", "equation", "equivalent", (_words("(Newton)"),)),
+        (EOM_PENDULUM, "θ̈ + (g/l) sin θ = 0, a nonlinear equation", "equation", "equivalent",
+         (_words(", a nonlinear equation"),)),  # from the mark before the words, past their article
         ("sqrt(g/l)", "ω = √(g/l) for small oscillations", "expression", "equivalent",
          (_words("for small oscillations"),)),
         # words of arithmetic, or its signs: refused as typed

@@ -427,15 +427,12 @@ def _without_words(
     not have; and the note that says so. Otherwise the answer as it was read."""
     if answer.ok and not _undefined(answer, names):
         return answer, None
-    split = formula_then_words(submitted, names, expected.setting.coords)
-    if split is None:
-        return answer, None
-    formula, words = split
-    read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
-    if not read.ok:
-        return answer, None  # a name of its own left in the formula (v, where v is the speed) is said as usual
-    shown = words if len(words) <= 60 else words[:59] + "…"
-    return read, ("words_left_out", {"words": shown})
+    for formula, words in formula_then_words(submitted, names, expected.setting.coords):
+        read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
+        if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
+            shown = words if len(words) <= 60 else words[:59] + "…"
+            return read, ("words_left_out", {"words": shown})
+    return answer, None
 
 
 def _undefined(answer: ParsedAnswer, names: list) -> bool:

@@ -14,7 +14,7 @@ no number, no "or" or "not", and read as names the problem does not have.
 from __future__ import annotations
 
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Iterator
 
 from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
@@ -51,23 +51,25 @@ def is_prose(words: str, names: Collection[str]) -> bool:
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in used)
 
 
-def formula_then_words(text: str, names: Collection[str], coords: Collection[str]) -> tuple[str, str] | None:
-    """``θ̈ = −(g/l) θ for small angles``: (the formula, the words after it), where the words begin
-    at the first word that is none of the problem's names, spellings or functions, and are prose
-    (:func:`is_prose`); None otherwise. The formula is not checked here."""
+def formula_then_words(text: str, names: Collection[str], coords: Collection[str]) -> Iterator[tuple[str, str]]:
+    """``θ̈ = −(g/l) θ for small angles``: the ways to read ``text`` as (a formula, prose after it).
+    The prose begins at the first word that is none of the problem's names, spellings or
+    functions, or at the mark of punctuation before it (``…, a nonlinear equation``), and must be
+    prose (:func:`is_prose`). The formula is not checked here: the caller reads each in turn."""
     if len(text) > _LENGTH:
-        return None
-    for word in _WORD.finditer(text):
-        if not _is_word(word[0], names, coords):
-            continue
-        cut = word.start()
-        while cut and text[cut - 1] in _OPENS:
-            cut -= 1
-        formula, rest = text[:cut].rstrip(), text[cut:].strip()
-        if formula and is_prose(rest.lstrip(_OPENS), names):
-            return formula, rest
-        return None
-    return None
+        return
+    word = next((found for found in _WORD.finditer(text) if _is_word(found[0], names, coords)), None)
+    if word is None:
+        return
+    cut = word.start()
+    while cut and text[cut - 1] in _OPENS:
+        cut -= 1
+    mark = max(text.rfind(sign, 0, cut) for sign in ",;:(")  # …, a nonlinear equation
+    line = text.rfind("\n", 0, cut)
+    for start in dict.fromkeys((cut, mark if mark > line else -1)):
+        formula, rest = text[:start].rstrip(), text[start:].strip()
+        if start > 0 and formula and is_prose(rest.lstrip(_OPENS), names):
+            yield formula, rest
 
 
 def _is_word(word: str, names: Collection[str], coords: Collection[str]) -> bool:
