@@ -20,9 +20,9 @@ from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES
 
-__all__ = ["MATH_SIGNS", "formula_then_words", "is_prose"]
+__all__ = ["formula_then_words", "is_prose"]
 
-MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥")
+_MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥")
 # words that change a formula: "√(g/l) times l", "… but negative", "… all squared"
 _MATH_WORDS = re.compile(
     r"\b(?:times|plus|minus|over|divided|multiplied|squared|cubed|square|root|half|halved|twice|doubled|"
@@ -41,7 +41,7 @@ def is_prose(words: str, names: Collection[str]) -> bool:
     """Whether ``words`` are about an answer, not more of it: no sign or word of arithmetic, no
     number in digits, no "or" or "not"; and they cannot be read, or use a name that is neither
     the problem's (``names``) nor a unit."""
-    if not words or MATH_SIGNS & set(words) or _MATH_WORDS.search(words) or _HEDGE.search(words):
+    if not words or _MATH_SIGNS & set(words) or _MATH_WORDS.search(words) or _HEDGE.search(words):
         return False
     read = parse_answer(words, known=names)
     if not read.ok:
