@@ -526,6 +526,7 @@ def _words(words):
     ("expected", "submitted", "kind", "status", "notes"),
     [
         (EOM_PENDULUM, "θ̈ = −(g/l) sin θ for all angles", "equation", "equivalent", (_words("for all angles"),)),
+        (EOM_PENDULUM, "So θ̈ = −(g/l) sin θ for all angles", "equation", "equivalent", (_words("for all angles"),)),
         (EOM_PENDULUM, "m l θ̈ = −m g sin θ (Newton)", "equation", "equivalent", (_words("(Newton)"),)),
         (EOM_PENDULUM, "θ̈ + (g/l) sin θ = 0, a nonlinear equation", "equation", "equivalent",
          (_words(", a nonlinear equation"),)),  # from the mark before the words, past their article

@@ -18,7 +18,7 @@ from collections.abc import Collection, Iterator
 
 from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
-from grader.parse.names import GREEK_NAMES
+from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = ["formula_then_words", "is_prose"]
 
@@ -75,8 +75,8 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
 def _is_word(word: str, names: Collection[str], coords: Collection[str]) -> bool:
     """Whether ``word`` reads as one name the problem does not have, and no Greek letter's: ``for``,
     ``conserved``; not ``mgl`` (m·g·l), ``thetadot``, ``sin`` or ``omega``."""
-    if word.lower() in GREEK_NAMES:
-        return False
+    if word.lower() in GREEK_NAMES or word.lower() in IMPLYING_WORDS:
+        return False  # So θ̈ = …: a step of the working, which the parser reads
     read = parse_answer(word, coords=coords, known=names)
     if not read.ok or read.kind != "expression" or not read.value.is_Symbol:
         return False
