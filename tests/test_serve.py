@@ -187,7 +187,14 @@ CHOICE = "constraint-classification.rigid-body-holonomic"
 
 
 @pytest.mark.parametrize(
-    ("answer", "text"), [(" b ", "b) non-holonomic"), ("A, b", "a) holonomic; b) non-holonomic"), ("z", "z")]
+    ("answer", "text"),
+    [
+        (" b ", "b) non-holonomic"),
+        ("A, b", "a) holonomic; b) non-holonomic"),
+        ("z", "z"),
+        ("b (non-holonomic)", "b) non-holonomic"),  # read as the checker reads it, not word by word
+        ("non-holonomic", "b) non-holonomic"),
+    ],
 )
 def test_preview_of_a_choice_names_the_options_chosen(server, answer, text):
     status, record = _post(server, "/api/preview", {"part": CHOICE, "answer": answer})

@@ -5,6 +5,7 @@ Contents:
     check_number     a number within a tolerance: |submitted − expected| ≤ atol + rtol·|expected|
     check_choice     one or several option labels, in any order and case, or an option's own words
     choice_labels    the labels in a typed choice answer
+    chosen           the labels a choice answer names, read as check_choice reads them
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from grader.judge.units import other_units
 from grader.parse import ParsedAnswer
 from grader.parse.names import GREEK_BY_LETTER
 
-__all__ = ["check_choice", "check_integer", "check_number", "choice_labels"]
+__all__ = ["check_choice", "check_integer", "check_number", "choice_labels", "chosen"]
 
 DIGITS = 30
 MAX_CHOICE_LENGTH = 200
@@ -84,16 +85,10 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     wanted = set(choice_labels(expected.text) or ())
     texts = _option_texts(expected.option("options") or ())
     options = list(texts)
-    given = choice_labels(submitted) if isinstance(submitted, str) else None
-    read = None
-    if isinstance(submitted, str) and (given is None or any(label not in texts for label in given)):
-        # "non-holonomic" or "φ" for option b: the option's own words, where they name one option
-        read = _by_text(submitted, texts, multiple=bool(expected.option("multiple")))
-        labelled = None if read else _labelled(submitted, texts)
-        if labelled and labelled[1]:
-            details = {"label": labelled[0], "words": labelled[1]}
-            return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
-        given = read or ([labelled[0]] if labelled else given)
+    given, read, conflict = _read_choice(submitted, texts, multiple=bool(expected.option("multiple")))
+    if conflict:
+        details = {"label": conflict[0], "words": conflict[1]}
+        return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
     if given is None:
         shown = f"`{submitted.strip()[:40]}`" if isinstance(submitted, str) and submitted.strip() else "This"
         details = {"labels": shown, "options": ", ".join(options) or "?"}
@@ -115,6 +110,27 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
         method="option text" if read else "labels",
         notes=notes,
     )
+
+
+def chosen(submitted: str, options, *, multiple: bool = False) -> list[str] | None:
+    """The labels a choice answer names, as the checker reads them (``b (rheonomic)`` is b), or
+    None where it names no option's label or words, or names two options at once."""
+    given, _, conflict = _read_choice(submitted, _option_texts(options), multiple=multiple)
+    return None if conflict or given is None else given
+
+
+def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> tuple[list | None, list | None, tuple | None]:
+    """(the labels given, or None; those read from words, or None; a label and words naming
+    another option, or None)."""
+    given = choice_labels(submitted) if isinstance(submitted, str) else None
+    if not isinstance(submitted, str) or (given is not None and all(label in texts for label in given)):
+        return given, None, None
+    # "non-holonomic" or "φ" for option b: the option's own words, where they name one option
+    read = _by_text(submitted, texts, multiple=multiple)
+    labelled = None if read else _labelled(submitted, texts)
+    if labelled and labelled[1]:
+        return given, None, labelled
+    return read or ([labelled[0]] if labelled else given), read, None
 
 
 def _option_texts(options) -> dict[str, str]:

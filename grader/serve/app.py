@@ -39,6 +39,7 @@ from grader.grade.part import setting_of
 from grader.grade.selfcheck import SYMBOLS, WORDS, CheckResult, find_part
 from grader.judge import DEFAULT_TIMEOUT
 from grader.judge.deadline import CheckTimeout, Deadline
+from grader.judge.scalar import chosen
 from grader.parse import parse_answer
 from grader.serve.page import MATH_KINDS, problem_views, render_page
 from grader.serve.workers import OVERRUN, CheckPool, PoolBusy
@@ -182,14 +183,18 @@ def make_server(
         raise
 
 
-def _chosen(choices: Mapping[str, str], answer: str) -> str:
-    """The options an answer names, as ``label) text``; a label that is no option stays as typed.
+def _chosen(choices: Mapping[str, str], answer: str, *, multiple: bool = False) -> str:
+    """The options an answer names, as ``label) text``, read as the checker reads them (``b
+    (rheonomic)`` is b); otherwise word by word, where a label that is no option stays as typed.
 
     >>> _chosen({"a": "holonomic", "b": "non-holonomic"}, " B, c ")
     'b) non-holonomic; c'
+    >>> _chosen({"a": "scleronomic", "b": "rheonomic"}, "b (rheonomic)")
+    'b) rheonomic'
     """
     labels = {label.casefold(): label for label in choices}
-    named = [word for word in re.split(r"[\s,;]+", answer) if word]
+    read = chosen(answer, tuple(choices.items()), multiple=multiple)
+    named = read if read and all(label in labels for label in read) else [w for w in re.split(r"[\s,;]+", answer) if w]
     return "; ".join(
         f"{labels[word.casefold()]}) {' '.join(str(choices[labels[word.casefold()]]).split())}"
         if word.casefold() in labels
@@ -266,7 +271,8 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
         problem, part = self._part(request)
         answer = request["answer"]
         if part.kind == "choice":  # the options chosen, by label and text
-            self._send_json({"ok": True, "mathml": "", "text": _chosen(part.choices, answer)})
+            multiple = bool(part.options.get("multiple"))
+            self._send_json({"ok": True, "mathml": "", "text": _chosen(part.choices, answer, multiple=multiple)})
             return
         if part.kind not in MATH_KINDS:  # words and numbers are shown as typed
             self._send_json({"ok": True, "mathml": "", "text": answer.strip()})
