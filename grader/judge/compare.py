@@ -263,8 +263,7 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
 def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple]:
     """The answer with the author's given names (p_θ) put in place, and those it used, each with its value."""
     value = answer.value
-    items = value if isinstance(value, tuple) else (value,)
-    used = tuple((symbol, v) for symbol, v in given if any(symbol in item.free_symbols for item in items))
+    used = tuple((symbol, v) for symbol, v in given if symbol in answer.symbols)
     if not used:
         return answer, ()
     replacement = dict(used)
@@ -436,8 +435,7 @@ def _without_words(
 
 
 def _undefined(answer: ParsedAnswer, names: list) -> bool:
-    items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
-    return any(symbol.name not in names for item in items for symbol in item.free_symbols)
+    return any(symbol.name not in names for symbol in answer.symbols)
 
 
 def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadline) -> ParsedAnswer | None:
@@ -522,16 +520,13 @@ def _formula_in_unit(
 
 def _units_named(answer: ParsedAnswer, expected: Expected) -> set[sympy.Symbol]:
     """The names an answer uses that the problem does not, when every one is a unit's; else none."""
-    items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
-    used = set().union(*(item.free_symbols for item in items))
-    undefined = {symbol for symbol in used if symbol.name not in expected.names}
+    undefined = {symbol for symbol in answer.symbols if symbol.name not in expected.names}
     return undefined if all(symbol.name in SI_UNITS for symbol in undefined) else set()
 
 
 def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome | None:
     """What can be said before any comparison: undefined symbols, or the wrong shape of answer."""
-    items = answer.value if isinstance(answer.value, tuple) else (answer.value,)
-    used = set().union(*(item.free_symbols for item in items))
+    used = answer.symbols
     if spec.name in ("integer", "number") and used:
         # "2.006 s", "two": often the right number in words or with a unit. Not a number we can
         # grade, so a person decides, and a student checking first is told to write the number.

@@ -167,11 +167,5 @@ def _prepare(text, kind, coords, known, domains, options, parsed, dimensions) ->
         raise ReferenceAnswerError(
             f"The expected answer {text!r} cannot be read: {answer.message}\n{answer.pointer}", refusal=answer
         )
-    symbols = _free_symbols(answer.value)
-    names = frozenset(setting.coords) | frozenset(setting.known) | {s.name for s in symbols} | {TIME.name}
+    names = frozenset(setting.coords) | frozenset(setting.known) | {s.name for s in answer.symbols} | {TIME.name}
     return Expected(text, kind, setting, answer, setting.plain(answer.value), names, dict(options))
-
-
-def _free_symbols(value) -> set[sympy.Symbol]:
-    items = value if isinstance(value, tuple) else (value,)
-    return set().union(*(item.free_symbols for item in items))

@@ -46,9 +46,7 @@ def is_prose(words: str, names: Collection[str]) -> bool:
     read = parse_answer(words, known=names)
     if not read.ok:
         return True
-    items = read.value if isinstance(read.value, tuple) else (read.value,)
-    used = set().union(*(item.free_symbols for item in items))
-    return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in used)
+    return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
 
 
 def formula_then_words(text: str, names: Collection[str], coords: Collection[str]) -> Iterator[tuple[str, str]]:

@@ -56,6 +56,12 @@ class ParsedAnswer:
     ok = True
 
     @cached_property
+    def symbols(self) -> frozenset[sympy.Symbol]:
+        """The symbols the answer uses, in every equation of a system."""
+        items = self.value if isinstance(self.value, tuple) else (self.value,)
+        return frozenset().union(*(item.free_symbols for item in items))
+
+    @cached_property
     def read_as_text(self) -> str:
         """How the answer was read, as one line of Unicode text (as typed, if it cannot be printed)."""
         return _printed(to_text, self.value, self.text)
