@@ -173,7 +173,8 @@ def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
     named = _by_text(words, texts, multiple=False)
     if named:
         return (label, "") if named == [label] else (label, words)
-    if all(len(other) <= 2 for other in choice_labels(words) or ["words"]) or re.search(r"\bor\b", words, re.I):
+    labels = choice_labels(words)
+    if (labels and all(len(other) <= 2 for other in labels)) or re.search(r"\bor\b", words, re.I):
         return None  # a, e: labels, one of them no option's; b - or maybe a: a hedge
     return (label, "") if match["mark"].strip() or _REASON.match(" " + words) else None
 
