@@ -557,6 +557,100 @@ def test_words_that_may_be_part_of_the_formula_are_not_read_past(submitted):
     assert not verdict.notes
 
 
+def _before(words):
+    return f"Read without the words before it, `{words}`: the formula is what is graded."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "notes"),
+    [
+        (EOM_PENDULUM, "The equation of motion is m l θ̈ = −m g sin θ", "equation", "equivalent",
+         (_before("The equation of motion is"),)),  # a name of the problem's after the words: not a label
+        (EOM_PENDULUM, "So the EOM is θ̈ = −(g/l) sin θ for all angles", "equation", "equivalent",
+         (_before("So the EOM is"), _words("for all angles"))),
+        (EOM_PENDULUM, "Equation of motion: θ̈ = −(g/l) sin θ", "equation", "equivalent", ()),  # the parser's label
+        ("sqrt(g/l)", "The angular frequency is √(g/l)", "expression", "equivalent",
+         (_before("The angular frequency is"),)),
+        ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),
+        (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² − m g l cos θ", "lagrangian", "not_equivalent",
+         (_before("The Lagrangian is"),)),  # the formula judged, the mistake named
+    ],
+)  # fmt: skip
+def test_words_before_a_formula_are_read_past_and_said_so(expected, submitted, kind, status, notes):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.notes) == (status, notes)
+    assert not notes or verdict.feedback[-len(notes) :] == notes
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "The angular frequency is not √(g/l)",  # a hedge
+        "The frequency is 2 times √(g/l)",  # a word of arithmetic after the words
+        "The frequency is √(g/l) or √(l/g)",
+        "The frequency over 2 is √(g/l)",  # a number among the words
+        "m is the mass and √(g/l) it is",  # the problem's name first: not a sentence leading to a formula
+    ],
+)
+def test_words_before_a_formula_that_may_be_part_of_it_are_not_read_past(submitted):
+    verdict = compare("sqrt(g/l)", submitted, **PENDULUM)
+    assert verdict.status != "equivalent"
+    assert not verdict.notes
+
+
+def _working(*names):
+    if len(names) == 1:
+        return f"The line that defines `{names[0]}` was read as your working: it is not graded."
+    listed = " and ".join(f"`{name}`" for name in names)
+    return f"The lines that define {listed} were read as your working: they are not graded."
+
+
+H_PENDULUM = "1/2 m l^2 thetadot^2 - m g l cos(theta)"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "notes"),
+    [
+        (L_PENDULUM, "T = ½ m l² θ̇²; V = −m g l cos θ; L = ½ m l² θ̇² + m g l cos θ", "lagrangian", "equivalent",
+         (_working("T", "V"),)),
+        # L = T − V = …: the parser keeps the last side, so T and V are used by no other line
+        (L_PENDULUM, "T = ½ m l² θ̇², V = −m g l cos θ, L = T − V = ½ m l² θ̇² + m g l cos θ", "lagrangian",
+         "equivalent", (_working("T", "V"),)),
+        (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_working("L"),)),
+        (EOM_PENDULUM, "m l² θ̈ + m g l sin θ = 0\nL = ½ m l² θ̇² + m g l cos θ", "equations", "equivalent",
+         (_working("L"),)),
+        (H_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; H = ½ m l² θ̇² − m g l cos θ", "expression", "equivalent",
+         (_working("L"),)),
+        # the answer is graded, not the working: right working does not rescue a wrong answer
+        (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; θ̈ = (g/l) sin θ", "equation", "not_equivalent",
+         (_working("L"),)),
+        (L_PENDULUM, "T = ½ m l² θ̇²; V = m g l cos θ; L = ½ m l² θ̇² − m g l cos θ", "lagrangian", "not_equivalent",
+         (_working("T", "V"),)),
+    ],
+)  # fmt: skip
+def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+    assert "=" not in verdict.read_as.split(";")[0] or kind != "lagrangian"  # the answer shown, not the working
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind"),
+    [
+        (L_PENDULUM, "T = ½ m l² θ̇²; V = −m g l cos θ", "lagrangian"),  # no L: V is not the Lagrangian
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; T = ½ m l² θ̇²", "lagrangian"),  # the last line is not L
+        ("1/2 m l^2 thetadot^2", "T = ½ m l² θ̇²; V = −m g l cos θ", "expression"),  # V is not a kinetic energy
+        (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; θ̈ = −(g/l) sin θ; θ̈ = −(g/l) θ", "equation"),  # two answers
+        (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; p = m l² θ̇", "equation"),  # nothing but working
+    ],
+)
+def test_working_is_not_read_where_the_answer_would_be_a_guess(expected, submitted, kind):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert verdict.status == "not_equivalent", verdict
+    assert not verdict.notes
+
+
 def test_a_name_left_in_the_formula_before_the_words_is_said_as_usual():
     verdict = compare(L_PENDULUM, "½ m v² + m g l cos θ, where v is the speed", kind="lagrangian", **PENDULUM)
     assert verdict.feedback[0].startswith("Your answer uses `v`, which this problem does not define")

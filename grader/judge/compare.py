@@ -37,7 +37,7 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import SI_UNITS, Mixed, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
-from grader.judge.words import formula_then_words
+from grader.judge.words import formula_then_words, words_then_formula
 from grader.parse import ANSWER, TIME, ParsedAnswer, Refusal, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
@@ -163,6 +163,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
+                answer, working = _without_working(answer, spec, expected)
+                read_notes += (working,) if working else ()
                 if _loose_definitions(answer):
                     return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
                 typed, (answer, used) = answer, _with_given(answer, given)
@@ -311,6 +313,66 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
     return ParsedAnswer(answer.text, tuple(items), "equations")
 
 
+def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple | None]:
+    """``T = ½ m l² θ̇²; V = −m g l cos θ; L = ½ m l² θ̇² + m g l cos θ`` for a Lagrangian, or
+    ``L = ½ m l² θ̇² + m g l cos θ; m l² θ̈ + m g l sin θ = 0`` for an equation of motion: lines that
+    each give a name of its own to a quantity in the problem's names, a name no other line uses, are
+    the working that led to the answer, as on paper. Where an expression is asked for, every line
+    must be one, and the answer is the last, named as the answer is (:func:`_names_the_answer`);
+    where equations are asked for, the answer is the lines that are not. Returns the answer and a
+    note naming the lines left out (or None)."""
+    if answer.kind != "equations" or spec.shape is None or spec.name in ("integer", "number"):
+        return answer, None  # a number's working is read where it is asked for (see read_number)
+    items = answer.value
+    named = [_quantity_named(item, items, expected) for item in items]
+    if spec.shape == "expression":
+        if not all(named) or not _names_the_answer(named[-1].name, spec):
+            return answer, None
+        rest, left = [items[-1]], named[:-1]
+    else:
+        rest = [item for item, name in zip(items, named, strict=True) if name is None]
+        left = [name for name in named if name is not None]
+        if not left or not rest or (spec.shape == "equation" and len(rest) != 1):
+            return answer, None
+    one = len(left) == 1
+    details = {
+        "names": _listing([symbol.name for symbol in left]),
+        "lines": "line that defines" if one else "lines that define",
+        "were": "was" if one else "were",
+        "they": "it is" if one else "they are",
+    }
+    note = ("working_left_out", details)
+    if len(rest) == 1:
+        return ParsedAnswer(answer.text, rest[0], "equation"), note
+    return ParsedAnswer(answer.text, tuple(rest), "equations"), note
+
+
+# The energies a Lagrangian is made of, and the Lagrangian: in working, they come before the answer.
+_INGREDIENTS = frozenset({"T", "V", "L"})
+
+
+def _names_the_answer(name: str, spec: Kind) -> bool:
+    """Whether the last line of working may be the answer: ``L = …`` where a Lagrangian is asked for;
+    elsewhere a name other than T, V or L (``H = …`` after ``L = …``). ``T = …; V = …`` is not a
+    Lagrangian, nor V a kinetic energy."""
+    return name == "L" if spec.name == "lagrangian" else name not in _INGREDIENTS
+
+
+def _quantity_named(item, items: tuple, expected: Expected) -> sympy.Symbol | None:
+    """The name ``item`` gives a quantity (``T`` in ``T = ½ m l² θ̇²``) when it is a name the problem
+    does not define, the quantity is in the problem's names, and no other of ``items`` uses the name."""
+    name = item.lhs
+    if not (name.is_Symbol and name != ANSWER and name.name not in expected.names):
+        return None
+    if is_arbitrary_constant(name.name):
+        return None  # C = m l² sin²θ φ̇: a conserved quantity, the equation of motion of φ (see _conserved)
+    if any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
+        return None
+    if any(name in other.free_symbols for other in items if other is not item):
+        return None
+    return name
+
+
 def _loose_definitions(answer: ParsedAnswer) -> bool:
     """Whether an expression came with equations that define none of its names (``½ m v²; u = ẋ``),
     or an equation of a system lacks its ``=``: what is left after the definitions are put in place."""
@@ -408,8 +470,7 @@ def _read(
     coords = expected.setting.coords
     if spec.name not in ("integer", "number"):
         answer = parse_answer(submitted, coords=coords, known=names, deadline=deadline)
-        answer, note = _without_words(answer, submitted, expected, names, deadline)
-        return answer, (note,) if note else ()
+        return _without_words(answer, submitted, expected, names, deadline)
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
     text, answer, notes = read_number(submitted, reads, names, decimal_comma=spec.name == "number", seconds=unit)
@@ -420,18 +481,39 @@ def _read(
 
 def _without_words(
     answer: ParsedAnswer, submitted: str, expected: Expected, names: list, deadline
-) -> tuple[ParsedAnswer, tuple | None]:
-    """``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ (conserved)``: the formula, read without
-    the words after it, where the answer as typed cannot be read or uses names the problem does
-    not have; and the note that says so. Otherwise the answer as it was read."""
+) -> tuple[ParsedAnswer, tuple]:
+    """``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ (conserved)``, ``The angular frequency is
+    √(g/l)``: the formula, read without the words after or before it, where the answer as typed
+    cannot be read or uses names the problem does not have; and the notes that say so. Otherwise
+    the answer as it was read, and no note."""
     if answer.ok and not _undefined(answer, names):
-        return answer, None
-    for formula, words in formula_then_words(submitted, names, expected.setting.coords):
+        return answer, ()
+    coords = expected.setting.coords
+    read = _formula_before_words(submitted, expected, names, deadline)
+    if read is not None:
+        return read
+    for words, formula in words_then_formula(submitted, names, coords):
+        before = ("words_before_left_out", {"words": _shown(words)})
+        read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
+        if read.ok and not _undefined(read, names):
+            return read, (before,)
+        after = _formula_before_words(formula, expected, names, deadline)
+        if after is not None and not _undefined(after[0], names):
+            return after[0], (before, *after[1])
+    return answer, ()
+
+
+def _formula_before_words(text: str, expected: Expected, names: list, deadline) -> tuple[ParsedAnswer, tuple] | None:
+    """The formula of ``text`` read without the words after it, and the note; None where there is none."""
+    for formula, words in formula_then_words(text, names, expected.setting.coords):
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
-            shown = words if len(words) <= 60 else words[:59] + "…"
-            return read, ("words_left_out", {"words": shown})
-    return answer, None
+            return read, (("words_left_out", {"words": _shown(words)}),)
+    return None
+
+
+def _shown(words: str) -> str:
+    return words if len(words) <= 60 else words[:59] + "…"
 
 
 def _undefined(answer: ParsedAnswer, names: list) -> bool:

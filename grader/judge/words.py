@@ -3,10 +3,12 @@
 Contents:
     is_prose(words, names)                     whether words are about the answer, not more of it
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
+    words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
 conserved``, ``a = g (m₁ − m₂)/(m₁ + m₂), with m₁ going down``. A person grades the formula and
-reads the words. The checker does the same, and says which words it did not grade, but only
+reads the words. So it is with a sentence that leads to the formula: ``The angular frequency is
+√(g/l)``. The checker does the same, and says which words it did not grade, but only
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have.
 """
@@ -20,7 +22,7 @@ from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
-__all__ = ["formula_then_words", "is_prose"]
+__all__ = ["formula_then_words", "is_prose", "words_then_formula"]
 
 _MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥")
 # words that change a formula: "√(g/l) times l", "… but negative", "… all squared"
@@ -34,6 +36,11 @@ _MATH_WORDS = re.compile(
 _HEDGE = re.compile(r"(?<!\w)[0-9]|\b(?:or|not|never|isn't)\b", re.I)
 _WORD = re.compile(r"(?<![A-Za-z0-9_\\])[A-Za-z]{2,}(?![A-Za-z0-9_])")
 _OPENS = " ,;:([–—-"  # what may stand between a formula and the words about it
+# where a sentence hands over to its formula: "The Lagrangian is …", "… we get …", "Equation of motion: …"
+_LEADS_TO = re.compile(
+    r"\b(?:is|are|was|becomes|become|gives|give|yields|yield|reads|read|get|gets|obtain|obtains|find|finds|have)\b|:",
+    re.I,
+)
 _LENGTH = 400  # characters: longer answers are read as typed
 
 
@@ -68,6 +75,29 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
         formula, rest = text[:start].rstrip(), text[start:].strip()
         if start > 0 and formula and is_prose(rest.lstrip(_OPENS), names):
             yield formula, rest
+
+
+def words_then_formula(text: str, names: Collection[str], coords: Collection[str]) -> Iterator[tuple[str, str]]:
+    """``The equation of motion is m l θ̈ = −m g sin θ``: the ways to read ``text`` as (a sentence, the
+    formula it leads to). The sentence begins with a word that is none of the problem's names (after
+    a leading "So" or "Hence"), ends with a word that hands over to a formula (``is``, ``gives``,
+    ``we get``) or a colon, and must be prose (:func:`is_prose`). The formula is not checked here."""
+    if len(text) > _LENGTH:
+        return
+    start, first = 0, None
+    for word in _WORD.finditer(text):
+        if text[start : word.start()].strip(" ,"):
+            return  # a sign, a number or a letter before the first word: a formula comes first
+        if word[0].lower() not in IMPLYING_WORDS:
+            first = word
+            break
+        start = word.end()
+    if first is None or not _is_word(first[0], names, coords):
+        return
+    for lead in _LEADS_TO.finditer(text, first.end()):
+        words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
+        if formula and is_prose(words, names):
+            yield words, formula
 
 
 def _is_word(word: str, names: Collection[str], coords: Collection[str]) -> bool:
