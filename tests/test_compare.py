@@ -598,14 +598,53 @@ def test_words_before_a_formula_that_may_be_part_of_it_are_not_read_past(submitt
     assert not verdict.notes
 
 
+H_PENDULUM = "1/2 m l^2 thetadot^2 - m g l cos(theta)"
+ATWOOD = {"coords": ["x"], "known": ["m1", "m2", "g"]}
+L_ATWOOD = "1/2 (m1 + m2) xdot^2 + (m1 - m2) g x"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "kind", "status"),
+    [
+        # l, the string's length: m₂g(l − x) holds the constant m₂gl
+        (L_ATWOOD, "L = ½(m₁+m₂)ẋ² + m₁gx + m₂g(l−x)", ATWOOD, "lagrangian", "equivalent"),
+        (L_ATWOOD, "½(m₁+m₂)ẋ² + m₁gx − m₂g(l−x)", ATWOOD, "lagrangian", "not_equivalent"),  # still judged
+        (L_PENDULUM, "½ m l² θ̇² + m g (l cos θ − h)", PENDULUM, "lagrangian", "equivalent"),
+        (H_PENDULUM, "½ m l² θ̇² − m g l cos θ + m g h", PENDULUM, "expression", "equivalent"),
+    ],
+)
+def test_a_name_found_only_in_constant_terms_is_a_constant_where_one_is_allowed(
+    expected, submitted, setting, kind, status
+):
+    options = {"up_to_constant": True} if kind == "expression" else {}
+    verdict = compare(expected, submitted, kind=kind, **setting, **options)
+    assert verdict.status == status, verdict
+    assert "appears only in a term with no coordinate or velocity" in verdict.notes[0]
+    assert "l" in verdict.read_as.replace("l*", "") or "h" in verdict.read_as  # shown with the constant, as typed
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "kind", "options"),
+    [
+        (L_ATWOOD, "½(m₁+m₂)ẋ² + (m₁−m₂)g x + m₂ g l ẋ", ATWOOD, "lagrangian", {}),  # l with a velocity
+        (L_ATWOOD, "½(m₁+m₂)ẋ² + (m₁−m₂)g x + l", ATWOOD, "expression", {}),  # no constant allowed
+        (L_PENDULUM, "½ m v² + m g l cos θ", PENDULUM, "lagrangian", {}),  # v, a speed: squared, not a constant
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ + ½ m v²", PENDULUM, "lagrangian", {}),  # not left out either
+        (H_PENDULUM, "½ m l² θ̇² − m g l cos θ + m g h", PENDULUM, "expression", {}),
+        (H_PENDULUM, "½ m l² θ̇² − m g l cos(θ + h)", PENDULUM, "expression", {"up_to_constant": True}),
+    ],
+)
+def test_a_name_that_is_not_only_in_constant_terms_is_undefined(expected, submitted, setting, kind, options):
+    verdict = compare(expected, submitted, kind=kind, **setting, **options)
+    assert verdict.diagnosis == "undefined_symbol", verdict
+    assert not verdict.notes
+
+
 def _working(*names):
     if len(names) == 1:
         return f"The line that defines `{names[0]}` was read as your working: it is not graded."
     listed = " and ".join(f"`{name}`" for name in names)
     return f"The lines that define {listed} were read as your working: they are not graded."
-
-
-H_PENDULUM = "1/2 m l^2 thetadot^2 - m g l cos(theta)"
 
 
 @pytest.mark.parametrize(

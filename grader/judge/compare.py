@@ -153,6 +153,7 @@ def _hashable(value):
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
     answer, conserved, used, typed, read_in, read_notes = None, False, (), None, None, ()
+    with_constant, constant = None, None
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
         # building one factor of a hostile answer, and an answer has room for dozens.
@@ -171,6 +172,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
+                with_constant, (answer, constant) = answer, _without_constant_terms(answer, spec, expected)
+                read_notes += (constant,) if constant else ()
                 shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
                 early = early or _mismatch(spec, expected, answer)
                 if early:
@@ -195,6 +198,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
         names = _listing([symbol.name for symbol, _ in used])
         outcome = replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
         return _verdict(outcome, typed)
+    if constant:
+        return _verdict(outcome, with_constant)  # shown with the constant the note says was left out
     return _verdict(outcome, answer)  # a number with a unit is shown in the part's unit, the note says so
 
 
@@ -460,6 +465,50 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
         if term.free_symbols == {constant} and term.is_polynomial(constant) and sympy.degree(term, constant) == 1:
             return ParsedAnswer(answer.text, rest, "expression")
     return answer
+
+
+def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple | None]:
+    """``½(m₁ + m₂)ẋ² + m₁gx + m₂g(l − x)`` for Atwood's machine, with l the string's length: a name
+    the problem does not define, found only in terms that hold no coordinate, velocity or time, is a
+    constant of the student's own (a length, another zero of potential energy), where each such term
+    is linear in each such name, as a potential energy is in a height: ½ m v² and p²/(2m) are a
+    speed's and a momentum's. Where a constant is allowed, those terms are left out, and the note
+    says so; a name found in any other term is said as undefined, as usual. The terms are expanded
+    one by one, each within the differentiation budget, so that m₂g(l − x) gives up m₂gl and keeps
+    −m₂gx."""
+    allowed = spec.name == "lagrangian" or (spec.name == "expression" and expected.option("up_to_constant"))
+    undefined = {symbol for symbol in answer.symbols if symbol.name not in expected.names}
+    if not allowed or answer.kind != "expression" or not undefined:
+        return answer, None
+    motion = (*expected.setting.functions.values(), TIME)
+    kept = []
+    for term in sympy.Add.make_args(answer.value):
+        if not term.free_symbols & undefined:
+            kept.append(term)
+            continue
+        if not within_diff_budget(term):
+            return answer, None
+        for part in sympy.Add.make_args(sympy.expand(term)):
+            if part.free_symbols & undefined and (part.has(*motion) or not _linear_in(part, undefined)):
+                return answer, None  # m l ẋ²: more than a constant; ½ m v², p²/2m: a speed, a momentum
+            if not part.free_symbols & undefined:
+                kept.append(part)
+    names = _listing([symbol.name for symbol in undefined])
+    one = len(undefined) == 1
+    which = (
+        "a Lagrangian may have and which changes no equation of motion"
+        if spec.name == "lagrangian"
+        else "this answer may have, as another zero of potential energy"
+    )
+    details = {"names": names, "appear": "appears" if one else "appear", "terms": "a term" if one else "terms"}
+    details["which"] = which
+    note = ("constant_terms_left_out", details)
+    return ParsedAnswer(answer.text, sympy.Add(*kept), "expression"), note
+
+
+def _linear_in(term: sympy.Expr, names: set) -> bool:
+    """Whether ``term`` is of degree one in each of ``names`` it holds: ``m₂ g l``, not ``½ m v²``."""
+    return all(term.is_polynomial(name) and sympy.degree(term, name) == 1 for name in term.free_symbols & names)
 
 
 def _read(

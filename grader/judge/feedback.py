@@ -37,6 +37,8 @@ FEEDBACK: dict[str, str] = {
     "other_unit": "Not within the accepted tolerance. Is your number in {unit}? The answer is asked in {wanted}.",
     "unit_read": "Read as {value} {unit}.",
     "words_left_out": "Read without the words after it, `{words}`: the formula is what is graded.",
+    "constant_terms_left_out": "{names} {appear} only in {terms} with no coordinate or velocity: a constant, which"
+    " {which}. It was left out.",
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
     "words_before_left_out": "Read without the words before it, `{words}`: the formula is what is graded.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
