@@ -1164,6 +1164,31 @@ def test_a_choice_may_be_written_as_its_claim_without_the_reason(submitted, stat
 
 
 TIME_CHOICE = {"kind": "choice", "options": (("a", "scleronomic"), ("b", "rheonomic"))}
+CYCLIC_CHOICE = {"kind": "choice", "options": (("a", r"$\theta$"), ("b", r"$\phi$"), ("c", "neither"), ("d", "both"))}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "read"),
+    [
+        # a sentence whose subject or predicate is an option's words
+        ("phi is cyclic", "equivalent", "b"),
+        ("φ is the cyclic coordinate", "equivalent", "b"),
+        ("The cyclic coordinate is φ", "equivalent", "b"),
+        ("φ is cyclic, since L does not depend on φ", "equivalent", "b"),
+        ("θ is cyclic", "not_equivalent", "a"),
+        ("both are cyclic", "not_equivalent", "d"),
+        ("neither is cyclic", "not_equivalent", "c"),
+        # denied, hedged, or naming two options: which is meant is for the student to say
+        ("θ is not cyclic", "invalid", None),
+        ("θ isn't cyclic", "invalid", None),
+        ("φ is cyclic or θ", "invalid", None),
+        ("θ is φ", "invalid", None),
+    ],
+)
+def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
+    verdict = compare("b", submitted, **CYCLIC_CHOICE)
+    assert verdict.status == status, verdict
+    assert (f"Read as the option you wrote out: {read}." in verdict.feedback) == (read is not None)
 
 
 @pytest.mark.parametrize(

@@ -154,7 +154,8 @@ def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[s
                 by_words[words] = None if words in by_words else label  # two options alike name neither
     whole = by_words.get(_plain(submitted))
     if not whole and not multiple:  # "rheonomic because l depends on t": the claim, then the reason
-        whole = by_words.get(_plain(_REASON.split(submitted, maxsplit=1)[0]))
+        claim = _REASON.split(submitted, maxsplit=1)[0]
+        whole = by_words.get(_plain(claim)) or _said_of(claim, by_words)
     if whole or not multiple:
         return [whole] if whole else None
     labels = [by_words.get(_plain(piece)) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
@@ -184,6 +185,22 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 
 # where an option's reason begins: "rheonomic, since …", "holonomic because …"
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
+
+
+def _said_of(claim: str, by_words: dict[str, str | None]) -> str | None:
+    """``φ is cyclic``, ``both are cyclic``, ``The constraint is holonomic``: a sentence whose subject
+    or whose predicate, not both, is one option's words; None for any other, and for a sentence
+    that says "not", "no" or "or" (``θ is not cyclic``), which names no option by its words."""
+    parts = _IS.split(claim, maxsplit=1)
+    if len(parts) != 2 or _DENIES.search(claim):
+        return None
+    named = {by_words.get(_plain(part)) for part in parts} - {None}
+    return named.pop() if len(named) == 1 else None
+
+
+# where a sentence says what its subject is, and the words that deny it or hedge
+_IS = re.compile(r"\s+(?:is|are)\s+", re.I)
+_DENIES = re.compile(r"\b(?:not|no|or)\b|n't\b", re.I)
 
 
 def _plain(text: str) -> str:
