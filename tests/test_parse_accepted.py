@@ -230,6 +230,10 @@ SYSTEMS = [
     # as people write a system: commas or "and" between equations, numbers that label them
     ("a = b, c = d", (Eq(a, b), Eq(c, d))),
     ("a = b and c = d", (Eq(a, b), Eq(c, d))),
+    # a full stop, a space and a letter: the next sentence, as a new line is the next equation
+    ("a = 0. c = d.", (Eq(a, 0), Eq(c, d))),
+    ("For θ: a = b. For φ: c = d", (Eq(a, b), Eq(c, d))),
+    ("a = b. θ̈ = c", (Eq(a, b), Eq(D(theta, 2), c))),
     ("a = b, where c = d", (Eq(a, b), Eq(c, d))),
     ("a = b with c = d", (Eq(a, b), Eq(c, d))),
     ("a = b \\quad\\text{where}\\quad c = d", (Eq(a, b), Eq(c, d))),

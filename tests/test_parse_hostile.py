@@ -151,6 +151,9 @@ HOSTILE = [
     ("x\u2066", "bad_character"),  # left-to-right isolate (zero-width spaces and full-width letters are read)
     ("x\u00ad", "bad_character"),  # soft hyphen
     ("x\ud800", "bad_character"),  # lone surrogate, as json.loads can produce
+    # a point with no digit after it, where no sentence ends
+    ("2. 5", "lone_point"),  # before a digit: 2.5, or a slip
+    ("a . b", "lone_point"),
     # -- derivatives beyond the limit -------------------------------------------
     ("theta''''", "derivative_order"),
     ("diff(theta, t, 99999999999999999999)", "derivative_order"),

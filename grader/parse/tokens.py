@@ -129,6 +129,7 @@ _COMBINING_DOTS = {"\u0307": 1, "\u0308": 2, "\u20db": 3}
 # [0-9], not \d: \d also matches ٣ and ², which are not numbers to us.
 _NUMBER = re.compile(r"([0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?")
 _DIGITS = frozenset("0123456789")
+_SENTENCE_FOLLOWS = re.compile(r"[ \t]+(?=[^\W\d_])")  # after a full stop: a space, then a letter
 _ASCII_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _LETTERS = re.compile(r"[A-Za-z]+")
 _UNICODE_SUBSCRIPT = re.compile(r"[\u2080-\u2089]+")
@@ -427,8 +428,8 @@ class _Tokenizer:
                 self.pos += 1
             elif c in ".," and _closes_line(text, self.pos + 1):
                 self.pos += 1  # the full stop or comma that ends a sentence: L = ½ m l² θ̇² − V.
-            elif c == "\n":
-                self._emit("sep", "\n", 1)
+            elif c == "\n" or (c == "." and self._ends_sentence()):
+                self._emit("sep", "\n", 1)  # a new line, or a new sentence: … = 0. For β: … = 0
             elif c == "\\" and self.latex:
                 self._command()
             elif c in _DIGITS or (c == "." and text[self.pos + 1 : self.pos + 2] in _DIGITS):
@@ -535,6 +536,17 @@ class _Tokenizer:
             return c.isalpha()
         base = unicodedata.normalize("NFD", c)[0]
         return base in GREEK_BY_LETTER or (base.isascii() and base.isalpha())
+
+    def _ends_sentence(self) -> bool:
+        """Whether the full stop at ``pos`` ends a sentence: a space and a capital letter follow it, or
+        a space and any letter after an equation (``… = 0. θ̈₂ = …``). ``a . b`` is no sentence."""
+        follows = _SENTENCE_FOLLOWS.match(self.text, self.pos + 1)
+        if follows is None:
+            return False
+        if self.text[follows.end()].isupper():
+            return True
+        since = next((i for i in range(len(self.tokens) - 1, -1, -1) if self.tokens[i].kind == "sep"), -1)
+        return any(token.is_op("=") for token in self.tokens[since + 1 :])
 
     def _number(self) -> None:
         match = _NUMBER.match(self.text, self.pos)
