@@ -1204,6 +1204,10 @@ def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
         ("a: scleronomic", "not_equivalent", ("Not the right choice.",)),
         # the claim, then the reason
         ("rheonomic because l depends on t", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        # the option's words, then a remark in brackets that names no other option and does not hedge
+        ("rheonomic (t appears explicitly)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("rheonomic (scleronomic)", "invalid", ("`rheonomic (scleronomic)` is not one of the options (a, b).",)),
+        ("rheonomic (or scleronomic)", "invalid", ("`rheonomic (or scleronomic)` is not one of the options (a, b).",)),
         # a label and words that name another option: which one is meant?
         ("a (rheonomic)", "invalid",
          ("Your label a and your words `rheonomic` name different options: give one of them.",)),

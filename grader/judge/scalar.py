@@ -155,7 +155,7 @@ def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[s
     whole = by_words.get(_plain(submitted))
     if not whole and not multiple:  # "rheonomic because l depends on t": the claim, then the reason
         claim = _REASON.split(submitted, maxsplit=1)[0]
-        whole = by_words.get(_plain(claim)) or _said_of(claim, by_words)
+        whole = by_words.get(_plain(claim)) or _with_remark(claim, by_words) or _said_of(claim, by_words)
     if whole or not multiple:
         return [whole] if whole else None
     labels = [by_words.get(_plain(piece)) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
@@ -185,6 +185,20 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 
 # where an option's reason begins: "rheonomic, since …", "holonomic because …"
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
+
+
+def _with_remark(claim: str, by_words: dict[str, str | None]) -> str | None:
+    """``scleronomic (no explicit t)``: one option's words, then a remark in brackets that names no
+    other option and does not hedge with "or"; None for any other answer."""
+    found = _REMARK.fullmatch(claim)
+    if found is None or re.search(r"\bor\b", found["remark"], re.I):
+        return None
+    named, other = by_words.get(_plain(found["claim"])), by_words.get(_plain(found["remark"]))
+    return named if other in (None, named) else None
+
+
+# an option's words, then a remark in brackets: holonomic (an equation among the coordinates)
+_REMARK = re.compile(r"(?P<claim>[^()]+?)\s*\((?P<remark>[^()]*)\)\s*\.?\s*", re.S)
 
 
 def _said_of(claim: str, by_words: dict[str, str | None]) -> str | None:
