@@ -1292,7 +1292,9 @@ def _final(value):
         (PERIOD, "T ≈ 2π√(l/g) ≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", (_final("2.01 s"),)),
         (PERIOD, "2π√(1/9.81) = 3 s", PERIOD_PART, "not_equivalent", "3", (_final("3 s"),)),
         (PERIOD, "2.01 s = T", PERIOD_PART, "equivalent", "2.01", (_number("2.01 s"),)),
-        (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"), _final("2,01 s"))),
+        # the quantity's name before its value is no working
+        (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"), _number("2,01 s"))),
+        (PERIOD, "T = 2.0 s (approx)", PERIOD_PART, "equivalent", "2", (_number("2.0 s"),)),
         # approximately: the tolerance says how near
         (PERIOD, "≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", ()),
         (PERIOD, "about 2.0 s", PERIOD_PART, "equivalent", "2", ()),

@@ -36,6 +36,8 @@ _ABOUT_AFTER = re.compile(r"\s*\(?\s*(?:approx\.?|approximately|roughly)\s*\)?\s
 _EQUALS = re.compile(r"\\approx|\\simeq|[=≈≃]")
 
 _SEPARATED = re.compile(r"[;\n]|\\\\")
+# a quantity's name before its value, which is no working: T, T_0, τ, ω₀
+_QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
 
 # where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, or a word
 _REMARK = re.compile(r"[(\[{,:;–—]|\s-\s|(?<![A-Za-z0-9_\\])[A-Za-z]{2,}")
@@ -92,8 +94,8 @@ def read_number(
                 rest = rest.lstrip(",:;–—- ")
                 shown = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
                 notes += (("remark_ignored", {"value": typed, "rest": shown}),)
-            elif last and index == last:
-                notes += (("final_value", {"value": typed}),)
+            elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
+                notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
             elif last:
                 notes += (("number_read", {"value": typed}),)
             elif words:
