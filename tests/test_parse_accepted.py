@@ -238,6 +238,12 @@ SYSTEMS = [
     ("a = b with c = d", (Eq(a, b), Eq(c, d))),
     ("a = b \\quad\\text{where}\\quad c = d", (Eq(a, b), Eq(c, d))),
     ("(1) a = b\n(2) c = d", (Eq(a, b), Eq(c, d))),
+    # numbered in one line, in order, each number before an equation
+    ("(1) a = b (2) c = d", (Eq(a, b), Eq(c, d))),
+    ("1) a = b 2) c = d", (Eq(a, b), Eq(c, d))),
+    ("1) a = b, 2) c = d.", (Eq(a, b), Eq(c, d))),
+    ("a = b (2) c", Eq(a, 2 * b * c)),  # no (1) first: a factor
+    ("(1) a + b (2)", a + 2 * b),
     ("a = b (1)\nc = d (2)", (Eq(a, b), Eq(c, d))),
     ("(1) a = b; (2) c = 2 (d)", (Eq(a, b), Eq(c, 2 * d))),
     ("(a) a = b\n(b) c = d", (Eq(a, b), Eq(c, d))),  # letters too, even where a and b are symbols

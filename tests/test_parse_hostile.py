@@ -153,6 +153,8 @@ HOSTILE = [
     ("x\ud800", "bad_character"),  # lone surrogate, as json.loads can produce
     # a point with no digit after it, where no sentence ends
     ("2. 5", "lone_point"),  # before a digit: 2.5, or a slip
+    ("(1) a = b (3) c = d", "too_many_equals"),  # numbers out of order are no equation numbers
+    ("1) a = b 2) c", "unopened"),  # the second is no equation
     ("a . b", "lone_point"),
     # -- derivatives beyond the limit -------------------------------------------
     ("theta''''", "derivative_order"),

@@ -408,12 +408,33 @@ def _list_markers(text: str) -> dict[int, int]:
     return {}
 
 
+# an equation's number in a line of them: 1) θ̈ = … 2) φ̈ = …, or (1) … (2) …
+_INLINE_MARKER = re.compile(r"[ \t]*(\(?)([1-9])\)[ \t]+")
+
+
+def _inline_markers(text: str) -> dict[int, int]:
+    """Where one line numbers its equations in order, ``1) … 2) …`` or ``(1) … (2) …``, each number
+    before an equation: start → end of each number, to be read past as a new line. Otherwise none:
+    ``a = b (2) c`` is 2bc, and ``(1) a = b (3) c = d`` skips a number."""
+    found = [m for m in re.finditer(r"(?:^|(?<=[ \t,;]))[ \t]*(\(?)([1-9])\)[ \t]+", text)]
+    found = [m for m in found if m[1] == found[0][1]]  # one style: all with their opening bracket, or none
+    if len(found) < 2 or found[0].start() != 0 or [int(m[2]) for m in found] != list(range(1, len(found) + 1)):
+        return {}
+    ends = [m.start() for m in found[1:]] + [len(text)]
+    if not all("=" in text[m.end() : end] for m, end in zip(found, ends, strict=True)):
+        return {}
+    return {m.start(): m.end() for m in found}
+
+
 class _Tokenizer:
     def __init__(self, text: str, *, latex: bool):
         self.text, self.latex = text.translate(_READ_AS), latex
         self.pos = 0
         self.tokens: list[Token] = []
-        self.markers = _list_markers(self.text) if "\n" in text or text.lstrip()[:1] in _BULLETS else {}
+        if "\n" in text or text.lstrip()[:1] in _BULLETS:
+            self.markers = _list_markers(self.text)
+        else:
+            self.markers = _inline_markers(self.text) if _INLINE_MARKER.match(self.text) else {}
         self.in_math = self.math_closed = False  # between $ … $, and whether a $ has closed math yet
 
     def run(self) -> list[Token]:
@@ -421,6 +442,8 @@ class _Tokenizer:
         while self.pos < len(text):
             c = text[self.pos]
             if self.pos in self.markers:  # 1. … ⏎ 2. …: a list's numbers, not the equations'
+                if self.tokens and self.tokens[-1].kind != "sep":
+                    self.tokens.append(Token("sep", "\n", self.pos, self.pos))  # 1) … 2) … on one line
                 self.pos = self.markers.pop(self.pos)
             elif self.latex and c == "$":
                 self._dollar()
