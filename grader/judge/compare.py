@@ -471,8 +471,8 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
     """``½(m₁ + m₂)ẋ² + m₁gx + m₂g(l − x)`` for Atwood's machine, with l the string's length: a name
     the problem does not define, found only in terms that hold no coordinate, velocity or time, is a
     constant of the student's own (a length, another zero of potential energy), where each such term
-    is linear in each such name, as a potential energy is in a height: ½ m v² and p²/(2m) are a
-    speed's and a momentum's. Where a constant is allowed, those terms are left out, and the note
+    is one (:func:`_constant_term`): linear in each such name, as a potential energy is in a height,
+    and with names of the problem's in it. Where a constant is allowed, those terms are left out, and the note
     says so; a name found in any other term is said as undefined, as usual. The terms are expanded
     one by one, each within the differentiation budget, so that m₂g(l − x) gives up m₂gl and keeps
     −m₂gx."""
@@ -489,8 +489,8 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
         if not within_diff_budget(term):
             return answer, None
         for part in sympy.Add.make_args(sympy.expand(term)):
-            if part.free_symbols & undefined and (part.has(*motion) or not _linear_in(part, undefined)):
-                return answer, None  # m l ẋ²: more than a constant; ½ m v², p²/2m: a speed, a momentum
+            if part.free_symbols & undefined and not _constant_term(part, undefined, motion):
+                return answer, None
             if not part.free_symbols & undefined:
                 kept.append(part)
     names = _listing([symbol.name for symbol in undefined])
@@ -506,8 +506,13 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
     return ParsedAnswer(answer.text, sympy.Add(*kept), "expression"), note
 
 
-def _linear_in(term: sympy.Expr, names: set) -> bool:
-    """Whether ``term`` is of degree one in each of ``names`` it holds: ``m₂ g l``, not ``½ m v²``."""
+def _constant_term(term: sympy.Expr, names: set, motion: tuple) -> bool:
+    """Whether a term in ``names`` (the student's own) is a constant of theirs: ``m₂ g l``, with the
+    problem's names in it too, of degree one in each of theirs, and no coordinate, velocity or time
+    (``motion``). Not ``m l ẋ²``; not ``½ m v²`` or ``p²/2m``, a speed's or a momentum's; not ``T`` or
+    ``V`` alone, the quantities of ``L = T − V``."""
+    if term.has(*motion) or not term.free_symbols - names:
+        return False
     return all(term.is_polynomial(name) and sympy.degree(term, name) == 1 for name in term.free_symbols & names)
 
 
