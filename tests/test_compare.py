@@ -628,6 +628,7 @@ def test_a_name_found_only_in_constant_terms_is_a_constant_where_one_is_allowed(
     [
         (L_ATWOOD, "½(m₁+m₂)ẋ² + (m₁−m₂)g x + m₂ g l ẋ", ATWOOD, "lagrangian", {}),  # l with a velocity
         (L_ATWOOD, "½(m₁+m₂)ẋ² + (m₁−m₂)g x + l", ATWOOD, "expression", {}),  # no constant allowed
+        (L_PENDULUM, "L = T − V", PENDULUM, "lagrangian", {}),  # T and V alone: quantities, not constants
         (L_PENDULUM, "½ m v² + m g l cos θ", PENDULUM, "lagrangian", {}),  # v, a speed: squared, not a constant
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ + ½ m v²", PENDULUM, "lagrangian", {}),  # not left out either
         (H_PENDULUM, "½ m l² θ̇² − m g l cos θ + m g h", PENDULUM, "expression", {}),
@@ -661,6 +662,8 @@ def _working(*names):
          (_working("L"),)),
         (H_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; H = ½ m l² θ̇² − m g l cos θ", "expression", "equivalent",
          (_working("L"),)),
+        # a derivation's steps that define what its conclusion uses
+        (L_PENDULUM, "T = ½ m l² θ̇², V = −m g l cos θ, so L = T − V", "lagrangian", "equivalent", ()),
         # the answer is graded, not the working: right working does not rescue a wrong answer
         (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; θ̈ = (g/l) sin θ", "equation", "not_equivalent",
          (_working("L"),)),

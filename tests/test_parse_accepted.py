@@ -23,6 +23,9 @@ theta, phi, theta1, theta2, x, alpha, beta, r = (
 )
 
 
+U, W, L = sympy.Symbol("U"), sympy.Symbol("W"), sympy.Symbol("L")
+
+
 def D(q, n=1):
     return sympy.Derivative(q, (t, n))
 
@@ -292,6 +295,12 @@ SYSTEMS = [
     ("ẍ = a; c θ̈ = c b ⇒ θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
     ("c ẍ = c a ⇒ ẍ = a; θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
     ("[ẍ = a; θ̈ = b]", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),
+    # a step that defines a name the conclusion uses stays before it, as a definition
+    ("U = a, W = b, so L = U - W", (Eq(U, a), Eq(W, b), Eq(L, U - W))),
+    ("U = a\nW = b\n⇒ L = U - W", (Eq(U, a), Eq(W, b), Eq(L, U - W))),
+    ("U = a ⇒ W = b ⇒ L = U", (Eq(U, a), Eq(L, U))),  # W is used by no conclusion
+    ("F = m a ⇒ m ẍ = -k x", Eq(m * D(x, 2), -k * x)),  # F, nor a, is used by the conclusion
+    ("L = a ⇒ L = b", Eq(L, b)),  # a conclusion's own label is not a use of the name
     # every spelling of a step: ⇔ ∴ and typed arrows; → and words only between two equations
     *(
         (f"m ẍ = -k x {step} ẍ = -k x / m", Eq(D(x, 2), -k * x / m))

@@ -318,7 +318,9 @@ def _conclusions(tokens: list[Token]) -> list[Token]:
     """What a derivation written with ``⇒`` concludes: on each line (or between ``;``), what
     follows its last ``⇒``. A line that begins with ``⇒``, or follows one that ends with it,
     continues the derivation: it replaces the lines above. ``m l θ̈ = −m g sin θ ⇒ θ̈ = −(g/l) sin θ``
-    is the second equation; ``eq₁ ⇒ eq₁′ ⏎ eq₂ ⇒ eq₂′`` and ``eq₁; eq₂ ⇒ eq₂′`` are systems of two."""
+    is the second equation; ``eq₁ ⇒ eq₁′ ⏎ eq₂ ⇒ eq₂′`` and ``eq₁; eq₂ ⇒ eq₂′`` are systems of two.
+    A step left behind that defines a name the conclusion uses stays, before it, as a definition:
+    ``T = ½ m l² θ̇², V = −m g l cos θ, so L = T − V`` (see :func:`_definitions_used`)."""
     lines: list[list[Token]] = [[]]
     depth = 0
     for token in tokens[:-1]:
@@ -328,21 +330,64 @@ def _conclusions(tokens: list[Token]) -> list[Token]:
         else:
             lines[-1].append(token)
     kept: list[list[Token]] = []
+    left: list[list[Token]] = []  # the steps the conclusions replace
     continues = False
     for line in lines:
         if line and (continues or line[0].kind == "implies"):
-            kept = []
+            left, kept = left + kept, []
         continues = False
         while line and line[-1].kind == "implies":
             line, continues = line[:-1], True
         implications = [i for i, token in enumerate(line) if token.kind == "implies"]
         kept.append(line[implications[-1] + 1 :] if implications else line)
+        if implications:
+            left.append(line[: implications[-1]])
     result: list[Token] = []
-    for line in kept:
+    for line in [*_definitions_used(left, kept), *kept]:
         if result and line:
             result.append(Token("sep", "\n", line[0].start, line[0].start))
         result += line
     return [*result, tokens[-1]]
+
+
+def _definitions_used(left: list[list[Token]], kept: list[list[Token]]) -> list[list[Token]]:
+    """The steps in ``left`` that read ``name = …`` (one ``=``, a name without dots or primes) where
+    the conclusions in ``kept`` use the name other than as a label of their own (``L = …``)."""
+    used = {token.value.raw for line in kept for piece in _pieces(line) for token in _unlabelled(piece)}
+    return [
+        piece
+        for line in left
+        for piece in _pieces(line)
+        if _labelled(piece) and piece[0].value.raw in used and sum(token.is_op("=") for token in piece) == 1
+    ]
+
+
+def _pieces(line: list[Token]) -> list[list[Token]]:
+    """A line's steps and its items: between ``⇒`` and the commas outside brackets."""
+    pieces: list[list[Token]] = [[]]
+    depth = 0
+    for token in line:
+        depth += token.is_op("(", "[", "{") - token.is_op(")", "]", "}")
+        if token.kind == "implies" or (depth == 0 and token.is_op(",")):
+            pieces.append([])
+        else:
+            pieces[-1].append(token)
+    return [piece for piece in pieces if piece]
+
+
+def _labelled(piece: list[Token]) -> bool:
+    """Whether a step begins ``name =``, with more after it."""
+    return len(piece) > 2 and _plain(piece[0]) and piece[1].is_op("=")
+
+
+def _unlabelled(piece: list[Token]) -> list[Token]:
+    """The plain names of a step, but the name it begins with as ``name =``."""
+    return [token for token in (piece[2:] if _labelled(piece) else piece) if _plain(token)]
+
+
+def _plain(token: Token) -> bool:
+    """Whether a token is a name without dots or primes."""
+    return token.kind == "name" and not (token.value.dots or token.value.primes)
 
 
 # A Mac keyboard types a dot or two over a letter as the spacing marks ˙ (Option-h) and ¨
