@@ -241,6 +241,9 @@ SYSTEMS = [
     ("a = b with c = d", (Eq(a, b), Eq(c, d))),
     ("a = b \\quad\\text{where}\\quad c = d", (Eq(a, b), Eq(c, d))),
     ("(1) a = b\n(2) c = d", (Eq(a, b), Eq(c, d))),
+    # a bracket that is an argument, or touches what it multiplies, is no equation's number
+    ("m = sin(1); m = sin(2)", (Eq(m, sin(1)), Eq(m, sin(2)))),
+    ("a = b(1)\nc = d(2)", (Eq(a, b), Eq(c, 2 * d))),
     # numbered in one line, in order, each number before an equation
     ("(1) a = b (2) c = d", (Eq(a, b), Eq(c, d))),
     ("1) a = b 2) c = d", (Eq(a, b), Eq(c, d))),

@@ -181,6 +181,8 @@ HOSTILE = [
     # an arrow is a derivation's step only between two equations; elsewhere it is a limit or a map
     ("\\theta^{\\prime 2", "unclosed"),
     ("m^\\prime", "derivative_of_constant"),  # TeX's prime marks a derivative, only of a coordinate
+    ("ṗ_θ = a", "derivative_of_constant"),  # the dot is p_θ's, not θ's: no p·θ̇
+    ("p_θ̇", "derivative_of_constant"),
     ("θ → 0", "arrow"),
     ("θ̈ = -g/l θ (θ → 0)", "arrow"),
     ("θ̈ → -g/l θ", "arrow"),

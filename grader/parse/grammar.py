@@ -740,9 +740,9 @@ class _Parser:
         if not endings:
             return None
         coordinate = max(endings, key=len)
-        prefix = canonical[: -len(coordinate)].rstrip("_")
-        if not _PLAIN_NAME.fullmatch(prefix):
-            return None
+        prefix = canonical[: -len(coordinate)]
+        if prefix.endswith("_") or not _PLAIN_NAME.fullmatch(prefix):
+            return None  # ṗ_θ: θ is p's subscript, and the dot p's
         return [self.lookup(prefix) or sympy.Symbol(prefix), self.context.coords[coordinate]]
 
     def chain(self, pieces, i, token):
@@ -940,6 +940,8 @@ def _as_system(tokens: list[Token]) -> list[Token]:
     if any(len(item) <= 3 for item in items):
         return tokens
     for labels in ([item[:3] for item in items], [item[-3:] for item in items]):  # before each, or after
+        if labels[0] == items[0][-3:] and not all(_set_apart(tokens, label[0]) for label in labels):
+            continue  # m = sin(1); m = sin(2): an argument, not an equation's number
         if all(_is_number_label(tokens, label, number) for number, label in enumerate(labels, start=1)):
             dropped = {j for label in labels for j in label}
             return [token for j, token in enumerate(tokens) if j not in dropped]
@@ -975,6 +977,14 @@ def _split_at(tokens: list[Token], top: set[int], separates) -> list[list[int]]:
 
 
 _ROMAN = ("i", "ii", "iii", "iv", "v", "vi", "vii", "viii", "ix", "x")
+
+
+def _set_apart(tokens: list[Token], opener: int) -> bool:
+    """Whether the bracket at ``opener`` stands apart from what comes before it, as an equation's
+    number does (``θ̈ = −ω² θ (1)``): a space between, and no function before it whose argument it
+    could be (``m = sin(1)``, ``sin (1)``, ``a(1)``)."""
+    before = tokens[opener - 1]
+    return tokens[opener].start > before.end and before.kind != "func"
 
 
 def _is_number_label(tokens: list[Token], positions: list[int], number: int) -> bool:

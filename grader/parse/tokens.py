@@ -135,7 +135,7 @@ _LETTERS = re.compile(r"[A-Za-z]+")
 _UNICODE_SUBSCRIPT = re.compile(r"[\u2080-\u2089]+")
 _ENDS_IN_SUBSCRIPT = re.compile(r"_[0-9]+$")
 _SUBSCRIPTS = SUBSCRIPT_DIGITS | SUBSCRIPT_LETTERS  # θ₁, Qᵣ: a subscript typed as one
-_SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+")
+_SUBSCRIPT_AFTER_DOT = re.compile(r"_?[0-9]+|[\u2080-\u2089]+|_[A-Za-z0-9\u03b1-\u03c9\u03d1\u03d5\u03f5]+")
 _COMMAND_NAME = re.compile(r"\\([A-Za-z]+)")
 _TEX_PRIME = re.compile(r"\^\s*\\prime(?![A-Za-z])\s*")  # \theta^\prime
 _TEX_PRIMES = re.compile(r"\^\s*(\{)\s*((?:\\prime(?![A-Za-z])\s*)+)")  # \theta^{\prime\prime …
@@ -698,10 +698,11 @@ class _Tokenizer:
                 if any(m not in _COMBINING_DOTS for m in marks):
                     raise ParseFailure("bad_character", self.pos - 1, self.pos, char=c)
                 dots += sum(_COMBINING_DOTS[m] for m in marks)
-                # a dot ends the name, but its subscript may follow: θ̇₁, θ̇_1
+                # a dot ends the name, but its subscript may follow: θ̇₁, θ̇_1, ṗ_θ
                 match = _SUBSCRIPT_AFTER_DOT.match(text, self.pos)
-                if match:
-                    raw.append("_" + "".join(SUBSCRIPT_DIGITS.get(d, d) for d in match[0].lstrip("_")))
+                if match:  # ṗ_θ: a letter's subscript too, Greek by name
+                    sub = match[0].lstrip("_")
+                    raw.append("_" + "".join(GREEK_BY_LETTER.get(d, SUBSCRIPT_DIGITS.get(d, d)) for d in sub))
                     self.pos = match.end()
                 break
         self._finish_name(start, "".join(raw), dots)
