@@ -450,11 +450,16 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     return answer
 
 
+def _constant_allowed(spec: Kind, expected: Expected) -> bool:
+    """Whether the answer may differ by a constant: a Lagrangian, or an expression with ``up_to_constant``."""
+    return spec.name == "lagrangian" or (spec.name == "expression" and bool(expected.option("up_to_constant")))
+
+
 def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``… + C`` or ``… + const`` where a constant is allowed (a Lagrangian, or an expression with
     ``up_to_constant``): the answer without it, when it is a term of its own and a name the
     problem does not define. Inside a product it stays, and is an undefined name."""
-    allowed = spec.name == "lagrangian" or (spec.name == "expression" and expected.option("up_to_constant"))
+    allowed = _constant_allowed(spec, expected)
     value = answer.value
     if not allowed or answer.kind != "expression":
         return answer
@@ -476,8 +481,8 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
     says so; a name found in any other term is said as undefined, as usual. The terms are expanded
     one by one, each within the differentiation budget, so that m₂g(l − x) gives up m₂gl and keeps
     −m₂gx."""
-    allowed = spec.name == "lagrangian" or (spec.name == "expression" and expected.option("up_to_constant"))
-    undefined = {symbol for symbol in answer.symbols if symbol.name not in expected.names}
+    allowed = _constant_allowed(spec, expected)
+    undefined = _undefined_symbols(answer, expected)
     if not allowed or answer.kind != "expression" or not undefined:
         return answer, None
     motion = (*expected.setting.functions.values(), TIME)
@@ -495,13 +500,14 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
                 kept.append(part)
     names = _listing([symbol.name for symbol in undefined])
     one = len(undefined) == 1
-    which = (
-        "a Lagrangian may have and which changes no equation of motion"
+    details = {
+        "names": names,
+        "appear": "appears" if one else "appear",
+        "terms": "a term" if one else "terms",
+        "which": "a Lagrangian may have and which changes no equation of motion"
         if spec.name == "lagrangian"
-        else "this answer may have, as another zero of potential energy"
-    )
-    details = {"names": names, "appear": "appears" if one else "appear", "terms": "a term" if one else "terms"}
-    details["which"] = which
+        else "this answer may have, as another zero of potential energy",
+    }
     note = ("constant_terms_left_out", details)
     return ParsedAnswer(answer.text, sympy.Add(*kept), "expression"), note
 
@@ -656,8 +662,13 @@ def _formula_in_unit(
 
 def _units_named(answer: ParsedAnswer, expected: Expected) -> set[sympy.Symbol]:
     """The names an answer uses that the problem does not, when every one is a unit's; else none."""
-    undefined = {symbol for symbol in answer.symbols if symbol.name not in expected.names}
+    undefined = _undefined_symbols(answer, expected)
     return undefined if all(symbol.name in SI_UNITS for symbol in undefined) else set()
+
+
+def _undefined_symbols(answer: ParsedAnswer, expected: Expected) -> set[sympy.Symbol]:
+    """The symbols an answer uses that the problem does not define."""
+    return {symbol for symbol in answer.symbols if symbol.name not in expected.names}
 
 
 def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome | None:
@@ -667,7 +678,7 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
         # "2.006 s", "two": often the right number in words or with a unit. Not a number we can
         # grade, so a person decides, and a student checking first is told to write the number.
         return Outcome("invalid", 0.0, "not_a_number", {"names": _listing([s.name for s in used])}, "symbols")
-    undefined = [symbol.name for symbol in used if symbol.name not in expected.names]
+    undefined = [symbol.name for symbol in _undefined_symbols(answer, expected)]
     if undefined and spec.shape == "equation" and answer.kind == "equations":
         # m₁ẍ = m₁g − T; m₂ẍ = T − m₂g: Newton's equations, with the string's tension still in them
         details = {
