@@ -175,7 +175,7 @@ def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
     if named:
         return (label, "") if named == [label] else (label, words)
     labels = choice_labels(words)
-    if (labels and all(len(other) <= 2 for other in labels)) or re.search(r"\bor\b", words, re.I):
+    if (labels and all(len(other) <= 2 for other in labels)) or _OR.search(words):
         return None  # a, e: labels, one of them no option's; b - or maybe a: a hedge
     return (label, "") if match["mark"].strip() or _REASON.match(" " + words) else None
 
@@ -185,13 +185,14 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 
 # where an option's reason begins: "rheonomic, since …", "holonomic because …"
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
+_OR = re.compile(r"\bor\b", re.I)  # a hedge between options: b - or maybe a
 
 
 def _with_remark(claim: str, by_words: dict[str, str | None]) -> str | None:
     """``scleronomic (no explicit t)``: one option's words, then a remark in brackets that names no
     other option and does not hedge with "or"; None for any other answer."""
     found = _REMARK.fullmatch(claim)
-    if found is None or re.search(r"\bor\b", found["remark"], re.I):
+    if found is None or _OR.search(found["remark"]):
         return None
     named, other = by_words.get(_plain(found["claim"])), by_words.get(_plain(found["remark"]))
     return named if other in (None, named) else None

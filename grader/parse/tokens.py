@@ -453,15 +453,15 @@ def _list_markers(text: str) -> dict[int, int]:
     return {}
 
 
-# an equation's number in a line of them: 1) θ̈ = … 2) φ̈ = …, or (1) … (2) …
-_INLINE_MARKER = re.compile(r"[ \t]*(\(?)([1-9])\)[ \t]+")
+# an equation's number in a line of them: 1) θ̈ = … 2) φ̈ = …, or (1) … (2) …; at the start, or after a space or mark
+_INLINE_MARKER = re.compile(r"(?:^|(?<=[ \t,;]))[ \t]*(\(?)([1-9])\)[ \t]+")
 
 
 def _inline_markers(text: str) -> dict[int, int]:
     """Where one line numbers its equations in order, ``1) … 2) …`` or ``(1) … (2) …``, each number
     before an equation: start → end of each number, to be read past as a new line. Otherwise none:
     ``a = b (2) c`` is 2bc, and ``(1) a = b (3) c = d`` skips a number."""
-    found = [m for m in re.finditer(r"(?:^|(?<=[ \t,;]))[ \t]*(\(?)([1-9])\)[ \t]+", text)]
+    found = list(_INLINE_MARKER.finditer(text))
     found = [m for m in found if m[1] == found[0][1]]  # one style: all with their opening bracket, or none
     if len(found) < 2 or found[0].start() != 0 or [int(m[2]) for m in found] != list(range(1, len(found) + 1)):
         return {}
