@@ -193,6 +193,40 @@ def test_a_compound_unit_converts_each_factor():
     assert compare("3.13", "3.13 rad/s", kind="number", unit="1/s").status == "equivalent"
 
 
+OMEGA, FREQUENCY = "sqrt(9.81)", "sqrt(9.81)/(2*pi)"  # a pendulum of 1 m: ω = 3.13 rad/s, f = 0.498 Hz
+CYCLES = "Read as {}: a cycle is 2π rad, so 1 Hz is 2π rad/s (ω = 2πf)."
+
+
+@pytest.mark.parametrize(
+    ("expected", "unit", "submitted", "status", "feedback"),
+    [
+        # ω's number with f's unit, and f's with ω's: both SI 1/s, and both wrong
+        (OMEGA, "rad/s", "3.13 Hz", "not_equivalent",
+         ("Not within the accepted tolerance.", CYCLES.format("19.6664 rad/s"))),
+        (FREQUENCY, "Hz", "0.498 rad/s", "not_equivalent",
+         ("Not within the accepted tolerance.", CYCLES.format("0.0792592 Hz"))),
+        # the same rate in the other unit
+        (OMEGA, "rad/s", "0.498 Hz", "equivalent", ("Correct.", CYCLES.format("3.12903 rad/s"))),
+        (FREQUENCY, "Hz", "3.13 rad/s", "equivalent", ("Correct.", CYCLES.format("0.498155 Hz"))),
+        (FREQUENCY, "hertz", "3.13 rad/s", "equivalent", ("Correct.", CYCLES.format("0.498155 hertz"))),
+        # 1/s says neither: read as the part's unit, as it stands
+        (OMEGA, "rad/s", "3.13 s^-1", "equivalent", ("Correct.",)),
+        (FREQUENCY, "Hz", "0.498 s^-1", "equivalent", ("Correct.",)),
+        (OMEGA, "1/s", "3.13 Hz", "equivalent", ("Correct.",)),
+        (OMEGA, "1/s", "3.13 rad/s", "equivalent", ("Correct.",)),
+        # a number alone is in the part's unit; right in the other, it is asked about
+        (OMEGA, "rad/s", "0.498", "not_equivalent",
+         ("Not within the accepted tolerance. Is your number in Hz? The answer is asked in rad/s.",)),
+        (FREQUENCY, "Hz", "3.13", "not_equivalent",
+         ("Not within the accepted tolerance. Is your number in rad/s? The answer is asked in Hz.",)),
+        (OMEGA, "1/s", "0.498", "not_equivalent", ("Not within the accepted tolerance.",)),
+    ],
+)  # fmt: skip
+def test_hz_and_rad_per_s_are_a_cycle_apart(expected, unit, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="number", rtol=0.005, unit=unit)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 def test_a_unit_we_cannot_read_is_the_authors_error():
     with pytest.raises(AuthorError, match="unit 'furlong' is not a product of powers of the units we know"):
         compare("2", "2", kind="number", unit="furlong")

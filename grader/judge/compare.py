@@ -35,7 +35,7 @@ from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
-from grader.judge.units import SI_UNITS, Mixed, in_units, si, unit_named, units_mistake, units_of
+from grader.judge.units import SI_UNITS, Mixed, cycles_to, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
 from grader.judge.words import formula_then_words, words_then_formula
 from grader.parse import ANSWER, TIME, ParsedAnswer, Refusal, parse_answer, too_many_digits, within_diff_budget
@@ -625,12 +625,16 @@ def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pars
     if found is None:
         return answer, None, None  # not a number with a unit: a number is asked for
     number, size, powers = found
-    wanted_size, wanted_powers = _unit(str(wanted))
+    wanted_size, wanted_powers = _unit(str(wanted))  # Hz for rad/s: the same powers, a cycle apart
     if powers != wanted_powers:
         details = {"theirs": si(powers), "wanted": si(wanted_powers)}
         return answer, Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
-    value = number * sympy.Rational(size / wanted_size)
-    read_in = ("unit_read", {"value": f"{float(value):.6g}", "unit": str(wanted)}) if size != wanted_size else None
+    cycles = cycles_to(answer.value, str(wanted))
+    value = number * sympy.Rational(size / wanted_size) * cycles
+    read_in = None
+    if size != wanted_size or cycles != 1:
+        key = "unit_read" if cycles == 1 else "unit_read_cycles"
+        read_in = (key, {"value": f"{float(value):.6g}", "unit": str(wanted)})
     return ParsedAnswer(answer.text, value, "expression"), None, read_in
 
 

@@ -36,6 +36,7 @@ FEEDBACK: dict[str, str] = {
     "decimal_comma": "Read `{typed}` as {number}: a decimal comma.",
     "other_unit": "Not within the accepted tolerance. Is your number in {unit}? The answer is asked in {wanted}.",
     "unit_read": "Read as {value} {unit}.",
+    "unit_read_cycles": "Read as {value} {unit}: a cycle is 2π rad, so 1 Hz is 2π rad/s (ω = 2πf).",
     "words_left_out": "Read without the words after it, `{words}`: the formula is what is graded.",
     "constant_terms_left_out": "{names} {appear} only in {terms} with no coordinate or velocity: a constant, which"
     " {which}. It was left out.",

@@ -65,7 +65,7 @@ def check_number(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -
     for name, size in other_units(str(unit)) if unit else ():
         # 2006 for a period asked in s: the right number in ms, written without its unit
         in_other = target / complex(size)
-        if abs(value - in_other) <= atol / float(size) + rtol * abs(in_other):
+        if abs(value - in_other) <= atol / abs(complex(size)) + rtol * abs(in_other):
             return Outcome("not_equivalent", 0.0, "other_unit", {"unit": name, "wanted": str(unit)}, method)
     return Outcome("not_equivalent", 0.0, "out_of_tolerance", method=method)
 

@@ -8,6 +8,7 @@ Contents:
     si(units), unit_of(dimension)  powers as a student reads them: ``kg·m²/s²``; a dimension's unit
     SI_UNITS, in_units(value)    a number written with its unit: ``2006 ms`` is 2006 × 1/1000 s
     unit_named(text), other_units(text)   a part's unit, and the others that measure the same
+    cycles_to(value, unit)       2π from Hz to rad/s: the same SI units, a cycle apart
 
 A problem declares each symbol's dimension (``m: mass``, ``g: acceleration``); a coordinate's
 derivatives are divided by time once per dot, and t is a time. ``√(l/g)`` is then a time and
@@ -34,6 +35,7 @@ __all__ = [
     "DIMENSIONS",
     "SI_UNITS",
     "Mixed",
+    "cycles_to",
     "in_units",
     "other_units",
     "si",
@@ -213,6 +215,34 @@ def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:
     return sympy.Mul(*number), size, tuple(powers)
 
 
+# Hz counts cycles per second and rad/s radians: the same SI units, 1/s, yet a cycle is 2π radians,
+# and f = ω/2π is the slip students make with them. A plain 1/s (s⁻¹) says neither, and is read as
+# either as it stands.
+_CYCLES = frozenset({"Hz", "hertz"})
+_RADIANS = frozenset({"rad", "radian", "radians"})
+
+
+def cycles_to(value, unit: str) -> sympy.Expr:
+    """What a number written in ``value``'s units is multiplied by, beyond their sizes, to be in
+    ``unit``: 2π from Hz to rad/s, 1/(2π) from rad/s to Hz, else 1."""
+    theirs, wanted = _counts({symbol.name for symbol in value.free_symbols}), _unit_counts(unit)
+    if theirs == wanted or None in (theirs, wanted):
+        return sympy.Integer(1)
+    return 2 * sympy.pi if theirs == "cycles" else 1 / (2 * sympy.pi)
+
+
+@lru_cache(maxsize=64)
+def _unit_counts(text: str) -> str | None:
+    read = parse_answer(text)
+    return _counts({symbol.name for symbol in read.symbols}) if read.ok else None
+
+
+def _counts(names: set[str]) -> str | None:
+    """Whether units by these names count cycles (Hz) or radians (rad/s); None for neither, or both."""
+    cycles, radians = bool(names & _CYCLES), bool(names & _RADIANS)
+    return None if cycles == radians else "cycles" if cycles else "radians"
+
+
 @lru_cache(maxsize=64)
 def unit_named(text: str) -> tuple[Fraction, Units] | None:
     """A unit as an author writes it (``s``, ``m/s^2``, ``rad/s``): its size in SI units and its
@@ -222,11 +252,19 @@ def unit_named(text: str) -> tuple[Fraction, Units] | None:
     return None if found is None or found[0] != 1 else (found[1], found[2])
 
 
-def other_units(text: str) -> list[tuple[str, Fraction]]:
-    """The units of :data:`SI_UNITS` that measure what ``text`` does, each with its size in
-    ``text``'s units: ms for s is 1/1000. The part's own unit, and other names of it, are left out."""
+def other_units(text: str) -> list[tuple[str, sympy.Expr]]:
+    """The units that measure what ``text`` does, each with its size in ``text``'s units: ms for s
+    is 1/1000, Hz for rad/s is 2π. The part's own unit, and other names of it, are left out."""
     size, powers = unit_named(text)
-    return [(name, other / size) for name, (other, its) in SI_UNITS.items() if its == powers and other != size]
+    found = [
+        (name, sympy.Rational(other / size))
+        for name, (other, its) in SI_UNITS.items()
+        if its == powers and other != size
+    ]
+    if powers == DIMENSIONS["frequency"] and size == 1:  # rad/s and Hz: a cycle apart
+        counts = _unit_counts(text)
+        found += [("Hz", 2 * sympy.pi)] if counts == "radians" else [("rad/s", 1 / (2 * sympy.pi))] if counts else []
+    return found
 
 
 def unit_of(dimension: str) -> str:
