@@ -1128,6 +1128,7 @@ CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $
         ("b", "holonomic", "invalid", None),  # the words of two options name neither
         ("b", "the second one", "invalid", None),
         ("b", "B", "equivalent", None),  # a label is read as a label first
+        ("b", "anholonomic", "equivalent", "b"),  # another textbook's name for it
     ],
 )
 def test_a_choice_may_be_written_as_the_options_words(expected, submitted, status, read):
@@ -1209,6 +1210,10 @@ def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
         ("rheonomic because l depends on t", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         # the option's words, then a remark in brackets that names no other option and does not hedge
         ("rheonomic (t appears explicitly)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        # Goldstein's names for them
+        ("Rheonomous", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("b (rheonomous)", "equivalent", ("Correct.",)),
+        ("scleronomous", "not_equivalent", ("Not the right choice.", "Read as the option you wrote out: a.")),
         ("rheonomic (scleronomic)", "invalid", ("`rheonomic (scleronomic)` is not one of the options (a, b).",)),
         ("rheonomic (or scleronomic)", "invalid", ("`rheonomic (or scleronomic)` is not one of the options (a, b).",)),
         # a label and words that name another option: which one is meant?

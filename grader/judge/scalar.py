@@ -219,6 +219,12 @@ _DENIES = re.compile(r"\b(?:not|no|or)\b|n't\b", re.I)
 
 
 def _plain(text: str) -> str:
-    """An option's words as compared: no TeX, markup, case, spaces or hyphens; Greek letters by name."""
+    """An option's words as compared: no TeX, markup, case, spaces or hyphens; Greek letters by
+    name; and the textbooks' other names for a kind of constraint as ours."""
     text = "".join(GREEK_BY_LETTER.get(c, c) for c in text)
-    return re.sub(r"[\s$\\{}*_\-.]", "", text).lower()
+    return _SAME_KIND.sub(lambda found: _SAME_KINDS[found[0]], re.sub(r"[\s$\\{}*_\-.]", "", text).lower())
+
+
+# Goldstein's scleronomous and rheonomous, and anholonomic, are scleronomic, rheonomic, nonholonomic
+_SAME_KINDS = {"scleronomous": "scleronomic", "rheonomous": "rheonomic", "anholonomic": "nonholonomic"}
+_SAME_KIND = re.compile("|".join(_SAME_KINDS))
