@@ -1294,6 +1294,18 @@ def _final(value):
         (PERIOD, "The period is about 2.01 s.", PERIOD_PART, "equivalent", "2.01", (_sentence("2.01 s"),)),
         ("2", "It has two degrees of freedom", {}, "equivalent", "2", (_sentence("two"),)),
         ("2", "2 (the two angles)", {}, "equivalent", "2", (_remark(2, "(the two angles)"),)),
+        # a count broken down, in brackets, into counts that add up to it
+        ("6", "6 (3 translations + 3 rotations)", {}, "equivalent", "6",
+         (_remark(6, "(3 translations + 3 rotations)"),)),
+        ("6", "6 (3 translational and 3 rotational)", {}, "equivalent", "6",
+         (_remark(6, "(3 translational and 3 rotational)"),)),
+        ("6", "6 (3 translations, 3 rotations)", {}, "equivalent", "6", (_remark(6, "(3 translations, 3 rotations)"),)),
+        ("2", "2 (4 coordinates − 2 constraints)", {}, "equivalent", "2",
+         (_remark(2, "(4 coordinates − 2 constraints)"),)),
+        ("15", "15 (5 particles times 3 coordinates)", {}, "equivalent", "15",
+         (_remark(15, "(5 particles times 3 coordinates)"),)),
+        ("5", "6 (3 translations + 3 rotations)", {}, "not_equivalent", "6",
+         (_remark(6, "(3 translations + 3 rotations)"),)),
         # working, then the final value
         ("2", "6 - 4 = 2", {}, "equivalent", "2", (_final(2),)),
         ("2", "6 - 3 = 3", {}, "not_equivalent", "3", (_final(3),)),
@@ -1341,6 +1353,8 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
         "2 or three",
         "2 (three minus one)",
         "2 (the 2 angles)",
+        "6 (3 translations + 2 rotations)",  # a breakdown that does not add up
+        "2 (3 coordinates - 2 constraints)",
         "either 2 or 3",
         "not 3 but 2",
         "not 2",
@@ -1351,6 +1365,13 @@ def test_a_remark_with_another_number_is_a_hedge_not_a_remark(submitted):
     verdict = compare("2", submitted, kind="integer")
     assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")
     assert compare("2", "2 (θ_1 and θ_2)", kind="integer").status == "equivalent"  # digits of names are not numbers
+
+
+def test_a_breakdown_holds_no_name_of_the_problem():
+    # 4 (2 ω + 2) is a formula in ω, where ω is the problem's: not counts of things named in words
+    verdict = compare("4", "4 (2 omega + 2)", kind="integer", known=["omega"])
+    assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")
+    assert compare("4", "4 (2 omegas + 2)", kind="integer", known=["omega"]).status == "equivalent"
 
 
 def test_seconds_written_sec_are_not_a_remark_where_no_unit_is_asked_for():

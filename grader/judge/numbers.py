@@ -18,7 +18,7 @@ import re
 from collections.abc import Callable, Collection
 
 from grader.judge.words import is_prose
-from grader.parse import ParsedAnswer
+from grader.parse import ParsedAnswer, parse_answer
 
 __all__ = ["read_number"]
 
@@ -163,9 +163,37 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     """Whether ``rest`` is words about the number, not more of the answer: after the mark that
     opens it, prose (:func:`~grader.judge.words.is_prose`) that does not begin with a digit, is not
     a unit, and names no number in words but ``number`` (2 (the two angles), not 2 (or three))."""
+    if _breaks_down(rest, names, number):
+        return True
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
     if any(_NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(words)):
         return False
     return is_prose(words, names)
+
+
+def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
+    """Whether ``rest`` breaks the count ``number`` down, in brackets, into counts of things named
+    in words that add up to it: ``(3 translations + 3 rotations)`` for 6, ``(6 coordinates − 1
+    constraint)`` for 5. Counts in digits, joined by signs, by and, plus, minus, times, or listed
+    between commas (``3 translations, 3 rotations``); words that are none of the problem's names.
+    A breakdown that does not add up is no remark: which number is meant is for the student to say."""
+    found = _BRACKETED.fullmatch(rest)
+    if found is None or not number.isdigit():
+        return False
+    words = _COUNTED.findall(found[1])
+    if not words or any(word in names for word in words):
+        return False
+    arithmetic = _LISTED.sub(" + ", _COUNTED.sub(lambda word: _SAID_SIGNS.get(word[0].lower(), " "), found[1]))
+    if not _COUNTS.fullmatch(arithmetic):
+        return False
+    read = parse_answer(arithmetic)
+    return read.ok and read.kind == "expression" and read.value == int(number)
+
+
+_BRACKETED = re.compile(r"\(([^()]{1,120})\)\.?")
+_COUNTED = re.compile(r"(?<![\w\\])[A-Za-z]{2,}(?!\w)")  # translations, rotations, and: not θ1
+_SAID_SIGNS = {"and": "+", "plus": "+", "minus": "-", "times": "*"}
+_LISTED = re.compile(r"[,;]\s")  # counts listed add up: not 3,5, a decimal comma
+_COUNTS = re.compile(r"\s*[0-9]+(?:\s*[-+−*×·]\s*[0-9]+)+\s*")  # 3 + 3, 6 − 1, 3·2 − 1
