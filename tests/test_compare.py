@@ -693,6 +693,27 @@ def test_working_is_not_read_where_the_answer_would_be_a_guess(expected, submitt
     assert not verdict.notes
 
 
+ENERGIES = "Your answer gives T and {0} but no Lagrangian: the answer asked for is L = T − {0}, written out."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        ("T = ½ m l² θ̇²; V = −m g l cos θ", ENERGIES.format("V") + " T − V from yours would be right."),
+        ("V = −m g l cos θ\nT = ½ m l² θ̇²", ENERGIES.format("V") + " T − V from yours would be right."),
+        ("T = ½ m l² θ̇², U = −m g l cos θ", ENERGIES.format("U") + " T − U from yours would be right."),
+        ("T = ½ m l² θ̇²; V = m g l cos θ",
+         ENERGIES.format("V") + " Check your energies too: T − V from yours is not right."),
+    ],
+)  # fmt: skip
+def test_the_energies_without_the_lagrangian_are_told_what_is_asked_for(submitted, feedback):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.0, (feedback,))
+    # not where an expression in them is asked for, nor with a name other than T and V
+    for kind, expected, other in (("expression", L_PENDULUM, submitted), ("lagrangian", L_PENDULUM, "T = 1; W = 2")):
+        assert compare(expected, other, kind=kind, **PENDULUM).diagnosis != verdict.diagnosis
+
+
 def test_a_name_left_in_the_formula_before_the_words_is_said_as_usual():
     verdict = compare(L_PENDULUM, "½ m v² + m g l cos θ, where v is the speed", kind="lagrangian", **PENDULUM)
     assert verdict.feedback[0].startswith("Your answer uses `v`, which this problem does not define")

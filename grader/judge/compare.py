@@ -166,6 +166,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer = _with_definitions(answer, expected, deadline)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += (working,) if working else ()
+                energies = _energies_alone(answer, spec, expected, deadline)
+                if energies:
+                    return _verdict(energies, answer)
                 if _loose_definitions(answer):
                     return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
                 typed, (answer, used) = answer, _with_given(answer, given)
@@ -350,6 +353,26 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
     if len(rest) == 1:
         return ParsedAnswer(answer.text, rest[0], "equation"), note
     return ParsedAnswer(answer.text, tuple(rest), "equations"), note
+
+
+def _energies_alone(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> Outcome | None:
+    """``T = ½ m l² θ̇²; V = −m g l cos θ`` where a Lagrangian is asked for: the two energies, and no
+    L. Not the answer, so not equivalent; but the student is told that L = T − V is what is asked
+    for, and whether theirs would be right, rather than that T and V are undefined. None for any
+    other answer."""
+    if spec.name != "lagrangian" or answer.kind != "equations" or len(answer.value) != 2:
+        return None
+    named = {}
+    for item in answer.value:
+        name = _quantity_named(item, answer.value, expected)
+        named[name.name if name is not None else None] = item.rhs
+    if set(named) not in ({"T", "V"}, {"T", "U"}):
+        return None
+    potential = "V" if "V" in named else "U"
+    lagrangian = ParsedAnswer(answer.text, named["T"] - named[potential], "expression")
+    right = spec.check(expected, lagrangian, deadline).status == "equivalent"
+    key = "energies_without_lagrangian_right" if right else "energies_without_lagrangian"
+    return Outcome("not_equivalent", 0.0, key, {"potential": potential}, method="shape")
 
 
 # The energies a Lagrangian is made of, and the Lagrangian: in working, they come before the answer.

@@ -64,6 +64,10 @@ FEEDBACK: dict[str, str] = {
     "eliminate_unknowns": "One equation is asked for here; your answer has {count}, with {names}, which this problem"
     " does not define. Eliminate {them} between your equations, to leave one in the problem's own names.",
     "expected_expression": "An expression is asked for here, but your answer is an equation.",
+    "energies_without_lagrangian": "Your answer gives T and {potential} but no Lagrangian: the answer asked for is"
+    " L = T − {potential}, written out. Check your energies too: T − {potential} from yours is not right.",
+    "energies_without_lagrangian_right": "Your answer gives T and {potential} but no Lagrangian: the answer asked"
+    " for is L = T − {potential}, written out. T − {potential} from yours would be right.",
     "loose_definitions": "The first item of your answer has no `=`. An expression may be followed only by"
     " definitions of the names it uses (…, where v = l θ̇); in a list of equations, every item needs an `=`.",
     "expected_system": "A system of {count} equations is asked for here (one per coordinate: {coords}).",
