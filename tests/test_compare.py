@@ -714,6 +714,35 @@ def test_the_energies_without_the_lagrangian_are_told_what_is_asked_for(submitte
         assert compare(expected, other, kind=kind, **PENDULUM).diagnosis != verdict.diagnosis
 
 
+SPRINGS = {"coords": ["x1", "x2"], "known": ["m", "k"]}
+EOM_SPRINGS = "m x1ddot = -2 k x1 + k x2; m x2ddot = k x1 - 2 k x2"
+DASHES = (
+    "Each line of your answer starts with `- `. Read as minus signs, your answer is not right; read as a list's"
+    " bullets, it is. Which is meant? Write a minus sign against its term (−2 l θ̈), or leave the bullets out."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # a Markdown list of right equations: its dashes may be bullets or minus signs, and only one reading is right
+        ("- m ẍ₁ + 2 k x₁ − k x₂ = 0\n- m ẍ₂ − k x₁ + 2 k x₂ = 0", "invalid"),
+        ("  – m ẍ₁ = −2 k x₁ + k x₂\n  – m ẍ₂ = k x₁ − 2 k x₂", "invalid"),
+        # right as typed, minus signs and all: no question
+        ("- m ẍ₁ - 2 k x₁ + k x₂ = 0\n- m ẍ₂ + k x₁ - 2 k x₂ = 0", "equivalent"),
+        # wrong either way: as typed
+        ("- m ẍ₁ = 0\n- m ẍ₂ = 0", "not_equivalent"),
+        # not every line starts so, one line alone, or the minus sign −: as typed
+        ("- m ẍ₁ + 2 k x₁ − k x₂ = 0\nm ẍ₂ − k x₁ + 2 k x₂ = 0", "not_equivalent"),
+        ("−m ẍ₁ + 2 k x₁ − k x₂ = 0\n−m ẍ₂ − k x₁ + 2 k x₂ = 0", "not_equivalent"),
+    ],
+)
+def test_dashes_that_start_every_line_are_asked_about_where_the_reading_decides(submitted, status):
+    verdict = compare(EOM_SPRINGS, submitted, kind="equations", **SPRINGS)
+    assert verdict.status == status, verdict
+    assert (verdict.feedback == (DASHES,)) == (status == "invalid")
+
+
 def test_a_name_left_in_the_formula_before_the_words_is_said_as_usual():
     verdict = compare(L_PENDULUM, "½ m v² + m g l cos θ, where v is the speed", kind="lagrangian", **PENDULUM)
     assert verdict.feedback[0].startswith("Your answer uses `v`, which this problem does not define")

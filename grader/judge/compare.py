@@ -14,6 +14,7 @@ checkers only compare.
 from __future__ import annotations
 
 import re
+import time
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
@@ -38,7 +39,7 @@ from grader.judge.text import check_text
 from grader.judge.units import SI_UNITS, Mixed, cycles_to, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
 from grader.judge.words import formula_then_words, words_then_formula
-from grader.parse import ANSWER, TIME, ParsedAnswer, Refusal, parse_answer, too_many_digits, within_diff_budget
+from grader.parse import ANSWER, LIMITS, TIME, ParsedAnswer, Refusal, parse_answer, too_many_digits, within_diff_budget
 from grader.parse.names import is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
@@ -139,7 +140,32 @@ def compare(
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
     if settings.get("unit"):
         _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
-    return _judge(spec, prepared, submitted, timeout, given_values(prepared, given) if given else ())
+    given = given_values(prepared, given) if given else ()
+    started = time.monotonic()
+    verdict = _judge(spec, prepared, submitted, timeout, given)
+    listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
+    left = timeout - (time.monotonic() - started)
+    if listed is None or left <= 0:
+        return verdict
+    if _judge(spec, prepared, listed, left, given).status != "equivalent":
+        return verdict
+    return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+# a line that starts with a dash and a space: a Markdown list's bullet, or a minus sign?
+_DASHED = re.compile(r"[ \t]*[-–][ \t]+")
+
+
+def _without_dashes(text: str) -> str | None:
+    """``text`` without the ``- `` that starts each of its lines, where it has two lines or more
+    and each starts so; else None. As typed, each dash is a minus sign: where that reading is
+    wrong and this one right, which was meant is for the student to say."""
+    if not isinstance(text, str) or len(text) > LIMITS.length:
+        return None
+    lines = [line for line in text.split("\n") if line.strip()]
+    if len(lines) < 2 or not all(_DASHED.match(line) for line in lines):
+        return None
+    return "\n".join(line[_DASHED.match(line).end() :] for line in lines)
 
 
 _AN = {"expression": "an expression", "equation": "an equation", "equations": "a system of equations"}

@@ -64,6 +64,9 @@ FEEDBACK: dict[str, str] = {
     "eliminate_unknowns": "One equation is asked for here; your answer has {count}, with {names}, which this problem"
     " does not define. Eliminate {them} between your equations, to leave one in the problem's own names.",
     "expected_expression": "An expression is asked for here, but your answer is an equation.",
+    "dashes_ambiguous": "Each line of your answer starts with `- `. Read as minus signs, your answer is not right;"
+    " read as a list's bullets, it is. Which is meant? Write a minus sign against its term (−2 l θ̈), or leave"
+    " the bullets out.",
     "energies_without_lagrangian": "Your answer gives T and {potential} but no Lagrangian: the answer asked for is"
     " L = T − {potential}, written out. Check your energies too: T − {potential} from yours is not right.",
     "energies_without_lagrangian_right": "Your answer gives T and {potential} but no Lagrangian: the answer asked"

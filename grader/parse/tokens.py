@@ -437,7 +437,8 @@ def _list_markers(text: str) -> dict[int, int]:
     (``•``, or ``*`` and a space, as Markdown lists) starts every line: start → end of each
     marker, to be read past. Otherwise none: ``2. l θ̈`` alone may be a factor, as typed. A
     Markdown ``- `` is not read as a bullet: ``- 2 l θ̈₁ + … = 0`` on every line may as well be
-    minus signs, and either reading could be wrong."""
+    minus signs, and either reading could be wrong (``compare`` asks which is meant, where only
+    the other is right)."""
     lines, at = [], 0
     for line in text.split("\n"):
         if line.strip():
