@@ -693,6 +693,36 @@ def test_working_is_not_read_where_the_answer_would_be_a_guess(expected, submitt
     assert not verdict.notes
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # Lagrange's equation through the momentum: ṗ = ∂L/∂θ, with p = ∂L/∂θ̇ defined beside it
+        ("p_θ = m l² θ̇, ṗ_θ = −m g l sin θ", "equivalent"),
+        ("ṗ = −m g l sin θ, where p = m l² θ̇", "equivalent"),
+        ("d/dt(p) = −m g l sin θ; p = m l² θ̇", "equivalent"),
+        ("dp/dt = −m g l sin θ\np = m l² θ̇", "equivalent"),
+        ("d/dt(m l² ω) = −m g l sin θ, ω = θ̇", "equivalent"),
+        # the momentum or the force wrong: wrong
+        ("p_θ = m l θ̇, ṗ_θ = −m g l sin θ", "not_equivalent"),
+        ("p_θ = m l² θ̇, ṗ_θ = m g l sin θ", "not_equivalent"),
+        ("p = m l² θ, ṗ = −m g l sin θ", "not_equivalent"),  # a momentum of θ, not θ̇: no acceleration
+        # a rate of a name nothing defines is no quantity: refused, as before
+        ("ṗ_θ = −m g l sin θ", "invalid"),
+        ("d/dt(p) = −m g l sin θ", "invalid"),
+    ],
+)
+def test_an_equation_of_motion_may_be_written_through_a_momentum_it_defines(submitted, status):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert verdict.status == status, verdict
+
+
+def test_a_rate_whose_name_is_not_defined_in_the_problems_names_is_not_put_in_place():
+    # p = m l² v: v is the student's too, so p is no definition; its rate stays, and is said so
+    verdict = compare(EOM_PENDULUM, "ṗ = −m g l sin θ, p = m l² v", kind="equation", **PENDULUM)
+    assert verdict.status == "not_equivalent"
+    assert verdict.diagnosis == "eliminate_unknowns"
+
+
 ENERGIES = "Your answer gives T and {0} but no Lagrangian: the answer asked for is L = T − {0}, written out."
 
 

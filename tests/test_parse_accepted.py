@@ -435,6 +435,26 @@ def test_leibniz_notation_is_a_time_derivative(text, expected):
     assert result.value == expected
 
 
+@pytest.mark.parametrize(
+    ("text", "rates"),
+    [
+        ("ṗ = -m g l sin θ; p = m l² θ̇", ["p"]),
+        ("p' = a\np = m θ̇", ["p"]),
+        ("d/dt(p) = a, where p = m θ̇", ["p"]),
+        ("dp/dt = a; p = m θ̇", ["p"]),
+        ("p_θ = m θ̇, ṗ_θ = a", ["p_theta"]),  # p_θ is no name of this problem's
+        ("d/dt(m u v) = a; u = θ; v = θ̇", ["u", "v"]),  # each of the answer's names has its rate
+    ],
+)
+def test_the_rate_of_a_name_the_answer_defines_is_its_derivative_in_time(text, rates):
+    # ṗ where p = m l² θ̇: the derivative of p as a function of time, for compare to put in place
+    result = parse_answer(text, coords=["theta"], known=["m", "g", "l", "a"])
+    assert result.ok, str(result)
+    items = result.value if isinstance(result.value, tuple) else (result.value,)
+    found = {d.expr.func.__name__ for item in items for d in item.atoms(sympy.Derivative) if d.expr.args == (t,)}
+    assert found - {"theta"} == set(rates)
+
+
 def test_d_and_dt_are_symbols_when_the_problem_defines_them():
     assert parse_answer("d/dt x", known=["d"], coords=["x"]).value == x / t  # d·x/(d·t): the problem said d
     d = sympy.Symbol("d")

@@ -337,7 +337,10 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
             break
         position, (symbol, value) = found
         del items[position]
-        items = [_replaced(item, {symbol: value}) for item in items]
+        rates = {rate: sympy.diff(value, TIME) for item in items for rate in _rates_of(item, symbol)}
+        if rates and not within_diff_budget(value):
+            return answer
+        items = [_replaced(item, {**rates, symbol: value}) for item in items]
         if any(too_many_digits(number) for item in items for number in item.atoms(sympy.Rational)):
             return answer
     if len(items) == len(answer.value):
@@ -444,9 +447,18 @@ def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sy
         return None
     if any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
         return None
-    if not any(base in other.free_symbols for other in items if other is not item):
+    if not any(base in other.free_symbols or _rates_of(other, base) for other in items if other is not item):
         return None
     return base, (item.rhs / coefficient) ** sympy.Rational(1, int(power))  # a positive quantity, as parameters are
+
+
+def _rates_of(item, name: sympy.Symbol) -> list[sympy.Derivative]:
+    """The rates of a name the answer defines that ``item`` uses: ``ṗ`` for p (see the parser's ``rate``)."""
+    return [
+        rate
+        for rate in item.atoms(sympy.Derivative)
+        if isinstance(rate.expr, AppliedUndef) and rate.expr.func.__name__ == name.name
+    ]
 
 
 def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple[ParsedAnswer, bool]:

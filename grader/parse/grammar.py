@@ -151,6 +151,7 @@ class _Parser:
         self.depth = 0
         self.powers = 0  # exponents open around the cursor, as in x^(y^(z…))
         self.splits: dict[str, list | None] = {}
+        self.rates: dict[str, tuple[int, int]] = {}  # a name of the answer's own → where its rate is first used
 
     # -- cursor ----------------------------------------------------------------
 
@@ -201,6 +202,7 @@ class _Parser:
         items = self.list_of_items() if self._is_bracketed_list() else self.separated_items()
         if self.token.kind != "end":
             self.fail_here()
+        self._rates_defined(items)
         if len(items) == 1:
             return items[0][1]
         (token, first), rest = items[0], items[1:]
@@ -210,6 +212,28 @@ class _Parser:
             if not isinstance(item, sympy.Eq):
                 raise ParseFailure("not_an_equation", token.start, token.end, index=index)
         return tuple(item for _, item in items)
+
+    def _rates_defined(self, items: list) -> None:
+        """Refuse the rate of a name (``ṗ``, ``d/dt(p)``) unless an equation of the answer defines the
+        name, ``p = m l² θ̇``: a name nothing defines is no quantity that changes in time."""
+        defined = {item.lhs.name for _, item in items if isinstance(item, sympy.Eq) and item.lhs.is_Symbol}
+        for name, (start, end) in self.rates.items():
+            if name not in defined:
+                raise ParseFailure(
+                    "derivative_of_constant", start, end,
+                    name=self.text[start:end], base=name, coords=self.context.describe_coords(),
+                )  # fmt: skip
+
+    def rate(self, symbol: sympy.Symbol, start: int, end: int) -> sympy.Expr:
+        """``ṗ`` where the answer defines p for itself (``p = m l² θ̇, ṗ = −m g l sin θ``): the time
+        derivative of p as a function of time, which ``compare`` replaces with the derivative of
+        what defines p. Where nothing does, the answer is refused at its end."""
+        self.rates.setdefault(symbol.name, (start, end))
+        return sympy.Derivative(sympy.Function(symbol.name, real=True)(TIME), TIME)
+
+    def own(self, value) -> bool:
+        """Whether ``value`` is a name the problem does not define, which the answer may."""
+        return isinstance(value, sympy.Symbol) and value != TIME and value.name not in self.context.known
 
     def _is_bracketed_list(self) -> bool:
         """``[eq1, eq2]``, ``{eq1, eq2}`` or ``[eq]``: a bracket or brace spanning the whole answer
@@ -695,9 +719,18 @@ class _Parser:
             if total > LIMITS.derivative_order:
                 raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
             return self.context.derivative(target.expr, total)
+        end = self.tokens[self.i - 1].end
         if not within_diff_budget(target, order):
-            raise ParseFailure("diff_too_large", token.start, self.tokens[self.i - 1].end)
+            raise ParseFailure("diff_too_large", token.start, end)
+        own = sorted((symbol for symbol in target.free_symbols if self.own(symbol)), key=str)
+        if own and (order > 1 or len(own) > _OWN_RATES):
+            raise ParseFailure(
+                "derivative_of_constant", token.start, end,
+                name=self.text[token.start : end], base=own[0].name, coords=self.context.describe_coords(),
+            )  # fmt: skip
         derivative = sympy.diff(target, TIME, order)
+        # d/dt (m p): p is a name of the answer's own, and may change in time (p = m l² θ̇)
+        derivative += sum(sympy.diff(target, symbol) * self.rate(symbol, token.start, end) for symbol in own)
         # d/dt (d/dt (m θ̇)) nests past the order cap that θ⃛ and diff(θ, t, 3) meet
         if any(d.derivative_count > LIMITS.derivative_order for d in derivative.atoms(sympy.Derivative)):
             raise ParseFailure("derivative_order", token.start, self.tokens[self.i - 1].end)
@@ -712,6 +745,8 @@ class _Parser:
         order = name.dots + name.primes
         if order and len(pieces) == 1 and not _is_coordinate(pieces[0], self.context):
             pieces = self._before_a_coordinate(name) or pieces
+        if order == 1 and len(pieces) == 1 and self.own(pieces[0]):
+            pieces[0], order = self.rate(pieces[0], token.start, token.end), 0  # ṗ, where p = m l² θ̇
         if order:
             last = pieces[-1]
             if not _is_coordinate(last, self.context):
@@ -1141,6 +1176,10 @@ def _power(base, exponent, token: Token):
     _check_size(value, token)
     return value
 
+
+# names of the answer's own whose rates one d/dt may take: d/dt (m p) has one; a product of n such
+# names gives n terms of n factors, and 60 of them took seconds
+_OWN_RATES = 4
 
 # operations ** (order + 1): d/dt of a product of n factors is n terms of n factors each, so
 # the result grows as the square. d/dt of 63 operations, d²/dt² of 15, d³/dt³ of 7.
