@@ -367,6 +367,40 @@ def test_a_term_the_answer_does_not_have_is_not_said_to_differ():
     assert verdict.feedback == ("This equation does not say the same as the expected one.",), verdict
 
 
+ATWOOD_A = "(m1 - m2) g / (m1 + m2)"
+MASSES = {"coords": ["x"], "known": ["m1", "m2", "g"]}
+MOMENTUM_PHI = "m l^2 sin(theta)^2 phidot"
+SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
+
+
+def _depends(right, wrong):
+    return (
+        f"Your answer depends on {right} as the right answer does, but not on {wrong}:"
+        f" check the factors with {wrong} in them."
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "sentence"),
+    [
+        # a product or quotient off by a factor in some of its symbols: those symbols are named
+        (ATWOOD_A, "(m1 + m2) g / (m1 - m2)", MASSES, _depends("g", "m₁ and m₂")),  # a fraction upside down
+        (ATWOOD_A, "(m1 - m2) / (m1 + m2)", MASSES, _depends("m₁ and m₂", "g")),
+        (ATWOOD_A, "(m1 - m2) g / m1", MASSES, _depends("g", "m₁ and m₂")),
+        ("sqrt(g/l)", "sqrt(g m / l)", PENDULUM, _depends("g and l", "m")),  # a symbol that has no place
+        (MOMENTUM_PHI, "m l² θ̇ sin²θ", SPHERICAL, _depends("l, m and θ", "φ̇ and θ̇")),  # the wrong velocity
+        (MOMENTUM_PHI, "m l² φ̇ sin θ", SPHERICAL, _depends("l, m and φ̇", "θ")),
+        # the factor depends on every symbol: nothing to name, the terms are described as before
+        ("sqrt(g/l)", "sqrt(l/g)", PENDULUM, "A term differs: a gravity term is not right."),
+        # a sum: its terms are named
+        (ATWOOD_A, "m1 g / (m1 + m2)", MASSES, "A term is missing: a gravity term."),
+    ],
+)  # fmt: skip
+def test_a_product_off_by_a_factor_names_the_symbols_it_gets_wrong(expected, submitted, setting, sentence):
+    verdict = compare(expected, submitted, **setting)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,))
+
+
 def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
     # any constant difference is a multiple of cos 3: only the terms as typed can say which
     verdict = compare("cos(3) + theta", "cos(3) - 3 + theta", coords=["theta"])

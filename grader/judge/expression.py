@@ -14,6 +14,7 @@ term); only other mistakes need the submitted answer expanded by sympy.
 
 from __future__ import annotations
 
+import cmath
 from collections.abc import Callable
 
 import numpy as np
@@ -32,7 +33,7 @@ from grader.judge.diagnose import (
     terms,
 )
 from grader.judge.expected import Expected, Outcome
-from grader.judge.numeric import FLOAT_EQUAL, Closeness
+from grader.judge.numeric import FLOAT_EQUAL, UNDEFINED, Closeness
 from grader.judge.sampling import (
     GROUP,
     MIN_DEFINED,
@@ -45,6 +46,7 @@ from grader.judge.sampling import (
     nice_number,
 )
 from grader.parse import ParsedAnswer
+from grader.parse.names import unicode_name
 
 __all__ = [
     "check_expression",
@@ -92,7 +94,68 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
         if symbolic_zero(expected.setting.plain(answer.value) - expected.value, expected.setting):
             return Outcome("equivalent", 1.0, "equivalent", method="symbolic")
         return Outcome("undecided", 0.0, "undecided", method="numeric: too few defined points")
-    return diagnose_difference(expected, expected.value, answer.value, pairs, deadline)
+    outcome = diagnose_difference(expected, expected.value, answer.value, pairs, deadline)
+    # a product written wrong is better told by the symbols its factors get wrong than as "a term"
+    product = not expected.value.is_Add and not expected.setting.plain(answer.value).is_Add
+    if outcome.key == "wrong" or (product and outcome.key == "term_differs" and not outcome.more):
+        return factor_dependence(expected, "value", expected.value, answer.value) or outcome
+    return outcome
+
+
+_MOVED = (1.37, 0.29)  # a variable moved to 1.37 x + 0.29: away from its value, and from 0 where it was 0
+_SAME_RATIO = 1e-9  # relative: a ratio that moves less than this does not depend on the variable
+
+
+def factor_dependence(expected: Expected, key: str, e, s) -> Outcome | None:
+    """``(m₁ + m₂) g/(m₁ − m₂)`` for ``(m₁ − m₂) g/(m₁ + m₂)``: where the ratio of ``s`` to ``e``
+    depends on some of the symbols the two are written in and not on the others, the outcome
+    that names both: the answer depends on g as it should, and not on m₁ and m₂. Found in the
+    numbers: each symbol moved alone, at the first point of two draws of the parameters.
+    None where the ratio depends on every symbol (a sum with a wrong term), or cannot be had."""
+    setting = expected.setting
+    plain = setting.plain(s)
+    variables = expected.variables
+    used = [i for i, symbol in enumerate(variables) if symbol in e.free_symbols | plain.free_symbols]
+    e_c, s_c = expected.compiled(key, e), expected.compile(plain)
+    depends, rows = set(), 0
+    for point in expected.points(expected.point_count, group=GROUP)[::GROUP][:2]:
+        start = _ratio(e_c, s_c, point)
+        if start is None:
+            continue
+        rows += 1
+        for i in used:
+            moved = point.copy()
+            moved[i] = moved[i] * _MOVED[0] + _MOVED[1]
+            ratio = _ratio(e_c, s_c, moved)
+            if ratio is None or abs(ratio - start) > _SAME_RATIO * abs(start):
+                depends.add(i)
+    if not rows or not depends or len(depends) == len(used):
+        return None
+    names = [_shown(variables[i], setting) for i in used if i in depends]
+    others = [_shown(variables[i], setting) for i in used if i not in depends]
+    details = {"names": _listed(names), "others": _listed(others)}
+    return Outcome("not_equivalent", 0.0, "factor_depends", details, method="numeric: ratio")
+
+
+def _ratio(e_c, s_c, point: np.ndarray) -> complex | None:
+    """``s / e`` at ``point``, or None where either is undefined or ``e`` is 0 there."""
+    values = point.tolist()
+    try:
+        (a, scale), (b, _) = e_c.at(values), s_c.at(values)
+    except UNDEFINED:
+        return None
+    if not (cmath.isfinite(a) and cmath.isfinite(b)) or abs(a) <= 1e-9 * scale or b == 0:
+        return None
+    return b / a
+
+
+def _shown(symbol: sympy.Symbol, setting) -> str:
+    name, _, dots = symbol.name.partition("__")
+    return unicode_name(name, int(dots) if dots else 0)
+
+
+def _listed(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
 def diagnose_difference(
