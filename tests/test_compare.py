@@ -750,6 +750,23 @@ def test_an_equation_of_motion_may_be_written_through_a_momentum_it_defines(subm
     assert verdict.status == status, verdict
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "status"),
+    [
+        # a Lagrangian in Cartesian coordinates, with the transformation to the generalized ones
+        (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y, where x = l sin θ, y = −l cos θ", PENDULUM, "equivalent"),
+        (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) + m g y, where x = l sin θ, y = −l cos θ", PENDULUM, "not_equivalent"),
+        (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y, where x = l sin θ, y = l cos θ", PENDULUM, "not_equivalent"),
+        ("1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)",
+         "½ m (ẋ² + ẏ² + ż²) − m g z; x = l sin θ cos φ; y = l sin θ sin φ; z = −l cos θ",
+         {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}, "equivalent"),
+    ],
+)  # fmt: skip
+def test_a_lagrangian_may_be_written_in_cartesian_coordinates_it_defines(expected, submitted, setting, status):
+    verdict = compare(expected, submitted, kind="lagrangian", **setting)
+    assert verdict.status == status, verdict
+
+
 def test_a_rate_whose_name_is_not_defined_in_the_problems_names_is_not_put_in_place():
     # p = m l² v: v is the student's too, so p is no definition; its rate stays, and is said so
     verdict = compare(EOM_PENDULUM, "ṗ = −m g l sin θ, p = m l² v", kind="equation", **PENDULUM)
