@@ -736,6 +736,7 @@ def test_working_is_not_read_where_the_answer_would_be_a_guess(expected, submitt
         ("d/dt(p) = −m g l sin θ; p = m l² θ̇", "equivalent"),
         ("dp/dt = −m g l sin θ\np = m l² θ̇", "equivalent"),
         ("d/dt(m l² ω) = −m g l sin θ, ω = θ̇", "equivalent"),
+        ("p = m l² θ̇ ⇒ ṗ = −m g l sin θ", "equivalent"),  # a derivation keeps the step its conclusion uses
         # the momentum or the force wrong: wrong
         ("p_θ = m l θ̇, ṗ_θ = −m g l sin θ", "not_equivalent"),
         ("p_θ = m l² θ̇, ṗ_θ = m g l sin θ", "not_equivalent"),
@@ -756,6 +757,8 @@ def test_an_equation_of_motion_may_be_written_through_a_momentum_it_defines(subm
         # a Lagrangian in Cartesian coordinates, with the transformation to the generalized ones
         (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y, where x = l sin θ, y = −l cos θ", PENDULUM, "equivalent"),
         (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) + m g y, where x = l sin θ, y = −l cos θ", PENDULUM, "not_equivalent"),
+        (L_PENDULUM, "x = l sin θ, y = −l cos θ ⇒ L = ½ m (ẋ² + ẏ²) − m g y", PENDULUM, "equivalent"),
+        (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y = ½ m l² θ̇² + m g l cos θ", PENDULUM, "equivalent"),  # the last side
         (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y, where x = l sin θ, y = l cos θ", PENDULUM, "not_equivalent"),
         ("1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)",
          "½ m (ẋ² + ẏ² + ż²) − m g z; x = l sin θ cos φ; y = l sin θ sin φ; z = −l cos θ",

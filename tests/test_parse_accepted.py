@@ -444,6 +444,11 @@ def test_leibniz_notation_is_a_time_derivative(text, expected):
         ("dp/dt = a; p = m θ̇", ["p"]),
         ("p_θ = m θ̇, ṗ_θ = a", ["p_theta"]),  # p_θ is no name of this problem's
         ("d/dt(m u v) = a; u = θ; v = θ̇", ["u", "v"]),  # each of the answer's names has its rate
+        # a derivation keeps the step that defines a name whose rate its conclusion uses
+        ("p = m θ̇ ⇒ ṗ = a", ["p"]),
+        ("x = l sin θ ⇒ L = ½ m ẋ²", ["x"]),
+        # a chain's middle side is left out, and its rate with it: nothing to define
+        ("T = ½ m ẋ² = ½ m l² θ̇²", []),
     ],
 )
 def test_the_rate_of_a_name_the_answer_defines_is_its_derivative_in_time(text, rates):

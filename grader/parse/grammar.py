@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
 import sympy
+from sympy.core.function import AppliedUndef
 
 from grader.parse.functions import COMPLEX, SYMPY
 from grader.parse.messages import ParseFailure
@@ -216,9 +217,11 @@ class _Parser:
     def _rates_defined(self, items: list) -> None:
         """Refuse the rate of a name (``ṗ``, ``d/dt(p)``) unless an equation of the answer defines the
         name, ``p = m l² θ̇``: a name nothing defines is no quantity that changes in time."""
-        defined = {item.lhs.name for _, item in items if isinstance(item, sympy.Eq) and item.lhs.is_Symbol}
+        values = [item for _, item in items]
+        defined = {item.lhs.name for item in values if isinstance(item, sympy.Eq) and item.lhs.is_Symbol}
+        used = {name for item in values for name in self.rates_in(item)}  # not in a side a chain left out
         for name, (start, end) in self.rates.items():
-            if name not in defined:
+            if name in used and name not in defined:
                 raise ParseFailure(
                     "derivative_of_constant", start, end,
                     name=self.text[start:end], base=name, coords=self.context.describe_coords(),
@@ -230,6 +233,14 @@ class _Parser:
         what defines p. Where nothing does, the answer is refused at its end."""
         self.rates.setdefault(symbol.name, (start, end))
         return sympy.Derivative(sympy.Function(symbol.name, real=True)(TIME), TIME)
+
+    def rates_in(self, value) -> set[str]:
+        """The names of the answer's own whose rates ``value`` holds."""
+        return {
+            rate.expr.func.__name__
+            for rate in value.atoms(sympy.Derivative)
+            if isinstance(rate.expr, AppliedUndef) and rate.expr.func.__name__ not in self.context.coords
+        }
 
     def own(self, value) -> bool:
         """Whether ``value`` is a name the problem does not define, which the answer may."""
@@ -353,9 +364,9 @@ class _Parser:
         return meaning in self.context.coordinate_set and order <= 1
 
     def _defines(self, side) -> bool:
-        """Whether a side is written in names the problem does not define (T − V, ½ m v²)."""
+        """Whether a side is written in names the problem does not define (T − V, ½ m v², ½ m ẋ²)."""
         defined = set(self.context.known.values()) | {TIME}
-        return any(symbol not in defined for symbol in side.free_symbols)
+        return any(symbol not in defined for symbol in side.free_symbols) or bool(self.rates_in(side))
 
     def side(self, label):
         """The next side of an equation; after a label, ∂L/∂φ̇ may be one (a definition)."""

@@ -352,8 +352,12 @@ def _conclusions(tokens: list[Token]) -> list[Token]:
 
 def _definitions_used(left: list[list[Token]], kept: list[list[Token]]) -> list[list[Token]]:
     """The steps in ``left`` that read ``name = …`` (one ``=``, a name without dots or primes) where
-    the conclusions in ``kept`` use the name other than as a label of their own (``L = …``)."""
-    used = {token.value.raw for line in kept for piece in _pieces(line) for token in _unlabelled(piece)}
+    the conclusions in ``kept`` use the name other than as a label of their own (``L = …``), or
+    its rate in their first or last side (``p = m l² θ̇ ⇒ ṗ = …``, ``x = l sin θ ⇒ L = ½ m ẋ² …``:
+    the sides the parser keeps of a chain)."""
+    pieces = [piece for line in kept for piece in _pieces(line)]
+    used = {token.value.raw for piece in pieces for token in _unlabelled(piece)}
+    used |= {token.value.raw for piece in pieces for token in _kept_sides(piece) if _rate(token)}
     return [
         piece
         for line in left
@@ -383,6 +387,17 @@ def _labelled(piece: list[Token]) -> bool:
 def _unlabelled(piece: list[Token]) -> list[Token]:
     """The plain names of a step, but the name it begins with as ``name =``."""
     return [token for token in (piece[2:] if _labelled(piece) else piece) if _plain(token)]
+
+
+def _kept_sides(piece: list[Token]) -> list[Token]:
+    """The tokens of a step before its first ``=`` and after its last: all of it where it has none."""
+    equals = [i for i, token in enumerate(piece) if token.is_op("=")]
+    return piece[: equals[0]] + piece[equals[-1] + 1 :] if equals else piece
+
+
+def _rate(token: Token) -> bool:
+    """Whether a token is a name with one dot or prime: ``ẋ``, ``p'``."""
+    return token.kind == "name" and token.value.dots + token.value.primes == 1
 
 
 def _plain(token: Token) -> bool:
