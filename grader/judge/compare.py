@@ -140,15 +140,15 @@ def compare(
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
     if settings.get("unit"):
         _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
-    given = given_values(prepared, given) if given else ()
+    values = given_values(prepared, given) if given else ()
     started = time.monotonic()
-    verdict = _judge(spec, prepared, submitted, timeout, given)
+    verdict = _judge(spec, prepared, submitted, timeout, values)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
         return verdict
-    if _judge(spec, prepared, listed, left, given).status != "equivalent":
-        return verdict
+    if _judge(spec, prepared, listed, left, values).status != "equivalent":
+        return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
 
 

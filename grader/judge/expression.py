@@ -131,8 +131,8 @@ def factor_dependence(expected: Expected, key: str, e, s) -> Outcome | None:
                 depends.add(i)
     if not rows or not depends or len(depends) == len(used):
         return None
-    names = [_shown(variables[i], setting) for i in used if i in depends]
-    others = [_shown(variables[i], setting) for i in used if i not in depends]
+    names = [_shown(variables[i]) for i in used if i in depends]
+    others = [_shown(variables[i]) for i in used if i not in depends]
     details = {"names": _listed(names), "others": _listed(others)}
     return Outcome("not_equivalent", 0.0, "factor_depends", details, method="numeric: ratio")
 
@@ -149,12 +149,14 @@ def _ratio(e_c, s_c, point: np.ndarray) -> complex | None:
     return b / a
 
 
-def _shown(symbol: sympy.Symbol, setting) -> str:
+def _shown(symbol: sympy.Symbol) -> str:
+    """A plain symbol as a student writes it: θ for theta, θ̇ for theta__1."""
     name, _, dots = symbol.name.partition("__")
     return unicode_name(name, int(dots) if dots else 0)
 
 
 def _listed(names: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 

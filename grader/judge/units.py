@@ -261,9 +261,11 @@ def other_units(text: str) -> list[tuple[str, sympy.Expr]]:
         for name, (other, its) in SI_UNITS.items()
         if its == powers and other != size
     ]
-    if powers == DIMENSIONS["frequency"] and size == 1:  # rad/s and Hz: a cycle apart
-        counts = _unit_counts(text)
-        found += [("Hz", 2 * sympy.pi)] if counts == "radians" else [("rad/s", 1 / (2 * sympy.pi))] if counts else []
+    counts = _unit_counts(text) if powers == DIMENSIONS["frequency"] and size == 1 else None
+    if counts == "radians":  # rad/s and Hz: a cycle apart
+        found.append(("Hz", 2 * sympy.pi))
+    elif counts == "cycles":
+        found.append(("rad/s", 1 / (2 * sympy.pi)))
     return found
 
 
