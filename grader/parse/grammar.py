@@ -217,6 +217,8 @@ class _Parser:
     def _rates_defined(self, items: list) -> None:
         """Refuse the rate of a name (``ṗ``, ``d/dt(p)``) unless an equation of the answer defines the
         name, ``p = m l² θ̇``: a name nothing defines is no quantity that changes in time."""
+        if not self.rates:
+            return  # as nearly every answer: no walk through it
         values = [item for _, item in items]
         defined = {item.lhs.name for item in values if isinstance(item, sympy.Eq) and item.lhs.is_Symbol}
         used = {name for item in values for name in self.rates_in(item)}  # not in a side a chain left out
