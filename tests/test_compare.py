@@ -376,7 +376,7 @@ SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
 def _depends(right, wrong):
     return (
         f"Your answer depends on {right} as the right answer does, but not on {wrong}:"
-        f" check the factors with {wrong} in them."
+        f" check how your answer depends on {wrong}."
     )
 
 
@@ -388,6 +388,8 @@ def _depends(right, wrong):
         (ATWOOD_A, "(m1 - m2) / (m1 + m2)", MASSES, _depends("m₁ and m₂", "g")),
         (ATWOOD_A, "(m1 - m2) g / m1", MASSES, _depends("g", "m₁ and m₂")),
         ("sqrt(g/l)", "sqrt(g m / l)", PENDULUM, _depends("g and l", "m")),  # a symbol that has no place
+        ("-m g r sin(theta)", "−m g l₀ sin θ", {"coords": ["r", "theta"], "known": ["m", "g", "l0", "k"]},
+         _depends("g, m and θ", "l₀ and r")),  # one symbol for another: both are named
         (MOMENTUM_PHI, "m l² θ̇ sin²θ", SPHERICAL, _depends("l, m and θ", "φ̇ and θ̇")),  # the wrong velocity
         (MOMENTUM_PHI, "m l² φ̇ sin θ", SPHERICAL, _depends("l, m and φ̇", "θ")),
         # the factor depends on every symbol: nothing to name, the terms are described as before

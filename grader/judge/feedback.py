@@ -94,8 +94,8 @@ FEEDBACK: dict[str, str] = {
         " as in (x − a)² = 0, says more than x = a."
     ),
     "wrong": "Not equivalent to the expected answer.",
-    "factor_depends": "Your answer depends on {others} as the right answer does, but not on {names}: check the"
-    " factors with {names} in them.",
+    "factor_depends": "Your answer depends on {others} as the right answer does, but not on {names}: check how"
+    " your answer depends on {names}.",
     "undecided": "This answer could not be checked automatically; it has been set aside for a person to grade.",
     "not_a_number": "A number is asked for here; your answer contains {names}.",
     "not_an_integer": "A whole number is asked for here.",
