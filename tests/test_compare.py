@@ -739,6 +739,9 @@ def test_working_is_not_read_where_the_answer_would_be_a_guess(expected, submitt
         ("dp/dt = −m g l sin θ\np = m l² θ̇", "equivalent"),
         ("d/dt(m l² ω) = −m g l sin θ, ω = θ̇", "equivalent"),
         ("p = m l² θ̇ ⇒ ṗ = −m g l sin θ", "equivalent"),  # a derivation keeps the step its conclusion uses
+        # a definition through another's rate: p's rate holds ü, put in place whichever comes first
+        ("ṗ = −m g l sin θ; p = m l² u̇; u = θ", "equivalent"),
+        ("u = θ; p = m l² u̇; ṗ = −m g l sin θ", "equivalent"),
         # the momentum or the force wrong: wrong
         ("p_θ = m l θ̇, ṗ_θ = −m g l sin θ", "not_equivalent"),
         ("p_θ = m l² θ̇, ṗ_θ = m g l sin θ", "not_equivalent"),

@@ -337,9 +337,11 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
             break
         position, (symbol, value) = found
         del items[position]
-        rates = {rate: sympy.diff(value, TIME) for item in items for rate in _rates_of(item, symbol)}
-        if rates and not within_diff_budget(value):
+        found_rates = {rate for item in items for rate in _rates_of(item, symbol)}
+        if any(not within_diff_budget(value, rate.derivative_count) for rate in found_rates):
             return answer
+        # p̈ too, where p's rate was put in place from another definition (p = m l² u̇, u = θ)
+        rates = {rate: sympy.diff(value, (TIME, rate.derivative_count)) for rate in found_rates}
         items = [_replaced(item, {**rates, symbol: value}) for item in items]
         if any(too_many_digits(number) for item in items for number in item.atoms(sympy.Rational)):
             return answer
