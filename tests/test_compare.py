@@ -775,6 +775,25 @@ def test_a_lagrangian_may_be_written_in_cartesian_coordinates_it_defines(expecte
     assert verdict.status == status, verdict
 
 
+T_DOUBLE = (
+    "1/2 (m1 + m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot cos(theta1 - theta2)"
+)
+CARTESIAN_DOUBLE = "x₁ = l₁ sin θ₁, y₁ = −l₁ cos θ₁, x₂ = x₁ + l₂ sin θ₂, y₂ = y₁ − l₂ cos θ₂, T = {}"
+
+
+@pytest.mark.parametrize(
+    ("kinetic", "status"),
+    [
+        ("½ m₁ (ẋ₁² + ẏ₁²) + ½ m₂ (ẋ₂² + ẏ₂²)", "equivalent"),  # definitions that build on each other
+        ("½ m₁ (ẋ₁² + ẏ₁²) + ½ m₂ (ẋ₂² − ẏ₂²)", "not_equivalent"),
+        ("½ (m₁ + m₂) (ẋ₁² + ẏ₁²) + ½ m₂ (ẋ₂² + ẏ₂²)", "not_equivalent"),
+    ],
+)
+def test_a_kinetic_energy_may_be_built_from_cartesian_coordinates_defined_one_on_another(kinetic, status):
+    verdict = compare(T_DOUBLE, CARTESIAN_DOUBLE.format(kinetic), **DOUBLE)
+    assert verdict.status == status, verdict
+
+
 def test_a_rate_whose_name_is_not_defined_in_the_problems_names_is_not_put_in_place():
     # p = m l² v: v is the student's too, so p is no definition; its rate stays, and is said so
     verdict = compare(EOM_PENDULUM, "ṗ = −m g l sin θ, p = m l² v", kind="equation", **PENDULUM)
