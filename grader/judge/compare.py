@@ -322,7 +322,9 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
     """``θ̈ + ω₀² sin θ = 0, ω₀² = g/l`` or ``L = ½ m v², where v = l θ̇``: a name the answer
     defines for itself, put in place. A definition is an equation of its own whose left side
     is a name the problem does not define (or its power) and whose right side uses only names
-    it does; and another equation must use the name. What remains is the answer.
+    it does; and another equation must use the name, or its rate. A rate is put in place as the
+    definition's derivative of the same order: ``p = m l² θ̇, ṗ = −m g l sin θ``, or ``½ m ẋ²,
+    where x = l sin θ``. What remains is the answer.
 
     The parser's caps bound each equation, not what one put into another makes: a = 9⁹⁹ g,
     b = a⁹⁹, c = b⁹⁹ … would build numbers of millions of digits. Where a substitution makes
