@@ -39,7 +39,17 @@ from grader.judge.text import check_text
 from grader.judge.units import SI_UNITS, Mixed, cycles_to, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
 from grader.judge.words import formula_then_words, words_then_formula
-from grader.parse import ANSWER, LIMITS, TIME, ParsedAnswer, Refusal, parse_answer, too_many_digits, within_diff_budget
+from grader.parse import (
+    ANSWER,
+    LIMITS,
+    TIME,
+    ParsedAnswer,
+    Refusal,
+    own_rates,
+    parse_answer,
+    too_many_digits,
+    within_diff_budget,
+)
 from grader.parse.names import is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
@@ -339,7 +349,7 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
             break
         position, (symbol, value) = found
         del items[position]
-        found_rates = {rate for item in items for rate in _rates_of(item, symbol)}
+        found_rates = {rate for item in items for rate in _rates_of(item, symbol, expected)}
         if any(not within_diff_budget(value, rate.derivative_count) for rate in found_rates):
             return answer
         # p̈ too, where p's rate was put in place from another definition (p = m l² u̇, u = θ)
@@ -451,18 +461,14 @@ def _definition(item, items: list, expected: Expected) -> tuple[sympy.Symbol, sy
         return None
     if any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
         return None
-    if not any(base in other.free_symbols or _rates_of(other, base) for other in items if other is not item):
+    if not any(base in other.free_symbols or _rates_of(other, base, expected) for other in items if other is not item):
         return None
     return base, (item.rhs / coefficient) ** sympy.Rational(1, int(power))  # a positive quantity, as parameters are
 
 
-def _rates_of(item, name: sympy.Symbol) -> list[sympy.Derivative]:
-    """The rates of a name the answer defines that ``item`` uses: ``ṗ`` for p (see the parser's ``rate``)."""
-    return [
-        rate
-        for rate in item.atoms(sympy.Derivative)
-        if isinstance(rate.expr, AppliedUndef) and rate.expr.func.__name__ == name.name
-    ]
+def _rates_of(item, name: sympy.Symbol, expected: Expected) -> list[sympy.Derivative]:
+    """The rates of a name the answer defines that ``item`` uses: ``ṗ`` for p, of any order."""
+    return [rate for rate in own_rates(item, expected.setting.coords) if rate.expr.func.__name__ == name.name]
 
 
 def _conserved(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple[ParsedAnswer, bool]:

@@ -8,6 +8,7 @@ Contents:
     ANSWER                               the name an expression stands under beside its definitions
     too_many_digits(number)              whether a constant is beyond the parser's cap on digits
     within_diff_budget(value, order)     whether a value is small enough to differentiate in t
+    own_rates(value, coords)             the rates of names the answer defines for itself (ṗ)
 
 The modules behind it: ``tokens`` (the whitelist and threat model), ``grammar``
 (tokens to sympy), ``names`` (one spelling per name), ``messages`` (every word a
@@ -22,7 +23,7 @@ from functools import cached_property
 
 import sympy
 
-from grader.parse.grammar import ANSWER, TIME, Context, parse_tokens, too_many_digits, within_diff_budget
+from grader.parse.grammar import ANSWER, TIME, Context, own_rates, parse_tokens, too_many_digits, within_diff_budget
 from grader.parse.messages import ParseFailure, Refusal, refusal
 from grader.parse.readback import to_latex, to_mathml, to_text
 from grader.parse.tokens import LIMITS, tokenize
@@ -33,6 +34,7 @@ __all__ = [
     "TIME",
     "ParsedAnswer",
     "Refusal",
+    "own_rates",
     "parse_answer",
     "too_many_digits",
     "within_diff_budget",

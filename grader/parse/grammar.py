@@ -238,11 +238,7 @@ class _Parser:
 
     def rates_in(self, value) -> set[str]:
         """The names of the answer's own whose rates ``value`` holds."""
-        return {
-            rate.expr.func.__name__
-            for rate in value.atoms(sympy.Derivative)
-            if isinstance(rate.expr, AppliedUndef) and rate.expr.func.__name__ not in self.context.coords
-        }
+        return {rate.expr.func.__name__ for rate in own_rates(value, self.context.coords)}
 
     def own(self, value) -> bool:
         """Whether ``value`` is a name the problem does not define, which the answer may."""
@@ -1245,6 +1241,16 @@ def _float(value) -> complex:
     if function is None or len(value.args) != 1:
         raise ValueError(f"no float estimate for {type(value).__name__}")
     return complex(function(_float(value.args[0])))
+
+
+def own_rates(value, coords) -> set[sympy.Derivative]:
+    """The rates in ``value`` of names the answer defines for itself (``ṗ`` where p = m l² θ̇), as
+    the parser writes them: derivatives of functions of time that are none of ``coords``."""
+    return {
+        rate
+        for rate in value.atoms(sympy.Derivative)
+        if isinstance(rate.expr, AppliedUndef) and rate.expr.func.__name__ not in coords
+    }
 
 
 def within_diff_budget(value, order: int = 1) -> bool:
