@@ -95,10 +95,12 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
             return Outcome("equivalent", 1.0, "equivalent", method="symbolic")
         return Outcome("undecided", 0.0, "undecided", method="numeric: too few defined points")
     outcome = diagnose_difference(expected, expected.value, answer.value, pairs, deadline)
+    if outcome.key not in ("wrong", "term_differs") or outcome.more:
+        return outcome
+    plain = expected.setting.plain(answer.value)
     # a product written wrong is better told by the symbols its factors get wrong than as "a term"
-    product = not expected.value.is_Add and not expected.setting.plain(answer.value).is_Add
-    if outcome.key == "wrong" or (product and outcome.key == "term_differs" and not outcome.more):
-        return factor_dependence(expected, "value", expected.value, answer.value) or outcome
+    if outcome.key == "wrong" or not (expected.value.is_Add or plain.is_Add):
+        return _factor_dependence(expected, "value", expected.value, answer.value, plain) or outcome
     return outcome
 
 
@@ -106,17 +108,16 @@ _MOVED = (1.37, 0.29)  # a variable moved to 1.37 x + 0.29: away from its value,
 _SAME_RATIO = 1e-9  # relative: a ratio that moves less than this does not depend on the variable
 
 
-def factor_dependence(expected: Expected, key: str, e, s) -> Outcome | None:
-    """``(m₁ + m₂) g/(m₁ − m₂)`` for ``(m₁ − m₂) g/(m₁ + m₂)``: where the ratio of ``s`` to ``e``
-    depends on some of the symbols the two are written in and not on the others, the outcome
-    that names both: the answer depends on g as it should, and not on m₁ and m₂. Found in the
-    numbers: each symbol moved alone, at the first point of two draws of the parameters.
-    None where the ratio depends on every symbol (a sum with a wrong term), or cannot be had."""
-    setting = expected.setting
-    plain = setting.plain(s)
+def _factor_dependence(expected: Expected, key: str, e, s, plain) -> Outcome | None:
+    """``(m₁ + m₂) g/(m₁ − m₂)`` for ``(m₁ − m₂) g/(m₁ + m₂)``: where the ratio of ``s`` (``plain``
+    in plain symbols) to ``e`` depends on some of the symbols the two are written in and not on
+    the others, the outcome that names both: the answer depends on g as it should, and not on m₁
+    and m₂. Found in the numbers: each symbol moved alone, at the first point of two draws of the
+    parameters. None where the ratio depends on every symbol (a sum with a wrong term), or cannot
+    be had. ``s`` as parsed is what :func:`same_values` compiled, and compiling it again is spared."""
     variables = expected.variables
     used = [i for i, symbol in enumerate(variables) if symbol in e.free_symbols | plain.free_symbols]
-    e_c, s_c = expected.compiled(key, e), expected.compile(plain)
+    e_c, s_c = expected.compiled(key, e), expected.compile(s)
     depends, rows = set(), 0
     for point in expected.points(expected.point_count, group=GROUP)[::GROUP][:2]:
         start = _ratio(e_c, s_c, point)
