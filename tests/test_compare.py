@@ -646,7 +646,7 @@ L_ATWOOD = "1/2 (m1 + m2) xdot^2 + (m1 - m2) g x"
         (L_ATWOOD, "L = ½(m₁+m₂)ẋ² + m₁gx + m₂g(l−x)", ATWOOD, "lagrangian", "equivalent"),
         (L_ATWOOD, "½(m₁+m₂)ẋ² + m₁gx − m₂g(l−x)", ATWOOD, "lagrangian", "not_equivalent"),  # still judged
         (L_PENDULUM, "½ m l² θ̇² + m g (l cos θ − h)", PENDULUM, "lagrangian", "equivalent"),
-        (H_PENDULUM, "½ m l² θ̇² − m g l cos θ + m g h", PENDULUM, "expression", "equivalent"),
+        (H_PENDULUM, "½ m l² θ̇² − m g l (cos θ − h)", PENDULUM, "expression", "equivalent"),
     ],
 )
 def test_a_name_found_only_in_constant_terms_is_a_constant_where_one_is_allowed(
@@ -657,6 +657,38 @@ def test_a_name_found_only_in_constant_terms_is_a_constant_where_one_is_allowed(
     assert verdict.status == status, verdict
     assert "appears only in a term with no coordinate or velocity" in verdict.notes[0]
     assert "l" in verdict.read_as.replace("l*", "") or "h" in verdict.read_as  # shown with the constant, as typed
+
+
+UNSURE = "Your answer was judged with {} as a constant; if `{}` changes with the motion"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "kind", "score", "name"),
+    [
+        # y, the height of m₂, is l − x: two potential energies of one mass, not a constant
+        (L_ATWOOD, "½ (m₁ + m₂) ẋ² + (m₁ − m₂) g x − m₂ g y", ATWOOD, "lagrangian", 1.0, "y"),
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ − m g z", PENDULUM, "lagrangian", 1.0, "z"),
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ + m g l φ", PENDULUM, "lagrangian", 1.0, "φ"),
+        (H_PENDULUM, "½ m l² θ̇² − m g l cos θ + m g h", PENDULUM, "expression", 1.0, "h"),
+        (L_PENDULUM, "m l² θ̇² + 2 m g l cos θ − m g z", PENDULUM, "lagrangian", 0.5, "z"),  # 2(T − V): its half
+    ],
+)
+def test_a_name_only_in_terms_of_its_own_may_move_with_the_system_so_a_person_decides(
+    expected, submitted, setting, kind, score, name
+):
+    options = {"up_to_constant": True} if kind == "expression" else {}
+    verdict = compare(expected, submitted, kind=kind, **setting, **options)
+    assert (verdict.status, verdict.score) == ("undecided", score), verdict
+    assert UNSURE.format("it", name) in verdict.feedback[0]
+    assert verdict.feedback[-1].endswith("A person will check this answer.") or score < 1
+    assert len(verdict.feedback) == (1 if score == 1 else 2)  # the credit proposed, and why
+    assert name in verdict.read_as  # shown as typed
+
+
+def test_an_answer_wrong_whatever_its_own_name_stands_for_is_not_equivalent_with_the_note():
+    verdict = compare(L_ATWOOD, "½ (m₁ + m₂) ẋ² + (m₁ + m₂) g x − m₂ g y", kind="lagrangian", **ATWOOD)
+    assert (verdict.status, verdict.score) == ("not_equivalent", 0.0), verdict
+    assert any("`y` appears only in a term with no coordinate or velocity" in note for note in verdict.notes)
 
 
 @pytest.mark.parametrize(

@@ -212,7 +212,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 with_constant, (answer, constant) = answer, _without_constant_terms(answer, spec, expected)
-                read_notes += (constant,) if constant else ()
+                read_notes += (constant,) if constant and constant[0] == "constant_terms_left_out" else ()
                 shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
                 early = early or _mismatch(spec, expected, answer)
                 if early:
@@ -227,6 +227,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 outcome = _terms_in_given_names(outcome, spec, expected, answer, given, deadline)
             if spec.parsed and conserved and outcome.status != "equivalent":
                 outcome = replace(_terms_unnamed(outcome), notes=(*outcome.notes, ("conserved_read", {})))
+            if constant and constant[0] == "constant_unsure":
+                outcome = _for_a_person(outcome, constant)
     except CheckTimeout:
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")
     except _CHECK_FAILURES as failure:
@@ -551,17 +553,24 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
     and with names of the problem's in it. Where a constant is allowed, those terms are left out, and the note
     says so; a name found in any other term is said as undefined, as usual. The terms are expanded
     one by one, each within the differentiation budget, so that m₂g(l − x) gives up m₂gl and keeps
-    −m₂gx."""
+    −m₂gx.
+
+    A name written beside a coordinate, as l in m₂g(l − x), measures from where the motion is, and
+    is taken as a constant. A name only in terms of its own, as h in ``… + m g h``, may as well be a
+    height that moves with the bob (``− m g z``): the note is then ``constant_unsure``, and an answer
+    right only with it taken as a constant goes to a person (see :func:`_for_a_person`)."""
     allowed = _constant_allowed(spec, expected)
     undefined = _undefined_symbols(answer, expected)
     if not allowed or answer.kind != "expression" or not undefined:
         return answer, None
     motion = (*expected.setting.functions.values(), TIME)
-    kept = []
+    kept, tied = [], set()
     for term in sympy.Add.make_args(answer.value):
         if not term.free_symbols & undefined:
             kept.append(term)
             continue
+        if term.has(*motion):
+            tied |= term.free_symbols & undefined
         if not within_diff_budget(term):
             return answer, None
         for part in sympy.Add.make_args(sympy.expand(term)):
@@ -579,8 +588,22 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
         if spec.name == "lagrangian"
         else "this answer may have, as another zero of potential energy",
     }
-    note = ("constant_terms_left_out", details)
+    if undefined - tied:  # m g h alone: a height of the student's own, or one that moves?
+        details |= {"them": "it" if one else "them", "changes": "changes" if one else "change"}
+        note = ("constant_unsure", details)
+    else:
+        note = ("constant_terms_left_out", details)
     return ParsedAnswer(answer.text, sympy.Add(*kept), "expression"), note
+
+
+def _for_a_person(outcome: Outcome, note: tuple) -> Outcome:
+    """An answer right (in part) only if a name of the student's own is a constant, for a person to
+    confirm: the credit it earns if so is proposed, and the student told on what it rests."""
+    key, details = note
+    if outcome.score == 0:  # wrong whatever the name stands for: said as a constant left out
+        return replace(outcome, notes=(*outcome.notes, ("constant_terms_left_out", details)))
+    said = ((outcome.key, outcome.details),) if outcome.key and outcome.status != "equivalent" else ()
+    return replace(outcome, status="undecided", key=key, details=details, more=(*said, *outcome.more))
 
 
 def _constant_term(term: sympy.Expr, names: set, motion: tuple) -> bool:

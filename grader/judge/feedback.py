@@ -40,6 +40,9 @@ FEEDBACK: dict[str, str] = {
     "words_left_out": "Read without the words after it, `{words}`: the formula is what is graded.",
     "constant_terms_left_out": "{names} {appear} only in {terms} with no coordinate or velocity: a constant, which"
     " {which}. It was left out.",
+    "constant_unsure": "{names} {appear} only in {terms} with no coordinate or velocity, and this problem does not"
+    " define {them}. Your answer was judged with {them} as a constant; if {names} {changes} with the motion, write"
+    " {them} in the problem's coordinates. A person will check this answer.",
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
     "words_before_left_out": "Read without the words before it, `{words}`: the formula is what is graded.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
