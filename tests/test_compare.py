@@ -578,6 +578,50 @@ def test_words_after_a_formula_are_read_past_and_said_so(expected, submitted, ki
     assert (verdict.status, verdict.notes) == (status, notes)
 
 
+ATWOOD_A = "(m1 - m2) g/(m1 + m2)"  # ẍ of m₁, positive downwards
+ATWOOD_SETTING = {"coords": ["x"], "known": ["m1", "m2", "g"]}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "words"),
+    [
+        (ATWOOD_A, "(m₁ − m₂) g/(m₁ + m₂) upward", ATWOOD_SETTING, "upward"),  # the other sign, in words
+        (ATWOOD_A, "(m₁ − m₂) g/(m₁ + m₂), with m₁ going down", ATWOOD_SETTING, ", with m₁ going down"),
+        (ATWOOD_A, "The acceleration upward is (m₁ − m₂) g/(m₁ + m₂)", ATWOOD_SETTING, "The acceleration upward is"),
+        ("sqrt(g/l)", "√(g/l) inverted", PENDULUM, "inverted"),
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ except the cosine is a sine", PENDULUM, "except the cosine is a sine"),
+    ],
+)
+def test_words_that_may_say_otherwise_send_a_right_formula_to_a_person(expected, submitted, setting, words):
+    kind = "lagrangian" if expected == L_PENDULUM else "expression"
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.score) == ("undecided", 1.0), verdict
+    assert verdict.feedback == (
+        f"Your answer says `{words}` beside the formula. The formula was graded on its own;"
+        " a person will read the words against it.",
+    )
+
+
+def test_a_wrong_formula_with_words_that_may_say_otherwise_is_not_equivalent():
+    verdict = compare(ATWOOD_A, "(m₁ + m₂) g/(m₁ − m₂) upward", **ATWOOD_SETTING)
+    assert (verdict.status, verdict.score) == ("not_equivalent", 0.0)
+    assert verdict.notes == ("Read without the words `upward`: the formula is what is graded.",)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("½ m l² θ̇² + m g l cos θ up to a constant", "equivalent"),  # "up to" says nothing of the sign
+        ("½ m l² θ̇² + m g l cos θ (Lagrange)", "equivalent"),
+        ("½ m l² θ̇² + m g l floor(θ)", "invalid"),  # a function we do not know, not words
+        ("½ m l² θ̇² + m g l cos θ + m g l Re(θ)", "invalid"),
+    ],
+)
+def test_words_against_a_bracket_are_a_function_not_prose(submitted, status):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert verdict.status == status, verdict
+
+
 @pytest.mark.parametrize(
     "submitted",
     [

@@ -38,7 +38,7 @@ from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import SI_UNITS, Mixed, cycles_to, in_units, si, unit_named, units_mistake, units_of
 from grader.judge.verdict import Verdict
-from grader.judge.words import formula_then_words, words_then_formula
+from grader.judge.words import formula_then_words, says_otherwise, words_then_formula
 from grader.parse import (
     ANSWER,
     LIMITS,
@@ -212,12 +212,13 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer = _unwrap_named(answer, spec, expected)
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 with_constant, (answer, constant) = answer, _without_constant_terms(answer, spec, expected)
-                read_notes += (constant,) if constant and constant[0] == "constant_terms_left_out" else ()
+                read_notes += (constant,) if constant else ()
                 shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
                 early = early or _mismatch(spec, expected, answer)
                 if early:
                     return _verdict(early, shown)  # as typed: 2.006 m is not read as a time
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+            outcome, read_notes = _for_a_person(outcome, read_notes)
             for note in (*read_notes, read_in):
                 if note:
                     outcome = replace(outcome, notes=(*outcome.notes, note))
@@ -227,8 +228,6 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 outcome = _terms_in_given_names(outcome, spec, expected, answer, given, deadline)
             if spec.parsed and conserved and outcome.status != "equivalent":
                 outcome = replace(_terms_unnamed(outcome), notes=(*outcome.notes, ("conserved_read", {})))
-            if constant and constant[0] == "constant_unsure":
-                outcome = _for_a_person(outcome, constant)
     except CheckTimeout:
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")
     except _CHECK_FAILURES as failure:
@@ -596,14 +595,25 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
     return ParsedAnswer(answer.text, sympy.Add(*kept), "expression"), note
 
 
-def _for_a_person(outcome: Outcome, note: tuple) -> Outcome:
-    """An answer right (in part) only if a name of the student's own is a constant, for a person to
-    confirm: the credit it earns if so is proposed, and the student told on what it rests."""
-    key, details = note
-    if outcome.score == 0:  # wrong whatever the name stands for: said as a constant left out
-        return replace(outcome, notes=(*outcome.notes, ("constant_terms_left_out", details)))
+# Notes on a reading that a person must confirm before the answer earns credit, each with the note
+# it becomes where the answer earns none either way: a name of the student's own alone in a term,
+# as a constant (``− m g z``); words after the formula that may say otherwise (``… upward``).
+_FOR_A_PERSON = {"constant_unsure": "constant_terms_left_out", "words_for_a_person": "words_read_past"}
+
+
+def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
+    """An answer that earns credit only as it was read, where a person must confirm the reading: the
+    outcome becomes undecided, the credit proposed, and the student is told on what it rests. Where
+    it earns none, the notes only say how it was read. Returns the outcome and the notes left."""
+    unsure = [note for note in notes if note and note[0] in _FOR_A_PERSON]
+    if not unsure:
+        return outcome, notes
+    if outcome.score == 0:
+        return outcome, tuple((_FOR_A_PERSON.get(note[0], note[0]), note[1]) if note else note for note in notes)
     said = ((outcome.key, outcome.details),) if outcome.key and outcome.status != "equivalent" else ()
-    return replace(outcome, status="undecided", key=key, details=details, more=(*said, *outcome.more))
+    (key, details), *others = unsure
+    outcome = replace(outcome, status="undecided", key=key, details=details, more=(*others, *said, *outcome.more))
+    return outcome, tuple(note for note in notes if note not in unsure)
 
 
 def _constant_term(term: sympy.Expr, names: set, motion: tuple) -> bool:
@@ -647,7 +657,7 @@ def _without_words(
     if read is not None:
         return read
     for words, formula in words_then_formula(submitted, names, coords):
-        before = ("words_before_left_out", {"words": _shown(words)})
+        before = (_words_note("words_before_left_out", words), {"words": _shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
         if read.ok and not _undefined(read, names):
             return read, (before,)
@@ -662,8 +672,13 @@ def _formula_before_words(text: str, expected: Expected, names: list, deadline) 
     for formula, words in formula_then_words(text, names, expected.setting.coords):
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
-            return read, (("words_left_out", {"words": _shown(words)}),)
+            return read, ((_words_note("words_left_out", words), {"words": _shown(words)}),)
     return None
+
+
+def _words_note(key: str, words: str) -> str:
+    """The note on words read past: for a person to read first where they may say otherwise."""
+    return "words_for_a_person" if says_otherwise(words) else key
 
 
 def _shown(words: str) -> str:

@@ -44,6 +44,9 @@ FEEDBACK: dict[str, str] = {
     " define {them}. Your answer was judged with {them} as a constant; if {names} {changes} with the motion, write"
     " {them} in the problem's coordinates. A person will check this answer.",
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
+    "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
+    "words_for_a_person": "Your answer says `{words}` beside the formula. The formula was graded on its own;"
+    " a person will read the words against it.",
     "words_before_left_out": "Read without the words before it, `{words}`: the formula is what is graded.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",

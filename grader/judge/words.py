@@ -10,7 +10,9 @@ conserved``, ``a = g (m₁ − m₂)/(m₁ + m₂), with m₁ going down``. A pe
 reads the words. So it is with a sentence that leads to the formula: ``The angular frequency is
 √(g/l)``. The checker does the same, and says which words it did not grade, but only
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
-no number, no "or" or "not", and read as names the problem does not have.
+no number, no "or" or "not", and read as names the problem does not have. Words that may say
+the formula is other than written (``… upward``, ``… inverted``) are read past too, but
+:func:`says_otherwise` marks them for a person to read before a right formula earns its credit.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
-__all__ = ["formula_then_words", "is_prose", "words_then_formula"]
+__all__ = ["formula_then_words", "is_prose", "says_otherwise", "words_then_formula"]
 
 _MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥")
 # words that change a formula: "√(g/l) times l", "… but negative", "… all squared"
@@ -34,6 +36,16 @@ _MATH_WORDS = re.compile(
 )
 # a number of its own, "or", or "not": 2 or 3, θ̈ = … or θ̈ = …, not for small angles
 _HEDGE = re.compile(r"(?<!\w)[0-9]|\b(?:or|not|never|isn't)\b", re.I)
+# words that may say the formula is other than written, or set what its sign means: "… upward",
+# "… inverted", "… except the cosine is a sine". A person reads them against the formula.
+_OTHERWISE = re.compile(
+    r"\b(?:up|upward|upwards|down|downward|downwards|clockwise|anticlockwise|counterclockwise|"
+    r"inverted|invert|flipped|flip|reversed|reverse|swapped|swap|interchanged|except|instead|replaced|"
+    r"replace|wrong|mistake|typo|actually|should|meant)\b(?!\s+to\b)",
+    re.I,
+)
+# a word against a bracket is a function the parser does not know, not prose: floor(θ), Re(e^(iθ))
+_APPLIED = re.compile(r"[A-Za-z]\(")
 _WORD = re.compile(r"(?<![A-Za-z0-9_\\])[A-Za-z]{2,}(?![A-Za-z0-9_])")
 _OPENS = " ,;:([–—-"  # what may stand between a formula and the words about it
 # where a sentence hands over to its formula: "The Lagrangian is …", "… we get …", "Equation of motion: …"
@@ -50,10 +62,18 @@ def is_prose(words: str, names: Collection[str]) -> bool:
     the problem's (``names``) nor a unit."""
     if not words or _MATH_SIGNS & set(words) or _MATH_WORDS.search(words) or _HEDGE.search(words):
         return False
+    if _APPLIED.search(words):
+        return False
     read = parse_answer(words, known=names)
     if not read.ok:
         return True
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
+
+
+def says_otherwise(words: str) -> bool:
+    """Whether prose read past may say the formula is other than written, or what its sign means
+    (``upward``, ``inverted``, ``except …``): a person must read it before the formula earns credit."""
+    return bool(_OTHERWISE.search(words))
 
 
 def formula_then_words(text: str, names: Collection[str], coords: Collection[str]) -> Iterator[tuple[str, str]]:
