@@ -983,6 +983,29 @@ def test_a_conserved_quantity_is_read_as_an_equation_of_motion(conserved, status
     assert compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL).status == status
 
 
+SPHERICAL_THETA = "l θ̈ − l sin θ cos θ φ̇² + g sin θ"  # = 0, the θ equation
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # at the pole the φ equation says nothing, but the θ equation still says θ̈ = 0
+        (f"sin θ ({SPHERICAL_THETA}) = 0; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0", "not_equivalent"),
+        (f"θ ({SPHERICAL_THETA}) = 0; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0", "not_equivalent"),
+        (f"sin θ ({SPHERICAL_THETA}) + sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0", "not_equivalent"),
+        # the φ equation over sin θ, or solved, says as much as the θ equation where they are defined
+        (f"{SPHERICAL_THETA} = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0", "equivalent"),
+        (f"{SPHERICAL_THETA} = 0; φ̈ = −2 cot θ θ̇ φ̇", "equivalent"),
+        (f"{SPHERICAL_THETA} + sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0", "equivalent"),
+    ],
+)
+def test_an_equation_that_no_longer_fixes_its_acceleration_where_the_system_is_singular_is_wrong(submitted, status):
+    verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)
+    assert verdict.status == status, verdict
+    if status == "not_equivalent":
+        assert verdict.diagnosis == "vanishing_factor_system"
+
+
 def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
     submitted = "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; m l² sin θ φ̇ = const"
     verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)

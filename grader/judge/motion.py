@@ -21,7 +21,9 @@ Then
 "Every state" includes two that random draws never give: at rest (every velocity 0) and
 at the origin (every coordinate 0). A factor that vanishes there (θ̇, as in dE/dt = 0;
 θ or sin θ, cleared from a denominator) leaves an equation that no longer says what q̈
-is in those states, where the expected one does.
+is in those states, where the expected one does. Where the expected system is itself singular
+there (the spherical pendulum at its pole, where the φ equation says nothing), each acceleration
+it still fixes must be fixed by the submitted one too.
 
 An equation without accelerations (a constraint, a conserved quantity) is right
 when submitted/expected is, at fixed parameters, the same nonzero number
@@ -767,6 +769,8 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     if outcome.key == "dependent_equations" and all(state.independent for state in drawn):
         # independent wherever states are drawn, not at rest or at the origin: a vanishing factor
         return Outcome("not_equivalent", 0.0, "vanishing_factor_system", method=outcome.method)
+    if outcome.key == "equivalent" and _loses_an_acceleration(expected, expected_fs, submitted_gs):
+        return Outcome("not_equivalent", 0.0, "vanishing_factor_system", method=outcome.method)
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
     if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
@@ -785,6 +789,47 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
         )
         return replace(outcome, more=more)
     return outcome
+
+
+def _loses_an_acceleration(expected: Expected, expected_fs, submitted_gs) -> bool:
+    """Whether, at rest or at the origin, where the expected system determines only some of the
+    accelerations, the submitted one leaves one of those undetermined.
+
+    The spherical pendulum's φ equation, sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0, says nothing at θ = 0,
+    so the system there is singular and the state says nothing of a submitted system as a whole.
+    Its θ equation still says what θ̈ is; multiplied by sin θ, it no longer does."""
+    steps = _steps(expected, expected_fs)
+    reference = _float_rows(expected, expected_fs, steps, reference=True)
+    special = [
+        number
+        for number in range(len(steps) - _SPECIAL, len(steps))
+        if reference[number] is not None
+        and reference[number].linear is Closeness.EQUAL
+        and reference[number].accelerations is None
+    ]
+    if not special:
+        return False
+    submitted = _float_rows(expected, submitted_gs, steps)
+    for number in special:
+        theirs = submitted[number]
+        if theirs is None or theirs.linear is not Closeness.EQUAL:
+            continue
+        mine, yours = _determined(reference[number]), _determined(theirs)
+        if any(a and not b for a, b in zip(mine, yours, strict=True)):
+            return True
+    return False
+
+
+def _determined(rows: _Rows) -> list[bool]:
+    """Per coordinate: whether these equations fix its acceleration at their state (whatever the
+    others'). A coefficient within rounding of zero, on its own scale, counts as zero."""
+    n = len(rows.rows[0]) - 1
+    coefficients = [
+        [0.0 if closeness(c, 0, scale) is Closeness.EQUAL else c for c, scale in zip(row[:n], scales[:n], strict=True)]
+        for row, scales in zip(rows.rows, rows.entry_scales, strict=True)
+    ]
+    coefficients = [row for row in coefficients if any(row)]
+    return [_in_span(coefficients, [float(j == k) for j in range(n)]) for k in range(n)]
 
 
 def _terms_named(expected: Expected, references: Sequence, g, position: int, deadline: Deadline) -> tuple:
