@@ -838,6 +838,9 @@ def test_an_equation_of_motion_may_be_written_through_a_momentum_it_defines(subm
         # a Lagrangian in Cartesian coordinates, with the transformation to the generalized ones
         (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y, where x = l sin θ, y = −l cos θ", PENDULUM, "equivalent"),
         (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) + m g y, where x = l sin θ, y = −l cos θ", PENDULUM, "not_equivalent"),
+        (L_PENDULUM, "1/2 m (xdot^2 + ydot^2) - m g y where x = l sin(theta), y = -l cos(theta)", PENDULUM,
+         "equivalent"),  # velocities spelled out, as thetadot
+        (L_PENDULUM, "½ m sdot² + m g l cos θ, s = l θ", PENDULUM, "equivalent"),
         (L_PENDULUM, "x = l sin θ, y = −l cos θ ⇒ L = ½ m (ẋ² + ẏ²) − m g y", PENDULUM, "equivalent"),
         (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y = ½ m l² θ̇² + m g l cos θ", PENDULUM, "equivalent"),  # the last side
         (L_PENDULUM, "L = ½ m (ẋ² + ẏ²) − m g y, where x = l sin θ, y = l cos θ", PENDULUM, "not_equivalent"),

@@ -443,6 +443,11 @@ def test_leibniz_notation_is_a_time_derivative(text, expected):
         ("d/dt(p) = a, where p = m θ̇", ["p"]),
         ("dp/dt = a; p = m θ̇", ["p"]),
         ("p_θ = m θ̇, ṗ_θ = a", ["p_theta"]),  # p_θ is no name of this problem's
+        # spelled out, as thetadot is θ̇: on either side, with a subscript of letters or digits
+        ("pdot = -m g l sin θ; p = m l² θ̇", ["p"]),
+        ("p_thetadot = a, p_theta = m θ̇", ["p_theta"]),
+        ("p_theta_dot = a, p_theta = m θ̇", ["p_theta"]),
+        ("½ m (x_1dot² + ydot²), x_1 = l sin θ, y = l cos θ", ["x_1", "y"]),
         ("d/dt(m u v) = a; u = θ; v = θ̇", ["u", "v"]),  # each of the answer's names has its rate
         # a derivation keeps the step that defines a name whose rate its conclusion uses
         ("p = m θ̇ ⇒ ṗ = a", ["p"]),

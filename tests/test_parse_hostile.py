@@ -188,6 +188,8 @@ HOSTILE = [
     ("p̈ = a; p = m", "derivative_of_constant"),  # a defined name's rate, but of the second order
     ("d^2/dt^2(p) = a; p = m", "derivative_of_constant"),
     ("ṁ = a; m = x", "derivative_of_constant"),  # m is the problem's own: a constant
+    ("pdot = a; q = m", "derivative_of_constant"),  # spelled out as ṗ, and refused as ṗ is
+    ("½ m pdot²", "derivative_of_constant"),
     ("θ → 0", "arrow"),
     ("θ̈ = -g/l θ (θ → 0)", "arrow"),
     ("θ̈ → -g/l θ", "arrow"),

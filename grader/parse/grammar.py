@@ -445,8 +445,8 @@ class _Parser:
         if not tokens[j].is_op("="):
             return None
         canonical = canonical_name(token.value.raw)
-        if self.lookup(canonical) is not None:
-            return None
+        if self.lookup(canonical) is not None or self._spelled_rate(sympy.Symbol(canonical)):
+            return None  # pdot = …, as ṗ = …: a rate, not a name
         if not _GREEK_NAME.match(canonical) and self.split(token.value.raw, token):  # mgl: m·g·l
             return None
         if token.value.tex and len(self.tex_letters(token.value.raw)) > 1:  # in TeX, mv is m·v
@@ -756,6 +756,8 @@ class _Parser:
             pieces = self._before_a_coordinate(name) or pieces
         if order == 1 and len(pieces) == 1 and self.own(pieces[0]):
             pieces[0], order = self.rate(pieces[0], token.start, token.end), 0  # ṗ, where p = m l² θ̇
+        elif not order and len(pieces) == 1 and self.own(pieces[0]) and (base := self._spelled_rate(pieces[0])):
+            pieces[0] = self.rate(base, token.start, token.end)  # pdot, as ṗ
         if order:
             last = pieces[-1]
             if not _is_coordinate(last, self.context):
@@ -774,6 +776,17 @@ class _Parser:
             value, i = self.chain(pieces, i, token)
             values.append(value)
         return values
+
+    def _spelled_rate(self, value: sympy.Symbol) -> sympy.Symbol | None:
+        """``xdot`` for a name of the answer's own, x (not the problem's): x, whose rate it is, as
+        of ``ẋ``; None for any other name, and for ``xddot`` (a rate of a rate is not read)."""
+        split = split_derivative(value.name)
+        if split is None and value.name.endswith("dot") and not value.name.endswith("ddot"):
+            split = (canonical_name(value.name.removesuffix("dot").rstrip("_")), 1)  # p_thetadot: p_θ's
+        if split is None or split[1] != 1 or "dot" not in value.name or not split[0]:  # x_d may be a name
+            return None
+        base = sympy.Symbol(split[0])
+        return base if self.own(base) and split[0] not in self.context.coords else None
 
     def _before_a_coordinate(self, name: Name) -> list | None:
         """``γẋ`` where γ is not the problem's (the answer may define it: ``2γ = b/m``): the dot
