@@ -502,6 +502,27 @@ def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status
     assert compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM).status == status
 
 
+DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # Lagrange's equation with Rayleigh's dissipation function, written out first
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = m ẍ + k x + b ẋ = 0", "equivalent"),
+        (
+            r"\frac{d}{dt}\frac{\partial L}{\partial \dot x} - \frac{\partial L}{\partial x}"
+            r" + \frac{\partial \mathcal{F}}{\partial \dot x} = m\ddot x + b\dot x + k x = 0",
+            "equivalent",
+        ),
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = m ẍ + k x = 0", "not_equivalent"),  # what it comes to is judged
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ + = m ẍ + k x + b ẋ = 0", "invalid"),
+    ],
+)
+def test_lagranges_equation_with_a_dissipation_function_may_be_written_out_first(submitted, status):
+    assert compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **DAMPED).status == status
+
+
 @pytest.mark.parametrize(
     ("submitted", "status"),
     [

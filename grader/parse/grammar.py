@@ -376,8 +376,9 @@ class _Parser:
         return self.expr()
 
     def _euler_lagrange_operator(self, i: int) -> int | None:
-        """``d/dt(∂L/∂θ̇) − ∂L/∂θ`` at ``i``, bracketed or not, in plain notation or TeX's, and
-        followed by ``=``: the position of that ``=``; None if there is none."""
+        """``d/dt(∂L/∂θ̇) − ∂L/∂θ`` at ``i``, bracketed or not, in plain notation or TeX's, with
+        any further derivatives (``+ ∂F/∂ẋ``, Rayleigh's dissipation function), and followed by
+        ``=``: the position of that ``=``; None if there is none."""
         tokens = self.tokens
         if tokens[i].kind != "deriv" or tokens[i].value != (1, False):
             return None
@@ -391,6 +392,11 @@ class _Parser:
                 return None
             j += 1
         force = self._partial_quotient(j + 1) if tokens[j].is_op("-") else None
+        while force is not None and tokens[force[0]].is_op("+", "-"):
+            dissipation = self._partial_quotient(force[0] + 1)  # + ∂F/∂q̇, Rayleigh's function
+            if dissipation is None:
+                return None
+            force = dissipation
         if force is None or not tokens[force[0]].is_op("="):
             return None
         return force[0]
