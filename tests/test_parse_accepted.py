@@ -109,6 +109,18 @@ FUNCTIONS = [
     ("sin 2θφ̇", sin(2 * theta) * D(phi)),
     ("cos θ₁θ̇₂²", cos(theta1) * D(theta2) ** 2),
     ("sqrt lθ̇", sqrt(l * D(theta))),  # not an angle: the glued product stays whole
+    # a phase of the problem's constants, then t apart: cos(ωt), as TeX's \\cos\\omega t must mean
+    ("cos ω t", cos(omega * t)),
+    ("\\cos\\omega t", cos(omega * t)),
+    ("R\\sin\\theta\\cos\\omega t", R * sin(theta) * cos(omega * t)),
+    ("sin 2ω t cos θ", sin(2 * omega * t) * cos(theta)),
+    ("cos ω t θ̇", cos(omega * t) * D(theta)),
+    ("sin ω t", sin(omega * t)),  # t the last token
+    ("cos(ω) t", t * cos(omega)),  # bracketed: the argument is closed
+    ("sin θ t", t * sin(theta)),  # an angle of the motion's: t is a factor of its own
+    ("cos ω t^2", t**2 * cos(omega)),  # t raised: not a phase
+    ("cos ω t²", t**2 * cos(omega)),
+    ("√ω t", sqrt(omega) * t),  # no angle
 ]
 
 NAMES = [

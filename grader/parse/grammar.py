@@ -644,10 +644,11 @@ class _Parser:
             coefficient = self.primary()
             if self.token.kind == "name":
                 argument, after = self.name_argument(name or function.value)
-                return coefficient * argument, after
+                return self._times_time(coefficient * argument, after, name or function.value)
             return self.factor(coefficient), sympy.S.One
         if token.kind == "name":
-            return self.name_argument(name or function.value)
+            argument, after = self.name_argument(name or function.value)
+            return self._times_time(argument, after, name or function.value)
         if token.kind in ("frac", "sqrt"):
             return self.factor(), sympy.S.One
         if token.kind == "func":
@@ -655,6 +656,26 @@ class _Parser:
         if token.kind == "end" or token.kind == "sep" or token.kind == "op":
             raise ParseFailure("missing_argument", function.start, function.end, name=self.source(function))
         self.fail_here()
+
+    def _times_time(self, argument, after, function: str):
+        """``cos ω t`` and TeX's ``\\cos\\omega t`` as cos(ωt), as ``cos ωt`` is: a bare angle of the
+        problem's constants, then t on its own, is a phase that grows in time (cos(ω)·t is no
+        quantity anyone writes). Not where the angle holds the motion (``sin θ t``), nor t raised
+        to a power; otherwise the argument and what follows it, as they were."""
+        token = self.token
+        if (
+            function not in _ANGLE_FUNCTIONS
+            or after is not sympy.S.One
+            or not (token.kind == "name" and token.value.raw == "t" and not token.value.dots + token.value.primes)
+            or not argument.free_symbols
+            or argument.has(TIME)
+        ):
+            return argument, after
+        following = self.tokens[self.i + 1]  # t is no last token: the end is
+        if following.kind == "sup" or following.is_op("^", "("):
+            return argument, after
+        self.advance()
+        return argument * TIME, after
 
     def name_argument(self, function: str):
         """A glued name as a function's bare argument, and the factor after it that is not in it.
