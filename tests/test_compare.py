@@ -373,6 +373,10 @@ MOMENTUM_PHI = "m l^2 sin(theta)^2 phidot"
 SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
 
 
+DOUBLE = {"coords": ["theta1", "theta2"], "known": ["m1", "m2", "l1", "l2", "g"]}
+DOUBLE_V = "-(m1 + m2) g l1 cos(theta1) - m2 g l2 cos(theta2)"
+
+
 def _depends(right, wrong):
     return (
         f"Your answer depends on {right} as the right answer does, but not on {wrong}:"
@@ -396,11 +400,25 @@ def _depends(right, wrong):
         ("sqrt(g/l)", "sqrt(l/g)", PENDULUM, "A term differs: a gravity term is not right."),
         # a sum: its terms are named
         (ATWOOD_A, "m1 g / (m1 + m2)", MASSES, "A term is missing: a gravity term."),
+        # two sums: g, in every term of both, is no factor the student got right
+        (DOUBLE_V, "−(m₁ + m₂) g l₁ sin θ₁ − m₂ g l₂ sin θ₂", DOUBLE, "Not equivalent to the expected answer."),
     ],
 )  # fmt: skip
 def test_a_product_off_by_a_factor_names_the_symbols_it_gets_wrong(expected, submitted, setting, sentence):
     verdict = compare(expected, submitted, **setting)
     assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,))
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "½ (m₁ + m₂) g l₁ θ₁² + ½ m₂ g l₂ θ₂²",  # the constant dropped, as another zero level may
+        "−(m₁ + m₂) g l₁ (1 − θ₁²/2) − m₂ g l₂ (1 − θ₂²/2)",
+    ],
+)
+def test_the_small_angle_form_of_a_potential_is_said_whatever_its_zero(submitted):
+    verdict = compare(DOUBLE_V, submitted, up_to_constant=True, **DOUBLE)
+    assert verdict.diagnosis == "small_angle", verdict
 
 
 def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
@@ -599,16 +617,12 @@ def test_words_after_a_formula_are_read_past_and_said_so(expected, submitted, ki
     assert (verdict.status, verdict.notes) == (status, notes)
 
 
-ATWOOD_A = "(m1 - m2) g/(m1 + m2)"  # ẍ of m₁, positive downwards
-ATWOOD_SETTING = {"coords": ["x"], "known": ["m1", "m2", "g"]}
-
-
 @pytest.mark.parametrize(
     ("expected", "submitted", "setting", "words"),
     [
-        (ATWOOD_A, "(m₁ − m₂) g/(m₁ + m₂) upward", ATWOOD_SETTING, "upward"),  # the other sign, in words
-        (ATWOOD_A, "(m₁ − m₂) g/(m₁ + m₂), with m₁ going down", ATWOOD_SETTING, ", with m₁ going down"),
-        (ATWOOD_A, "The acceleration upward is (m₁ − m₂) g/(m₁ + m₂)", ATWOOD_SETTING, "The acceleration upward is"),
+        (ATWOOD_A, "(m₁ − m₂) g/(m₁ + m₂) upward", MASSES, "upward"),  # the other sign, in words
+        (ATWOOD_A, "(m₁ − m₂) g/(m₁ + m₂), with m₁ going down", MASSES, ", with m₁ going down"),
+        (ATWOOD_A, "The acceleration upward is (m₁ − m₂) g/(m₁ + m₂)", MASSES, "The acceleration upward is"),
         ("sqrt(g/l)", "√(g/l) inverted", PENDULUM, "inverted"),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ except the cosine is a sine", PENDULUM, "except the cosine is a sine"),
     ],
@@ -624,7 +638,7 @@ def test_words_that_may_say_otherwise_send_a_right_formula_to_a_person(expected,
 
 
 def test_a_wrong_formula_with_words_that_may_say_otherwise_is_not_equivalent():
-    verdict = compare(ATWOOD_A, "(m₁ + m₂) g/(m₁ − m₂) upward", **ATWOOD_SETTING)
+    verdict = compare(ATWOOD_A, "(m₁ + m₂) g/(m₁ − m₂) upward", **MASSES)
     assert (verdict.status, verdict.score) == ("not_equivalent", 0.0)
     assert verdict.notes == ("Read without the words `upward`: the formula is what is graded.",)
 

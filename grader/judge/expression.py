@@ -98,8 +98,9 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     if outcome.key not in ("wrong", "term_differs") or outcome.more:
         return outcome
     plain = expected.setting.plain(answer.value)
-    # a product written wrong is better told by the symbols its factors get wrong than as "a term"
-    if outcome.key == "wrong" or not (expected.value.is_Add or plain.is_Add):
+    # a product written wrong is better told by the symbols its factors get wrong than as "a term";
+    # of two sums, a symbol common to every term (g in a potential) is no factor the student got right
+    if not (expected.value.is_Add or plain.is_Add):
         return _factor_dependence(expected, "value", expected.value, answer.value, plain) or outcome
     return outcome
 
@@ -198,8 +199,9 @@ def diagnose_difference(
     for number, form in enumerate(expected.cache[cache_key]):
         if form.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo):
             continue  # the approximation does not exist here (a Taylor expansion through a pole)
-        if same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")[0]:
-            return Outcome("not_equivalent", 0.0, "small_angle")
+        same, form_pairs = same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")
+        if same or (expected.option("up_to_constant") and constant_difference(form_pairs)):
+            return Outcome("not_equivalent", 0.0, "small_angle")  # with another zero level too
     # where a constant is allowed, do not point at one
     varying = set(expected.setting.varying) if expected.option("up_to_constant") else None
     change = single_term_change(expected, key, e, s, varying)
