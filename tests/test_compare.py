@@ -421,6 +421,22 @@ def test_the_small_angle_form_of_a_potential_is_said_whatever_its_zero(submitted
     assert verdict.diagnosis == "small_angle", verdict
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "said"),
+    [
+        ("thetaddot = -g/l theta", "θ̈ = −(g/l) sin θ", {**PENDULUM, "dimensions": {"theta": "angle"}}, True),
+        ("thetaddot = -g/l theta", "θ̈ = −(g/l) sin θ", PENDULUM, True),  # no dimension: may be an angle
+        # a displacement is no angle: sin x is a slip of units, the harmonic form no approximation
+        ("m xddot + b xdot + k x = 0", "m ẍ + b ẋ + k sin x = 0",
+         {"coords": ["x"], "known": ["m", "b", "k"], "dimensions": {"x": "length"}}, False),
+    ],
+)  # fmt: skip
+def test_the_full_form_where_the_linear_one_is_asked_is_said_only_of_an_angle(expected, submitted, setting, said):
+    verdict = compare(expected, submitted, kind="equation", **setting)
+    assert verdict.status == "not_equivalent"
+    assert any("The small-angle (linearized) form is asked for" in s for s in verdict.feedback) is said, verdict
+
+
 def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
     # any constant difference is a multiple of cos 3: only the terms as typed can say which
     verdict = compare("cos(3) + theta", "cos(3) - 3 + theta", coords=["theta"])

@@ -351,8 +351,10 @@ def _powers(term, symbols: set, setting: Setting) -> str:
 
 
 def has_angle_functions(expr, setting: Setting) -> bool:
-    """Whether a trigonometric function of a coordinate occurs in ``expr``."""
-    coordinates = {setting.state[(q, 0)] for q in setting.coords}
+    """Whether a trigonometric function of a coordinate that is an angle occurs in ``expr``: one
+    whose dimension is angle or not given. sin x of a length is a slip of units, not of angles."""
+    angles = [q for q in setting.coords if setting.dimensions.get(q, "angle") == "angle"]
+    coordinates = {setting.state[(q, 0)] for q in angles}
     return any(f.args[0].free_symbols & coordinates for f in expr.atoms(*_TRIG))
 
 
