@@ -450,6 +450,20 @@ def test_feedback_never_contains_the_expected_answer():
             assert expected not in sentence
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # a step of the potential where θ passes 0: the same equations wherever they are evaluated
+        ("½ m l² θ̇² + m g l cos θ + m g l sgn θ", "undecided"),
+        ("½ m l² θ̇² + m g l cos θ + m g l sign(sin θ)", "undecided"),
+        ("½ m l² θ̇² + m g l cos θ + m g l sign(θ̇)", "undecided"),
+        ("½ m l² θ̇² + m g l cos θ + sign(m) g", "equivalent"),  # a constant, however written
+    ],
+)
+def test_a_lagrangian_with_a_step_in_the_motion_goes_to_a_person(submitted, status):
+    assert compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM).status == status
+
+
 def test_partial_credit_for_a_rescaled_lagrangian_is_the_parts_option():
     verdict = compare(L_PENDULUM, "2 (" + L_PENDULUM + ")", kind="lagrangian", factor_credit=0.25, **PENDULUM)
     assert (verdict.status, verdict.score) == ("not_equivalent", 0.25)

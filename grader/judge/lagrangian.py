@@ -87,6 +87,10 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     if constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
     deadline.check()
+    if _jumps(submitted) and not _jumps(expected.parsed.value):
+        # m g l sgn θ: Lagrange's equations are the same wherever they are evaluated, yet the step
+        # gives a kick where θ passes 0 that no sample state sees
+        return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: a step in the Lagrangian")
     ratio, named = _dynamics_ratio(expected, submitted, deadline)
     if ratio is Closeness.UNSURE:  # too few states where even 40 digits see every term
         return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: the numbers cannot tell")
@@ -101,6 +105,11 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
             return Outcome("not_equivalent", credit, "normalization_scaled", method="euler-lagrange")
         return Outcome("not_equivalent", credit, "normalization", {"factor": factor}, "euler-lagrange")
     return _diagnose(expected, lagrangian, submitted, deadline)
+
+
+def _jumps(value) -> bool:
+    """Whether ``value`` (as parsed) steps along the motion: a sign of something that moves."""
+    return any(step.args[0].has(TIME) for step in value.atoms(sympy.sign, sympy.Heaviside))
 
 
 def _dynamics_ratio(expected: Expected, submitted, deadline: Deadline) -> tuple[complex | Closeness | None, bool]:
