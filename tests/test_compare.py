@@ -437,6 +437,29 @@ def test_the_full_form_where_the_linear_one_is_asked_is_said_only_of_an_angle(ex
     assert any("The small-angle (linearized) form is asked for" in s for s in verdict.feedback) is said, verdict
 
 
+DOUBLE_EOM = (
+    "(m1+m2) l1 theta1'' + m2 l2 theta2'' cos(theta1-theta2) + m2 l2 theta2'^2 sin(theta1-theta2)"
+    " + (m1+m2) g sin(theta1) = 0;"
+    " l2 theta2'' + l1 theta1'' cos(theta1-theta2) - l1 theta1'^2 sin(theta1-theta2) + g sin(theta2) = 0"
+)
+
+
+@pytest.mark.parametrize("submitted", ["(l θ̈ + g sin θ)² = 0", "θ̈³ = −(g/l)³ sin³θ", "exp(θ̈) = 1 + g"])
+def test_an_equation_not_linear_in_the_accelerations_is_told_so(submitted):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "not_linear"), verdict
+    assert verdict.feedback[0].startswith("Your equation is not linear in the accelerations (θ̈)")
+
+
+def test_a_system_with_one_equation_squared_blames_that_equation_alone():
+    first, second = DOUBLE_EOM.split(";")
+    verdict = compare(DOUBLE_EOM, f"{first}; ({second.removesuffix(' = 0')})^2 = 0", kind="equations", **DOUBLE)
+    assert verdict.feedback[:2] == (
+        "Your equation for θ₂ is not right; equation 1 is right.",
+        "Your equation 2 is not linear in the accelerations, as every equation of motion from Lagrange's equations is.",
+    ), verdict
+
+
 def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
     # any constant difference is a multiple of cos 3: only the terms as typed can say which
     verdict = compare("cos(3) + theta", "cos(3) - 3 + theta", coords=["theta"])

@@ -94,6 +94,10 @@ FEEDBACK: dict[str, str] = {
     " or where a coordinate is 0, your equations no longer determine every acceleration. Divide that factor out.",
     "trivial_equation": "Equation {index} holds for every motion, so it says nothing about this one.",
     "not_equation_of_motion": "This should be an equation of motion, with the accelerations ({accelerations}) in it.",
+    "not_linear": "Your equation is not linear in the accelerations ({accelerations}), as every equation of motion"
+    " from Lagrange's equations is: is an acceleration squared, or inside a function?",
+    "not_linear_in": "Your equation {index} is not linear in the accelerations, as every equation of motion from"
+    " Lagrange's equations is.",
     "wrong_equation_single": "This equation does not say the same as the expected one.",
     "root_multiplicity": (
         "Your equation holds for the same values, but not each as often: a repeated root,"

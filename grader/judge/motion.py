@@ -85,7 +85,7 @@ class _Rows:
 
     def __init__(self, samples: Sequence[tuple[Sequence, Sequence[float]]], precise: bool, step: float = 1.0):
         self.step = step
-        self.rows, self.entry_scales, self.linear = [], [], Closeness.EQUAL
+        self.rows, self.entry_scales, self.linear, self.linear_each = [], [], Closeness.EQUAL, []
         for values, scales in samples:
             (b, *stepped, probed), (b_scale, *stepped_scales, probe_scale) = values, scales
             c = [(value - b) / step for value in stepped]
@@ -93,7 +93,8 @@ class _Rows:
             probe = [type(step)(p) for p in _probe(len(c))]  # fractions for exact rows
             predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
             noise = max(probe_scale, b_scale + sum(s * abs(p) for s, p in zip(c_scales, probe, strict=True)))
-            self.linear = _worst(self.linear, closeness(probed, predicted, noise, precise=precise))
+            self.linear_each.append(closeness(probed, predicted, noise, precise=precise))
+            self.linear = _worst(self.linear, self.linear_each[-1])
             self.rows.append([*c, b])
             self.entry_scales.append([*c_scales, b_scale])
 
@@ -393,7 +394,20 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
     if _decided([result for number, result in numbered if number < expected.point_count]):
         # right wherever states are drawn, wrong at rest or at the origin: a vanishing factor
         return Outcome("not_equivalent", 0.0, "vanishing_factor", method="accelerations")
+    if _nonlinear(expected, [expected_f], [submitted_g]) == [True]:
+        names = ", ".join(unicode_name(q, 2) for q in _accelerations_in(f, expected))
+        return Outcome("not_equivalent", 0.0, "not_linear", {"accelerations": names}, "accelerations")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
+
+
+def _nonlinear(expected: Expected, reference: Sequence[Compiled], submitted: Sequence[Compiled]) -> list[bool]:
+    """Per submitted equation: whether it is plainly not linear in the accelerations at some sample
+    state, as no equation of motion from Lagrange's equations is: ``(l θ̈ + g sin θ)² = 0``."""
+    found = [False] * len(submitted)
+    for rows in _float_rows(expected, submitted, _steps(expected, reference)):
+        for i, linear in enumerate(rows.linear_each if rows is not None else ()):
+            found[i] = found[i] or linear is Closeness.DIFFERENT
+    return found
 
 
 def _is_unsure(result) -> bool:
@@ -777,6 +791,10 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     if not wrong:
         return outcome
     wrong_ones = [j for j in range(len(theirs)) if not all(s.verdicts[j] is Closeness.EQUAL for s in states)]
+    nonlinear = _nonlinear(expected, expected_fs, submitted_gs)
+    if any(nonlinear[j] for j in wrong_ones):
+        more = tuple(("not_linear_in", {"index": j + 1}) for j in wrong_ones if nonlinear[j])
+        return replace(outcome, more=more)
     if outcome.key == "wrong_equation" and len(wrong_ones) == 1:
         (j,) = wrong_ones
         return replace(outcome, more=_terms_named(expected, references, theirs[j], j, deadline))
@@ -899,7 +917,7 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
         inherited = sum(abs(c) * u for c, u in zip(row, reference.uncertainty, strict=False))
         residual = sum(c * a for c, a in zip(row, accelerations, strict=False)) + row[n]
         verdict = closeness(residual, 0, max(scale, float(size), float(inherited)), precise=precise)
-        verdicts.append(_worst(verdict, submitted.linear))
+        verdicts.append(_worst(verdict, submitted.linear_each[i]))  # a squared equation is wrong alone
         coefficients = zip(row[:n], submitted.entry_scales[i][:n], strict=True)
         trivial.append(all(closeness(c, 0, s, precise=precise) is Closeness.EQUAL for c, s in coefficients))
     good = [row for row, verdict in zip(submitted.rows, verdicts, strict=True) if verdict is Closeness.EQUAL]
