@@ -281,6 +281,32 @@ def test_a_formula_may_be_followed_by_its_unit(submitted, setting, status, feedb
     assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
+FOR_A_PERSON = (
+    "Your formula is labelled `{}`. Graded without its unit, it is right; but a frequency in Hz counts cycles and"
+    " an angular frequency in rad/s radians, 2π apart (ω = 2πf). A person will check which you meant."
+)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "feedback"),
+    [
+        # ω has no π in it: in Hz, √(g/l) is 2π too large, if the label is meant
+        (OMEGA, "√(g/l) Hz", "undecided", (FOR_A_PERSON.format("Hz"),)),
+        (OMEGA, "ω = √(g/l) hertz", "undecided", (FOR_A_PERSON.format("hertz"),)),
+        # f = ω/2π has: in rad/s it is 2π too small
+        ("sqrt(g/l)/(2 pi)", "√(g/l)/(2π) rad/s", "undecided", (FOR_A_PERSON.format("rad/s"),)),
+        ("sqrt(g/l)/(2 pi)", "√(g/l)/(2π) Hz", "equivalent", ("Correct.", LEFT_OUT.format("Hz"))),
+        ("sqrt(g/l)/(2 pi)", "√(g/l)/(2π) 1/s", "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
+    ],
+)
+def test_a_formula_labelled_in_cycles_or_radians_the_other_one_counts_goes_to_a_person(
+    expected, submitted, status, feedback
+):
+    verdict = compare(expected, submitted, **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+    assert verdict.score == 1.0
+
+
 @pytest.mark.parametrize("submitted", ["√(g/l) h", "√(g/l) + 3 s", "√(g/l) s"])
 def test_a_single_letter_is_a_name_to_define_not_a_unit_to_leave_out(submitted):
     # m g h: h is the student's height sooner than hours, and a unit inside a sum is no unit of the answer

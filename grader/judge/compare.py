@@ -36,7 +36,17 @@ from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
 from grader.judge.text import check_text
-from grader.judge.units import SI_UNITS, Mixed, cycles_to, in_units, si, unit_named, units_mistake, units_of
+from grader.judge.units import (
+    SI_UNITS,
+    Mixed,
+    cycles_to,
+    in_units,
+    si,
+    unit_counts,
+    unit_named,
+    units_mistake,
+    units_of,
+)
 from grader.judge.verdict import Verdict
 from grader.judge.words import formula_then_words, says_otherwise, words_then_formula
 from grader.parse import (
@@ -218,8 +228,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 if early:
                     return _verdict(early, shown)  # as typed: 2.006 m is not read as a time
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
-            outcome, read_notes = _for_a_person(outcome, read_notes)
-            for note in (*read_notes, read_in):
+            outcome, read_notes = _for_a_person(outcome, (*read_notes, read_in))
+            for note in read_notes:
                 if note:
                     outcome = replace(outcome, notes=(*outcome.notes, note))
             if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
@@ -598,7 +608,11 @@ def _without_constant_terms(answer: ParsedAnswer, spec: Kind, expected: Expected
 # Notes on a reading that a person must confirm before the answer earns credit, each with the note
 # it becomes where the answer earns none either way: a name of the student's own alone in a term,
 # as a constant (``− m g z``); words after the formula that may say otherwise (``… upward``).
-_FOR_A_PERSON = {"constant_unsure": "constant_terms_left_out", "words_for_a_person": "words_read_past"}
+_FOR_A_PERSON = {
+    "constant_unsure": "constant_terms_left_out",
+    "words_for_a_person": "words_read_past",
+    "unit_for_a_person": "unit_left_out",
+}
 
 
 def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
@@ -770,7 +784,18 @@ def _formula_in_unit(
     if wanted is not None and found[2] != wanted:
         details = {"theirs": si(found[2]), "wanted": si(wanted)}
         return answer, Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
-    return ParsedAnswer(answer.text, formula, "expression"), None, ("unit_left_out", {"unit": to_text(unit)})
+    key = "unit_left_out" if _same_counts(unit, expected) else "unit_for_a_person"
+    return ParsedAnswer(answer.text, formula, "expression"), None, (key, {"unit": to_text(unit)})
+
+
+def _same_counts(unit, expected: Expected) -> bool:
+    """Whether a unit of 1/s that counts cycles (Hz) or radians (rad/s) may be the expected formula's:
+    one with π in it is a frequency f, in Hz (√(g/l)/2π); one without an angular frequency ω, in
+    rad/s. ``√(g/l) Hz`` for ω is 2π out, if the label is meant; a person reads it."""
+    counts = unit_counts({symbol.name for symbol in unit.free_symbols})
+    if counts is None:
+        return True
+    return counts == ("cycles" if expected.value.has(sympy.pi) else "radians")
 
 
 def _units_named(answer: ParsedAnswer, expected: Expected) -> set[sympy.Symbol]:

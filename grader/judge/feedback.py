@@ -48,6 +48,9 @@ FEEDBACK: dict[str, str] = {
     "words_for_a_person": "Your answer says `{words}` beside the formula. The formula was graded on its own;"
     " a person will read the words against it.",
     "words_before_left_out": "Read without the words before it, `{words}`: the formula is what is graded.",
+    "unit_for_a_person": "Your formula is labelled `{unit}`. Graded without its unit, it is right; but a"
+    " frequency in Hz counts cycles and an angular frequency in rad/s radians, 2π apart (ω = 2πf). A person"
+    " will check which you meant.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",

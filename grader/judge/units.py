@@ -9,6 +9,7 @@ Contents:
     SI_UNITS, in_units(value)    a number written with its unit: ``2006 ms`` is 2006 × 1/1000 s
     unit_named(text), other_units(text)   a part's unit, and the others that measure the same
     cycles_to(value, unit)       2π from Hz to rad/s: the same SI units, a cycle apart
+    unit_counts(names)           whether units by these names count cycles (Hz) or radians (rad/s)
 
 A problem declares each symbol's dimension (``m: mass``, ``g: acceleration``); a coordinate's
 derivatives are divided by time once per dot, and t is a time. ``√(l/g)`` is then a time and
@@ -39,6 +40,7 @@ __all__ = [
     "in_units",
     "other_units",
     "si",
+    "unit_counts",
     "unit_named",
     "unit_of",
     "units_mistake",
@@ -225,7 +227,7 @@ _RADIANS = frozenset({"rad", "radian", "radians"})
 def cycles_to(value, unit: str) -> sympy.Expr:
     """What a number written in ``value``'s units is multiplied by, beyond their sizes, to be in
     ``unit``: 2π from Hz to rad/s, 1/(2π) from rad/s to Hz, else 1."""
-    theirs, wanted = _counts({symbol.name for symbol in value.free_symbols}), _unit_counts(unit)
+    theirs, wanted = unit_counts({symbol.name for symbol in value.free_symbols}), _unit_counts(unit)
     if theirs == wanted or None in (theirs, wanted):
         return sympy.Integer(1)
     return 2 * sympy.pi if theirs == "cycles" else 1 / (2 * sympy.pi)
@@ -234,10 +236,10 @@ def cycles_to(value, unit: str) -> sympy.Expr:
 @lru_cache(maxsize=64)
 def _unit_counts(text: str) -> str | None:
     read = parse_answer(text)
-    return _counts({symbol.name for symbol in read.symbols}) if read.ok else None
+    return unit_counts({symbol.name for symbol in read.symbols}) if read.ok else None
 
 
-def _counts(names: set[str]) -> str | None:
+def unit_counts(names: set[str]) -> str | None:
     """Whether units by these names count cycles (Hz) or radians (rad/s); None for neither, or both."""
     cycles, radians = bool(names & _CYCLES), bool(names & _RADIANS)
     return None if cycles == radians else "cycles" if cycles else "radians"
