@@ -1579,6 +1579,30 @@ def test_a_label_may_come_with_its_options_words_or_a_reason(submitted, status, 
     assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
+@pytest.mark.parametrize(
+    ("submitted", "options", "status"),
+    [
+        # two options' words, or one and a hedge: no claim and its reason, so which is meant is asked
+        ("φ, θ", CYCLIC_CHOICE, "invalid"),
+        ("phi; theta", CYCLIC_CHOICE, "invalid"),
+        ("φ, or θ", CYCLIC_CHOICE, "invalid"),
+        ("φ, both", CYCLIC_CHOICE, "invalid"),
+        ("φ, neither", CYCLIC_CHOICE, "invalid"),
+        ("rheonomic, scleronomic", TIME_CHOICE, "invalid"),
+        ("rheonomic, maybe scleronomic", TIME_CHOICE, "invalid"),
+        ("rheonomic, a", TIME_CHOICE, "invalid"),  # words, then another option's label
+        ("b; not b", TIME_CHOICE, "invalid"),
+        # a reason may name the other option: it says why, it does not choose
+        ("φ, because θ appears in L", CYCLIC_CHOICE, "equivalent"),
+        ("rheonomic, since a constraint depends on t", TIME_CHOICE, "equivalent"),
+        ("rheonomic, b", TIME_CHOICE, "equivalent"),  # the same option twice
+    ],
+)
+def test_an_option_then_another_or_a_hedge_is_no_choice(submitted, options, status):
+    verdict = compare("b", submitted, **options)
+    assert verdict.status == status, verdict
+
+
 def test_several_choices_may_be_written_out_each_between_commas():
     options = (("a", "holonomic"), ("b", "scleronomic"), ("c", "rheonomic"))
     verdict = compare("a, b", "Holonomic, scleronomic", kind="choice", options=options, multiple=True)

@@ -154,12 +154,26 @@ def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[s
                 by_words[words] = None if words in by_words else label  # two options alike name neither
     whole = by_words.get(_plain(submitted))
     if not whole and not multiple:  # "rheonomic because l depends on t": the claim, then the reason
-        claim = _REASON.split(submitted, maxsplit=1)[0]
+        claim, *rest = _REASON.split(submitted, maxsplit=1)
         whole = by_words.get(_plain(claim)) or _with_remark(claim, by_words) or _said_of(claim, by_words)
+        if whole and rest and _names_another(rest[0], whole, by_words, texts):
+            return None  # "φ, θ", "rheonomic, maybe scleronomic": a list or a hedge, no claim and reason
     if whole or not multiple:
         return [whole] if whole else None
     labels = [by_words.get(_plain(piece)) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
     return labels if labels and all(labels) else None
+
+
+def _names_another(rest: str, label: str, by_words: dict[str, str | None], texts: dict[str, str]) -> bool:
+    """Whether what follows an option's words names another option, alone or as labels (``φ, θ``,
+    ``rheonomic, c``), or starts with a hedge (``…, or θ``, ``…, maybe …``, ``…, both``): then the
+    answer is no claim with its reason."""
+    if _HEDGE.match(rest):
+        return True
+    if by_words.get(_plain(rest)) not in (None, label):
+        return True
+    labels = choice_labels(rest)
+    return bool(labels) and all(other in texts for other in labels) and set(labels) != {label}
 
 
 def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
@@ -175,8 +189,8 @@ def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
     if named:
         return (label, "") if named == [label] else (label, words)
     labels = choice_labels(words)
-    if (labels and all(len(other) <= 2 for other in labels)) or _OR.search(words):
-        return None  # a, e: labels, one of them no option's; b - or maybe a: a hedge
+    if (labels and all(len(other) <= 2 for other in labels)) or _OR.search(words) or _HEDGE.match(words):
+        return None  # a, e: labels, one of them no option's; b - or maybe a, b; not b: a hedge
     return (label, "") if match["mark"].strip() or _REASON.match(" " + words) else None
 
 
@@ -186,6 +200,8 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 # where an option's reason begins: "rheonomic, since …", "holonomic because …"
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
 _OR = re.compile(r"\bor\b", re.I)  # a hedge between options: b - or maybe a
+# what a hedge starts with, after an option: "φ, or θ", "rheonomic, maybe …", "b; not b", "φ, both"
+_HEDGE = re.compile(r"\s*(?:or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no)\b", re.I)
 
 
 def _with_remark(claim: str, by_words: dict[str, str | None]) -> str | None:
