@@ -1611,6 +1611,22 @@ def test_several_choices_may_be_written_out_each_between_commas():
 
 
 @pytest.mark.parametrize(
+    ("kind", "expected", "submitted", "status"),
+    [
+        # a sign before the number is no words around it: ≠ 2 says what it is not, ± 2 two numbers
+        ("integer", "2", "≠2", "invalid"),
+        ("integer", "2", "±2", "invalid"),
+        ("number", "2.006", "≠ 2.006", "invalid"),
+        ("integer", "2", "‒2", "not_equivalent"),  # a figure dash is a minus: −2
+        ("integer", "2", "It has 2", "equivalent"),
+    ],
+)
+def test_a_sign_before_a_number_is_read_not_dropped(kind, expected, submitted, status):
+    options = {"rtol": 0.005} if kind == "number" else {}
+    assert compare(expected, submitted, kind=kind, **options).status == status
+
+
+@pytest.mark.parametrize(
     ("kind", "expected", "submitted", "names"),
     [
         ("integer", "2", "2 θ", "`θ`"),

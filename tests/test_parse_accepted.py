@@ -52,6 +52,8 @@ ARITHMETIC = [
     ("a^b^c", a ** (b**c)),
     ("a − b", a - b),
     ("a · b × c ⋅ d", a * b * c * d),
+    ("a ∗ b ﹢ c", a * b + c),
+    ("‒a ‐ b ‑ c ﹣ d", -a - b - c - d),  # the dashes a minus is typed or pasted as
     ("a ÷ b", a / b),
     ("a^2 b", a**2 * b),
     ("--a", a),
@@ -162,6 +164,7 @@ DERIVATIVES = [
     ("theta_ddot", D(theta, 2)),
     ("theta_dd + theta_d + theta1_dd", D(theta, 2) + D(theta) + D(theta1, 2)),  # as code spells them
     ("theta''", D(theta, 2)),
+    ("θ’’ + θ’", D(theta, 2) + D(theta)),  # a phone's apostrophe for a prime
     ("θ̈", D(theta, 2)),
     ("\\ddot{\\theta}", D(theta, 2)),
     ("diff(theta, t, 2)", D(theta, 2)),

@@ -26,7 +26,7 @@ from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = ["formula_then_words", "is_prose", "says_otherwise", "words_then_formula"]
 
-_MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥")
+_MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥≠±∓‒‐‑⁻﹣－")  # with the dashes a minus may be typed as
 # words that change a formula: "√(g/l) times l", "… but negative", "… all squared"
 _MATH_WORDS = re.compile(
     r"\b(?:times|plus|minus|over|divided|multiplied|squared|cubed|square|root|half|halved|twice|doubled|"

@@ -111,13 +111,14 @@ class Token:
 # The whitelist. Operators by every spelling a keyboard or a PDF produces.
 _OPERATORS = {
     "+": "+", "-": "-", "\u2212": "-", "\u2013": "-", "*": "*", "\u00b7": "*", "\u22c5": "*",
+    "\u2010": "-", "\u2011": "-", "\u2012": "-", "\ufe63": "-", "\ufe62": "+", "\u2217": "*",  # ‐ ‑ ‒ ﹣ ﹢ ∗
     "\u00d7": "*", "\u2219": "*", "/": "/", "\u00f7": "/", "\u2044": "/", "\u2215": "/", "^": "^", "=": "=",
     "\u2248": "=", "\u2243": "=",  # ≈ ≃: θ̈ ≈ −(g/l) θ for small angles, T ≈ 2.01: the relation asked for
     ",": ",", ";": ";",
     "(": "(", ")": ")", "[": "[", "]": "]", "{": "{", "}": "}", "|": "|", "\u2223": "|",
 }  # fmt: skip
 _VULGAR_FRACTIONS = {"½": "1/2", "⅓": "1/3", "⅔": "2/3", "¼": "1/4", "¾": "3/4", "⅕": "1/5", "⅛": "1/8"}
-_PRIMES = {"'": 1, "\u2032": 1, "\u2033": 2}
+_PRIMES = {"'": 1, "\u2019": 1, "\u2032": 1, "\u2033": 2}  # ’: a phone's apostrophe for a prime
 # A derivation's steps: what follows ⇒ ⟹ ⇔ ⟺ ∴ (and =>, ==>, <=> typed) is what was derived.
 _IMPLIES = {"\u21d2", "\u27f9", "\u21d4", "\u27fa", "\u2234"}
 # → ⟶ (and ->, --> typed) are steps too, but only between two equations: θ → 0 is a limit.
