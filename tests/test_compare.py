@@ -1717,6 +1717,30 @@ def test_the_number_is_found_in_what_a_student_wrote_around_it(expected, submitt
     assert (verdict.status, verdict.read_as, verdict.notes) == (status, read_as, notes)
 
 
+PENDULUM_PERIOD = {**PERIOD_PART, "known": ["m", "g", "l"], "coords": ["theta"]}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status", "notes"),
+    [
+        # the values it was worked out with, after a number: graded is the number
+        (PERIOD, "2.006 s, since l = 1 m", PENDULUM_PERIOD, "equivalent", (_remark("2.006 s", "since l = 1 m"),)),
+        (PERIOD, "2.006 s for l = 1.00 m", PENDULUM_PERIOD, "equivalent", (_remark("2.006 s", "for l = 1.00 m"),)),
+        ("1", "1, since k = 2", {}, "equivalent", (_remark(1, "since k = 2"),)),
+        ("1", "2, since k = 1", {}, "not_equivalent", (_remark(2, "since k = 1"),)),
+        # after a formula: the values are put in its names, the problem's or the student's own
+        (PERIOD, "T = 2π√(l/g), where l = 1, g = 9.81", PENDULUM_PERIOD, "equivalent", ()),
+        (PERIOD, "2π√(l/g), where l = 2, g = 9.81", PENDULUM_PERIOD, "not_equivalent", ()),
+        ("1", "n = 3N − k, where N = 1, k = 2", {}, "equivalent", ()),
+        # a value it was given is no final value: g has none here
+        (PERIOD, "2π√(l/g), where l = 1", PENDULUM_PERIOD, "invalid", ()),
+    ],
+)  # fmt: skip
+def test_a_number_may_be_followed_by_the_values_it_was_worked_out_with(expected, submitted, options, status, notes):
+    verdict = compare(expected, submitted, **{"kind": "integer", **options})
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+
+
 @pytest.mark.parametrize(
     ("submitted", "names"),
     [

@@ -709,12 +709,28 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
     answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
     if not answer.ok:
         return None
+    answer = _with_definitions(_with_values(answer), expected, deadline)  # n = 3N − k; N = 1; k = 2
     value = _unwrap_named(answer, spec, expected).value
     if not isinstance(value, sympy.Expr):
         return None
     if not value.free_symbols or (spec.name == "number" and expected.option("unit") and in_units(value)):
         return answer
     return None
+
+
+def _with_values(answer: ParsedAnswer) -> ParsedAnswer:
+    """``T = 2π√(l/g); l = 1; g = 9.81`` where a number is asked for: the problem's names too given
+    their values, put in place in the one equation left. As it was read where that is not so."""
+    if answer.kind != "equations":
+        return answer
+    values = {
+        item.lhs: item.rhs for item in answer.value if item.lhs.is_Symbol and item.lhs != ANSWER and item.rhs.is_number
+    }
+    rest = [item for item in answer.value if item.lhs not in values]
+    if not values or len(rest) != 1 or len(values) != len(answer.value) - 1:
+        return answer
+    (item,) = rest
+    return ParsedAnswer(answer.text, _replaced(item, values), "equation")
 
 
 def _unit(text: str) -> tuple[Fraction, tuple]:

@@ -77,6 +77,9 @@ def read_number(
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
         return prepared, answer, notes  # x = 1; y = 2 is a system, not working
+    given = _given(text, reads, names, decimal_comma, seconds)
+    if given is not None:
+        return given
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
     pieces = [piece.strip() for piece in _EQUALS.split(bare)]
     last = len(pieces) - 1
@@ -103,6 +106,31 @@ def read_number(
             return prepared, answer, notes
     prepared, notes = _spelled(text, decimal_comma, seconds)
     return prepared, None, notes
+
+
+def _given(text: str, reads, names, decimal_comma: bool, seconds: bool) -> tuple[str, ParsedAnswer, tuple] | None:
+    """``2.006 s, since l = 1 m``, ``n = 3N − k, where N = 1, k = 2``: a number or a formula, then the
+    values it was worked out with. The number is graded, and the note says the rest was not; a
+    formula is graded with the values put in its names. None where the text is no such answer; where
+    it is one that reads as no number, the text as typed, for its refusal to say why: the last side
+    of ``l = 1`` is no final value."""
+    found = _GIVEN.search(text)
+    if found is None or not found.start():
+        return None
+    head, values = text[: found.start()], text[found.end() :]
+    prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, seconds=seconds)
+    if answer is not None:
+        shown = text[found.start() :].strip(" ,")
+        shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
+        value = next((details["value"] for _, details in notes if "value" in details), head.strip())
+        return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": shown}))
+    joined = f"{head}; {values}"
+    answer = reads(joined)  # T = 2π√(l/g); l = 1; g = 9.81: the values put in place
+    return (joined, answer, ()) if answer is not None else (text, None, ())  # not = 1, a value it was given
+
+
+# where the values an answer was worked out with begin: ", where l = 1", " since k = 2", " for l = 1 m"
+_GIVEN = re.compile(r"\s*,?\s*\b(?:where|with|since|for|given|using|as)\s+(?=[^\W\d][\w₀-₉]*\s*=)", re.I)
 
 
 def _spelled(text: str, decimal_comma: bool, seconds: bool) -> tuple[str, tuple]:
