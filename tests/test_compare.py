@@ -573,6 +573,23 @@ def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status
     assert compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM).status == status
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status"),
+    [
+        # the name asked for, times a number or raised to a power: its value is the other side's
+        ("sqrt(g/l)", "ω² = g/l", "expression", "equivalent"),  # a frequency's positive root
+        ("sqrt(g/l)", "2ω = 2√(g/l)", "expression", "equivalent"),
+        ("sqrt(g/l)", "ω² = l/g", "expression", "not_equivalent"),
+        (L_PENDULUM, "2 L = m l² θ̇² + 2 m g l cos θ", "lagrangian", "equivalent"),
+        (L_PENDULUM, "L/2 = ¼ m l² θ̇² + ½ m g l cos θ", "lagrangian", "equivalent"),
+        (L_PENDULUM, "2L = m l² θ̇² + m g l cos θ", "lagrangian", "not_equivalent"),
+    ],
+)
+def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, submitted, kind, status):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
+
+
 DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}
 
 

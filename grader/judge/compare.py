@@ -527,9 +527,25 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     named = isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
     undefined = {symbol.name for symbol in value.lhs.free_symbols} - expected.names
     defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
+    scaled = _scaled_name(value.lhs, undefined)
+    if scaled is not None:  # 2L = m l² θ̇² + …, ω² = g/l: the name's value
+        return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     return answer
+
+
+def _scaled_name(lhs, undefined: set[str]):
+    """For ``2L`` or ``L/2``, the name times a number, and for ``ω²``, its power: what makes the
+    name's value of the other side (halving it; its positive root, as a frequency's); None for any
+    other left side."""
+    coefficient, rest = lhs.as_coeff_Mul()
+    if rest.is_Symbol and rest.name in undefined and coefficient not in (0, 1) and coefficient.is_Rational:
+        return lambda rhs: rhs / coefficient
+    base, exponent = lhs.as_base_exp()
+    if base.is_Symbol and base.name in undefined and exponent.is_Integer and exponent > 1:
+        return lambda rhs: rhs ** sympy.Rational(1, int(exponent))
+    return None
 
 
 def _constant_allowed(spec: Kind, expected: Expected) -> bool:
