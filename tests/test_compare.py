@@ -1620,6 +1620,22 @@ def test_an_option_then_another_or_a_hedge_is_no_choice(submitted, options, stat
     assert verdict.status == status, verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("b\u200b", "equivalent"),  # a zero-width space, pasted
+        ("ｂ", "equivalent"),  # a full-width letter
+        ("\u200fb", "equivalent"),  # a mark of writing direction
+        ("b.", "equivalent"),  # the full stop of a sentence
+        ("(b).", "equivalent"),
+        ("b?", "invalid"),  # asks: no answer
+    ],
+)
+def test_a_label_is_read_as_it_looks(submitted, status):
+    verdict = compare("b", submitted, **TIME_CHOICE)
+    assert verdict.status == status, verdict
+
+
 def test_several_choices_may_be_written_out_each_between_commas():
     options = (("a", "holonomic"), ("b", "scleronomic"), ("c", "rheonomic"))
     verdict = compare("a, b", "Holonomic, scleronomic", kind="choice", options=options, multiple=True)

@@ -17,7 +17,7 @@ import sympy
 from grader.judge.deadline import Deadline
 from grader.judge.expected import Expected, Outcome
 from grader.judge.units import other_units
-from grader.parse import ParsedAnswer
+from grader.parse import ParsedAnswer, visible
 from grader.parse.names import GREEK_BY_LETTER
 
 __all__ = ["check_choice", "check_integer", "check_number", "choice_labels", "chosen"]
@@ -72,7 +72,7 @@ def check_number(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -
 
 def choice_labels(text: str) -> list[str] | None:
     """The labels in ``text`` (``"a, C"`` → ``['a', 'c']``), or None when it is not a list of labels."""
-    stripped = text.strip().strip("[](){}").strip()
+    stripped = text.strip().rstrip(".!").strip().strip("[](){}").strip()  # b. as b; b? asks, and is no answer
     if not stripped or len(text) > MAX_CHOICE_LENGTH:
         return None
     labels = [label.lower() for label in _SEPARATORS.split(stripped) if label]
@@ -122,6 +122,7 @@ def chosen(submitted: str, options, *, multiple: bool = False) -> list[str] | No
 def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> tuple[list | None, list | None, tuple | None]:
     """(the labels given, or None; those read from words, or None; a label and words naming
     another option, or None)."""
+    submitted = visible(submitted).strip() if isinstance(submitted, str) else submitted  # b​, ｂ: b
     given = choice_labels(submitted) if isinstance(submitted, str) else None
     if not isinstance(submitted, str) or (given is not None and all(label in texts for label in given)):
         return given, None, None

@@ -9,6 +9,7 @@ Contents:
     too_many_digits(number)              whether a constant is beyond the parser's cap on digits
     within_diff_budget(value, order)     whether a value is small enough to differentiate in t
     own_rates(value, coords)             the rates of names the answer defines for itself (ṗ)
+    visible(text)                        text as it reads: lookalike letters as ours, invisible ones as spaces
 
 The modules behind it: ``tokens`` (the whitelist and threat model), ``grammar``
 (tokens to sympy), ``names`` (one spelling per name), ``messages`` (every word a
@@ -26,7 +27,7 @@ import sympy
 from grader.parse.grammar import ANSWER, TIME, Context, own_rates, parse_tokens, too_many_digits, within_diff_budget
 from grader.parse.messages import ParseFailure, Refusal, refusal
 from grader.parse.readback import to_latex, to_mathml, to_text
-from grader.parse.tokens import LIMITS, tokenize
+from grader.parse.tokens import LIMITS, tokenize, visible
 
 __all__ = [
     "ANSWER",
@@ -37,6 +38,7 @@ __all__ = [
     "own_rates",
     "parse_answer",
     "too_many_digits",
+    "visible",
     "within_diff_budget",
 ]
 

@@ -48,7 +48,7 @@ from grader.parse.names import (
     SUPERSCRIPTS,
 )
 
-__all__ = ["LIMITS", "Name", "Token", "tokenize"]
+__all__ = ["LIMITS", "Name", "Token", "tokenize", "visible"]
 
 
 @dataclass(frozen=True)
@@ -412,10 +412,28 @@ def _plain(token: Token) -> bool:
 _SPACING_DOTS = {0x02D9: "\u0307", 0x00A8: "\u0308"}
 # Letters a PDF or a word processor gives for ours: script ℓ, ℒ, ℋ, ℱ (as \ell and \mathcal do),
 # and full-width digits, letters and signs (an East Asian keyboard's). One character for one.
-_LOOKALIKES = {0x2113: "l", 0x2112: "L", 0x210B: "H", 0x2131: "F"} | {c: chr(c - 0xFEE0) for c in range(0xFF01, 0xFF5F)}
-# Invisible: zero-width spaces and joiners, a byte order mark, a word joiner. Read as a space.
-_INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x2060, 0xFEFF), " ")
+# And the mathematical italic, bold and sans-serif letters and digits a word processor's equation
+# editor gives (𝑚, 𝐠, 𝜃, 𝟏), and the script ɡ, each as the letter or digit it styles.
+_LOOKALIKES = (
+    {0x2113: "l", 0x2112: "L", 0x210B: "H", 0x2131: "F", 0x0261: "g"}
+    | {c: chr(c - 0xFEE0) for c in range(0xFF01, 0xFF5F)}
+    | {
+        c: styled
+        for c in range(0x1D400, 0x1D800)
+        if len(styled := unicodedata.normalize("NFKC", chr(c))) == 1 and styled.isalnum()
+    }
+)
+# Invisible: zero-width spaces and joiners, a byte order mark, a word joiner, and the marks that set
+# a direction of writing (from right-to-left text around). Read as a space; a line or paragraph
+# separator as a new line.
+_INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x200E, 0x200F, 0x2060, 0xFEFF, *range(0x202A, 0x202F),
+                            *range(0x2066, 0x206A)), " ") | {0x2028: "\n", 0x2029: "\n"}  # fmt: skip
 _READ_AS = str.maketrans(_SPACING_DOTS | _LOOKALIKES | _INVISIBLE)  # all three, in one pass over the text
+
+
+def visible(text: str) -> str:
+    """``text`` as it reads: lookalike letters as ours, invisible characters as spaces, one for one."""
+    return text.translate(_READ_AS)
 
 
 _LIST_MARKER = re.compile(r"[ \t]*([0-9]{1,3})[.)][ \t]+")
@@ -490,7 +508,7 @@ def _inline_markers(text: str) -> dict[int, int]:
 
 class _Tokenizer:
     def __init__(self, text: str, *, latex: bool):
-        self.text, self.latex = text.translate(_READ_AS), latex
+        self.text, self.latex = visible(text), latex
         self.pos = 0
         self.tokens: list[Token] = []
         if "\n" in text or text.lstrip()[:1] in _BULLETS:
