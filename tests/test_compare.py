@@ -66,6 +66,8 @@ def test_a_malformed_expected_answer_raises_for_the_author():
         (lambda: compare("x", "x", kind="vector"), "unknown answer kind 'vector'"),
         (lambda: compare("x", "x", rtol=0.1), "option rtol does not apply to kind 'expression'"),
         (lambda: compare("x", "x", domains={"x": "complex"}), "domain of 'x' is 'complex'"),
+        (lambda: compare("x", "x", timeout=-1), "timeout must be a positive number of seconds, not -1"),
+        (lambda: compare("x", "x", timeout=float("nan")), "timeout must be a positive number of seconds"),
         (
             lambda: compare("x = 1", "x", kind="expression"),
             "of kind 'expression' must be an expression, not an equation",

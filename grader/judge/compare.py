@@ -13,6 +13,7 @@ checkers only compare.
 
 from __future__ import annotations
 
+import math
 import re
 import time
 from collections.abc import Callable, Iterable, Mapping
@@ -129,7 +130,8 @@ def compare(
         A :class:`Verdict`. Nothing a student types makes this raise or hang.
 
     Raises:
-        AuthorError: an unknown kind or option, or an expected answer that cannot be read.
+        AuthorError: an unknown kind or option, a timeout that is no positive number of seconds,
+            or an expected answer that cannot be read.
 
     >>> compare("-(g/l) sin(theta)", "-g sin θ / l", coords=["theta"]).status
     'equivalent'
@@ -142,6 +144,8 @@ def compare(
     dimensions = tuple(sorted((options.pop("dimensions", None) or {}).items()))
     given = options.pop("given", None) or {}
     timeout = float(options.pop("timeout", DEFAULT_TIMEOUT))
+    if not 0 < timeout < math.inf:
+        raise AuthorError(f"timeout must be a positive number of seconds, not {timeout:g}")
     unknown = set(options) - set(spec.options)
     if unknown:
         allowed = ", ".join(sorted(spec.options)) or "none"
