@@ -195,7 +195,7 @@ DERIVATIVES = [
     ("a\u200b + b\ufeff", a + b),  # the spacing dots a Mac keyboard types (Option-h, Option-u)
     # an equation editor's styled letters and digits, the script ɡ, and marks of writing direction
     ("𝑚 𝑔 𝑙 sin 𝜃 + 𝐚 + 𝟏", m * g * l * sin(theta) + a + 1),
-    ("ɡ l\u200f + a\u202a", g * l + a),
+    ("ɡ l\u200f + a\u200e", g * l + a),
 ]
 
 LEIBNIZ = [

@@ -423,11 +423,14 @@ _LOOKALIKES = (
         if len(styled := unicodedata.normalize("NFKC", chr(c))) == 1 and styled.isalnum()
     }
 )
-# Invisible: zero-width spaces and joiners, a byte order mark, a word joiner, and the marks that set
-# a direction of writing (from right-to-left text around). Read as a space; a line or paragraph
-# separator as a new line.
-_INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x200E, 0x200F, 0x2060, 0xFEFF, *range(0x202A, 0x202F),
-                            *range(0x2066, 0x206A)), " ") | {0x2028: "\n", 0x2029: "\n"}  # fmt: skip
+# Invisible: zero-width spaces and joiners, a byte order mark, a word joiner, and the left-to-right
+# and right-to-left marks that right-to-left text around leaves. Read as a space; a line or paragraph
+# separator as a new line. The overrides and isolates (U+202A–202E, U+2066–2069) stay refused: they
+# reorder what a reader of the answer sees.
+_INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x200E, 0x200F, 0x2060, 0xFEFF), " ") | {
+    0x2028: "\n",
+    0x2029: "\n",
+}
 _READ_AS = str.maketrans(_SPACING_DOTS | _LOOKALIKES | _INVISIBLE)  # all three, in one pass over the text
 
 
