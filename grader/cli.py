@@ -7,19 +7,20 @@ Commands:
     grader problems list | show ID [--answers]                             the problem bank
     grader validate [PATH ...]                                             the bank tests itself
     grader grade SUBMISSIONS --assignment A --out DIR [--jobs N] [--only ID] grade a class
-    grader export DIR --to canvas|moodle|gradescope                        LMS imports
+    grader export DIR --to canvas|moodle|gradescope                        LMS imports (of who was graded)
     grader check PROBLEM.PART ANSWER | --answers FILE [--assignment A]     a student checks answers
     grader serve [--assignment A] [--port P] [--log FILE] [--workers N]    the self-check web page
 
 Exit statuses: 0 equivalent (or read, or all graded); 1 not equivalent (or validation
 failures); 2 invalid input or usage error; 3 undecided (set aside for a person); 4 some
-submissions could not be graded (listed).
+submissions could not be graded (listed; an export leaves them out).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import sys
 from collections.abc import Sequence
@@ -63,6 +64,17 @@ def _definition(value: str) -> tuple[str, str]:
     return name.strip(), expression.strip()
 
 
+def _seconds(value: str) -> float:
+    """A time limit: a positive number of seconds (0 or less would fail every check)."""
+    try:
+        seconds = float(value)
+    except ValueError:
+        seconds = math.nan
+    if not (seconds > 0 and math.isfinite(seconds)):
+        raise argparse.ArgumentTypeError(f"expected a positive number of seconds, not {value!r}")
+    return seconds
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="grader",
@@ -89,7 +101,7 @@ def _parser() -> argparse.ArgumentParser:
     )  # fmt: skip
     judge.add_argument("--coords", type=_names, default=[], help="generalized coordinates, e.g. theta1,theta2")
     judge.add_argument("--known", type=_names, default=[], help="more symbols the problem defines")
-    judge.add_argument("--timeout", type=float, default=2.0, help="seconds before the verdict is 'undecided'")
+    judge.add_argument("--timeout", type=_seconds, default=2.0, help="seconds before the verdict is 'undecided'")
     judge.add_argument("--up-to-constant", action="store_true", help="expressions: allow an additive constant")
     judge.add_argument("--unit", help="numbers: the unit asked for, e.g. s or m/s^2; an answer may carry its unit")
     judge.add_argument(
@@ -121,7 +133,7 @@ def _parser() -> argparse.ArgumentParser:
     grade.add_argument("--assignment", required=True, help="an assignment id (problems/assignments/ID.yaml) or file")
     grade.add_argument("--out", type=Path, required=True, help="the folder to write results into")
     grade.add_argument("--jobs", type=int, default=None, help="worker processes (default: the machine's cores)")
-    grade.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
+    grade.add_argument("--timeout", type=_seconds, default=2.0, help="seconds per check before 'undecided'")
     grade.add_argument("--only", metavar="STUDENT", help="regrade one student, keeping everyone else's results")
     grade.add_argument("--overrides", type=Path, help="CSV of a person's scores: student, part, points, comment")
     grade.add_argument("--reveal", action="store_true", help="show reference answers in the students' reports")
@@ -142,7 +154,7 @@ def _parser() -> argparse.ArgumentParser:
     checker.add_argument("answer", nargs="?", help="the answer")
     checker.add_argument("--answers", type=Path, help="a YAML mapping of problem.part to answer")
     checker.add_argument("--assignment", help="with --answers: list the assignment's parts left unanswered")
-    checker.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
+    checker.add_argument("--timeout", type=_seconds, default=2.0, help="seconds per check before 'undecided'")
     _add_bank_option(checker)
     checker.set_defaults(run=_run_check)
 
@@ -151,7 +163,7 @@ def _parser() -> argparse.ArgumentParser:
     serve.add_argument("--host", default="127.0.0.1", help="the address to listen on (default: %(default)s)")
     serve.add_argument("--port", type=int, default=8000, help="the port (default: %(default)s; 0 picks a free one)")
     serve.add_argument("--log", type=Path, default=Path("attempts.jsonl"), help="attempts log (default: %(default)s)")
-    serve.add_argument("--timeout", type=float, default=2.0, help="seconds per check before 'undecided'")
+    serve.add_argument("--timeout", type=_seconds, default=2.0, help="seconds per check before 'undecided'")
     serve.add_argument("--workers", type=int, help="processes that check answers (default: one per core)")
     _add_bank_option(serve)
     serve.set_defaults(run=_run_serve)
@@ -195,6 +207,9 @@ def _run_grade(args: argparse.Namespace) -> int:
     except GraderError as error:
         print(f"grader grade: {error}", file=sys.stderr)
         return EXIT_INVALID
+    except OSError as error:  # the outputs are written all or none: none was changed
+        print(f"grader grade: cannot write the outputs into {args.out}: {error}", file=sys.stderr)
+        return EXIT_INVALID
     finally:
         if "bar" in bar:
             bar["bar"].close()
@@ -216,12 +231,20 @@ def _run_export(args: argparse.Namespace) -> int:
         return EXIT_INVALID
     max_score = sum(points for *_, points in assignment_parts(assignment, bank))
     try:
-        written = export_grades(args.out, args.to, assignment=assignment, max_score=max_score)
+        summary = export_grades(args.out, args.to, assignment=assignment, max_score=max_score)
     except GraderError as error:
         print(f"grader export: {error}", file=sys.stderr)
         return EXIT_INVALID
-    print(f"wrote {len(written)} file(s): {written[0] if len(written) == 1 else written[0].parent.parent}")
-    return EXIT_OK
+    except OSError as error:
+        print(f"grader export: cannot write into {args.out / 'exports'}: {error}", file=sys.stderr)
+        return EXIT_INVALID
+    written = summary.written
+    print(f"wrote {len(written)} file(s): {written[0] if len(written) == 1 else args.out / 'exports' / args.to}")
+    for student in summary.not_graded:
+        who = f"{student.id} ({student.name})" if student.name else student.id
+        print(f"grader export: {who} could not be graded and is left out, so the LMS keeps their grade as it is;"
+              f" grade them again with grader grade … --only {student.id}", file=sys.stderr)  # fmt: skip
+    return EXIT_SOME_FAILED if summary.not_graded else EXIT_OK
 
 
 def _run_check(args: argparse.Namespace) -> int:

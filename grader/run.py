@@ -3,25 +3,29 @@
 Contents:
     RunSummary           what happened: who was graded, who could not be, what was wrong in the input
     grade_assignment()   the library call behind ``grader grade``
+    ExportSummary        what an export wrote, and who it left out
     export_grades()      the library call behind ``grader export``
     file_name(student)   a student id made safe as a file name
 
-Outputs in the folder ``out`` (every file written atomically):
+Outputs in the folder ``out``, written all or none (a run that fails changes none of them):
     results/<student>.json   Gradescope's results.json shape, our details under extra_data
     gradebook.csv, scores_long.csv, review.csv, summary.html, reports/<student>.html and .md
     overrides.csv            the person's scores applied, kept so they survive a regrade
     input-issues.txt         what was wrong in the submissions, by file and row
+
+results/ and reports/ hold this run's students only (what export reads): a regrade removes
+those of students it did not grade, and ``only`` keeps everyone graded before.
 """
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import math
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-
-import pandas
 
 from grader.bank import Assignment, Problem
 from grader.errors import GraderError
@@ -31,20 +35,20 @@ from grader.export import (
     grade_from_json,
     gradebook_csv,
     moodle_csv,
+    overrides_csv,
     read_overrides,
     result_json,
     review_csv,
     scores_long_csv,
-    write_atomic,
+    write_all_atomic,
 )
-from grader.export import columns as c
 from grader.grade.batch import assignment_parts, grade_class
-from grader.grade.results import SubmissionGrade
+from grader.grade.results import Student, SubmissionGrade
 from grader.grade.submissions import read_submissions
 from grader.judge import DEFAULT_TIMEOUT
 from grader.report import render_student_report, render_summary
 
-__all__ = ["EXPORTS", "RunSummary", "export_grades", "file_name", "grade_assignment"]
+__all__ = ["EXPORTS", "ExportSummary", "RunSummary", "export_grades", "file_name", "grade_assignment"]
 
 EXPORTS = ("canvas", "moodle", "gradescope")
 
@@ -89,12 +93,19 @@ def grade_assignment(
     progress: Callable[[int], None] | None = None,
     on_start: Callable[[int], None] | None = None,
 ) -> RunSummary:
-    """Grade ``submissions`` for ``assignment`` and write every output into ``out``.
+    """Grade ``submissions`` for ``assignment`` and write every output into ``out``, all or none.
+
+    Whatever is wrong with the input is found before grading: the time limit, the submissions,
+    the overrides (those saved in ``out`` and those in ``overrides``), the output folder.
 
     Raises:
-        GraderError: the submissions cannot be read at all, or ``only`` names no student.
-        OSError: the output folder cannot be written.
+        GraderError: the time limit is not a positive number of seconds; the submissions cannot be
+            read at all, or ``only`` names no student; the overrides cannot be read or used; ``out``
+            is not a folder that can be written. Nothing was graded or written.
+        OSError: the outputs cannot be written; none was changed.
     """
+    if not (timeout > 0 and math.isfinite(timeout)):  # nan too: a timer that cannot be set fails every check
+        raise GraderError(f"the time limit must be a positive number of seconds, not {timeout}")
     parts = assignment_parts(assignment, bank)
     keys = [(f"{problem.id}.{part.id}", points) for problem, part, points in parts]
     try:
@@ -102,64 +113,98 @@ def grade_assignment(
     except OSError as error:
         raise GraderError(f"cannot read the submissions {submissions}: {error}") from error
     issues = [str(issue) for issue in input_issues]
+    if not found:  # an empty gradebook written over the last one would lose it for nothing
+        listed = "".join(f"\n  {issue}" for issue in issues)
+        raise GraderError(f"no student in {submissions} can be graded, so nothing was written{listed and ':'}{listed}")
     if only is not None:
         found = [s for s in found if s.student.id == only]
         if not found:
             raise GraderError(f"no submission from student {only!r} in {submissions}")
+    if out.exists() and not out.is_dir():
+        raise GraderError(f"the output folder {out} is a file")
+    scores = _overrides(out, overrides, dict(keys))
+    previous = _previous_grades(out) if only is not None else []
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise GraderError(f"cannot make the output folder {out}: {error.strerror or error}") from error
     if on_start:
         on_start(len(found))
     grades = grade_class(found, assignment, bank, jobs=jobs, timeout=timeout, progress=progress)
     if only is not None:
-        grades = _merged_with_previous(out, grades)
-    grades, override_issues = _with_overrides(out, grades, overrides)
-    issues += override_issues
-    _write_outputs(out, grades, keys, assignment, bank, issues, reveal)
+        grades = _merged(previous, grades)
+    grades, unmatched = apply_overrides(grades, scores)
+    issues += unmatched
+    _write_outputs(out, grades, keys, assignment, bank, issues, reveal, scores)
     failed = tuple(f"{g.student.id}: {g.message}" for g in grades if g.status == "error")
     return RunSummary(out, tuple(grades), tuple(issues), failed)
 
 
-def _merged_with_previous(out: Path, regraded: list[SubmissionGrade]) -> list[SubmissionGrade]:
+def _overrides(out: Path, new: Path | None, max_points: dict[str, float]) -> dict:
+    """The overrides saved in ``out`` and those in ``new`` (which win), every row checked."""
+    saved = out / "overrides.csv"
+    overrides = read_overrides(saved, max_points=max_points) if saved.is_file() else {}
+    if new is not None:
+        overrides |= read_overrides(new, max_points=max_points)
+    return overrides
+
+
+def _previous_grades(out: Path) -> list[SubmissionGrade]:
+    """Everyone graded into ``out`` before, in file order."""
+    grades = []
+    for path in sorted((out / "results").glob("*.json")):
+        try:
+            grades.append(grade_from_json(path.read_text(encoding="utf-8")))
+        except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError) as error:
+            raise GraderError(f"cannot read the earlier result {path}: {error}; grade everyone again") from error
+    return grades
+
+
+def _merged(previous: list[SubmissionGrade], regraded: list[SubmissionGrade]) -> list[SubmissionGrade]:
     """Everyone graded before, with the regraded students replaced, in the previous order."""
     fresh = {grade.student.id: grade for grade in regraded}
-    previous = []
-    for path in sorted((out / "results").glob("*.json")):
-        grade = grade_from_json(path.read_text(encoding="utf-8"))
-        previous.append(fresh.pop(grade.student.id, grade))
-    return previous + list(fresh.values())
+    return [fresh.pop(grade.student.id, grade) for grade in previous] + list(fresh.values())
 
 
-def _with_overrides(out: Path, grades: list[SubmissionGrade], new: Path | None):
-    """Apply the overrides saved in ``out`` and those in ``new`` (which win), and save them all."""
-    saved = out / "overrides.csv"
-    overrides, issues = read_overrides(saved) if saved.exists() else ({}, [])
-    if new is not None:
-        more, more_issues = read_overrides(new)
-        overrides |= more
-        issues += more_issues
-    if not overrides:
-        return grades, issues
-    grades, unmatched = apply_overrides(grades, overrides)
-    rows = [(student, key, points, comment) for (student, key), (points, comment) in overrides.items()]
-    write_atomic(saved, pandas.DataFrame(rows, columns=list(c.OVERRIDE)).to_csv(index=False, lineterminator="\n"))
-    return grades, issues + unmatched
+def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal, overrides) -> None:
+    """Every output, all or none; results and reports of students not in ``grades`` are removed."""
+    names = [file_name(grade.student.id) for grade in grades]
+    ours = {out / folder / f"{name}{suffix}" for name in names for folder, suffix in _PER_STUDENT}
+    stale = [path for folder, suffix in _PER_STUDENT for path in (out / folder).glob(f"*{suffix}") if path not in ours]
+
+    def outputs() -> Iterator[tuple[Path, str]]:  # made one by one: a class's reports need not fit in memory
+        for name, grade in zip(names, grades, strict=True):
+            html, markdown = render_student_report(grade, assignment=assignment, bank=bank, reveal=reveal)
+            yield out / "results" / f"{name}.json", result_json(grade)
+            yield out / "reports" / f"{name}.html", html
+            yield out / "reports" / f"{name}.md", markdown
+        yield out / "gradebook.csv", gradebook_csv(grades, keys)
+        yield out / "scores_long.csv", scores_long_csv(grades)
+        yield out / "review.csv", review_csv(grades)
+        yield out / "summary.html", render_summary(list(grades), assignment=assignment, bank=bank)
+        yield out / "input-issues.txt", "".join(f"{issue}\n" for issue in issues)
+        if overrides:
+            yield out / "overrides.csv", overrides_csv(overrides)
+
+    write_all_atomic(outputs(), remove=stale)
 
 
-def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal) -> None:
-    for grade in grades:
-        name = file_name(grade.student.id)
-        write_atomic(out / "results" / f"{name}.json", result_json(grade))
-        html, markdown = render_student_report(grade, assignment=assignment, bank=bank, reveal=reveal)
-        write_atomic(out / "reports" / f"{name}.html", html)
-        write_atomic(out / "reports" / f"{name}.md", markdown)
-    write_atomic(out / "gradebook.csv", gradebook_csv(grades, keys))
-    write_atomic(out / "scores_long.csv", scores_long_csv(grades))
-    write_atomic(out / "review.csv", review_csv(grades))
-    write_atomic(out / "summary.html", render_summary(list(grades), assignment=assignment, bank=bank))
-    write_atomic(out / "input-issues.txt", "".join(f"{issue}\n" for issue in issues))
+_PER_STUDENT = (("results", ".json"), ("reports", ".html"), ("reports", ".md"))
 
 
-def export_grades(out: Path, to: str, *, assignment: Assignment, max_score: float) -> list[Path]:
-    """Write an LMS import of the grades in ``out``; returns the files written.
+@dataclass(frozen=True)
+class ExportSummary:
+    """What an export wrote, and the students it left out because they could not be graded."""
+
+    written: tuple[Path, ...]
+    not_graded: tuple[Student, ...] = ()
+
+
+def export_grades(out: Path, to: str, *, assignment: Assignment, max_score: float) -> ExportSummary:
+    """Write an LMS import of the grades in ``out``, all or none.
+
+    A student who could not be graded is left out (no row, no results.json): the LMS keeps their
+    grade as it is, and ``not_graded`` names them for the instructor.
 
     Raises:
         GraderError: ``out`` holds no graded results.
@@ -168,13 +213,23 @@ def export_grades(out: Path, to: str, *, assignment: Assignment, max_score: floa
     if not paths:
         raise GraderError(f"{out} holds no results: grade first (grader grade … --out {out})")
     grades = [grade_from_json(path.read_text(encoding="utf-8")) for path in paths]
-    exports = out / "exports"
+    not_graded = tuple(grade.student for grade in grades if grade.status == "error")
+    exports, stale = out / "exports", []
     if to == "canvas":
         text = canvas_csv(grades, assignment=assignment.title, assignment_id=assignment.id, max_score=max_score)
-        return [write_atomic(exports / "canvas.csv", text)]
-    if to == "moodle":
-        return [write_atomic(exports / "moodle.csv", moodle_csv(grades, assignment=assignment.title))]
-    return [
-        write_atomic(exports / "gradescope" / file_name(grade.student.id) / "results.json", result_json(grade))
-        for grade in grades
-    ]
+        files = {exports / "canvas.csv": text}
+    elif to == "moodle":
+        files = {exports / "moodle.csv": moodle_csv(grades, assignment=assignment.title)}
+    else:
+        folder = exports / "gradescope"
+        files = {
+            folder / file_name(grade.student.id) / "results.json": result_json(grade)
+            for grade in grades
+            if grade.status != "error"
+        }
+        stale = [path for path in folder.glob("*/results.json") if path not in files]
+    written = write_all_atomic(files, remove=stale)
+    for path in stale:  # a student no longer exported: their folder goes too
+        with contextlib.suppress(OSError):
+            path.parent.rmdir()
+    return ExportSummary(tuple(written), not_graded)

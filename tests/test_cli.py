@@ -154,3 +154,21 @@ def test_validate_exit_statuses(capsys):
     broken = "tests/broken_problems/unknown_kind.yaml"
     assert main(["validate", broken]) == 1
     assert "field 'kind' is 'lagrangean'" in capsys.readouterr().out
+
+
+TIME_LIMIT_COMMANDS = [
+    ["compare", "x", "x"],
+    ["check", "plane-pendulum.lagrangian", "x"],
+    ["serve", "--port", "0"],
+    ["grade", "class.csv", "--assignment", "review", "--out", "out"],
+]
+
+
+@pytest.mark.parametrize("command", TIME_LIMIT_COMMANDS, ids=[command[0] for command in TIME_LIMIT_COMMANDS])
+@pytest.mark.parametrize("timeout", ["-1", "0", "nan", "inf", "soon"])
+def test_a_time_limit_must_be_a_positive_number_of_seconds(capsys, command, timeout):
+    # 0 or less would make every check fail (a timer that cannot be set), not stop at once
+    with pytest.raises(SystemExit) as exit_info:
+        main([*command, "--timeout", timeout])
+    assert exit_info.value.code == 2
+    assert f"--timeout: expected a positive number of seconds, not '{timeout}'" in capsys.readouterr().err

@@ -12,6 +12,7 @@ import pytest
 from course import BANK, REVIEW
 
 from grader.bank import load_assignment
+from grader.errors import GraderError
 from grader.export import (
     apply_overrides,
     canvas_csv,
@@ -57,9 +58,9 @@ def test_a_wide_csv_is_read_and_its_problems_reported_by_row(tmp_path):
     assert submissions[0].answers == {"plane-pendulum.lagrangian": PENDULUM_L}
     assert [str(issue) for issue in issues] == [
         f"{path}, row 1, column 5: unknown column 'plane-pendulum.nonsense': not a part of this assignment",
-        f"{path}, row 5: the row has no student id; row skipped",
-        f"{path}, row 6: the row has 6 cells but the header 5; row skipped",
-        f"{path}, row 4: student 's1' also appears at {path}, row 2; the first one is graded",
+        f"{path}, row 5 (line 5): the row has no student id; row skipped",
+        f"{path}, row 6 (line 6), student 's3': the row has 6 cells but the header 5; row skipped",
+        f"{path}, row 4 (line 4): student 's1' also appears at {path}, row 2 (line 2); the first one is graded",
     ]
 
 
@@ -116,6 +117,151 @@ def test_nul_characters_are_left_out_and_a_utf16_file_is_read(tmp_path):
     assert (submissions[0].student.name, issues) == ("Núñez", [])
 
 
+PENDULUM_HEADER = "id,name,email,plane-pendulum.lagrangian,plane-pendulum.motion\n"
+PENDULUM_KEYS = ["plane-pendulum.lagrangian", "plane-pendulum.motion"]
+
+
+def test_a_row_with_too_few_cells_is_reported_and_skipped(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_text(f"{PENDULUM_HEADER}s1,Ann,a@x.org,{PENDULUM_L},\ns2,Bob,b@x.org,{PENDULUM_L}\n", encoding="utf-8")
+    submissions, issues = read_submissions(path, PENDULUM_KEYS)
+    assert [s.student.id for s in submissions] == ["s1"]
+    assert [str(issue) for issue in issues] == [
+        f"{path}, row 3 (line 3), student 's2': the row has 4 cells but the header 5; row skipped"
+    ]
+
+
+def test_a_quote_left_open_is_reported_with_the_lines_it_swallowed(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_text(
+        f"{PENDULUM_HEADER}s1,Ann,a@x.org,{PENDULUM_L},\n"
+        's9,"Broken, Name,x@y,1\n'  # its quote closes in the next student's row
+        's2,Bob,b@x.org,"x, y",z\n'
+        's5,Ed,e@x.org,"θ̈ = 0\nφ̈ = 0",x,stray\n'  # a line break in an answer, as it should be, and a stray cell
+        f's3,Cy,c@x.org,{PENDULUM_L},"θ̈ = -(g/l) sin θ\n'  # a quote that never closes: the right number of cells
+        f"s4,Di,d@x.org,{PENDULUM_L},\n",
+        encoding="utf-8",
+    )
+    submissions, issues = read_submissions(path, PENDULUM_KEYS)
+    assert [s.student.id for s in submissions] == ["s1"]
+    assert [str(issue) for issue in issues] == [
+        f"{path}, row 3 (lines 3–4), student 's9': the row has 4 cells but the header 5: the quote that opens cell 2"
+        " on line 3 closes only on line 4, and line 4, read into that cell, begins a row of its own"
+        " ('s2,Bob,b@x.org,\"x, y\",z'): most likely a quote was left open on line 3; row skipped",
+        f"{path}, row 4 (lines 5–6), student 's5': the row has 6 cells but the header 5; row skipped",
+        f"{path}, row 5 (lines 7–8), student 's3': the quote that opens cell 5 on line 7 never closes, so the rest of"
+        " the file was read into it (line 8 starts 's4,Di,d@x.org,1/2 m l^2 thetadot^2 + m g…'); row skipped",
+    ]
+
+
+def test_a_carriage_return_alone_in_a_cell_does_not_split_its_row(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_bytes(f"{PENDULUM_HEADER}s1,\r=1+2,a@x.org,{PENDULUM_L},x\r\ns2,Bob,b@x.org,,\r\n".encode())
+    submissions, issues = read_submissions(path, PENDULUM_KEYS)
+    assert [(s.student.id, s.student.name, s.answers["plane-pendulum.motion"]) for s in submissions] == [
+        ("s1", "=1+2", "x"),
+        ("s2", "Bob", ""),
+    ]
+    assert issues == []
+
+
+def test_bytes_not_utf8_in_a_utf8_file_are_named_and_their_answer_marked(tmp_path):
+    path = tmp_path / "class.csv"
+    motion = "θ̈ = -(g/l) sin θ"
+    path.write_bytes(
+        f'{PENDULUM_HEADER}s1,"Núñez, María",m@x.org,{PENDULUM_L},{motion}\n'.encode()
+        + b"s2,Bob,b@x.org,\xbd m l^2 thetadot^2,"
+        + motion.encode()
+        + b"\n"
+    )
+    submissions, issues = read_submissions(path, PENDULUM_KEYS)
+    assert [(s.student.name, s.answers["plane-pendulum.motion"]) for s in submissions] == [
+        ("Núñez, María", motion),
+        ("Bob", motion),
+    ]
+    assert submissions[1].answers["plane-pendulum.lagrangian"] == "� m l^2 thetadot^2"
+    assert [sorted(s.garbled) for s in submissions] == [[], ["plane-pendulum.lagrangian"]]
+    assert [str(issue) for issue in issues] == [
+        f"{path}: a byte not UTF-8 in a file that otherwise is (line 3): read as �, and an answer that holds one goes"
+        " to a person",
+        f"{path}, row 3 (line 3), student 's2', part plane-pendulum.lagrangian: the answer holds a byte that is not"
+        " UTF-8 (0xBD), read as �; it goes to a person to check",
+    ]
+
+
+def test_bytes_not_utf8_in_an_answer_file_are_named_and_their_answer_marked(tmp_path):
+    path = tmp_path / "s1.yaml"
+    path.write_bytes("id: s1\nname: Núñez\nanswers:\n  plane-pendulum.lagrangian: '".encode() + b"\xbd m l^2'\n")
+    submissions, issues = read_submissions(tmp_path, PENDULUM_KEYS)
+    assert (submissions[0].student.name, submissions[0].garbled) == ("Núñez", {"plane-pendulum.lagrangian"})
+    assert [str(issue) for issue in issues] == [
+        f"{path}: a byte not UTF-8 in a file that otherwise is (line 4): read as �, and an answer that holds one goes"
+        " to a person",
+        f"{path}, part plane-pendulum.lagrangian: the answer holds bytes that are not UTF-8, read as �; it goes to a"
+        " person to check",
+    ]
+
+
+def test_part_columns_match_in_any_case_and_those_missing_are_named(tmp_path):
+    path = tmp_path / "class.csv"
+    path.write_text(f"ID,Name, Plane-Pendulum.Lagrangian \ns1,Ann,{PENDULUM_L}\n", encoding="utf-8")
+    submissions, issues = read_submissions(path, PENDULUM_KEYS)
+    assert submissions[0].answers == {"plane-pendulum.lagrangian": PENDULUM_L}
+    assert [str(issue) for issue in issues] == [
+        f"{path}, row 1: no column for 1 part of this assignment, so everyone's answer is blank: plane-pendulum.motion"
+    ]
+
+
+@pytest.mark.parametrize("separator", [";", "\t"])
+def test_a_file_separated_by_semicolons_or_tabs_is_read(tmp_path, separator):
+    path = tmp_path / "class.csv"
+    rows = [["id", "name", "email", *PENDULUM_KEYS], ["s1", "Núñez, María", "m@x.org", PENDULUM_L, "2,5 θ"]]
+    with path.open("w", newline="", encoding="utf-8") as file:
+        csv.writer(file, delimiter=separator).writerows(rows)
+    submissions, issues = read_submissions(path, PENDULUM_KEYS)
+    assert (submissions[0].student.name, submissions[0].answers["plane-pendulum.motion"], issues) == (
+        "Núñez, María",
+        "2,5 θ",
+        [],
+    )
+
+
+UNUSABLE_FILES = [
+    ("", "{path} is empty: no header and no students"),
+    ("\n\n", "{path} is empty: no header and no students"),
+    (PENDULUM_HEADER, "{path} has a header but no rows of answers: there is no student to grade"),
+    (PENDULUM_HEADER + ",,,,\n", "{path} has a header but no rows of answers: there is no student to grade"),
+    (
+        "a,b,c\n1,2,3\n",
+        "{path}, row 1: the header has no 'id' column: a CSV is expected, separated by commas, with the header id,"
+        " name, email, then a column per problem.part; its first line begins 'a,b,c'",
+    ),
+    (
+        "id|name|plane-pendulum.lagrangian\ns1|Ann|x\n",
+        "{path}, row 1: the header has no 'id' column: a CSV is expected, separated by commas, with the header id,"
+        " name, email, then a column per problem.part; its first line begins 'id|name|plane-pendulum.lagrangian'",
+    ),
+    (
+        "id,name,atwood-machine.lagrangian\ns1,Ann,x\n",
+        "{path}, row 1: no column of the header is a part of this assignment (a column per problem.part, such as"
+        " 'plane-pendulum.lagrangian'): is it the file for another assignment?",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    UNUSABLE_FILES,
+    ids=["empty", "blank", "header-only", "header-and-blank-row", "no-id", "another-separator", "another-assignment"],
+)
+def test_a_file_that_is_no_class_is_refused_with_what_it_is(tmp_path, text, message):
+    path = tmp_path / "class.csv"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(GraderError) as raised:
+        read_submissions(path, PENDULUM_KEYS)
+    assert str(raised.value) == message.format(path=path)
+
+
 BILLION_LAUGHS = "\n".join(
     ["id: s4", "a0: &a0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]"]
     + [f"a{i}: &a{i} [{', '.join([f'*a{i - 1}'] * 9)}]" for i in range(1, 9)]
@@ -151,6 +297,19 @@ def test_grading_one_submission_gives_every_part_of_the_assignment(tmp_path):
     assert by_key["plane-pendulum.lagrangian"].auto_score == 4
     assert by_key["plane-pendulum.motion"].status == "blank"
     assert grade.score == 4 and grade.max_score == BANK["plane-pendulum"].points
+
+
+def test_an_answer_that_lost_bytes_on_reading_goes_to_a_person_with_its_score_proposed(tmp_path):
+    assignment = _pendulum_only(tmp_path)
+    answers = {"plane-pendulum.lagrangian": PENDULUM_L, "plane-pendulum.motion": "θ̈ = -(g/l) sin θ �"}
+    submission = Submission(Student("s1"), answers, garbled=frozenset({"plane-pendulum.lagrangian"}))
+    by_key = {part.key: part for part in grade_submission(submission, assignment, BANK).parts}
+    lagrangian = by_key["plane-pendulum.lagrangian"]
+    assert (lagrangian.status, lagrangian.auto_score, lagrangian.needs_review) == ("undecided", 4, True)
+    assert lagrangian.feedback[-1] == (
+        "Part of this answer could not be read from the file it came in (shown as �): a person will check it."
+    )
+    assert batch.GARBLED not in by_key["plane-pendulum.motion"].feedback  # a � the student typed is theirs
 
 
 def test_equations_right_for_the_students_own_wrong_lagrangian_earn_method_credit(tmp_path):
@@ -268,7 +427,7 @@ def test_no_csv_cell_starts_a_spreadsheet_formula(tmp_path):
     # a person copies the student's id from review.csv into the overrides: it still matches
     overrides = tmp_path / "overrides.csv"
     overrides.write_text("student,part,points,comment\n'-s1,p.a,2,fine\n")
-    assert read_overrides(overrides) == ({("-s1", "p.a"): (2.0, "fine")}, [])
+    assert read_overrides(overrides, max_points={"p.a": 2.0}) == {("-s1", "p.a"): (2.0, "fine")}
 
 
 def test_overrides_keep_the_automatic_score_beside_the_persons():

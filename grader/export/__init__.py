@@ -1,25 +1,24 @@
 """Writing grades out: gradebooks, per-student results, review queues, LMS imports; atomically.
 
 Contents:
-    write_atomic                       a temporary file, then a rename: no half-written file
+    write_atomic, write_all_atomic     a temporary file, then a rename: no half-written file, no half-written set
     result_json, grade_from_json       results/<student>.json (Gradescope's shape) and back
     gradebook_csv, scores_long_csv, review_csv
-    read_overrides, apply_overrides    a person's scores over the grader's
+    read_overrides, apply_overrides, overrides_csv   a person's scores over the grader's
     canvas_csv, moodle_csv             LMS gradebook imports
 """
 
-from grader.export.atomic import write_atomic
+from grader.export.atomic import write_all_atomic, write_atomic
 from grader.export.gradebook import (
-    apply_overrides,
     canvas_csv,
     grade_from_json,
     gradebook_csv,
     moodle_csv,
-    read_overrides,
     result_json,
     review_csv,
     scores_long_csv,
 )
+from grader.export.overrides import apply_overrides, overrides_csv, read_overrides
 
 __all__ = [
     "apply_overrides",
@@ -27,9 +26,11 @@ __all__ = [
     "grade_from_json",
     "gradebook_csv",
     "moodle_csv",
+    "overrides_csv",
     "read_overrides",
     "result_json",
     "review_csv",
     "scores_long_csv",
+    "write_all_atomic",
     "write_atomic",
 ]

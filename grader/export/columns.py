@@ -24,10 +24,23 @@ LONG = (
     "read_as",
 )
 
-# review.csv: what needs a person
-REVIEW = ("student", "name", "part", "status", "proposed_points", "max_points", "answer", "read_as", "feedback")
+# review.csv: what needs a person; points and comment are left empty for the person to fill in,
+# and the file is then an overrides file (its student, part, points and comment are OVERRIDE's)
+REVIEW = (
+    "student",
+    "name",
+    "part",
+    "status",
+    "proposed_points",
+    "max_points",
+    "points",
+    "comment",
+    "answer",
+    "read_as",
+    "feedback",
+)
 
-# overrides.csv, as instructors write it
+# overrides.csv, as instructors write it: student, part and points are needed, comment is not
 OVERRIDE = ("student", "part", "points", "comment")
 
 # Canvas gradebook import

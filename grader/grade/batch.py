@@ -19,6 +19,7 @@ import multiprocessing
 import os
 import resource
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 
 from grader.bank import Assignment, Part, Problem
 from grader.errors import AuthorError
@@ -32,6 +33,7 @@ from grader.parse import parse_answer
 
 __all__ = ["assignment_parts", "grade_class", "grade_submission", "limit_memory"]
 
+GARBLED = "Part of this answer could not be read from the file it came in (shown as �): a person will check it."
 TASKS_PER_WORKER = 200  # then the worker is replaced, and its memory returned
 WORKER_MEMORY = 1_500_000_000  # bytes of address space; past it sympy raises MemoryError
 
@@ -61,6 +63,8 @@ def grade_submission(
     ``graded``, a dict kept for one grading run, holds every answer's grade as it is made: an
     answer another student already gave, character for character, takes that grade instead of
     being graded again. Verdicts are deterministic, so it is the grade it would get anyway.
+    A part in ``submission.garbled`` lost bytes when its file was read: right or wrong, it is
+    ``undecided``, its score proposed for a person to confirm.
     """
     grades = []
     for problem, part, points in assignment_parts(assignment, bank):
@@ -73,8 +77,16 @@ def grade_submission(
             grade = _grade_part(problem, part, points, answer, submission.answers, timeout)
             if graded is not None:
                 graded[key] = grade
+        if f"{problem.id}.{part.id}" in submission.garbled:
+            grade = _for_a_person(grade)
         grades.append(grade)
     return SubmissionGrade(submission.student, tuple(grades))
+
+
+def _for_a_person(grade: PartGrade) -> PartGrade:
+    """A grade for an answer that lost bytes on the way: what was read is graded, and a person confirms it."""
+    status = "undecided" if grade.status in ("equivalent", "not_equivalent") else grade.status
+    return replace(grade, status=status, feedback=(*grade.feedback, GARBLED))
 
 
 def _grade_part(problem: Problem, part: Part, points: float, answer: str, answers: dict, timeout: float) -> PartGrade:
