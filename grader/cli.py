@@ -244,6 +244,10 @@ def _run_export(args: argparse.Namespace) -> int:
         who = f"{student.id} ({student.name})" if student.name else student.id
         print(f"grader export: {who} could not be graded and is left out, so the LMS keeps their grade as it is;"
               f" grade them again with grader grade … --only {student.id}", file=sys.stderr)  # fmt: skip
+    if summary.waiting:
+        waiting = f"grader export: {summary.waiting} answer(s) still wait for a person (review.csv):"
+        print(f"{waiting} these grades hold their proposed points; fill in review.csv's points and grade again"
+              " with --overrides", file=sys.stderr)  # fmt: skip
     return EXIT_SOME_FAILED if summary.not_graded else EXIT_OK
 
 

@@ -198,13 +198,15 @@ class ExportSummary:
 
     written: tuple[Path, ...]
     not_graded: tuple[Student, ...] = ()
+    waiting: int = 0  # answers waiting for a person, whose proposed points the grades include
 
 
 def export_grades(out: Path, to: str, *, assignment: Assignment, max_score: float) -> ExportSummary:
     """Write an LMS import of the grades in ``out``, all or none.
 
     A student who could not be graded is left out (no row, no results.json): the LMS keeps their
-    grade as it is, and ``not_graded`` names them for the instructor.
+    grade as it is, and ``not_graded`` names them for the instructor. ``waiting`` counts the answers
+    still waiting for a person: the grades hold their proposed points, not yet a person's.
 
     Raises:
         GraderError: ``out`` holds no graded results.
@@ -232,4 +234,5 @@ def export_grades(out: Path, to: str, *, assignment: Assignment, max_score: floa
     for path in stale:  # a student no longer exported: their folder goes too
         with contextlib.suppress(OSError):
             path.parent.rmdir()
-    return ExportSummary(tuple(written), not_graded)
+    waiting = sum(part.needs_review for grade in grades for part in grade.parts)
+    return ExportSummary(tuple(written), not_graded, waiting)

@@ -199,7 +199,7 @@ def test_an_export_leaves_out_who_could_not_be_graded_and_says_so(tmp_path, assi
     capsys.readouterr()
     for target in EXPORTS:
         assert _export(out, target, assignment) == 4
-        assert capsys.readouterr().err == (
+        assert capsys.readouterr().err.startswith(
             "grader export: s2 (Bob, Jr.) could not be graded and is left out, so the LMS keeps their grade as it is;"
             " grade them again with grader grade … --only s2\n"
         )
@@ -208,6 +208,19 @@ def test_an_export_leaves_out_who_could_not_be_graded_and_says_so(tmp_path, assi
     assert [row["Email address"] for row in moodle] == ["ann@x.org"]
     assert "Errno" not in (out / "exports" / "moodle.csv").read_text(encoding="utf-8")
     assert sorted(path.name for path in (out / "exports" / "gradescope").iterdir()) == ["s1"]
+
+
+def test_an_export_says_how_many_answers_still_wait_for_a_person(tmp_path, assignment, capsys):
+    out = tmp_path / "out"
+    assert _grade(tmp_path, _class(tmp_path, CLASS), assignment) == 0
+    waiting = len(_rows(out / "review.csv"))
+    assert waiting  # the text answers, each with the rubric's proposal
+    capsys.readouterr()
+    assert _export(out, "canvas", assignment) == 0
+    assert capsys.readouterr().err == (
+        f"grader export: {waiting} answer(s) still wait for a person (review.csv): these grades hold their proposed"
+        " points; fill in review.csv's points and grade again with --overrides\n"
+    )
 
 
 def test_a_regrade_of_fewer_students_exports_only_them(tmp_path, assignment):
