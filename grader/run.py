@@ -181,7 +181,7 @@ def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal, ov
         yield out / "gradebook.csv", gradebook_csv(grades, keys)
         yield out / "scores_long.csv", scores_long_csv(grades)
         yield out / "review.csv", review_csv(grades)
-        yield out / "summary.html", render_summary(list(grades), assignment=assignment, bank=bank)
+        yield out / "summary.html", render_summary(list(grades), assignment=assignment, bank=bank, input_issues=issues)
         yield out / "input-issues.txt", "".join(f"{issue}\n" for issue in issues)
         if overrides:
             yield out / "overrides.csv", overrides_csv(overrides)

@@ -407,6 +407,14 @@ def test_review_queue_lists_what_waits_for_a_person():
     assert "Write the Lagrangian L(θ₁, θ₂, θ̇₁, θ̇₂)." in page.text
 
 
+def test_summary_lists_the_problems_in_the_submissions_no_grade_shows():
+    issues = ["class.csv, row 52 (lines 69–70), student 's1049': the row has 99 cells but the header 98; row skipped"]
+    text = re.sub(r"\s+", " ", _page(render_summary(_class(), assignment=REVIEW, bank=BANK, input_issues=issues)).text)
+    assert "1 problem in the submissions" in text
+    assert "Problems in the submissions" in text and issues[0] in text
+    assert "Problems in the submissions" not in _page(render_summary(_class(), assignment=REVIEW, bank=BANK)).text
+
+
 def test_summary_of_a_class_that_could_not_be_graded():
     page = _page(render_summary([ERROR], assignment=REVIEW, bank=BANK))
     text = re.sub(r"\s+", " ", page.text)

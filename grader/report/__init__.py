@@ -2,7 +2,7 @@
 
 Contents:
     render_student_report(grade, assignment=, bank=, reveal=)   (HTML, Markdown) of one student's grades
-    render_summary(grades, assignment=, bank=)                  the class summary, HTML
+    render_summary(grades, assignment=, bank=, input_issues=)   the class summary, HTML
     item_analysis(grades), ItemStats                            each part's mean, full credit, discrimination
     class_counts, score_histogram, common_wrong_answers, review_queue   the summary's other numbers
 

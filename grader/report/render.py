@@ -2,7 +2,7 @@
 
 Contents:
     render_student_report(grade, assignment=, bank=, reveal=)   (HTML, Markdown) for one student
-    render_summary(grades, assignment=, bank=)                  HTML for the instructor
+    render_summary(grades, assignment=, bank=, input_issues=)   HTML for the instructor
     TEMPLATES                                                   where the Jinja templates live
     STATUS_LABELS                                               how each part status is shown
 
@@ -223,11 +223,18 @@ def render_student_report(
 # -- the class summary ----------------------------------------------------------------
 
 
-def render_summary(grades: Sequence[SubmissionGrade], *, assignment: Assignment, bank: dict[str, Problem]) -> str:
+def render_summary(
+    grades: Sequence[SubmissionGrade],
+    *,
+    assignment: Assignment,
+    bank: dict[str, Problem],
+    input_issues: Sequence[str] = (),
+) -> str:
     """The instructor's summary of a class, as a self-contained HTML page.
 
     Counts, a histogram of percent scores, each part's mean, an item analysis, the most
-    common wrong answers per part and the queue of answers waiting for a person.
+    common wrong answers per part, the queue of answers waiting for a person, and what was wrong
+    in the submissions (``input_issues``: rows skipped, columns unknown), which no grade shows.
     """
     items = item_analysis(grades)
     by_problem: dict[str, list[ItemStats]] = {}
@@ -258,6 +265,7 @@ def render_summary(grades: Sequence[SubmissionGrade], *, assignment: Assignment,
         "prompt_lines": prompt_lines,
         "review": review_queue(grades),
         "errors": [grade for grade in grades if grade.status == "error"],
+        "input_issues": list(input_issues),
         "labels": STATUS_LABELS,
     }
     return _environments()[0].get_template("summary.html.j2").render(context)
