@@ -286,7 +286,8 @@ def _run_check(args: argparse.Namespace) -> int:
 def _read_answers(path: Path) -> dict[str, str] | None:
     """problem.part → answer from a student's YAML file, or None after saying what is wrong."""
     try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+        # every answer as typed: YAML's own reading makes 015 the octal 13, yes True and an empty one null
+        data = yaml.load(path.read_text(encoding="utf-8"), Loader=yaml.BaseLoader)  # strings, lists and maps only
     except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
         print(f"grader check: cannot read {path}: {error}", file=sys.stderr)
         return None

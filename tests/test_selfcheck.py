@@ -126,12 +126,22 @@ def test_a_multiple_choice_may_be_a_yaml_list(capsys, tmp_path):
     assert main(["check", "--answers", path]) == 0
 
 
+def test_answers_are_read_as_typed_not_as_yaml_reads_them(capsys, tmp_path):
+    # YAML would read 015 as the octal 13, yes as True and an empty answer as null
+    path = _answers(tmp_path, "degrees-of-freedom.free-particles: 015\nrotating-hoop.constraint: yes\n"
+                              "plane-pendulum.lagrangian:\n")  # fmt: skip
+    assert main(["check", "--answers", path]) == 2  # the empty one is unreadable; the others are checked
+    out = capsys.readouterr().out
+    assert "✔ degrees-of-freedom.free-particles: right" in out
+    assert "`yes` is not one of the options" in out
+    assert "invalid plane-pendulum.lagrangian: could not be read" in out
+
+
 BAD_FILES = [
     # (YAML text, what stderr says after the path)
     ("a: [b\n", "cannot read"),
     ("- just\n- a list\n", "must map problem.part to an answer"),
     ("plane-pendulum.lagrangian: {a: 1}\n", "the answer to plane-pendulum.lagrangian must be text"),
-    ("plane-pendulum.lagrangian:\n", "the answer to plane-pendulum.lagrangian must be text"),
     ("plane-pendulum.nope: x\n", "problem 'plane-pendulum' has no part 'nope'"),
 ]
 
