@@ -108,7 +108,9 @@ def read_number(
     return prepared, None, notes
 
 
-def _given(text: str, reads, names, decimal_comma: bool, seconds: bool) -> tuple[str, ParsedAnswer, tuple] | None:
+def _given(
+    text: str, reads, names, decimal_comma: bool, seconds: bool
+) -> tuple[str, ParsedAnswer | None, tuple] | None:
     """``2.006 s, since l = 1 m``, ``n = 3N − k, where N = 1, k = 2``: a number or a formula, then the
     values it was worked out with. The number is graded, and the note says the rest was not; a
     formula is graded with the values put in its names. None where the text is no such answer; where
