@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import csv
 import io
+import os
+import stat
 
 import pytest
 
@@ -167,3 +169,12 @@ def test_a_set_of_files_is_written_all_or_none(tmp_path):
     assert sorted(p.name for p in tmp_path.rglob("*") if p.is_file()) == ["a.csv", "b.csv"]  # no temporaries
     write_all_atomic({tmp_path / "a.csv": "new a"}, remove=[tmp_path / "sub" / "b.csv"])
     assert sorted(p.name for p in tmp_path.rglob("*") if p.is_file()) == ["a.csv"]
+
+
+def test_files_are_written_with_the_permissions_the_umask_gives(tmp_path):
+    previous = os.umask(0o027)
+    try:
+        path = write_atomic(tmp_path / "gradebook.csv", "student\n")
+    finally:
+        os.umask(previous)
+    assert stat.S_IMODE(path.stat().st_mode) == 0o640  # not mkstemp's 0600: a TA in the group reads it
