@@ -436,6 +436,11 @@ def test_overrides_keep_the_automatic_score_beside_the_persons():
     assert (part.auto_score, part.manual_score, part.final_score, part.comment) == (1.0, 3.0, 3.0, "good argument")
     assert grades[0].score == 5.0
     assert unmatched == ["override for s9, p.a matches no graded part"]
+    long = list(csv.DictReader(io.StringIO(scores_long_csv(grades))))
+    assert [(row["part"], row["manual_score"], row["comment"]) for row in long if row["student"] == "s1"] == [
+        ("p.a", "", ""),
+        ("p.b", "3.0", "good argument"),  # the person's comment beside their score
+    ]
 
 
 def test_results_json_has_gradescopes_shape_and_reads_back():

@@ -22,6 +22,7 @@ LONG = (
     "verdict",
     "feedback_key",
     "read_as",
+    "comment",  # a person's, with their score
 )
 
 # review.csv: what needs a person; points and comment are left empty for the person to fill in,

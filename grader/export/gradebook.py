@@ -109,6 +109,7 @@ def scores_long_csv(grades: Sequence[SubmissionGrade]) -> str:
             part.status,
             part.diagnosis or "",
             part.read_as,
+            part.comment,
         )
         for grade in grades
         for part in grade.parts
