@@ -452,6 +452,15 @@ def test_results_json_has_gradescopes_shape_and_reads_back():
     assert grade_from_json(text) == _grades()[0]
 
 
+def test_results_json_tells_the_student_a_persons_score_and_comment():
+    grades, _ = apply_overrides(_grades(), {("s1", "p.b"): (3.0, "good argument")})
+    tests = json.loads(result_json(grades[0]))["tests"]
+    # the part was waiting for a person: what said so is said no more
+    assert tests[1]["output"] == "Scored by a person: 3 / 3. good argument"
+    assert tests[1]["score"] == 3.0
+    assert tests[0]["output"] == json.loads(result_json(_grades()[0]))["tests"][0]["output"]  # not overridden
+
+
 def test_canvas_import_has_its_identity_columns_and_a_points_possible_row():
     rows = list(
         csv.reader(io.StringIO(canvas_csv(_grades(), assignment="Review", assignment_id="review", max_score=5)))

@@ -50,7 +50,7 @@ def result_json(grade: SubmissionGrade) -> str:
             "score": round(part.final_score, 4),
             "max_score": part.max_score,
             "status": "passed" if part.final_score >= part.max_score else "failed",
-            "output": " ".join(part.feedback),
+            "output": _output(part),
         }
         for part in grade.parts
     ]
@@ -66,6 +66,18 @@ def result_json(grade: SubmissionGrade) -> str:
         },
     }
     return json.dumps(record, ensure_ascii=False, indent=2)
+
+
+def _output(part: PartGrade) -> str:
+    """What Gradescope shows a student for a part: the feedback, and a person's score and comment
+    first where one was given (then "a person will read this answer" is no longer said)."""
+    if part.manual_score is None:
+        return " ".join(part.feedback)
+    person = f"Scored by a person: {part.manual_score:g} / {part.max_score:g}."
+    if part.comment:
+        person += f" {part.comment}"
+    waited = part.status in ("undecided", "invalid")  # its feedback said it was waiting for a person
+    return " ".join((person, *(() if waited else part.feedback)))
 
 
 def grade_from_json(text: str) -> SubmissionGrade:
