@@ -8,6 +8,7 @@ import os
 import stat
 
 import pytest
+from small_class import MAX_POINTS, small_class
 
 from grader.errors import GraderError
 from grader.export import (
@@ -22,20 +23,6 @@ from grader.export import (
     write_atomic,
 )
 from grader.grade.results import PartGrade, Student, SubmissionGrade
-
-MAX_POINTS = {"p.a": 2.0, "p.b": 3.0}
-
-
-def _grades():
-    parts = (
-        PartGrade("p", "a", 2.0, "x", "equivalent", 2.0),
-        PartGrade("p", "b", 3.0, "y", "undecided", 1.0, ("A person will read this answer.",)),
-    )
-    return [
-        SubmissionGrade(Student("s1", "O'Brien, Pat", "pat@x.org"), parts),
-        SubmissionGrade(Student("s2", "Lee", "lee@x.org"), (), "error", "could not be graded: OSError: [Errno 22]"),
-    ]
-
 
 # -- CSV cells ---------------------------------------------------------------------------------
 
@@ -121,7 +108,7 @@ def test_a_missing_overrides_file_is_an_error_naming_it(tmp_path):
 
 
 def test_review_csv_filled_in_is_an_overrides_file_also_as_excel_saves_it(tmp_path):
-    review = list(csv.reader(io.StringIO(review_csv(_grades()))))
+    review = list(csv.reader(io.StringIO(review_csv(small_class()))))
     assert review[0][4:8] == ["proposed_points", "max_points", "points", "comment"]
     assert [row[6:8] for row in review[1:]] == [["", ""], ["", ""]]  # for a person to fill in
     review[1][6:8] = ["2,5", "Sound argument"]  # s1's p.b, scored with a decimal comma
@@ -143,8 +130,8 @@ def test_saved_overrides_read_back_as_they_were(tmp_path):
 
 def test_an_lms_import_has_no_row_and_no_error_text_for_a_student_who_could_not_be_graded():
     for text in (
-        canvas_csv(_grades(), assignment="Review", assignment_id="review", max_score=5),
-        moodle_csv(_grades(), assignment="Review"),
+        canvas_csv(small_class(), assignment="Review", assignment_id="review", max_score=5),
+        moodle_csv(small_class(), assignment="Review"),
     ):
         assert "Errno" not in text and "could not be graded" not in text
         rows = list(csv.reader(io.StringIO(text)))

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 from course import BANK, REVIEW
+from small_class import small_class
 
 from grader.bank import load_assignment
 from grader.errors import GraderError
@@ -391,19 +392,8 @@ def test_an_exception_while_grading_is_that_students_result(monkeypatch):
     assert (grade.status, grade.message) == ("error", "could not be graded: RuntimeError: boom")
 
 
-def _grades():
-    parts = (
-        PartGrade("p", "a", 2.0, "x", "equivalent", 2.0),
-        PartGrade("p", "b", 3.0, "y", "undecided", 1.0, ("A person will read this answer.",)),
-    )
-    return [
-        SubmissionGrade(Student("s1", "O'Brien, Pat", "pat@x.org"), parts),
-        SubmissionGrade(Student("s2", "Lee", "lee@x.org"), (), status="error", message="could not be graded"),
-    ]
-
-
 def test_the_gradebook_has_a_points_possible_row_first_and_quotes_names():
-    rows = list(csv.reader(io.StringIO(gradebook_csv(_grades(), [("p.a", 2.0), ("p.b", 3.0)]))))
+    rows = list(csv.reader(io.StringIO(gradebook_csv(small_class(), [("p.a", 2.0), ("p.b", 3.0)]))))
     assert rows[0] == ["id", "name", "email", "p.a", "p.b", "total", "max", "percent", "status"]
     assert rows[1] == ["Points Possible", "", "", "2.0", "3.0", "5.0", "5.0", "100.0", ""]
     assert rows[2] == ["s1", "O'Brien, Pat", "pat@x.org", "2.0", "1.0", "3.0", "5.0", "60.0", "graded"]
@@ -431,7 +421,8 @@ def test_no_csv_cell_starts_a_spreadsheet_formula(tmp_path):
 
 
 def test_overrides_keep_the_automatic_score_beside_the_persons():
-    grades, unmatched = apply_overrides(_grades(), {("s1", "p.b"): (3.0, "good argument"), ("s9", "p.a"): (1.0, "")})
+    overrides = {("s1", "p.b"): (3.0, "good argument"), ("s9", "p.a"): (1.0, "")}
+    grades, unmatched = apply_overrides(small_class(), overrides)
     part = grades[0].parts[1]
     assert (part.auto_score, part.manual_score, part.final_score, part.comment) == (1.0, 3.0, 3.0, "good argument")
     assert grades[0].score == 5.0
@@ -444,26 +435,26 @@ def test_overrides_keep_the_automatic_score_beside_the_persons():
 
 
 def test_results_json_has_gradescopes_shape_and_reads_back():
-    text = result_json(_grades()[0])
+    text = result_json(small_class()[0])
     record = json.loads(text)
     assert (record["score"], record["max_score"]) == (3.0, 5.0)
     assert record["tests"][1] == {"name": "p.b", "score": 1.0, "max_score": 3.0, "status": "failed",
                                   "output": "A person will read this answer."}  # fmt: skip
-    assert grade_from_json(text) == _grades()[0]
+    assert grade_from_json(text) == small_class()[0]
 
 
 def test_results_json_tells_the_student_a_persons_score_and_comment():
-    grades, _ = apply_overrides(_grades(), {("s1", "p.b"): (3.0, "good argument")})
+    grades, _ = apply_overrides(small_class(), {("s1", "p.b"): (3.0, "good argument")})
     tests = json.loads(result_json(grades[0]))["tests"]
     # the part was waiting for a person: what said so is said no more
     assert tests[1]["output"] == "Scored by a person: 3 / 3. good argument"
     assert tests[1]["score"] == 3.0
-    assert tests[0]["output"] == json.loads(result_json(_grades()[0]))["tests"][0]["output"]  # not overridden
+    assert tests[0]["output"] == json.loads(result_json(small_class()[0]))["tests"][0]["output"]  # not overridden
 
 
 def test_canvas_import_has_its_identity_columns_and_a_points_possible_row():
     rows = list(
-        csv.reader(io.StringIO(canvas_csv(_grades(), assignment="Review", assignment_id="review", max_score=5)))
+        csv.reader(io.StringIO(canvas_csv(small_class(), assignment="Review", assignment_id="review", max_score=5)))
     )
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "Review (review)"]
     assert rows[1] == ["    Points Possible", "", "", "", "", "5.00"]
@@ -471,7 +462,7 @@ def test_canvas_import_has_its_identity_columns_and_a_points_possible_row():
 
 
 def test_moodle_import_has_an_identity_a_grade_and_a_feedback_column():
-    rows = list(csv.reader(io.StringIO(moodle_csv(_grades(), assignment="Review"))))
+    rows = list(csv.reader(io.StringIO(moodle_csv(small_class(), assignment="Review"))))
     assert rows[0] == ["Email address", "Assignment: Review", "Feedback: Review"]
     assert rows[1] == ["pat@x.org", "3.0", "3.00 / 5.00"]
 
