@@ -87,7 +87,9 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     if constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
     deadline.check()
-    if _jumps(submitted) and not _jumps(expected.parsed.value):
+    if "jumps" not in expected.cache:  # the expected answer's, the same for every submission
+        expected.cache["jumps"] = _jumps(expected.parsed.value)
+    if _jumps(submitted) and not expected.cache["jumps"]:
         # m g l sgn θ: Lagrange's equations are the same wherever they are evaluated, yet the step
         # gives a kick where θ passes 0 that no sample state sees
         return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: a step in the Lagrangian")
