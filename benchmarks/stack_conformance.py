@@ -89,32 +89,23 @@ _TOLERANCE = (
     "the numeric check's documented tolerance (1e-13 of the terms' scale, check/numeric.py) lets a"
     " decimal correct to 14+ digits count as the number it approximates"
 )
-_REAL_DOMAIN = (
-    "we compare where the reference answer is real-valued: for a negative base, a power with a"
-    " real exponent is not real, so those points lie outside its domain and the identity holds on the rest"
-)
 _REAL = "every symbol is real here, and negative values break the identity: "
 _RATIO = (
     "the same roots, each as often: e^(st) never vanishes, so s²e^(st) = 0 and s² = 0 share their double root;"
     " STACK wants the two sides' differences in a constant ratio"
 )
-_FACTOR = "multiplying both sides by a symbol keeps an equation (m·a = F ≡ a = F/m); STACK objects that a could be 0"
 CONVENTIONS = {
     "stack-AlgEquiv-006": _SUBSCRIPT,
     "stack-AlgEquiv-096": _SUBSCRIPT,
     "stack-AlgEquiv-032": _EXACT,
     "stack-AlgEquiv-043": _EXACT + " (100.4 − 80.0 is exactly 20.4)",
     "stack-AlgEquiv-037": _EXACT + " (0.99999999 is exactly 99999999/10⁸, not 99999998/99999999)",
-    "stack-AlgEquiv-088": _REAL_DOMAIN,
-    "stack-AlgEquiv-208": _REAL_DOMAIN,
-    "stack-AlgEquiv-210": _REAL_DOMAIN,
     "stack-AlgEquiv-246": _RATIO,
     "stack-AlgEquiv-034": _TOLERANCE,
     "stack-AlgEquiv-040": _TOLERANCE,
     "stack-AlgEquiv-083": _TOLERANCE,
     "stack-AlgEquiv-092": _REAL + "((x−2)³)^k ≠ (x−2)^(3k) when x < 2 and k is not an integer",
     "stack-AlgEquiv-155": _REAL + "log(a²b) = 2 log a + log b needs a, b > 0 (our positive default agrees)",
-    "stack-AlgEquiv-254": _FACTOR,
     "stack-AlgEquiv-272": (
         "√ of a negative is imaginary and √ is one-to-one, so √x = √y says x = y;"
         " STACK's equation test reads √x as defined for x ≥ 0 only"
@@ -140,6 +131,8 @@ DOMAIN_NOTES = {
     "stack-AlgEquiv-208": _POSITIVE + "(a^b)^c = a^(bc) needs a > 0",
     "stack-AlgEquiv-155": _POSITIVE + "log(a²b) = 2 log a + log b needs a, b > 0",
     "stack-AlgEquiv-210": _POSITIVE + "(u^(1/u))^(u+1) = u^((u+1)/u) needs u = n + 1 > 0",
+    "stack-AlgEquiv-092": _POSITIVE + "((x−2)³)^k = (x−2)^(3k) needs x > 2",
+    "stack-AlgEquiv-254": "a positive a is never 0, and multiplying by it keeps the relation; a real a may be 0",
     "stack-AlgEquiv-259": _POSITIVE + "x² = y² also allows y = −x",
     "stack-AlgEquiv-273": _POSITIVE + "x² = a also allows x = −√a",
     "stack-AlgEquiv-277": _POSITIVE + "x² + y² = 1 also allows y = −√(1 − x²)",

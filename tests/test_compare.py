@@ -1305,6 +1305,14 @@ def test_a_float_that_underflows_far_out_is_no_root():
             ["m", "l", "p"],
         ),
         ("x = 0", "x (x - 11) = 0", ["x"], []),  # an extra root beyond ±10
+        # multiplied through by a symbol the expected relation does not have: at θ = 0 any p_θ will do
+        ("p_theta = m l^2 thetadot", "theta (p_theta - m l^2 thetadot) = 0", ["theta"], ["m", "l", "p_theta"]),
+        (
+            "p_theta = m l^2 thetadot",
+            "p_theta sin(theta) = m l^2 thetadot sin(theta)",
+            ["theta"],
+            ["m", "l", "p_theta"],
+        ),
         # roots that floats put within 10⁻⁶ of each other, told apart at 40 digits
         ("omega^2 = k/m", "omega^2 = k/m (1 + 10^-7)", [], ["omega", "k", "m"]),
         ("omega = sqrt(g/l)", "omega = sqrt(g/l) + 10^-9 g", [], ["omega", "g", "l"]),
@@ -1313,6 +1321,38 @@ def test_a_float_that_underflows_far_out_is_no_root():
 )
 def test_a_relation_with_another_root_is_not_equivalent(expected, submitted, coords, known):
     assert compare(expected, submitted, kind="equation", coords=coords, known=known).status == "not_equivalent"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status"),
+    [
+        # at a < 0 both are real only where the exponents are simple numbers: b = 2, c = 1/2 gives a and |a|
+        ("a^(b c)", "(a^b)^c", "not_equivalent"),
+        ("x^(2 n)", "(x^2)^n", "not_equivalent"),
+        # (−1/2)^(−1) = −2, but ((−1/2)^(−2))^(1/2) = 2
+        ("(n + 1)^((n + 2)/(n + 1))", "((n + 1)^(1/(n + 1)))^(n + 2)", "not_equivalent"),
+        # identities of the principal branch hold at those points too
+        ("a^(b + c)", "a^b a^c", "equivalent"),
+        ("x^(n/2)", "sqrt(x)^n", "equivalent"),
+    ],
+)
+def test_a_power_of_a_base_that_may_be_negative_is_compared_at_whole_exponents(expected, submitted, status):
+    names = ["a", "b", "c", "n", "x"]
+    verdict = compare(expected, submitted, known=names, domains=dict.fromkeys(names, "real"))
+    assert verdict.status == status, verdict
+
+
+def test_a_power_of_a_positive_base_keeps_its_identities():
+    assert compare("a^(b c)", "(a^b)^c", known=["a", "b", "c"], domains={"b": "real", "c": "real"}).equivalent
+
+
+def test_a_relation_multiplied_by_a_parameter_that_may_be_zero_is_not_equivalent():
+    # a is declared real, so a = 0 is admissible, and there a·x = a·y holds for every x and y
+    assert compare("x = y", "a x = a y", kind="equation", known=["x", "y", "a"], domains={"a": "real"}).status == (
+        "not_equivalent"
+    )
+    # a positive parameter is never zero: multiplying by it keeps the relation
+    assert compare("x = y", "a x = a y", kind="equation", known=["x", "y", "a"]).status == "equivalent"
 
 
 @pytest.mark.parametrize(

@@ -76,7 +76,76 @@ def same_values(expected: Expected, e, s, deadline: Deadline, *, key: str = "val
         # Many points lie outside the reference's domain (√(g/R − ω²) needs ω² < g/R): draw more.
         more = expected.points(count, salt=salt, group=GROUP)
         pairs += evaluate_pairs(expected_c, submitted_c, more, deadline)
-    return all_equal(pairs), pairs
+    equal = all_equal(pairs)
+    if equal:
+        if ("signed powers", key) not in expected.cache:
+            expected.cache["signed powers", key] = _signed_powers(expected, expected_c)
+        exponents = expected.cache["signed powers", key]
+        if exponents:  # where e is real only at whole exponents, points no random draw hits
+            more = evaluate_pairs(expected_c, submitted_c, _whole_exponent_points(expected, exponents), deadline)
+            if any(pair.closeness() is Closeness.DIFFERENT for pair in more):
+                return False, pairs + more
+    return equal, pairs
+
+
+# Values for a variable in an exponent, at which a negative base gives a real power: (−2)^(bc)
+# is real at b = 2, c = 1/2, and (a^b)^c is |a| there, not a.
+_SIMPLE = (2, 1 / 2, 3, 1 / 3, 3 / 2, 2 / 3, 1, -1, -2, -1 / 2, -3, -1 / 3, -3 / 2, -2 / 3)
+_PROBES = 40  # points with simple exponents, drawn where a power of a base that may be negative has a variable exponent
+
+
+def _signed_powers(expected: Expected, compiled) -> frozenset[int]:
+    """The positions (in ``expected.variables``) of the variables in the exponent of a power
+    whose base may be negative, in a compiled expression: a^(bc), (−1)^n, (n + 1)^(1/(n + 1)).
+
+    Only the expected answer's are asked for. Where it has none, it is real on a set that
+    random draws hit, and a submitted answer that differs there is found at them."""
+    variables, index = expected.variables, compiled.index
+    positions = set()
+    for power in compiled.expr.atoms(sympy.Pow):
+        exponent = _variables_in(power.exp, index)
+        if not exponent:
+            continue
+        base = power.base
+        if base.is_number:
+            signed = bool(base.is_negative)
+        else:
+            signed = any(expected.setting.domain(variables[i]) != "positive" for i in _variables_in(base, index))
+        if signed:
+            positions |= exponent
+    return frozenset(positions)
+
+
+def _variables_in(expr, index) -> set[int]:
+    return {index[atom] for atom in (*expr.free_symbols, *expr.atoms(AppliedUndef, sympy.Derivative)) if atom in index}
+
+
+def _whole_exponent_points(expected: Expected, positions: frozenset[int]) -> np.ndarray:
+    """Seeded points where the variables at ``positions`` take simple values (2, 1/2, −3…), each
+    within its domain, and the others their usual draws. A power of a negative base is real
+    only where its exponent is a whole number, points of no width that random draws never hit;
+    there (a^b)^c and a^(bc) differ."""
+    key = ("whole exponents", positions)
+    if key not in expected.cache:
+        points = expected.points(_PROBES, salt=7).copy()
+        rng = np.random.default_rng(expected.setting.seed + 7)
+        for i in sorted(positions):
+            domain = expected.setting.domain(expected.variables[i])
+            allowed = [v for v in _SIMPLE if _within(v, domain)]
+            points[:, i] = rng.choice(allowed, size=len(points))
+        points.flags.writeable = False
+        expected.cache[key] = points
+    return expected.cache[key]
+
+
+def _within(value: float, domain: str) -> bool:
+    if domain == "positive":
+        return value > 0
+    if domain == "negative":
+        return value < 0
+    if domain == "integer":
+        return value == int(value)
+    return True
 
 
 def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:

@@ -536,7 +536,7 @@ def _check_relation(expected: Expected, f, g, deadline: Deadline) -> Outcome:
             results = _ratio_test(precise_side_by_side(expected_f, submitted_g, points), group, precise=True)
     if all(result is Closeness.EQUAL for result in results) and len(results) >= MIN_DEFINED:
         return Outcome("equivalent", 1.0, "equivalent", method="ratio")
-    same = _same_roots(expected, expected_f, submitted_g, f.free_symbols & g.free_symbols, deadline)
+    same = _same_roots(expected, expected_f, submitted_g, f.free_symbols | g.free_symbols, deadline)
     if same is _Roots.SAME:
         return Outcome("equivalent", 1.0, "equivalent", method="roots")
     if same is _Roots.MULTIPLICITY:
@@ -585,18 +585,19 @@ def _grid(domain: str) -> list[float]:
     return negative if domain == "negative" else [*negative, 0.0, *_SCAN]
 
 
-def _same_roots(expected: Expected, f: Compiled, g: Compiled, shared, deadline: Deadline) -> _Roots | None:
+def _same_roots(expected: Expected, f: Compiled, g: Compiled, symbols, deadline: Deadline) -> _Roots | None:
     """Whether f = 0 and g = 0 have the same real roots, each of the same multiplicity (order
-    of vanishing): along each shared symbol in turn, through sample points.
+    of vanishing): along each symbol of either in turn, through sample points.
 
     Every symbol, because (ω − √(g/l))(ω − 2) = 0 has its extra root along ω alone, and
-    p sin θ = … its extra roots along θ alone. A root found in floats is checked in the other
+    p sin θ = … its extra roots along θ alone; and a symbol only one of them has, because
+    θ (p_θ − m l² θ̇) = 0 has a root at θ = 0 that p_θ = m l² θ̇ lacks. A root found in floats is checked in the other
     function in floats; where that cannot tell (ω² = 1.000001 k/m), again at 40 digits.
     None when no root was found to compare, or a root could not be judged.
     """
     found, multiplicity = 0, False
     points = expected.points(4, salt=2).tolist()
-    for symbol in sorted(shared, key=lambda s: (not expected.setting.is_state(s), s.name)):
+    for symbol in sorted(symbols, key=lambda s: (not expected.setting.is_state(s), s.name)):
         position = expected.variables.index(symbol)
         grid = _grid(expected.setting.domain(symbol))
         for point in points:
