@@ -1721,6 +1721,9 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m and g = 9.81 m/s²
 PERIOD_PART = {"kind": "number", "rtol": 0.005, "unit": "s", "known": ["l", "g"]}
 
 
+_HEDGED = "One number is asked for here, and your answer offers a choice (`or`): give the one you mean."
+
+
 def _remark(value, rest):
     return f"Graded the number `{value}`; what follows it (`{rest}`) is not graded."
 
@@ -1756,6 +1759,8 @@ def _final(value):
         ("2", "It has 2 degrees of freedom: θ1 and θ2.", {}, "equivalent", "2", (_sentence(2),)),
         (PERIOD, "The period is about 2.01 s.", PERIOD_PART, "equivalent", "2.01", (_sentence("2.01 s"),)),
         ("2", "It has two degrees of freedom", {}, "equivalent", "2", (_sentence("two"),)),
+        ("2", "2 d.o.f.", {}, "equivalent", "2", (_remark(2, "d.o.f."),)),  # an abbreviation
+        ("2", "two (2)", {}, "equivalent", "2", (_remark("two", "(2)"),)),  # the number again, in digits
         ("2", "2 (the two angles)", {}, "equivalent", "2", (_remark(2, "(the two angles)"),)),
         # a count broken down, in brackets, into counts that add up to it
         ("6", "6 (3 translations + 3 rotations)", {}, "equivalent", "6",
@@ -1850,7 +1855,10 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
 )
 def test_a_remark_with_another_number_is_a_hedge_not_a_remark(submitted):
     verdict = compare("2", submitted, kind="integer")
-    assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")
+    hedged = " or " in f" {submitted} ".replace("(", " ")
+    assert (verdict.status, verdict.diagnosis) == ("invalid", "number_hedged" if hedged else "not_a_number")
+    if hedged:  # the choice is said, and not shown back as a product (2 or 3 as 6·or)
+        assert verdict.feedback == (_HEDGED,) and verdict.read_as == ""
     assert compare("2", "2 (θ_1 and θ_2)", kind="integer").status == "equivalent"  # digits of names are not numbers
 
 
@@ -1864,6 +1872,18 @@ def test_a_breakdown_holds_no_name_of_the_problem():
 def test_seconds_written_sec_are_not_a_remark_where_no_unit_is_asked_for():
     assert compare(PERIOD, "2.006 sec", kind="number", rtol=0.005).status == "invalid"
     assert compare(PERIOD, "2.006 sec", kind="number", rtol=0.005, unit="s").status == "equivalent"
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    ["2.006~\\text{s}", "2.006\\,\\text{ s}", "2.006 \\text{sec}", "2.006~s", "2.006 seconds", "2.006\\ \\textrm{s}"],
+)
+def test_a_unit_written_in_tex_or_in_words_is_the_parts_unit(submitted):
+    # TeX's tie and \text{…} around a unit, as an equation editor writes them
+    assert compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s").status == "equivalent"
+    assert compare(PERIOD, submitted.replace("2.006", "2.106"), kind="number", rtol=0.005, unit="s").status == (
+        "not_equivalent"
+    )
 
 
 def test_a_long_answer_is_read_only_as_typed():

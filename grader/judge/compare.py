@@ -230,7 +230,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
                 early = early or _mismatch(spec, expected, answer)
                 if early:
-                    return _verdict(early, shown)  # as typed: 2.006 m is not read as a time
+                    # as typed: 2.006 m is not read as a time; and 2 or 3 is not shown as the product 6·or
+                    return _verdict(early, None if early.key == "number_hedged" else shown)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
             outcome, read_notes = _for_a_person(outcome, (*read_notes, read_in))
             for note in read_notes:
@@ -671,7 +672,7 @@ def _read(
         return _without_words(answer, submitted, expected, names, deadline)
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
-    text, answer, notes = read_number(submitted, reads, names, decimal_comma=spec.name == "number", seconds=unit)
+    text, answer, notes = read_number(submitted, reads, names, decimal_comma=spec.name == "number", unit=unit)
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)
     return answer, notes
@@ -849,6 +850,8 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
     """What can be said before any comparison: undefined symbols, or the wrong shape of answer."""
     used = answer.symbols
     if spec.name in ("integer", "number") and used:
+        if any(symbol.name == "or" for symbol in used):  # 2 or 3: which is for the student to say
+            return Outcome("invalid", 0.0, "number_hedged", method="symbols")
         # "2.006 s", "two": often the right number in words or with a unit. Not a number we can
         # grade, so a person decides, and a student checking first is told to write the number.
         return Outcome("invalid", 0.0, "not_a_number", {"names": _listing([s.name for s in used])}, "symbols")

@@ -111,6 +111,7 @@ FEEDBACK: dict[str, str] = {
     " your answer depends on {names}.",
     "undecided": "This answer could not be checked automatically; it has been set aside for a person to grade.",
     "not_a_number": "A number is asked for here; your answer contains {names}.",
+    "number_hedged": "One number is asked for here, and your answer offers a choice (`or`): give the one you mean.",
     "not_an_integer": "A whole number is asked for here.",
     "out_of_tolerance": "Not within the accepted tolerance.",
     "choice_unknown": "{labels} is not one of the options ({options}).",

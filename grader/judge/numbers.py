@@ -25,8 +25,8 @@ __all__ = ["read_number"]
 # 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English
 _DECIMAL_COMMA = re.compile(r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,})(?![0-9,])(.*)", re.DOTALL)
 
-# ``2.006 sec``, ``2006 msec``: after a number, at the end, the word for seconds, not the secant
-_SEC = re.compile(r"([0-9.]\s*)(m?)secs?\.?\s*$")
+# ``2.006 sec``, ``2006 msec``, ``2.006 seconds``: after a number, at the end, the word for seconds, not the secant
+_SEC = re.compile(r"([0-9.]\s*)(m?)(?:secs?|seconds?)\.?\s*$")
 
 # ``≈ 2.01 s``, ``about 2 s``, ``2.0 s (approx.)``: the tolerance says how near is near enough
 _ABOUT = re.compile(r"^\s*(?:≈|≃|~|\\approx|\\simeq|\\sim|about|approx\.?|approximately|roughly|ca\.|circa)\s*", re.I)
@@ -39,8 +39,9 @@ _SEPARATED = re.compile(r"[;\n]|\\\\")
 # a quantity's name before its value, which is no working: T, T_0, τ, ω₀
 _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
 
-# where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, or a word
-_REMARK = re.compile(r"[(\[{,:;–—]|\s-\s|(?<![A-Za-z0-9_\\])[A-Za-z]{2,}")
+# where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, a word,
+# or an abbreviation (d.o.f.)
+_REMARK = re.compile(r"[(\[{,:;–—]|\s-\s|(?<![A-Za-z0-9_\\])(?:[A-Za-z]{2,}|(?:[A-Za-z]\.){2,})")
 _SENTENCE_END = re.compile(r"(?<=[^\d\s.])\.$")
 _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its own, not of θ1
 # "one" after these is a pronoun (the one that swings), not a number
@@ -65,19 +66,20 @@ def read_number(
     names: Collection[str],
     *,
     decimal_comma: bool = False,
-    seconds: bool = False,
+    unit: bool = False,
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """The text to judge, its reading (None: read it as typed, and say why it fails), and notes.
 
     ``reads(text)`` is the reading of ``text`` if it is a number (with its unit, where the part has
     one), else None; ``names`` are the problem's, which a remark after the number does not use.
-    ``decimal_comma`` reads 2,01 as 2.01; ``seconds`` reads 2.006 sec as 2.006 s.
+    ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the part asks for a quantity in a unit) reads
+    2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s.
     """
-    prepared, notes = _spelled(text, decimal_comma, seconds)
+    prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
         return prepared, answer, notes  # x = 1; y = 2 is a system, not working
-    given = _given(text, reads, names, decimal_comma, seconds)
+    given = _given(text, reads, names, decimal_comma, unit)
     if given is not None:
         return given
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
@@ -86,7 +88,7 @@ def read_number(
     for index in dict.fromkeys((last, 0)):  # the final value, else (2.01 s = T) the first side
         for before, typed, rest in _number_in(pieces[index], names):
             words = _NUMBER_WORDS.get(typed.lower().rstrip("."))
-            prepared, notes = _spelled(words or typed, decimal_comma, seconds)
+            prepared, notes = _spelled(words or typed, decimal_comma, unit)
             answer = reads(prepared)
             if answer is None or (rest and not _is_remark(rest, names, words or typed)):
                 continue
@@ -104,13 +106,11 @@ def read_number(
             elif words:
                 notes += (("number_word", {"typed": typed, "number": words}),)
             return prepared, answer, notes
-    prepared, notes = _spelled(text, decimal_comma, seconds)
+    prepared, notes = _spelled(text, decimal_comma, unit)
     return prepared, None, notes
 
 
-def _given(
-    text: str, reads, names, decimal_comma: bool, seconds: bool
-) -> tuple[str, ParsedAnswer | None, tuple] | None:
+def _given(text: str, reads, names, decimal_comma: bool, unit: bool) -> tuple[str, ParsedAnswer | None, tuple] | None:
     """``2.006 s, since l = 1 m``, ``n = 3N − k, where N = 1, k = 2``: a number or a formula, then the
     values it was worked out with. The number is graded, and the note says the rest was not; a
     formula is graded with the values put in its names. None where the text is no such answer; where
@@ -120,7 +120,7 @@ def _given(
     if found is None or not found.start():
         return None
     head, values = text[: found.start()], text[found.end() :]
-    prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, seconds=seconds)
+    prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit)
     if answer is not None:
         shown = text[found.start() :].strip(" ,")
         shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
@@ -135,14 +135,20 @@ def _given(
 _GIVEN = re.compile(r"\s*,?\s*\b(?:where|with|since|for|given|using|as)\s+(?=[^\W\d][\w₀-₉]*\s*=)", re.I)
 
 
-def _spelled(text: str, decimal_comma: bool, seconds: bool) -> tuple[str, tuple]:
+def _spelled(text: str, decimal_comma: bool, unit: bool) -> tuple[str, tuple]:
     notes = ()
     if decimal_comma:
         text, comma = _decimal_point(text)
         notes = (comma,) if comma else ()
-    if seconds and len(text) < _LENGTH:
+    if unit and len(text) < _LENGTH:
+        # TeX's unit after a number: 2.006~\text{s}, 2.006\,\text{ s}; the tie ~ is a space there
+        text = _TIE.sub(" ", _TEX_UNIT.sub(r"\1 \2", text))
         text = _SEC.sub(r"\1\2s", text)
     return text, notes
+
+
+_TEX_UNIT = re.compile(r"([0-9.])\s*(?:~|\\[,;:! ])?\s*\\text(?:rm)?\{\s*([A-Za-z/^0-9 .\\-]+?)\s*\}")
+_TIE = re.compile(r"(?<=[0-9.])~(?=\s*[A-Za-z\\])")
 
 
 def _decimal_point(text: str) -> tuple[str, tuple | None]:
@@ -195,6 +201,8 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     a unit, and names no number in words but ``number`` (2 (the two angles), not 2 (or three))."""
     if _breaks_down(rest, names, number):
         return True
+    if _REPEATED.fullmatch(rest) and _REPEATED.fullmatch(rest)[1] == number:
+        return True  # two (2): the number again, in digits
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
@@ -222,6 +230,7 @@ def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
     return read.ok and read.kind == "expression" and read.value == int(number)
 
 
+_REPEATED = re.compile(r"\(\s*([0-9]+)\s*\)\.?")
 _BRACKETED = re.compile(r"\(([^()]{1,120})\)\.?")
 _COUNTED = re.compile(r"(?<![\w\\])[A-Za-z]{2,}(?!\w)")  # translations, rotations, and: not θ1
 _SAID_SIGNS = {"and": "+", "plus": "+", "minus": "-", "times": "*"}
