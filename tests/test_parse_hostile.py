@@ -311,6 +311,28 @@ SHOWN = [
         "Unbalanced bracket: the `)` at position 6 has no matching opening bracket.",
         "ｍ ｇ ｌ)\n" + " " * 8 + "^",
     ),
+    # A Cyrillic or Greek letter drawn as a Latin one is named: the student cannot see it.
+    (
+        "m g l c\u043es θ",
+        "`\u043e` looks like the letter `o` but is the Cyrillic small letter o: type it again as a plain `o`.",
+        "m g l c\u043es θ\n       ^",
+    ),
+    (
+        "m g l c\u03bfs θ",  # Greek omicron, which was read as a name of its own: c·ο·s
+        "`\u03bf` looks like the letter `o` but is the Greek small letter omicron: type it again as a plain `o`.",
+        "m g l c\u03bfs θ\n       ^",
+    ),
+    (
+        "\u0410 + x",
+        "`\u0410` looks like the letter `A` but is the Cyrillic capital letter a: type it again as a plain `A`.",
+        "\u0410 + x\n^",
+    ),
+    # a word all in another script is no slip of the keyboard: refused as before, where it begins
+    (
+        "2 \u0441\u0442\u0435\u043f\u0435\u043d\u0438",
+        "`\u0441` is not something an answer can contain.",
+        "2 \u0441\u0442\u0435\u043f\u0435\u043d\u0438\n  ^",
+    ),
     (
         "θ̈ = -g/l θ (θ -> 0)",
         "`->` is read only between two equations, as a step of a derivation (`a = b -> c = d` is read as"

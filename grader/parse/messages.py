@@ -22,6 +22,7 @@ MESSAGES: dict[str, str] = {
     "empty": "Your answer is empty.",
     "too_long": "Your answer is {length} characters long; the limit is {limit}.",
     "bad_character": "`{char}` is not something an answer can contain.",
+    "lookalike": "`{char}` looks like the letter `{latin}` but is the {name}: type it again as a plain `{latin}`.",
     "arrow": (
         "`{arrow}` is read only between two equations, as a step of a derivation (`a = b {arrow} c = d`"
         " is read as c = d); a limit such as θ → 0 cannot be part of an answer."

@@ -146,6 +146,12 @@ _LEFT_RIGHT = re.compile(r"\\(left|right)(?![A-Za-z])\s*(\.?)")
 _ASSIGNMENTS = (":=", "==", "+=", "-=", "*=", "/=", "!=", "<=", ">=")
 # What a student might try that we can name, rather than calling it a bad character.
 _NAMED_REFUSALS = {"#": "comment", '"': "string", "`": "string"}
+# Cyrillic and Greek letters drawn as Latin ones, which a keyboard layout or a pasted text slips in:
+# refused, and named, for the student cannot see what is wrong (Greek ο is no physicist's letter)
+_OTHER_SCRIPTS = dict(
+    zip("аеорсухіјѕһԁԛԝАВЕКМНОРСТХІЈЅοΑΒΕΖΗΙΚΜΝΟΡΤΥΧ", "aeopcyxijshdqwABEKMHOPCTXIJSoABEZHIKMNOPTYX", strict=True)
+)
+_OTHER_SCRIPT = re.compile("[" + "".join(_OTHER_SCRIPTS) + "]")
 
 _LATEX_NAMES = {name: name for name in set(GREEK_BY_LETTER.values())} | {
     "varphi": "phi", "vartheta": "theta", "varepsilon": "epsilon", "varrho": "rho",
@@ -434,6 +440,27 @@ _INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x200E, 0x200F, 0x2060, 0xFE
 _READ_AS = str.maketrans(_SPACING_DOTS | _LOOKALIKES | _INVISIBLE)  # all three, in one pass over the text
 
 
+def _refuse_other_scripts(text: str) -> None:
+    """Refuse a Cyrillic or Greek letter drawn as a Latin one, alone or in a word with Latin
+    letters (cоs). A word all in another script (степени) is no slip of the keyboard, and is
+    refused as usual, where its first letter is read.
+
+    Raises:
+        ParseFailure: ``lookalike``, naming the letter and the one it looks like.
+    """
+    for found in _OTHER_SCRIPT.finditer(text):
+        start, end = found.start(), found.end()
+        while start and text[start - 1].isalpha():
+            start -= 1
+        while end < len(text) and text[end].isalpha():
+            end += 1
+        word = text[start:end]
+        if len(word) == 1 or any("a" <= c.lower() <= "z" for c in word):
+            c = found[0]
+            name = unicodedata.name(c).capitalize()  # Cyrillic small letter o
+            raise ParseFailure("lookalike", found.start(), found.end(), char=c, latin=_OTHER_SCRIPTS[c], name=name)
+
+
 def visible(text: str) -> str:
     """``text`` as it reads: lookalike letters as ours, invisible characters as spaces, one for one."""
     return text.translate(_READ_AS)
@@ -522,6 +549,7 @@ class _Tokenizer:
 
     def run(self) -> list[Token]:
         text = self.text
+        _refuse_other_scripts(text)  # before names are read: Greek ο would be read as omicron, cοs as c·ο·s
         while self.pos < len(text):
             c = text[self.pos]
             if self.pos in self.markers:  # 1. … ⏎ 2. …: a list's numbers, not the equations'
