@@ -592,6 +592,19 @@ def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, s
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status"),
+    [
+        # where a count is asked, 3N = 3 is the count 3N worked out, not N = 1
+        ("1", "3N = 3", "not_equivalent"),
+        ("15", "3N = 15", "equivalent"),
+        ("2", "2n = 4", "not_equivalent"),
+    ],
+)
+def test_a_multiple_of_a_name_in_a_count_is_working_not_the_counts_name(expected, submitted, status):
+    assert compare(expected, submitted, kind="integer").status == status
+
+
 DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}
 
 

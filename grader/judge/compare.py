@@ -532,7 +532,8 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     named = isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
     undefined = {symbol.name for symbol in value.lhs.free_symbols} - expected.names
     defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
-    scaled = _scaled_name(value.lhs, undefined)
+    # where a count is asked, 3N = 15 is working, 3N is not the count's name times 3: the value is the last side
+    scaled = _scaled_name(value.lhs, undefined) if spec.name != "integer" else None
     if scaled is not None:  # 2L = m l² θ̇² + …, ω² = g/l: the name's value
         return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
