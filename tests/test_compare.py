@@ -446,7 +446,10 @@ DOUBLE_EOM = (
 )
 
 
-@pytest.mark.parametrize("submitted", ["(l θ̈ + g sin θ)² = 0", "θ̈³ = −(g/l)³ sin³θ", "exp(θ̈) = 1 + g"])
+@pytest.mark.parametrize(
+    "submitted",
+    ["(l θ̈ + g sin θ)² = 0", "θ̈³ = −(g/l)³ sin³θ", "exp(θ̈) = 1 + g", "|θ̈| = −(g/l) sin θ", "√(θ̈²) = −(g/l) sin θ"],
+)
 def test_an_equation_not_linear_in_the_accelerations_is_told_so(submitted):
     verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
     assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "not_linear"), verdict
@@ -1129,6 +1132,50 @@ def test_an_equation_that_no_longer_fixes_its_acceleration_where_the_system_is_s
         assert verdict.diagnosis == "vanishing_factor_system"
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # a factor that is zero somewhere between the states drawn, not at rest or at the origin
+        ("cos θ (l θ̈ + g sin θ) = 0", "not_equivalent"),
+        ("(θ − 1)(l θ̈ + g sin θ) = 0", "not_equivalent"),
+        ("(1 − 2 cos θ)(l θ̈ + g sin θ) = 0", "not_equivalent"),
+        # nonzero wherever the equation is defined: a pole, not a zero, where it changes sign
+        ("(l θ̈ + g sin θ)/cos θ = 0", "equivalent"),
+        ("(l θ̈ + g sin θ)/θ = 0", "equivalent"),
+        ("(2 + cos θ)(l θ̈ + g sin θ) = 0", "equivalent"),
+    ],
+)
+def test_an_equation_times_a_factor_that_vanishes_anywhere_is_not_equivalent(submitted, status):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert verdict.status == status, verdict
+    if status == "not_equivalent":
+        assert verdict.diagnosis == "vanishing_factor_between"
+
+
+def test_a_factor_of_the_parameters_that_vanishes_for_some_of_them_is_not_equivalent():
+    # zero where the masses are equal: then the equation says nothing of ẍ
+    atwood = {"coords": ["x"], "known": ["m1", "m2", "g"]}
+    verdict = compare(
+        "(m1 + m2) xddot = (m1 - m2) g", "(m1 - m2)(m1 + m2) xddot = (m1 - m2)^2 g", kind="equation", **atwood
+    )
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "vanishing_factor_between")
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        (f"cos θ ({SPHERICAL_THETA}) = 0; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0", "not_equivalent"),
+        (f"{SPHERICAL_THETA} = 0; (2 cos θ − 1)(sin θ φ̈ + 2 cos θ θ̇ φ̇) = 0", "not_equivalent"),
+        (f"{SPHERICAL_THETA} = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0", "equivalent"),
+    ],
+)
+def test_a_system_with_an_equation_times_a_vanishing_factor_is_not_equivalent(submitted, status):
+    verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)
+    assert verdict.status == status, verdict
+    if status == "not_equivalent":
+        assert verdict.diagnosis == "vanishing_factor_system_between"
+
+
 def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
     submitted = "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; m l² sin θ φ̇ = const"
     verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)
@@ -1141,7 +1188,8 @@ def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
     assert phi.feedback[0] == "This equation does not say the same as the expected one."
     # energy for one coordinate: its derivative is the equation of motion times θ̇, which vanishes at rest
     energy = compare("thetaddot = -g/l sin(theta)", "½ m l² θ̇² − m g l cos θ = C", kind="equation", **PENDULUM)
-    assert (energy.diagnosis, len(energy.feedback)) == ("vanishing_factor", 2)
+    assert (energy.diagnosis, len(energy.feedback)) == ("conserved_not_motion", 1)
+    assert "Differentiate it and divide by that velocity" in energy.feedback[0]
 
 
 def test_a_conserved_quantity_too_large_to_differentiate_is_left_as_typed():

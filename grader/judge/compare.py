@@ -241,7 +241,10 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 outcome = _with_units(outcome, spec, expected, answer)
             if used and spec.name == "expression" and _names_terms(outcome):
                 outcome = _terms_in_given_names(outcome, spec, expected, answer, given, deadline)
-            if spec.parsed and conserved and outcome.status != "equivalent":
+            if spec.parsed and conserved and outcome.key == "vanishing_factor":
+                # ½ m l² θ̇² − m g l cos θ = C: its derivative is θ̇ times the equation, a factor not written
+                outcome = replace(outcome, key="conserved_not_motion")
+            elif spec.parsed and conserved and outcome.status != "equivalent":
                 outcome = replace(_terms_unnamed(outcome), notes=(*outcome.notes, ("conserved_read", {})))
     except CheckTimeout:
         outcome = Outcome("undecided", 0.0, "undecided", method="timeout")

@@ -93,6 +93,13 @@ FEEDBACK: dict[str, str] = {
     " d/dt (…) = 0.",
     "vanishing_factor": "Your equation is right only where a factor of it is not zero: at rest, or where a"
     " coordinate is 0, it no longer says what the acceleration is. Divide that factor out.",
+    "conserved_not_motion": "`… = const` was read as a conserved quantity, and that is not an equation of motion:"
+    " its time derivative is the equation of motion times a velocity, which says nothing at rest. Differentiate it"
+    " and divide by that velocity.",
+    "vanishing_factor_between": "Your equation is right only where a factor of it is not zero: where that factor is"
+    " zero, it no longer says what the acceleration is. Divide that factor out.",
+    "vanishing_factor_system_between": "One of your equations is right only where a factor of it is not zero: where"
+    " that factor is zero, your equations no longer determine every acceleration. Divide that factor out.",
     "vanishing_factor_system": "One of your equations is right only where a factor of it is not zero: at rest,"
     " or where a coordinate is 0, your equations no longer determine every acceleration. Divide that factor out.",
     "trivial_equation": "Equation {index} holds for every motion, so it says nothing about this one.",

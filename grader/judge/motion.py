@@ -32,7 +32,9 @@ whatever the state.
 
 from __future__ import annotations
 
+import cmath
 import enum
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
@@ -54,7 +56,9 @@ from grader.parse.names import unicode_name
 
 __all__ = ["check_equation", "check_equations"]
 
-_PROBE = (0.7, -1.3, 0.45, 1.9)  # accelerations at which linearity is confirmed
+# accelerations at which linearity is confirmed; the first below 0, where every step is above: |θ̈| is
+# linear for θ̈ > 0
+_PROBE = (-1.3, 0.7, 0.45, 1.9)
 _GROUPS, _STATES = 4, 3  # parameter draws × state draws for the ratio test
 _WIDE = 10**8  # numbers further apart than this may hide a term from floats: check exactly
 _DYADIC = 1024  # the exact check's state is rounded to multiples of 1/1024
@@ -62,6 +66,7 @@ _STEP_MARGIN = 256  # the step is this many times the largest acceleration
 _STEP_ROUNDS = 4  # rounds of reading the reference's rows for the steps
 _MAX_STEP_EXPONENT = 200  # steps up to 2²⁰⁰: beyond, a value's square would overflow a float
 _SPECIAL = 2  # states after the drawn ones (expected.point_count): at rest, and at the origin
+_BISECTIONS = 60  # halvings of a segment between two states, to where a factor changes sign
 
 
 def _as_zero(value) -> sympy.Expr:
@@ -387,6 +392,8 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
     )
     results = [result for _, result in numbered]
     same = _decided(results)
+    if same and _vanishes_between(expected, [expected_f], [submitted_g]):
+        return Outcome("not_equivalent", 0.0, "vanishing_factor_between", method="accelerations")
     if same:
         return Outcome("equivalent", 1.0, "equivalent", method="accelerations")
     if same is None:
@@ -398,6 +405,122 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         names = ", ".join(unicode_name(q, 2) for q in _accelerations_in(f, expected))
         return Outcome("not_equivalent", 0.0, "not_linear", {"accelerations": names}, "accelerations")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
+
+
+def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitted: Sequence[Compiled]) -> bool:
+    """Whether the submitted equations, right at every sample state, are the expected ones times
+    a factor that vanishes between two of the drawn states: (θ̇ − 1)·E, cos θ·E, (m₁ − m₂)·E.
+    There they say nothing of an acceleration. (Of a system, the factor is the determinant of
+    the combination: det of the submitted coefficients over the expected ones'.)
+
+    Where the factor has one sign at one state and the other at the next, the segment between
+    them (inside the domain: the parameters stay positive) is bisected to where it changes sign,
+    and there it is a zero of the submitted equations (not a pole of the factor, as in E/θ) or not.
+    A factor of one sign everywhere, as every right answer's is, costs one pass over the rows."""
+    if any(expected.setting.domain(symbol) in ("nonzero", "integer") for symbol in expected.variables):
+        return False  # a segment between two states could leave the domain
+    steps = _steps(expected, reference)
+    count = expected.point_count
+    mine = _float_rows(expected, reference, steps, reference=True)[:count]
+    theirs = _float_rows(expected, submitted, steps)[:count]
+    signs = [
+        (number, factor > 0)
+        for number, (a, b) in enumerate(zip(mine, theirs, strict=True))
+        if a is not None and b is not None and (factor := _scaling(a, b))
+    ]
+    states = _states_of(expected)
+    for (first, sign), (second, other) in itertools.pairwise(signs):
+        if sign != other and _silent_between(
+            expected, (reference, submitted), states[first], states[second], steps[first]
+        ):
+            return True
+    return False
+
+
+def _scaling(a: _Rows, b: _Rows) -> float | None:
+    """The real number whose sign says how rows ``b`` scale rows ``a`` at one state: for one
+    equation the factor (least squares), for a system the ratio of their coefficients'
+    determinants. None where ``a`` says nothing (a zero row, a singular system)."""
+    if len(a.rows) == 1:
+        size = sum(abs(x) ** 2 for x in a.rows[0])
+        return sum(y * x.conjugate() for x, y in zip(a.rows[0], b.rows[0], strict=True)).real / size if size else None
+    mine, theirs = _determinant(a), _determinant(b)
+    return (theirs / mine).real if mine else None
+
+
+def _determinant(rows: _Rows) -> complex:
+    """The determinant of the rows' coefficients of the accelerations (by hand for two: numpy's
+    call costs more than the arithmetic, and this is asked at every state of every right system)."""
+    n = len(rows.rows[0]) - 1
+    if n == 2:
+        (a, b, _), (c, d, _) = rows.rows
+        return a * d - b * c
+    return complex(np.linalg.det(np.array([row[:n] for row in rows.rows], complex)))
+
+
+def _says_less(a: _Rows, b: _Rows) -> bool:
+    """Whether rows ``b`` leave undetermined what rows ``a`` say at their state: one equation all
+    of whose entries are within rounding of zero, or a system that no longer fixes an acceleration."""
+    if len(a.rows) == 1:
+        zero = [
+            all(
+                closeness(x, 0, scale) is Closeness.EQUAL
+                for x, scale in zip(rows.rows[0], rows.entry_scales[0], strict=True)
+            )
+            for rows in (a, b)
+        ]
+        return zero[1] and not zero[0]
+    return any(mine and not yours for mine, yours in zip(_determined(a), _determined(b), strict=True))
+
+
+def _silent_between(
+    expected: Expected,
+    systems: tuple[Sequence[Compiled], Sequence[Compiled]],
+    start: np.ndarray,
+    end: np.ndarray,
+    step: float,
+) -> bool:
+    """Whether the factor between the submitted equations and the expected ones (the second of
+    ``systems`` and the first), of one sign at ``start`` and the other at ``end``, changes sign
+    between them where the submitted say less (:func:`_says_less`); in floats. Not where either
+    is undefined (a pole)."""
+    positions = _positions(expected)
+
+    def rows_at(point: np.ndarray) -> list[_Rows]:
+        found = []
+        for system in systems:
+            samples = []
+            for c in system:
+                values, scales = [], []
+                for accelerations in _settings(len(positions), step):
+                    moved = point.tolist()
+                    for position, acceleration in zip(positions, accelerations, strict=True):
+                        moved[position] = complex(acceleration)
+                    value, scale = c.at(moved)
+                    if not (cmath.isfinite(value) and math.isfinite(scale)):
+                        raise ZeroDivisionError("undefined here")
+                    values.append(value)
+                    scales.append(scale)
+                samples.append((values, scales))
+            found.append(_Rows(samples, precise=False, step=step))
+        return found
+
+    low, high = start, end
+    try:
+        sign = _scaling(*rows_at(low)) > 0
+        for _ in range(_BISECTIONS):
+            middle = (low + high) / 2
+            rows = rows_at(middle)
+            factor = _scaling(*rows)
+            if factor is None:
+                return False  # the expected equations say nothing here either
+            if (factor > 0) == sign:
+                low = middle
+            else:
+                high = middle
+    except UNDEFINED:
+        return False
+    return _says_less(*rows)
 
 
 def _nonlinear(expected: Expected, reference: Sequence[Compiled], submitted: Sequence[Compiled]) -> list[bool]:
@@ -786,6 +909,8 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
         return Outcome("not_equivalent", 0.0, "vanishing_factor_system", method=outcome.method)
     if outcome.key == "equivalent" and _loses_an_acceleration(expected, expected_fs, submitted_gs):
         return Outcome("not_equivalent", 0.0, "vanishing_factor_system", method=outcome.method)
+    if outcome.key == "equivalent" and _vanishes_between(expected, expected_fs, submitted_gs):
+        return Outcome("not_equivalent", 0.0, "vanishing_factor_system_between", method=outcome.method)
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
     if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
