@@ -312,3 +312,38 @@ def test_a_single_letter_is_a_name_to_define_not_a_unit_to_leave_out(submitted):
     # m g h: h is the student's height sooner than hours, and a unit inside a sum is no unit of the answer
     verdict = compare(OMEGA, submitted, known=["m", "g", "l"], coords=["theta"])
     assert verdict.diagnosis == "undefined_symbol"
+
+
+TORQUE = "-m g l sin(theta)"  # a generalized force conjugate to an angle: an energy, N·m
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "unit"),
+    [
+        # a unit with a name of the problem's in it (m, the mass, for metres), which as read was one
+        # product with the formula: the formula is graded, and the note says the unit was left out
+        ("−m g l sin θ N·m", "equivalent", "N*m"),
+        ("−m g l sin θ kg m^2/s^2", "equivalent", "kg*m^2/s^2"),
+        ("−m g l sin θ (N m)", "equivalent", "N*m"),
+        ("−m g l sin θ, N·m", "equivalent", "N*m"),  # the comma sets it apart, and is no list
+        ("Q_θ = −m g l sin θ [J]", "equivalent", "J"),  # one letter, set apart by its bracket
+        ("−m g sin θ N·m", "not_equivalent", "N*m"),
+    ],
+)
+def test_a_unit_after_a_formula_may_hold_a_name_of_the_problems(submitted, status, unit):
+    verdict = compare(TORQUE, submitted, **{**PENDULUM, "known": [*PENDULUM["known"], "Q_theta"]})
+    assert verdict.status == status, verdict
+    assert LEFT_OUT.format(unit) in verdict.feedback
+    assert verdict.read_as == ("-g*l*m*sin(θ)" if status == "equivalent" else "-g*m*sin(θ)")
+
+
+@pytest.mark.parametrize("submitted", ["−m g l sin θ, m/s", "−m g l sin θ (N)"])
+def test_a_unit_after_a_formula_that_measures_something_else_is_said_so(submitted):
+    verdict = compare(TORQUE, submitted, **PENDULUM)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "unit_differs"), verdict
+
+
+def test_a_lone_letter_after_a_formula_is_still_a_name_to_define():
+    # N may be a normal force and J a moment of inertia: not set apart, they are names
+    verdict = compare(TORQUE, "−m g l sin θ J", **PENDULUM)
+    assert verdict.diagnosis == "undefined_symbol"

@@ -211,6 +211,13 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
             if spec.parsed:
                 names = sorted(expected.names | {symbol.name for symbol, _ in given})
                 answer, read_notes = _read(spec, expected, submitted, names, deadline)
+                split = _unit_tail(submitted, spec, expected) if not answer.ok and spec.name == "expression" else None
+                if split is not None:  # −m g r sin θ, N·m: the comma sets a unit apart, and is no list
+                    answer, unit, found = split
+                    early, note = _unit_said(unit, found, spec, expected)
+                    if early is not None:
+                        return _verdict(early, answer)
+                    read_notes += (note,)
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
@@ -813,20 +820,79 @@ def _formula_in_unit(
     units = _units_named(answer, expected)
     if answer.kind != "expression" or not units:
         return unchanged
-    factors = sympy.Mul.make_args(value)
-    unit = sympy.Mul(*(factor for factor in factors if factor.free_symbols & units))
-    formula = sympy.Mul(*(factor for factor in factors if not factor.free_symbols & units))
-    found = in_units(unit)
-    if found is None or found[:2] != (1, 1) or not formula.free_symbols:
-        return unchanged  # a unit inside the formula, one of another size (ms), or a number with a unit
-    if not any(len(symbol.name) > 1 for symbol in units) and unit != sympy.Symbol("s") ** -1:
-        return unchanged  # m g h: h is the student's height sooner than hours; 1/s is a unit
+    tail = _unit_tail(answer.text, spec, expected)
+    if tail is not None:  # first, for the product took in a unit with a name of the problem's: − m g r sin θ N·m
+        answer, unit, found = tail
+        formula = answer.value
+    else:
+        factors = sympy.Mul.make_args(value)
+        unit = sympy.Mul(*(factor for factor in factors if factor.free_symbols & units))
+        formula = sympy.Mul(*(factor for factor in factors if not factor.free_symbols & units))
+        found = in_units(unit)
+        if found is None or found[:2] != (1, 1) or not formula.free_symbols:
+            return unchanged  # a unit inside the formula, one of another size (ms), or a number with a unit
+        if not any(len(symbol.name) > 1 for symbol in units) and unit != sympy.Symbol("s") ** -1:
+            return unchanged  # m g h: h is the student's height sooner than hours; 1/s is a unit
+    outcome, note = _unit_said(unit, found, spec, expected)
+    if outcome is not None:
+        return answer, outcome, None
+    return ParsedAnswer(answer.text, formula, "expression"), None, note
+
+
+def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outcome | None, tuple | None]:
+    """What a unit written after a formula says: that it does not measure the quantity asked for
+    (an outcome), or the note that it was left out (one for a person to read where Hz or rad/s may
+    say the formula is another quantity)."""
     wanted = _expected_units(spec, expected)
     if wanted is not None and found[2] != wanted:
         details = {"theirs": si(found[2]), "wanted": si(wanted)}
-        return answer, Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
+        return Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
     key = "unit_left_out" if _same_counts(unit, expected) else "unit_for_a_person"
-    return ParsedAnswer(answer.text, formula, "expression"), None, (key, {"unit": to_text(unit)})
+    return None, (key, {"unit": to_text(unit)})
+
+
+def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, sympy.Expr, tuple] | None:
+    """``− m g r sin θ N·m``, ``… [N m]``, ``…, kg m²/s²``: the formula and the unit written after
+    it, where the unit has a name the problem uses (m, the mass, for metres), so that as read the
+    two were one product. The unit is the longest end of the text that is a product of units alone,
+    set apart by a bracket or a comma, or of two units or more (a lone N or J may be the student's
+    own name); what comes before it must be a formula in the problem's names (``Q_θ = …`` too, as
+    :func:`_unwrap_named` reads it). None where there is
+    no such end. Returns the formula read, the unit and :func:`in_units` of it."""
+    if len(text) > _UNIT_TAIL_LENGTH:
+        return None
+    for cut in _UNIT_CUTS.finditer(text):
+        head, tail = text[: cut.start()], text[cut.end() :]
+        set_apart = bool(cut.group().strip())
+        tail = tail.strip()
+        if set_apart and cut.group().strip()[-1:] in "([":
+            if not tail.endswith(")]"[("([".index(cut.group().strip()[-1]))]):
+                continue
+            tail = tail[:-1]
+        if not tail or not head.strip() or not _UNIT_TEXT.fullmatch(tail):
+            continue
+        unit = parse_answer(tail)
+        if not unit.ok or unit.kind != "expression" or not unit.symbols:
+            continue
+        found = in_units(unit.value)
+        names = {symbol.name for symbol in unit.symbols}
+        if found is None or found[:2] != (1, 1) or not (set_apart or len(sympy.Mul.make_args(unit.value)) > 1):
+            continue
+        if names <= expected.names:
+            continue  # nothing here but the problem's names: no unit was written
+        formula = parse_answer(head.rstrip(" ,;"), coords=expected.setting.coords, known=sorted(expected.names))
+        formula = _unwrap_named(formula, spec, expected) if formula.ok else formula  # Q_θ = …
+        if not formula.ok or formula.kind != "expression" or not formula.symbols:
+            continue  # 3.13 rad/s: a number with its unit is no formula
+        if not _undefined_symbols(formula, expected):
+            return formula, unit.value, found
+    return None
+
+
+_UNIT_TAIL_LENGTH = 300
+# where a unit may begin after a formula: a comma, an opening bracket, or a space
+_UNIT_CUTS = re.compile(r"\s*[,;]\s*\(?\s*|\s*[(\[]\s*|\s+")
+_UNIT_TEXT = re.compile(r"[A-Za-zΩμµ·⋅*/^ 0-9⁰¹²³⁴⁵⁶⁷⁸⁹⁻()-]+")
 
 
 def _same_counts(unit, expected: Expected) -> bool:
