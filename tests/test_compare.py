@@ -379,10 +379,15 @@ DOUBLE = {"coords": ["theta1", "theta2"], "known": ["m1", "m2", "l1", "l2", "g"]
 DOUBLE_V = "-(m1 + m2) g l1 cos(theta1) - m2 g l2 cos(theta2)"
 
 
-def _depends(right, wrong):
+def _depends(right, wrong, how="missing"):
+    if how == "extra":
+        return (
+            f"Your answer depends on {right} as the right answer does, but the right answer does not depend on {wrong}."
+        )
+    said = "not on" if how == "missing" else "on"
     return (
-        f"Your answer depends on {right} as the right answer does, but not on {wrong}:"
-        f" check how your answer depends on {wrong}."
+        f"Your answer depends on {right} as the right answer does, but {said} {wrong}"
+        f"{' in another way' if how == 'how' else ''}: check how your answer depends on {wrong}."
     )
 
 
@@ -390,14 +395,15 @@ def _depends(right, wrong):
     ("expected", "submitted", "setting", "sentence"),
     [
         # a product or quotient off by a factor in some of its symbols: those symbols are named
-        (ATWOOD_A, "(m1 + m2) g / (m1 - m2)", MASSES, _depends("g", "m₁ and m₂")),  # a fraction upside down
+        # said as it is: not on g (missing), the right one not on m (extra), or on m₁ and m₂ in another way
+        (ATWOOD_A, "(m1 + m2) g / (m1 - m2)", MASSES, _depends("g", "m₁ and m₂", "how")),  # a fraction upside down
         (ATWOOD_A, "(m1 - m2) / (m1 + m2)", MASSES, _depends("m₁ and m₂", "g")),
-        (ATWOOD_A, "(m1 - m2) g / m1", MASSES, _depends("g", "m₁ and m₂")),
-        ("sqrt(g/l)", "sqrt(g m / l)", PENDULUM, _depends("g and l", "m")),  # a symbol that has no place
+        (ATWOOD_A, "(m1 - m2) g / m1", MASSES, _depends("g", "m₁ and m₂", "how")),
+        ("sqrt(g/l)", "sqrt(g m / l)", PENDULUM, _depends("g and l", "m", "extra")),  # a symbol that has no place
         ("-m g r sin(theta)", "−m g l₀ sin θ", {"coords": ["r", "theta"], "known": ["m", "g", "l0", "k"]},
-         _depends("g, m and θ", "l₀ and r")),  # one symbol for another: both are named
-        (MOMENTUM_PHI, "m l² θ̇ sin²θ", SPHERICAL, _depends("l, m and θ", "φ̇ and θ̇")),  # the wrong velocity
-        (MOMENTUM_PHI, "m l² φ̇ sin θ", SPHERICAL, _depends("l, m and φ̇", "θ")),
+         _depends("g, m and θ", "l₀ and r", "how")),  # one symbol for another: both are named
+        (MOMENTUM_PHI, "m l² θ̇ sin²θ", SPHERICAL, _depends("l, m and θ", "φ̇ and θ̇", "how")),  # the wrong velocity
+        (MOMENTUM_PHI, "m l² φ̇ sin θ", SPHERICAL, _depends("l, m and φ̇", "θ", "how")),
         # the factor depends on every symbol: nothing to name, the terms are described as before
         ("sqrt(g/l)", "sqrt(l/g)", PENDULUM, "A term differs: a gravity term is not right."),
         # a sum: its terms are named
@@ -409,6 +415,28 @@ def _depends(right, wrong):
 def test_a_product_off_by_a_factor_names_the_symbols_it_gets_wrong(expected, submitted, setting, sentence):
     verdict = compare(expected, submitted, **setting)
     assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,))
+
+
+@pytest.mark.parametrize(
+    ("submitted", "sentence"),
+    [
+        # the m₂ part of −(m₁ + m₂) g l₁ cos θ₁ has the wrong sign; "the term in cos(θ₁)" alone would
+        # send the student to flip the whole of it, and then again
+        ("−(m₁ − m₂) g l₁ cos θ₁ − m₂ g l₂ cos θ₂", "A term differs: the term in cos(θ₁) with m₂ has the wrong sign."),
+        ("(m₁ − m₂) g l₁ cos θ₁ − m₂ g l₂ cos θ₂", "A term differs: the term in cos(θ₁) with m₁ has the wrong sign."),
+        # a term with no other of the student's described alike is named as before
+        ("−(m₁ + m₂) g l₁ cos θ₁ + m₂ g l₂ cos θ₂", "A term differs: the term in cos(θ₂) has the wrong sign."),
+    ],
+)
+def test_a_term_of_the_wrong_sign_is_told_apart_from_the_students_terms_named_alike(submitted, sentence):
+    verdict = compare("-(m1 + m2) g l1 cos(theta1) - m2 g l2 cos(theta2)", submitted, **DOUBLE)
+    assert verdict.feedback == (sentence,), verdict
+
+
+def test_a_symbol_the_right_answer_has_no_place_for_is_said_so():
+    # x in an acceleration: the answer depends on it, and the right one does not
+    verdict = compare(ATWOOD_A, "(m1 - m2) g x / (m1 + m2)", **MASSES)
+    assert verdict.feedback[-1] == _depends("g, m₁ and m₂", "x", "extra"), verdict
 
 
 @pytest.mark.parametrize(

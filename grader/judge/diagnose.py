@@ -34,6 +34,7 @@ __all__ = [
     "taylor",
     "term_changes",
     "terms",
+    "told_apart",
 ]
 
 MAX_TERMS = 60  # beyond this, listing terms says nothing useful
@@ -204,6 +205,7 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
         return []
     # cot θ is cos θ / sin θ: a term is matched whichever the student wrote, and named as written
     theirs, ours = _by_form(submitted_terms), _by_form(expected_terms)
+    written_shapes = [shape for shape, _ in theirs.values()]
     changes, lost, gained = [], [], []
     for key, (shape, coefficient) in ours.items():
         written = theirs.get(key)
@@ -212,7 +214,10 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             changes.append(("missing_term", describe_term(shape, setting)))
         elif written[1] != coefficient:
             how = "has the wrong sign" if written[1] == -coefficient else "has the wrong factor"
-            changes.append(("term_differs", f"{describe_term(written[0], setting, definite=True, own=True)} {how}"))
+            named = describe_term(written[0], setting, definite=True, own=True)
+            changes.append(
+                ("term_differs", f"{told_apart(written[0], named, written_shapes, setting, own=True)} {how}")
+            )
     for key, (shape, _) in theirs.items():
         if key not in ours:
             gained.append(shape)
@@ -220,6 +225,28 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
     if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
         return _one_term_changed(changes, lost[0], gained[0], setting, [shape for shape, _ in theirs.values()])
     return changes
+
+
+def told_apart(shape, description: str, shapes: list, setting: Setting, **how) -> str:
+    """``description`` of a term the student wrote (``shape``), with the parameters that tell it
+    apart from their other terms (``shapes``) described alike: −(m₁ − m₂) g l₁ cos θ₁ for
+    −(m₁ + m₂) g l₁ cos θ₁ has one term in cos θ₁ of the wrong sign, and "the term in cos(θ₁)"
+    would send the student to flip both (and then again). Said as "the term in cos(θ₁) with m₂".
+    ``how`` are :func:`describe_term`'s options ``description`` was made with, for the others."""
+    kind = description.split(" ", 1)[1]
+    how.pop("definite", None)
+    rivals = [
+        other for other in shapes if other != shape and describe_term(other, setting, **how).split(" ", 1)[1] == kind
+    ]
+    if not rivals:
+        return description
+    state = set(setting.state.values())
+    # the factors of its own no rival shares (m₁ of m₁ g/(m₁ + m₂) beside m₂ g/(m₁ + m₂)), by their names
+    factors = set(sympy.Mul.make_args(shape)) - set.intersection(*(set(sympy.Mul.make_args(r)) for r in rivals))
+    apart = sorted({s for factor in factors for s in factor.free_symbols - state}, key=lambda s: s.name)
+    if not apart:
+        return description  # nothing to tell it by that would not show the term itself
+    return f"{description} with {' and '.join(unicode_name(symbol.name) for symbol in apart)}"
 
 
 def _by_form(collected: dict) -> dict:

@@ -31,6 +31,7 @@ from grader.judge.diagnose import (
     symbolic_zero,
     term_changes,
     terms,
+    told_apart,
 )
 from grader.judge.expected import Expected, Outcome
 from grader.judge.numeric import FLOAT_EQUAL, UNDEFINED, Closeness
@@ -205,7 +206,11 @@ def _factor_dependence(expected: Expected, key: str, e, s, plain) -> Outcome | N
     names = [_shown(variables[i]) for i in used if i in depends]
     others = [_shown(variables[i]) for i in used if i not in depends]
     details = {"names": _listed(names), "others": _listed(others)}
-    return Outcome("not_equivalent", 0.0, "factor_depends", details, method="numeric: ratio")
+    # said as it is: the answer lacks them (g l for g l m), has them where the right one has not, or both
+    theirs = [variables[i] in plain.free_symbols for i in used if i in depends]
+    ours = [variables[i] in e.free_symbols for i in used if i in depends]
+    key = "factor_depends" if not any(theirs) else "factor_depends_extra" if not any(ours) else "factor_depends_how"
+    return Outcome("not_equivalent", 0.0, key, details, method="numeric: ratio")
 
 
 def _ratio(e_c, s_c, point: np.ndarray) -> complex | None:
@@ -364,7 +369,12 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
         # is there: naming the terms as typed (sympy's comparison) says more.
         return None
     how = "has the wrong sign" if abs(multiple + 2) < 1e-9 else "has the wrong factor"
-    return "term_differs", f"{describe_term(shape, setting, definite=True, own=True)} {how}"
+    # the expected answer's other terms are the student's too, and right: the term is told apart from them
+    # (a term as written, k(r − l₀), from none: the expanded ones are its own pieces)
+    named = describe_term(shape, setting, definite=True, own=True)
+    if shape in shapes:
+        named = told_apart(shape, named, list(shapes), setting, own=True)
+    return "term_differs", f"{named} {how}"
 
 
 def _written_terms(e, shapes: dict, varying: set | None) -> list:

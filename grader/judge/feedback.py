@@ -116,6 +116,10 @@ FEEDBACK: dict[str, str] = {
     "wrong": "Not equivalent to the expected answer.",
     "factor_depends": "Your answer depends on {others} as the right answer does, but not on {names}: check how"
     " your answer depends on {names}.",
+    "factor_depends_extra": "Your answer depends on {others} as the right answer does, but the right answer does"
+    " not depend on {names}.",
+    "factor_depends_how": "Your answer depends on {others} as the right answer does, but on {names} in another way:"
+    " check how your answer depends on {names}.",
     "undecided": "This answer could not be checked automatically; it has been set aside for a person to grade.",
     "not_a_number": "A number is asked for here; your answer contains {names}.",
     "number_hedged": "One number is asked for here, and your answer offers a choice (`or`): give the one you mean.",
