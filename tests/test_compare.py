@@ -175,7 +175,7 @@ FEEDBACK = [
      "A term differs: the term in sin(θ) has the wrong sign."),
     # θ̈₁'s coefficient holds cos(θ₁ − θ₂): solved for θ̈₂ instead, each term stays as the student wrote it
     (EOM_DOUBLE_2, EOM_DOUBLE_2.replace("- l1", "+ l1"), "equation", DOUBLE, "term_differs",
-     "A term differs: the velocity-dependent term in sin(θ₁ - θ₂) has the wrong sign."),
+     "A term differs: the velocity-dependent term in sin(θ₁ − θ₂) has the wrong sign."),
     # Newton's equations for the bob, with the string's tension T still in them
     (EOM_PENDULUM, "m l θ̈ = −m g sin θ; 0 = T − m g cos θ − m l θ̇²", "equation", PENDULUM, "eliminate_unknowns",
      "One equation is asked for here; your answer has 2, with `T`, which this problem does not define."
@@ -238,7 +238,7 @@ def test_feedback_names_the_mistake(expected, submitted, kind, setting, diagnosi
     [
         (f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2.replace('- l1', '+ l1')}",
          ("Your equation for θ₂ is not right; equation 1 is right.",
-          "A term differs: the velocity-dependent term in sin(θ₁ - θ₂) has the wrong sign.")),
+          "A term differs: the velocity-dependent term in sin(θ₁ − θ₂) has the wrong sign.")),
         # the equations in the other order: the wrong one is named against the equation it is nearest
         (f"{EOM_DOUBLE_2}; {EOM_DOUBLE_1.replace(' + (m1+m2) g sin(theta1)', '')}",
          ("Your equation for θ₁ is not right; equation 1 is right.", "A term is missing: a term in sin(θ₁).")),
@@ -277,7 +277,7 @@ def test_each_wrong_equation_of_a_system_has_its_terms_named_with_its_number():
     assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "wrong_equations")
     assert verdict.feedback == (
         "Your equations do not determine the right accelerations for θ₁, θ₂.",
-        "In your equation 1, a term differs: the velocity-dependent term in sin(θ₁ - θ₂) has the wrong sign.",
+        "In your equation 1, a term differs: the velocity-dependent term in sin(θ₁ − θ₂) has the wrong sign.",
         "In your equation 2, a term is missing: a term in sin(θ₁).",
     )
     # a conserved quantity's terms are its derivative's, which the student did not write
@@ -2211,7 +2211,7 @@ HOOP = {"coords": ["theta"], "known": ["m", "g", "R", "omega"]}
         # ω² sin θ for ω² sin θ cos θ: one term not right, named by the function both have, and
         # shown as read where the student's other term has that function too; not where the
         # other term is named otherwise, as (g/l) sin θ beside a velocity-dependent term
-        (HOOP_EOM, "θ̈ = ω² sin θ − (g/R) sin θ", HOOP, ("A term differs: the term in ω^2*sin(θ) is not right.",)),
+        (HOOP_EOM, "θ̈ = ω² sin θ − (g/R) sin θ", HOOP, ("A term differs: the term in ω² sin(θ) is not right.",)),
         (SPHERICAL_EOM, "θ̈ = sin θ φ̇² − (g/l) sin θ; φ̈ = −2 cot θ θ̇ φ̇", SPHERICAL,
          ("Your equation for θ is not right; equation 2 is right.",
           "A term differs: a velocity-dependent term in sin(θ) is not right.")),

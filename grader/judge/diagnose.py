@@ -17,6 +17,7 @@ they never print the expected term itself.
 from __future__ import annotations
 
 import itertools
+import re
 
 import sympy
 
@@ -278,7 +279,7 @@ def _one_term_changed(changes: list, lost, gained, setting: Setting, written: li
         return changes
     others = [shape for shape in written if shape != gained and shared <= _angle_functions(shape, setting)]
     if any(describe_term(shape, setting, functions=shared) == first for shape in others):
-        return [("term_differs", f"the term in {to_text(setting.as_typed(gained))} is not right")]
+        return [("term_differs", f"the term in {_shown(gained, setting)} is not right")]
     return [("term_differs", f"{first} is not right")]
 
 
@@ -325,7 +326,7 @@ def describe_term(
     >>> describe_term(sympy.Symbol("theta_1__1") ** 2 * sympy.Symbol("m"), s)
     'a velocity-dependent term'
     >>> describe_term(sympy.cos(sympy.Symbol("theta_1") - sympy.Symbol("theta_2")), s)
-    'a term in cos(θ₁ - θ₂)'
+    'a term in cos(θ₁ − θ₂)'
     """
     article = "the" if definite else "a"
     symbols = term.free_symbols
@@ -336,7 +337,7 @@ def describe_term(
         trig = sorted(functions, key=str)
     if trig:  # the first by its printed form, when there are several
         first = trig[0] if len(trig) == 1 else min(trig, key=str)
-        within = f" in {to_text(setting.as_typed(first))}"  # θ̇, not theta__1
+        within = f" in {_shown(first, setting)}"  # θ̇, not theta__1
     else:
         within = ""
     given = {sympy.Symbol(name) for name in setting.given} & symbols
@@ -360,6 +361,18 @@ def describe_term(
     coordinates = sorted(symbols & set(setting.state.values()), key=str)
     shown = [unicode_name(s.name) if "__" not in s.name else to_text(setting.as_typed(s)) for s in coordinates]
     return f"{article} term in {', '.join(shown)}"
+
+
+def _shown(expr, setting: Setting) -> str:
+    """``expr`` (in plain symbols) as a sentence shows it: ω² sin(θ), sin(2θ), not ω^2*sin(θ) and
+    sin(2*θ), which is how an answer is read back, as code would write it."""
+    text = to_text(setting.as_typed(expr))
+    text = _POWER.sub(lambda found: superscript(int(found[1])), text)
+    return _PRODUCT.sub(lambda found: "" if found[1] in "0123456789" else " ", text).replace(" - ", " − ")
+
+
+_POWER = re.compile(r"\^(-?[0-9]+)(?![0-9./])")
+_PRODUCT = re.compile(r"(?<=(.))\*(?!\*)")
 
 
 def _velocities(term, velocities: set, setting: Setting) -> str:
