@@ -2121,6 +2121,10 @@ MOMENTA = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
         ("p_θ²/(2 m) + p_φ²/(2 m l² sin²θ) − m g l cos θ", ("A term differs: a term in p_θ² is not right.",)),
         # a missing term is named in the momenta too, by the name alone
         ("p_φ²/(2 m l² sin²θ) − m g l cos θ", ("A term is missing: a term in p_θ.",)),
+        # both kinetic terms doubled: one term of the expected answer as written, named by both momenta,
+        # not "in p_θ p_φ", a product no one wrote
+        ("p_θ²/(m l²) + p_φ²/(m l² sin²θ) − m g l cos θ",
+         ("A term differs: the term in p_θ and p_φ has the wrong factor.",)),
         # written in the velocities, it is said in the velocities
         ("½ m l² θ̇² + ½ m l² φ̇² − m g l cos θ",
          ("A term is missing: a velocity-dependent term in sin(θ).",

@@ -342,7 +342,10 @@ def describe_term(
         within = ""
     given = {sympy.Symbol(name) for name in setting.given} & symbols
     if given:  # p_φ²/(2 m l²) in a Hamiltonian written in the momenta: named by them
-        named = (_powers(term, given, setting) if own else "") or " ".join(sorted(unicode_name(s.name) for s in given))
+        named = _powers(term, given, setting) if own else ""
+        if not named and len(given) > 1:  # (p_θ² + p_φ²/sin²θ)/2ml², a sum: not "in p_θ p_φ", a product
+            return f"{article} term in {' and '.join(sorted(unicode_name(s.name) for s in given))}"
+        named = named or unicode_name(next(iter(given)).name)
         return f"{article} term in {named}{within.replace(' in ', ' and ', 1)}"
     if symbols & accelerations:
         return f"{article} term with an acceleration{within}"
