@@ -1204,6 +1204,15 @@ def test_a_system_with_an_equation_times_a_vanishing_factor_is_not_equivalent(su
         assert verdict.diagnosis == "vanishing_factor_system_between"
 
 
+def test_one_term_in_its_small_angle_form_is_said_so_not_as_a_term_missing_and_one_too_many():
+    submitted = "l θ̈ − l sin θ cos θ φ̇² + g θ = 0; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0"
+    verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)
+    assert verdict.feedback == (
+        "Your equation for θ is not right; equation 2 is right.",
+        "A term differs: the gravity term is in its small-angle form, and the full form is asked for.",
+    )
+
+
 def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
     submitted = "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; m l² sin θ φ̇ = const"
     verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)

@@ -224,6 +224,11 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             gained.append(shape)
             changes.append(("extra_term", describe_term(shape, setting, own=True)))
     if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
+        coefficients = (expected_terms.get(lost[0]), submitted_terms.get(gained[0]))
+        if coefficients[0] == coefficients[1] and gained[0] in small_angle(lost[0], setting):
+            # g θ for g sin θ in one equation of a system: not "a term in sin θ missing, a gravity term too many"
+            named = describe_term(gained[0], setting, definite=True, own=True)
+            return [("term_differs", f"{named} is in its small-angle form, and the full form is asked for")]
         return _one_term_changed(changes, lost[0], gained[0], setting, [shape for shape, _ in theirs.values()])
     return changes
 
