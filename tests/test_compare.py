@@ -1213,6 +1213,34 @@ def test_one_term_in_its_small_angle_form_is_said_so_not_as_a_term_missing_and_o
     )
 
 
+DOUBLE_T = "1/2 (m1+m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot cos(theta1-theta2)"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "sentence"),
+    [
+        # too many terms differ to name them: which part is right is said, and how the other is off
+        (f"{DOUBLE_T} + 2 (m1+m2) g l1 cos(theta1) + 2 m2 g l2 cos(theta2)",
+         "The terms of your Lagrangian with velocities are right, but not the terms without: they are 2 times the"
+         " right ones."),
+        (f"{DOUBLE_T} + (m1+m2) g l1 sin(theta1) + m2 g l2 sin(theta2)",
+         "The terms of your Lagrangian with velocities are right, but not the terms without."),
+        (DOUBLE_T, "The terms of your Lagrangian with velocities are right, but there are none without: where is the"
+         " potential energy?"),
+        (f"{DOUBLE_T} - 1/2 (m1+m2) g l1 theta1^2 - 1/2 m2 g l2 theta2^2",
+         "The terms of your Lagrangian with velocities are right, but the terms without are in their small-angle"
+         " form, and the full form is asked for here."),
+        ("1/2 m1 l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot"
+         " + (m1+m2) g l1 cos(theta1) + m2 g l2 cos(theta2)",
+         "The terms of your Lagrangian without velocities are right, but not the terms with them."),
+    ],
+)  # fmt: skip
+def test_a_lagrangian_with_many_terms_wrong_says_which_part_is_right(submitted, sentence):
+    expected = f"{DOUBLE_T} + (m1+m2) g l1 cos(theta1) + m2 g l2 cos(theta2)"
+    verdict = compare(expected, submitted, kind="lagrangian", **DOUBLE)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,)), verdict
+
+
 def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
     submitted = "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; m l² sin θ φ̇ = const"
     verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)

@@ -61,6 +61,14 @@ FEEDBACK: dict[str, str] = {
     "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"
     " in an exponent, or raised to a power that is not a number.",
     "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",
+    # "kinetic" and "potential" energy would be wrong words where T has a part without velocities (a hoop
+    # turned at a fixed rate): the terms are told by what they hold
+    "potential_wrong": "The terms of your Lagrangian with velocities are right, but not the terms without{factor}.",
+    "potential_missing": "The terms of your Lagrangian with velocities are right, but there are none without: where"
+    " is the potential energy?",
+    "potential_small_angle": "The terms of your Lagrangian with velocities are right, but the terms without are in"
+    " their small-angle form, and the full form is asked for here.",
+    "kinetic_wrong": "The terms of your Lagrangian without velocities are right, but not the terms with them.",
     "some_signs": "Your answer is right only for some signs of {names}, which may be negative here:"
     " remember that √(x²) is |x|, not x.",
     "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",

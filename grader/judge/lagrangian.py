@@ -31,6 +31,7 @@ from grader.judge.sampling import (
     GROUP,
     MIN_DEFINED,
     constant_difference,
+    constant_ratio,
     nice_number,
     precise_side_by_side,
     short_fraction,
@@ -302,5 +303,44 @@ def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> 
     change = single_term_change(expected, "value", lagrangian, submitted, state)
     if change:
         return term_outcome([change])
-    submitted_terms = terms(setting.plain(submitted), varying=state)
-    return term_outcome(term_changes(expected_terms(expected, "value", lagrangian, state), submitted_terms, setting))
+    plain = setting.plain(submitted)
+    submitted_terms = terms(plain, varying=state)
+    outcome = term_outcome(term_changes(expected_terms(expected, "value", lagrangian, state), submitted_terms, setting))
+    if outcome.key != "wrong":
+        return outcome
+    return _by_energies(expected, lagrangian, plain, deadline) or outcome
+
+
+def _by_energies(expected: Expected, lagrangian, plain, deadline: Deadline) -> Outcome | None:
+    """Where too many terms differ to name them: which part is right, the terms with velocities
+    (T) or those without (−V, up to a constant: another zero), and how the other is off: missing,
+    a multiple of the right one, or in its small-angle form. None where neither is right."""
+    setting = expected.setting
+    rest = {setting.velocity(q): sympy.S.Zero for q in setting.coords}  # not 0: θ̇ alone becomes the int 0
+    if "energies" not in expected.cache:
+        at_rest = lagrangian.xreplace(rest)
+        expected.cache["energies"] = (lagrangian - at_rest, at_rest, taylor(at_rest, setting, 2))
+    kinetic, potential, small = expected.cache["energies"]
+    theirs_at_rest = plain.xreplace(rest)
+    equal, pairs = same_values(expected, kinetic, plain - theirs_at_rest, deadline, key="kinetic part")
+    deadline.check()
+    if equal:  # T is right: how is V off?
+        if not theirs_at_rest.free_symbols & set(setting.state.values()):
+            return Outcome("not_equivalent", 0.0, "potential_missing", method="euler-lagrange: energies")
+        _, pairs = same_values(expected, potential, theirs_at_rest, deadline, key="potential part")
+        if not small.has(sympy.nan) and small != potential:
+            _, near = same_values(expected, small, theirs_at_rest, deadline, key="small-angle potential part")
+            if constant_difference(near):
+                return Outcome("not_equivalent", 0.0, "potential_small_angle", method="euler-lagrange: energies")
+        return Outcome("not_equivalent", 0.0, "potential_wrong", _factor_note(pairs), method="euler-lagrange: energies")
+    _, pairs = same_values(expected, potential, theirs_at_rest, deadline, key="potential part")
+    if constant_difference(pairs):
+        return Outcome("not_equivalent", 0.0, "kinetic_wrong", method="euler-lagrange: energies")
+    return None
+
+
+def _factor_note(pairs) -> dict:
+    """``{"factor": ": they are 2 times the right ones"}`` where the terms are a multiple of the right ones."""
+    ratio = constant_ratio(pairs)
+    factor = nice_number(ratio) if ratio is not None else None
+    return {"factor": f": they are {factor} times the right ones" if factor else ""}
