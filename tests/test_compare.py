@@ -1887,6 +1887,7 @@ def _final(value):
         ("2", "It has two degrees of freedom", {}, "equivalent", "2", (_sentence("two"),)),
         ("2", "2 d.o.f.", {}, "equivalent", "2", (_remark(2, "d.o.f."),)),  # an abbreviation
         ("2", "two (2)", {}, "equivalent", "2", (_remark("two", "(2)"),)),  # the number again, in digits
+        ("2", "2 (one coordinate for each bob)", {}, "equivalent", "2", (_remark(2, "(one coordinate for each bob)"),)),
         ("2", "2 (the two angles)", {}, "equivalent", "2", (_remark(2, "(the two angles)"),)),
         # a count broken down, in brackets, into counts that add up to it
         ("6", "6 (3 translations + 3 rotations)", {}, "equivalent", "6",

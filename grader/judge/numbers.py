@@ -206,7 +206,7 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
-    if any(_NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(words)):
+    if any(_NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(_PER_EACH.sub(" ", words))):
         return False
     return is_prose(words, names)
 
@@ -230,6 +230,9 @@ def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
     return read.ok and read.kind == "expression" and read.value == int(number)
 
 
+# "one coordinate for each bob": a count per thing, not another number for the answer ("one angle per
+# rod" stays a hedge: per is a word of arithmetic, as in kg per m)
+_PER_EACH = re.compile(r"\bone\s+[A-Za-z]+\s+(?:for\s+each|for\s+every|on\s+each)\b", re.I)
 _REPEATED = re.compile(r"\(\s*([0-9]+)\s*\)\.?")
 _BRACKETED = re.compile(r"\(([^()]{1,120})\)\.?")
 _COUNTED = re.compile(r"(?<![\w\\])[A-Za-z]{2,}(?!\w)")  # translations, rotations, and: not θ1
