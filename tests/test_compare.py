@@ -1241,6 +1241,35 @@ def test_a_lagrangian_with_many_terms_wrong_says_which_part_is_right(submitted, 
     assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,)), verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # r is the answer's own name: mr² is m r², read again with r known
+        ("mr² φ̇, r = l sin θ", "equivalent"),
+        ("mr² φ̇, r = l cos θ", "not_equivalent"),
+    ],
+)
+def test_a_glued_product_with_a_name_the_answer_defines_is_read_with_it(submitted, status):
+    verdict = compare("m l^2 sin(theta)^2 phidot", submitted, **SPHERICAL)
+    assert verdict.status == status, verdict
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # H = p_θ θ̇ − L, the prompt's own definition, written on the way: L is no name to define
+        ("p_θ θ̇ − L = ½mR²θ̇² − ½mR²ω²sin²θ − mgR cosθ", "equivalent"),
+        ("p_θ θ̇ − L = ½mR²θ̇² + ½mR²ω²sin²θ − mgR cosθ", "not_equivalent"),
+    ],
+)
+def test_the_definition_of_the_hamiltonian_written_on_the_way_is_no_name_to_define(submitted, status):
+    hoop = {"coords": ["theta"], "known": ["m", "R", "g", "omega"]}
+    expected = "1/2 m R^2 thetadot^2 - 1/2 m R^2 omega^2 sin(theta)^2 - m g R cos(theta)"
+    verdict = compare(expected, submitted, given={"p_theta": "m R^2 thetadot"}, **hoop)
+    assert verdict.status == status, verdict
+    assert verdict.diagnosis != "undefined_symbol"
+
+
 def test_a_conserved_quantity_that_is_wrong_says_how_it_was_read():
     submitted = "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ; m l² sin θ φ̇ = const"
     verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)

@@ -548,7 +548,12 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
         return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
         return ParsedAnswer(answer.text, value.rhs, "expression")
+    if undefined & _DEFINING and not {symbol.name for symbol in value.rhs.free_symbols} - expected.names:
+        return ParsedAnswer(answer.text, value.rhs, "expression")  # p_θ θ̇ − L = …: the definition, worked
     return answer
+
+
+_DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines one by the other
 
 
 def _scaled_name(lhs, undefined: set[str]):
@@ -680,6 +685,10 @@ def _read(
     coords = expected.setting.coords
     if spec.name not in ("integer", "number"):
         answer = parse_answer(submitted, coords=coords, known=names, deadline=deadline)
+        defined = _names_defined(answer, names)
+        if defined:  # mr² φ̇, r = l sin θ: r is the answer's own name, and mr is m r
+            again = parse_answer(submitted, coords=coords, known=[*names, *defined], deadline=deadline)
+            answer = again if again.ok else answer
         return _without_words(answer, submitted, expected, names, deadline)
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
@@ -687,6 +696,15 @@ def _read(
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)
     return answer, notes
+
+
+def _names_defined(answer: ParsedAnswer, names: list) -> list[str]:
+    """The names an answer defines for itself (``…, r = l sin θ``) that the problem does not: the
+    left side of an equation of a list that is a name alone (or its power)."""
+    if not answer.ok or answer.kind != "equations":
+        return []
+    bases = (item.lhs.as_coeff_Mul()[1].as_base_exp()[0] for item in answer.value if item.lhs != ANSWER)
+    return sorted({base.name for base in bases if base.is_Symbol and base.name not in names})
 
 
 def _without_words(
