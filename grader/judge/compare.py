@@ -688,7 +688,11 @@ def _read(
         defined = _names_defined(answer, names)
         if defined:  # mr² φ̇, r = l sin θ: r is the answer's own name, and mr is m r
             again = parse_answer(submitted, coords=coords, known=[*names, *defined], deadline=deadline)
-            answer = again if again.ok else answer
+            known = {*names, *defined, TIME.name}
+            glued = {symbol.name for symbol in answer.symbols} - known
+            # only where it splits a glued name: xdot, where x = l sin θ, is the rate of x as read
+            if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
+                answer = again
         return _without_words(answer, submitted, expected, names, deadline)
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
