@@ -123,6 +123,15 @@ FUNCTIONS = [
     ("cos ω t^2", t**2 * cos(omega)),  # t raised: not a phase
     ("cos ω t²", t**2 * cos(omega)),
     ("√ω t", sqrt(omega) * t),  # no angle
+    # a function's name with a phone's first capital, caps lock or Mathematica's; Mathematica's brackets
+    (
+        "Sin θ + SIN φ + Cos a + Cot b + COSH c + Ln d",
+        sin(theta) + sin(phi) + cos(a) + sympy.cot(b) + sympy.cosh(c) + sympy.log(d),
+    ),
+    ("Sin[θ[t]] + Cos[x] + Sqrt[a] + Exp[b] + ArcTan[c]", sin(theta) + cos(x) + sqrt(a) + exp(b) + sympy.atan(c)),
+    ("ctg a + cotg b + \\ctg c + \\cotg d", sympy.cot(a) + sympy.cot(b) + sympy.cot(c) + sympy.cot(d)),  # Europe's cot
+    # tg is t·g, never the tangent; no other casing is a function's, nor two capitals (L·N)
+    ("tg + sIn + LN", t * g + sympy.Symbol("sIn") + sympy.Symbol("LN")),
 ]
 
 NAMES = [
@@ -146,6 +155,7 @@ NAMES = [
     ("gamma", sympy.Symbol("gamma")),
     ("E + I + N + S + Q", sum(sympy.Symbol(n) for n in "EINSQ")),
     ("theta(t)", theta),
+    ("θ[t] + θ'[t]^2 + θ''[t]", theta + D(theta) ** 2 + D(theta, 2)),  # Mathematica's
     ("R", R),
     ("Qᵣ + Q_r + vₓ + v_x", 2 * sympy.Symbol("Q_r") + 2 * sympy.Symbol("v_x")),  # subscript letters
     # letters typed for Greek ones the problem defines: w for ω, th for θ, ph for φ
@@ -196,6 +206,9 @@ DERIVATIVES = [
     # an equation editor's styled letters and digits, the script ɡ, and marks of writing direction
     ("𝑚 𝑔 𝑙 sin 𝜃 + 𝐚 + 𝟏", m * g * l * sin(theta) + a + 1),
     ("ɡ l\u200f + a\u200e", g * l + a),
+    # Word's function application after a function's name, invisible times, thin and other spaces
+    ("m\u2062g\u2062l cos\u2061\u2009θ + a\u202fb\u205fc\u2002d\u2063k", m * g * l * cos(theta) + a * b * c * d * k),
+    ("sin\u2061〖2θ〗 + 〖θ̇〗^2", sin(2 * theta) + D(theta) ** 2),  # and its linear format's grouping
 ]
 
 LEIBNIZ = [
@@ -220,6 +233,11 @@ LEIBNIZ = [
     ("d/dt x^2", 2 * x * D(x)),  # the operator form still takes the factor after it, power and all
     ("\\frac{d}{dt}\\left(m l^2 \\dot\\theta\\right) + m g l \\sin\\theta = 0",
      Eq(m * l**2 * D(theta, 2) + m * g * l * sin(theta), 0)),
+    # sympy's own LaTeX (sp.latex, Jupyter): a coordinate as a function of time, its brace around (t)
+    ("g l m \\cos{\\left(\\theta{\\left(t \\right)} \\right)}"
+     " + \\frac{l^{2} m \\left(\\frac{d}{d t} \\theta{\\left(t \\right)}\\right)^{2}}{2}",
+     g * l * m * cos(theta) + l**2 * m * D(theta) ** 2 / 2),
+    ("\\frac{d^{2}}{d t^{2}} \\theta_{1}{\\left(t \\right)} + x{(t)}", D(theta1, 2) + x),
 ]  # fmt: skip
 
 SPLITTING = [
@@ -275,8 +293,8 @@ SYSTEMS = [
     ("$\\dot x$ + $\\dot\\theta$", D(x) + D(theta)),  # inline math around an operator: one expression
     ("(i) a = b\n(ii) c = d", (Eq(a, b), Eq(c, d))),
     ("(b) a = b\n(a) c = d", (Eq(b * a, b), Eq(a * c, d))),
-    # numbers out of order, or on one equation only, are factors as written
-    ("(2) a = b\n(1) c = d", (Eq(2 * a, b), Eq(c, d))),
+    # numbers out of order, or on one equation only, are factors as written where they touch what follows
+    ("(2)a = b\n(1)c = d", (Eq(2 * a, b), Eq(c, d))),
     ("a = b; (2) c = d", (Eq(a, b), Eq(2 * c, d))),
     ("1. a = b\n2. c = d", (Eq(a, b), Eq(c, d))),  # a numbered list, every line in order
     ("  1) a = b\n\n  2) c = d\n", (Eq(a, b), Eq(c, d))),
@@ -339,6 +357,25 @@ SYSTEMS = [
     ("ẍ ≃ a", Eq(D(x, 2), a)),
     ("a + b\n- c", a + b - c),
     ("(a +\n b) = c", Eq(a + b, c)),
+    # an equation's number set apart at its line's end: after TeX's wide space, or two spaces or a tab
+    ("\\ddot{\\theta}=-\\frac{g}{l}\\sin\\theta \\qquad (3)", Eq(D(theta, 2), -g / l * sin(theta))),
+    ("a = b \\quad (1) \\\\ c = d\\qquad(2)", (Eq(a, b), Eq(c, d))),
+    ("a = b   (2)", Eq(a, b)),
+    ("a = b\t(1)\nc = d  (2)", (Eq(a, b), Eq(c, d))),
+    ("a + b \\quad (2)", a + b),
+    ("a + b  (2)", a + 2 * b),  # no equation, no wide space: 2(a + b) may be meant, as typed
+    ("a = b (2)", Eq(a, 2 * b)),  # one space: a factor
+    # and at its start, a space and a name after it, on an equation's line; or a coordinate the line is for
+    ("(2) L = ½ m", Eq(L, m / 2)),
+    ("(2) a = b\n(1) c = d", (Eq(a, b), Eq(c, d))),
+    ("(θ) m θ̈ = a\n(x) m ẍ = b", (Eq(m * D(theta, 2), a), Eq(m * D(x, 2), b))),
+    ("\\left(\\theta_1\\right) \\ddot\\theta_1 = a", Eq(D(theta1, 2), a)),
+    # a bracket that may be a factor stays one: a number, a bracket or no space after it, no `=`, no coordinate
+    ("(2) (m)(g) = a", Eq(2 * m * g, a)),
+    ("(1/2) m = a", Eq(m / 2, a)),
+    ("(2) 3 a = b", Eq(6 * a, b)),
+    ("(2) a + b", 2 * a + b),
+    ("(m) a = b", Eq(m * a, b)),
 ]
 
 LATEX = [
@@ -425,7 +462,31 @@ LATEX = [
         (f"m \\ddot x = -k x {step} \\ddot x = -\\frac km x", Eq(D(x, 2), -k / m * x))
         for step in ("\\iff", "\\Leftrightarrow", "\\therefore", "\\to", "\\rightarrow", "\\text{ so }")
     ),
-]
+    # a row break's spacing below its row, \\\\[6pt]: a length, no factor of the next row
+    ("a = b \\\\[6pt] c = d \\\\ [1em] \\ddot x = a \\\\[-2.5mm] m = k",
+     (Eq(a, b), Eq(c, d), Eq(D(x, 2), a), Eq(m, k))),
+    ("a = b \\\\ [c + d] = a", (Eq(a, b), Eq(c + d, a))),  # no length: a bracket
+    # MathType's spaces before a subscript or a prime, and its braces around the name they mark
+    ("\\theta _1 + {\\dot \\theta _1}^2 + {\\theta}_2 + {\\dot\\theta}_2",
+     theta1 + D(theta1) ** 2 + theta2 + D(theta2)),
+    ("\\theta ' + \\phi '' + x^{\\prime} + \\theta ^{\\prime\\prime} + \\phi ^\\prime + {\\theta}'",
+     2 * D(theta) + D(phi, 2) + D(x) + D(theta, 2) + D(phi)),
+    ("m{l^2}{\\dot \\theta _1}^2 + \\frac{1}{2}m{l^2}{\\dot \\theta _2}^2"
+     " + m{l^2}{\\dot \\theta _1}{\\dot \\theta _2}\\cos ({\\theta _1} - {\\theta _2})"
+     " + 2mgl\\cos {\\theta _1} + mgl\\cos {\\theta _2}",
+     m * l**2 * D(theta1) ** 2 + m * l**2 * D(theta2) ** 2 / 2 + m * l**2 * D(theta1) * D(theta2) * cos(theta1 - theta2)
+     + 2 * m * g * l * cos(theta1) + m * g * l * cos(theta2)),
+    # a power after the marks, a brace's power, a name's brace alone
+    ("{\\theta}_1^{\\prime 2} + {\\theta}^2 + {\\theta_1}", D(theta1) ** 2 + theta**2 + theta1),
+    # a name in \\text before `=`, as in \\mathrm; bold type, which says nothing of a scalar; more of a document
+    ("\\text{L}=a", Eq(L, a)),
+    ("\\text{Lagrangian} = a", Eq(sympy.Symbol("Lagrangian"), a)),  # a word in text is one name, never L·a·g·…
+    ("\\mathbf{x} + \\boldsymbol{\\theta} + \\bm\\phi + \\mathbf{m}_1 + \\boldsymbol{\\dot\\theta}",
+     x + theta + phi + m1 + D(theta)),
+    ("a = b \\nonumber \\\\ c = d \\tag*{2} \\notag", (Eq(a, b), Eq(c, d))),
+    ("\\overset{..}{\\theta} + \\overset{\\cdot\\cdot}{x} + \\overset{.}{\\phi} + \\overset{\\cdot}{\\theta}_1",
+     D(theta, 2) + D(x, 2) + D(phi) + D(theta1)),
+]  # fmt: skip
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX
 

@@ -136,6 +136,13 @@ HOSTILE = [
     ("\\immediate\\write18{rm -rf /}", "unknown_command"),
     ("\\begin{verbatim}x\\end{verbatim}", "unknown_command"),
     ("\\csname x\\endcsname", "unknown_command"),
+    # a subscript on a brace that is an argument, or on a name that has one; dots that are no \\dot or \\ddot
+    ("\\frac{a}{x}_1", "bad_character"),
+    ("{\\theta_1}_2", "bad_character"),
+    ("\\overset{a}{x}", "unknown_command"),
+    ("\\overset{...}{x}", "unknown_command"),
+    ("\\text{L} + a", "latex_words"),  # a name in \\text only before `=`, as the quantity written out
+    ("a = b \\\\[6pt", "unclosed"),
     # -- values that do not exist -----------------------------------------------
     ("1/0", "division_by_zero"),
     ("m/(l-l)", "division_by_zero"),
@@ -149,6 +156,7 @@ HOSTILE = [
     ("x\x1b[2J", "bad_character"),
     ("\u202ex", "bad_character"),  # right-to-left override
     ("x\u2066", "bad_character"),  # left-to-right isolate (zero-width spaces and full-width letters are read)
+    ("a\u2064b", "bad_character"),  # Word's invisible plus, 2⁤½: not read as a space, which would multiply
     ("x\u00ad", "bad_character"),  # soft hyphen
     ("x\ud800", "bad_character"),  # lone surrogate, as json.loads can produce
     # a point with no digit after it, where no sentence ends

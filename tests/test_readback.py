@@ -7,7 +7,7 @@ import xml.dom.minidom
 import pytest
 import sympy
 
-from grader import parse_answer
+from grader import TIME, parse_answer
 from grader.parse import ParsedAnswer
 
 COORDS = ["theta", "theta_1", "theta_2", "x"]
@@ -68,3 +68,15 @@ def test_a_value_no_printer_can_show_is_shown_as_typed():
     # The parser refuses such values; should one get past it, showing it back must not raise.
     answer = ParsedAnswer("10^10000 x", sympy.Integer(10) ** 10000 * sympy.Symbol("x"), "expression")
     assert (answer.read_as_text, answer.read_as_latex, answer.read_as_mathml) == ("10^10000 x", "", "")
+
+
+def test_sympys_own_latex_of_coordinates_in_time_reads_back_as_the_same_value():
+    # Jupyter shows sympy's LaTeX: θ{\left(t \right)}, \frac{d}{d t} θ{\left(t \right)}. Pasted back into
+    # an answer, the brace around (t) once made the coordinate t·θ.
+    theta, theta_1 = (sympy.Function(name, real=True)(TIME) for name in ("theta", "theta_1"))
+    m, g, l = sympy.symbols("m g l")
+    value = m * l**2 * sympy.Derivative(theta, TIME) ** 2 / 2 + m * g * l * sympy.cos(theta)
+    value += sympy.Derivative(theta_1, (TIME, 2)) * sympy.sin(theta - theta_1)
+    pasted = sympy.latex(value)
+    assert "{\\left(t \\right)}" in pasted
+    assert parse_answer(pasted, coords=COORDS, known=KNOWN).value == value

@@ -146,7 +146,11 @@ def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None
 
 class _Parser:
     def __init__(self, tokens: list[Token], context: Context, text: str, deadline=None):
-        self.tokens, self.context, self.text = _as_system(_leibniz(tokens, context)), context, text
+        self.tokens, self.context, self.text = (
+            _as_system(_line_labels(_leibniz(tokens, context), context)),
+            context,
+            text,
+        )
         self.deadline = deadline
         self.i = 0
         self.depth = 0
@@ -844,16 +848,18 @@ class _Parser:
         return piece, i + 1
 
     def _skip_time_argument(self) -> None:
-        """``theta(t)`` is the coordinate itself."""
+        """``theta(t)`` is the coordinate itself; so are Mathematica's ``θ[t]`` (``θ'[t]``) and sympy's
+        LaTeX ``\\theta{\\left(t \\right)}``, whose brace holds the bracket."""
+        braced = self.token.is_op("{")
+        at = self.i + braced
+        if self._is_time_argument(at) and (not braced or self.tokens[at + 3].is_op("}")):
+            self.i = at + 3 + braced
+
+    def _is_time_argument(self, i: int) -> bool:
+        """Whether the tokens at ``i`` are ``(t)`` or ``[t]``."""
         t = self.tokens
-        if (
-            self.token.is_op("(")
-            and t[self.i + 1].kind == "name"
-            and t[self.i + 1].value.raw == "t"
-            and not (t[self.i + 1].value.dots or t[self.i + 1].value.primes)
-            and t[self.i + 2].is_op(")")
-        ):
-            self.i += 3
+        closer = _OPENERS.get(t[i].value) if t[i].is_op("(", "[") else None
+        return closer is not None and _is_raw(t[i + 1], "t") and t[i + 2].is_op(closer)
 
     def resolve(self, name: Name, token: Token) -> list:
         """The meaning of a name: one piece, or several when known symbols are juxtaposed."""
@@ -1030,6 +1036,54 @@ def _as_system(tokens: list[Token]) -> list[Token]:
             dropped = {j for label in labels for j in label}
             return [token for j, token in enumerate(tokens) if j not in dropped]
     return tokens
+
+
+# what may follow a line's label, apart from it by a space: a name, a function, a fraction; not a bracket,
+# a number or an operator, which go on a product as typed: (2)(m)(g), (2) (m g), (2) 3 x, (2) · x
+_AFTER_LABEL = ("name", "func", "frac", "sqrt", "deriv", "partial")
+
+
+def _line_labels(tokens: list[Token], context: Context) -> list[Token]:
+    """A line's number or coordinate in brackets before its equation, as a document numbers it or a
+    student says which coordinate it is for: ``(2) L = ½ m l² θ̇² + …``, ``(θ) m l² θ̈ = …``, left out.
+    Only a whole number or a coordinate alone in round brackets that starts the answer or a line, set
+    apart by a space from the name, function or fraction that follows, on a line with an ``=``. A
+    factor is never bracketed so: ``(1/2) m v²``, ``(2)(m)(g)`` and ``a = b; (2) c = d`` stay products."""
+    if not any(token.is_op("(") for token in tokens):
+        return tokens
+    dropped: set[int] = set()
+    for i in range(len(tokens) - 3):
+        if i and tokens[i - 1].kind != "sep":
+            continue
+        opener, inside, closer, after = tokens[i : i + 4]
+        if not (opener.is_op("(") and closer.is_op(")") and after.kind in _AFTER_LABEL and after.start > closer.end):
+            continue
+        number = _is_whole_number(inside)
+        coordinate = inside.kind == "name" and _is_raw(inside, inside.value.raw)
+        coordinate = coordinate and canonical_name(inside.value.raw) in context.coords
+        if (number or coordinate) and _one_equation(tokens, i + 3):
+            dropped |= {i, i + 1, i + 2}
+    return [token for j, token in enumerate(tokens) if j not in dropped] if dropped else tokens
+
+
+def _one_equation(tokens: list[Token], i: int) -> bool:
+    """Whether the line from ``i`` on is an equation (an ``=`` before its end) and holds no other
+    number set apart in brackets: ``(1) a = b (3) c = d`` numbers two equations out of order, which
+    :func:`~grader.parse.tokens.tokenize` would not read as numbers, and neither is the first."""
+    equals = False
+    for j in range(i, len(tokens)):
+        token = tokens[j]
+        if token.kind in ("sep", "end"):
+            return equals
+        equals = equals or token.is_op("=")
+        apart = token.start > tokens[j - 1].end
+        if apart and token.is_op("(") and _is_whole_number(tokens[j + 1]) and tokens[j + 2].is_op(")"):
+            return False
+    return equals
+
+
+def _is_whole_number(token: Token) -> bool:
+    return token.kind == "num" and token.value.isdecimal()
 
 
 def _top_level(tokens: list[Token]) -> set[int]:

@@ -6,6 +6,7 @@ Contents:
     JOINING_WORDS                  "and", "where", "with": words between two equations
     IMPLYING_WORDS                 "so", "hence", "thus", "therefore": a derivation's steps, as ⇒
     SUBSCRIPT_DIGITS, SUBSCRIPT_LETTERS, SUPERSCRIPTS   Unicode sub- and superscript characters
+    function_name(raw)             ``sin``, ``Sin``, ``SIN``, ``ArcSin`` → ``sin``/``asin``: a function, as typed
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
     split_prefixed_derivative(name)  ``dtheta1`` → (``theta_1``, 1)
@@ -36,6 +37,7 @@ __all__ = [
     "SUBSCRIPT_LETTERS",
     "SUPERSCRIPTS",
     "canonical_name",
+    "function_name",
     "is_arbitrary_constant",
     "split_derivative",
     "split_prefixed_derivative",
@@ -86,7 +88,32 @@ FUNCTION_NAMES: dict[str, str] = {
     "exp": "exp", "log": "log", "ln": "log", "sqrt": "sqrt", "abs": "abs",
     "sign": "sign", "sgn": "sign", "signum": "sign",
     "sen": "sin", "senh": "sinh", "arcsen": "asin",  # sine as Spanish and Portuguese write it
+    "ctg": "cot", "cotg": "cot",  # the cotangent as much of Europe writes it (not tg: t·g is a product)
 }  # fmt: skip
+# The same names as a phone's first capital (Sin), caps lock (SIN) or Mathematica (Sin[θ], ArcTan) type
+# them. No other casing: sIn is a slip of no keyboard's. Two capitals stay letters (LN may be L·N).
+_CASED_FUNCTIONS = {
+    spelled: canonical
+    for name, canonical in FUNCTION_NAMES.items()
+    for spelled in (name.capitalize(), name.upper() if len(name) > 2 else None)
+    if spelled
+} | {
+    "Arc" + name[3:].capitalize(): canonical
+    for name, canonical in FUNCTION_NAMES.items()
+    if name[:3] == "arc" and name[3:] in FUNCTION_NAMES
+}
+
+
+def function_name(raw: str) -> str | None:
+    """The canonical function a name spells (``sin``, ``Sin``, ``SIN``; Mathematica's ``ArcTan``), or None.
+
+    >>> function_name("sin"), function_name("Cos"), function_name("SQRT"), function_name("ArcTan")
+    ('sin', 'cos', 'sqrt', 'atan')
+    >>> function_name("sIn") is None, function_name("LN") is None, function_name("tg") is None
+    (True, True, True)
+    """
+    return FUNCTION_NAMES.get(raw) or _CASED_FUNCTIONS.get(raw)
+
 
 _TRAILING_DIGITS = re.compile(r"^([A-Za-z]+)_?([0-9]+)$")
 # A derivative's suffix: dot, ddot, or _d, _dd as code spells them; a subscript may stand either side.

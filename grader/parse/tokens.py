@@ -46,6 +46,7 @@ from grader.parse.names import (
     SUBSCRIPT_DIGITS,
     SUBSCRIPT_LETTERS,
     SUPERSCRIPTS,
+    function_name,
 )
 
 __all__ = ["LIMITS", "Name", "Token", "tokenize", "visible"]
@@ -166,6 +167,8 @@ _LATEX_FUNCTIONS = {
     "arctan": "atan",
     "ln": "log",
     "sen": "sin",  # babel's Spanish \sen
+    "ctg": "cot",  # and its Russian \ctg, as Europe writes the cotangent
+    "cotg": "cot",
 }
 # names followed by an argument in plain notation; Derivative(θ(t), t) as sympy prints it
 _CALLABLE = FUNCTION_NAMES | {"diff": "diff", "Derivative": "diff"}
@@ -185,11 +188,21 @@ _TEXT_PUNCTUATION = re.compile(r"\s*\{\s*[.,;]?\s*\}")
 _OPERATOR_NAME = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}")
 _BRACED_LETTERS = re.compile(r"\{\s*([A-Za-z]+)\s*\}|\s*([A-Za-z])")  # \mathcal{L}, or \mathcal L as TeX reads it
 _SIZES = {f"{size}{side}" for size in ("big", "Big", "bigg", "Bigg") for side in ("", "l", "r", "m")}
-_LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "limits", *_SIZES}
+# \nonumber and \notag: an aligned row's number left out, nothing of the row's mathematics
+_LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "limits", "nonumber", "notag", *_SIZES}
+# bold type, which says vector; our answers are scalars, so \boldsymbol{\theta} is θ
+_BOLD = {"mathbf", "boldsymbol", "bm"}
+_WORD_BEFORE_EQUALS = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}(?=\s*=)")  # \text{L} = …: the quantity's name
+# \overset{.}{\theta}, \overset{..}{\theta}, \overset{\cdot\cdot}{\theta}: dots set over a name, as \dot, \ddot
+_OVERSET_DOTS = re.compile(r"\s*\{\s*((?:(?:\.|\\cdot(?![A-Za-z]))\s*){1,2})\}")
 _LATEX_ENVIRONMENTS = {
     "aligned", "align", "align*", "gathered", "gather", "gather*", "split",
     "cases", "equation", "equation*", "multline", "array", "eqnarray", "eqnarray*",
 }  # fmt: skip
+# the space a row break \\[6pt] leaves below its row: a TeX length (as \\ reads it, past spaces)
+_ROW_SPACING = re.compile(
+    r"\*?\s*\[\s*[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*(?:pt|em|ex|mm|cm|in|bp|pc|dd|cc|sp|mu)\s*\]"
+)
 _ARRAY_COLUMNS = re.compile(r"\s*\{[lcr|@ ]*\}")  # \begin{array}{ll}: how its columns align
 
 
@@ -433,11 +446,20 @@ _LOOKALIKES = (
 # and right-to-left marks that right-to-left text around leaves. Read as a space; a line or paragraph
 # separator as a new line. The overrides and isolates (U+202A–202E, U+2066–2069) stay refused: they
 # reorder what a reader of the answer sees.
-_INVISIBLE = dict.fromkeys((0x200B, 0x200C, 0x200D, 0x200E, 0x200F, 0x2060, 0xFEFF), " ") | {
-    0x2028: "\n",
-    0x2029: "\n",
-}
-_READ_AS = str.maketrans(_SPACING_DOTS | _LOOKALIKES | _INVISIBLE)  # all three, in one pass over the text
+# Word's equation editor copies a function application (U+2061) after every function's name, and an
+# invisible times (U+2062) or separator (U+2063) between factors: spaces too, as juxtaposition already
+# multiplies. And the typographic spaces, en to hair (U+2000–200A), narrow no-break and medium
+# mathematical (U+202F, U+205F), and the ideographic space of an East Asian keyboard.
+_INVISIBLE = (
+    dict.fromkeys(
+        (0x200B, 0x200C, 0x200D, 0x200E, 0x200F, 0x2060, 0xFEFF, 0x2061, 0x2062, 0x2063, 0x202F, 0x205F, 0x3000), " "
+    )
+    | dict.fromkeys(range(0x2000, 0x200B), " ")
+    | {0x2028: "\n", 0x2029: "\n"}
+)
+# Word's linear format groups with 〖 〗 where a bracket would show (sin⁡〖2θ〗, 〖θ̇〗^2): brackets to us.
+_GROUPING = {0x3016: "(", 0x3017: ")"}
+_READ_AS = str.maketrans(_SPACING_DOTS | _LOOKALIKES | _INVISIBLE | _GROUPING)  # all, in one pass over the text
 
 
 def _refuse_other_scripts(text: str) -> None:
@@ -536,6 +558,33 @@ def _inline_markers(text: str) -> dict[int, int]:
     return {m.start(): m.end() for m in found}
 
 
+# an equation's number at its line's end: a lone whole number in round brackets
+_NUMBER_LABEL = re.compile(r"\([ \t]*[0-9]{1,3}[ \t]*\)")
+_WIDE_SPACE = re.compile(r"\\q?quad$")
+
+
+def _end_labels(text: str) -> dict[int, int]:
+    """Where a line ends in its equation's number as a document sets it, ``θ̈ = −(g/l) sin θ \\qquad (3)``
+    or ``L = T − V   (2)``: start → end of each, to be read past. A lone whole number in round brackets,
+    last on its line with something before it, set apart by a TeX wide space, or by two spaces or a
+    tab on a line with an ``=`` (``a + b  (2)`` may be 2(a + b), as typed)."""
+    labels = {}
+    for label in _NUMBER_LABEL.finditer(text):
+        if not _closes_line(text, label.end()):
+            continue
+        spaced = text[: label.start()].rstrip(" \t")  # in two steps, not one regex: no backtracking over spaces
+        space = text[len(spaced) : label.start()]
+        wide = _WIDE_SPACE.search(spaced[-6:])
+        start = len(spaced) - len(wide[0]) if wide else len(spaced)
+        row_break = text.rfind("\\\\", 0, start)
+        line_start = max(text.rfind("\n", 0, start) + 1, row_break + 2 if row_break >= 0 else 0)
+        before = text[line_start:start]
+        set_apart = wide or ((len(space) >= 2 or "\t" in space) and "=" in before)
+        if set_apart and before.strip(" \t$"):
+            labels[start] = label.end()
+    return labels
+
+
 class _Tokenizer:
     def __init__(self, text: str, *, latex: bool):
         self.text, self.latex = visible(text), latex
@@ -545,6 +594,7 @@ class _Tokenizer:
             self.markers = _list_markers(self.text)
         else:
             self.markers = _inline_markers(self.text) if _INLINE_MARKER.match(self.text) else {}
+        self.labels = _end_labels(self.text) if "(" in self.text else {}
         self.in_math = self.math_closed = False  # between $ … $, and whether a $ has closed math yet
 
     def run(self) -> list[Token]:
@@ -556,6 +606,8 @@ class _Tokenizer:
                 if self.tokens and self.tokens[-1].kind != "sep":
                     self.tokens.append(Token("sep", "\n", self.pos, self.pos))  # 1) … 2) … on one line
                 self.pos = self.markers.pop(self.pos)
+            elif self.pos in self.labels:  # … \qquad (3): the equation's number in its document
+                self.pos = self.labels.pop(self.pos)
             elif self.latex and c == "$":
                 self._dollar()
             elif c in " \t\r\u00a0" or (self.latex and c in "&~"):
@@ -592,6 +644,8 @@ class _Tokenizer:
                 self.pos += 1  # EOM: …, θ₁: …: the line's label, read past with its colon
             elif c == "_" and self.latex and self._subscript_after_power():
                 pass  # \dot\theta^2_1: TeX's θ̇₁², the subscript moved onto the name
+            elif (c == "_" or c in _PRIMES) and self.latex and self._marks_after_brace():
+                pass  # {\theta}_1, {\dot\theta}': MathType's braces around the name its marks belong to
             elif c in _OPERATORS:
                 self._emit("op", _OPERATORS[c], 1)
             elif c in _PRIMES:
@@ -664,6 +718,31 @@ class _Tokenizer:
         )
         return True
 
+    def _marks_after_brace(self) -> bool:
+        """``{\\theta}_1``, ``{\\dot\\theta}_1``, ``{\\theta}'``: a name alone in braces, then its subscript
+        or prime, which TeX puts on the brace and so on the name. Not where the brace is an argument
+        (``\\frac{a}{x}_1`` subscripts the fraction) or already has a subscript."""
+        tokens = self.tokens
+        if len(tokens) < 3 or not (tokens[-3].is_op("{") and tokens[-2].kind == "name" and tokens[-1].is_op("}")):
+            return False
+        before = tokens[-4] if len(tokens) >= 4 else None
+        if before is not None and (before.kind in ("frac", "sqrt") or before.is_op("^", "}")):
+            return False
+        name: Name = tokens[-2].value
+        if self.text[self.pos] == "_" and "_" in name.raw:
+            return False
+        opener = tokens[-3]
+        del tokens[-3:]
+        raw = [name.raw]
+        if self.text[self.pos] == "_":
+            self._subscript(raw)
+        at = len(tokens)
+        self._finish_name(opener.start, "".join(raw), name.dots)
+        marked: Token = tokens[at]  # a power may follow it: {\theta}_1^{\prime 2}
+        primes = marked.value.primes + name.primes
+        tokens[at] = Token("name", Name(marked.value.raw, name.dots, primes, tex=True), opener.start, marked.end)
+        return True
+
     @staticmethod
     def _is_letter(c: str) -> bool:
         if c.isascii():
@@ -729,9 +808,9 @@ class _Tokenizer:
                 self.pos += 1
                 self._finish_name(start, text[start], 0)
                 return
-            if run and run[0] in FUNCTION_NAMES:  # ``sin x`` typed inside LaTeX still means sine
+            if run and function_name(run[0]):  # ``sin x`` typed inside LaTeX still means sine
                 self.pos = run.end()
-                self.tokens.append(Token("func", FUNCTION_NAMES[run[0]], start, self.pos))
+                self.tokens.append(Token("func", function_name(run[0]), start, self.pos))
                 return
         raw: list[str] = []
         dots = 0
@@ -840,10 +919,9 @@ class _Tokenizer:
             raise ParseFailure("name_too_long", start, end_of_name, name=raw[:20] + "…", limit=LIMITS.name)
         if "__" in raw or raw.endswith("_") or raw.startswith("_"):
             raise ParseFailure("bad_name", start, end_of_name, name=self.text[start:end_of_name])
-        if not self.latex and not dots and not primes and raw in _CALLABLE:
-            self.tokens.append(Token("func", _CALLABLE[raw], start, self.pos))
-        elif self.latex and not dots and not primes and raw in FUNCTION_NAMES:
-            self.tokens.append(Token("func", FUNCTION_NAMES[raw], start, self.pos))
+        function = None if dots or primes else function_name(raw) or (None if self.latex else _CALLABLE.get(raw))
+        if function:
+            self.tokens.append(Token("func", function, start, self.pos))
         else:
             self.tokens.append(Token("name", Name(raw, dots, primes, tex=self.latex), start, self.pos))
         if exponent:  # \theta^{\prime 2}: θ′ squared, the rest of the brace its exponent
@@ -880,6 +958,8 @@ class _Tokenizer:
         if command in ("]", ")") and _closes_line(text, self.pos):
             return
         if command == "\\" or command == "newline":
+            if command == "\\" and (spacing := _ROW_SPACING.match(text, self.pos)):
+                self.pos = spacing.end()  # \\[6pt]: the space below the row, no factor of the next
             self.tokens.append(Token("sep", "\n", start, self.pos))
         elif command in ("quad", "qquad"):
             self.tokens.append(Token("gap", command, start, self.pos))
@@ -916,12 +996,16 @@ class _Tokenizer:
             self.tokens.append(Token("func", _LATEX_FUNCTIONS[command], start, self.pos))
         elif command in _LATEX_NAMES:
             raw = [_LATEX_NAMES[command]]
+            self._spaces_before_marks()
             if text.startswith("_", self.pos):
                 self._subscript(raw)
             self._finish_name(start, "".join(raw), 0)
         elif command in ("dot", "ddot"):
             self._latex_dot(start, command)
-        elif command in ("label", "tag") and (annotation := _LATEX_ANNOTATIONS.match(text, self.pos)):
+        elif command == "overset" and (dots := _OVERSET_DOTS.match(text, self.pos)):
+            self.pos = dots.end()
+            self._latex_dot(start, "ddot" if dots[1].count(".") + dots[1].count("\\cdot") == 2 else "dot")
+        elif command in ("label", "tag", "tag*") and (annotation := _LATEX_ANNOTATIONS.match(text, self.pos)):
             self.pos = annotation.end()
         elif command == "text" and (punctuation := _TEXT_PUNCTUATION.match(text, self.pos)):
             self.pos = punctuation.end()
@@ -938,7 +1022,17 @@ class _Tokenizer:
         elif command in _LATEX_FONTS and (braced := _BRACED_LETTERS.match(text, self.pos)):
             # \mathcal{F}, \mathrm{d}: the letters, in another typeface
             self.pos = braced.end()
-            self._finish_name(start, braced[1] or braced[2], 0)
+            raw = [braced[1] or braced[2]]
+            if braced[1] and text.startswith("_", self.pos):  # \mathbf{x}_1
+                self._subscript(raw)
+            self._finish_name(start, "".join(raw), 0)
+        elif command in _BOLD:
+            pass  # \boldsymbol{\theta}, \bm\theta: what follows is read as it would be in plain type
+        elif command in ("text", "textrm", "mbox") and (word := _WORD_BEFORE_EQUALS.match(text, self.pos)):
+            self.pos = word.end()  # \text{L} = …, as \mathrm{L} = …: the name of what the answer writes out
+            self._finish_name(start, word[1], 0)
+            if self.tokens[-1].kind == "name":  # a word in text is one name: \text{KE} is no K·E
+                self.tokens[-1] = Token("name", Name(word[1]), start, self.pos)
         elif command in _TEXT_COMMANDS and (unit := _COMPOUND_UNIT.match(text, self.pos)):
             self._compound_unit(unit)
         elif command in _TEXT_COMMANDS and (words := _LATEX_ANNOTATIONS.match(text, self.pos)):
@@ -995,6 +1089,16 @@ class _Tokenizer:
         self._finish_name(start, "".join(raw), dots)
         if name.primes:
             self.tokens[-1] = Token("name", Name("".join(raw), dots, name.primes, tex=True), start, self.pos)
+
+    def _spaces_before_marks(self) -> None:
+        """Read past the spaces after a command's name where its subscript or prime follows: TeX
+        ignores them, and MathType writes ``\\theta _1``, ``\\theta '`` and ``\\theta ^{\\prime}``."""
+        after = self.pos
+        while self.text.startswith(" ", after):
+            after += 1
+        mark = self.text[after : after + 1]
+        if mark == "_" or mark in _PRIMES or _TEX_PRIME.match(self.text, after) or _TEX_PRIMES.match(self.text, after):
+            self.pos = after
 
     def _skip_spaces(self) -> None:
         while self.text.startswith(" ", self.pos):
