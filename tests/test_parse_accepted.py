@@ -419,6 +419,7 @@ LATEX = [
     ("a = \\quad b \\qquad c", Eq(a, b * c)),
     ("\\left\\{ a + b \\right\\} c", (a + b) * c),  # a brace closed by a brace is a bracket
     ("$\\frac{a}{b}$", a / b),
+    ("$a b$", a * b),  # TeX's math without a backslash in it: the dollars are still read past
     ("\\exp(a) + \\ln b", exp(a) + sympy.log(b)),
     ("\\dot{\\theta}'", D(theta, 2)),
     ("\\ell", l),

@@ -305,6 +305,13 @@ SHOWN = [
         "Unbalanced bracket: the `(` at position 100 is never closed.",
         "… + m g l + m g l + m g l + sin(θ\n                               ^",
     ),
+    # names as a student writes them, not as the parser spells them (theta_3)
+    (
+        "theta3dot",
+        "`theta3dot` is written as a time derivative, but θ₃ is not a coordinate of this problem (θ, x).",
+        "theta3dot\n^^^^^^^^^",
+    ),
+    ("$a$ + $", "`$` is not something an answer can contain.", "$a$ + $\n^"),  # unpaired: no TeX math
     # The caret is on the line with the mistake, not on the first line.
     ("x = 1\ny = sin(θ", "Unbalanced bracket: the `(` at position 14 is never closed.", "y = sin(θ\n       ^"),
     # Places as seen: θ̇'s combining dot takes no column, a full-width letter two.

@@ -43,6 +43,7 @@ from grader.parse.names import (
     split_derivative,
     split_prefixed_derivative,
     stand_in,
+    unicode_name,
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
@@ -120,7 +121,8 @@ class Context:
         return self._derivatives[key]
 
     def describe_coords(self) -> str:
-        return ", ".join(self.coords) or "it has none"
+        """The coordinates as a student writes them: θ₁, θ₂, not theta_1, theta_2."""
+        return ", ".join(unicode_name(name) for name in self.coords) or "it has none"
 
 
 @lru_cache(maxsize=256)
@@ -230,7 +232,7 @@ class _Parser:
             if name in used and name not in defined:
                 raise ParseFailure(
                     "derivative_of_constant", start, end,
-                    name=self.text[start:end], base=name, coords=self.context.describe_coords(),
+                    name=self.text[start:end], base=unicode_name(name), coords=self.context.describe_coords(),
                 )  # fmt: skip
 
     def rate(self, symbol: sympy.Symbol, start: int, end: int) -> sympy.Expr:
@@ -766,7 +768,8 @@ class _Parser:
         if own and (order > 1 or len(own) > _OWN_RATES):
             raise ParseFailure(
                 "derivative_of_constant", token.start, end,
-                name=self.text[token.start : end], base=own[0].name, coords=self.context.describe_coords(),
+                name=self.text[token.start : end], base=unicode_name(own[0].name),
+                coords=self.context.describe_coords(),
             )  # fmt: skip
         derivative = sympy.diff(target, TIME, order)
         # d/dt (m p): p is a name of the answer's own, and may change in time (p = m l² θ̇)
@@ -795,7 +798,7 @@ class _Parser:
                 base = canonical_name(name.raw) if len(pieces) == 1 else str(last)
                 raise ParseFailure(
                     "derivative_of_constant", token.start, token.end,
-                    name=self.source(token), base=base, coords=self.context.describe_coords(),
+                    name=self.source(token), base=unicode_name(base), coords=self.context.describe_coords(),
                 )  # fmt: skip
             if order > LIMITS.derivative_order:
                 raise ParseFailure("derivative_order", token.start, token.end)

@@ -608,8 +608,8 @@ class _Tokenizer:
                 self.pos = self.markers.pop(self.pos)
             elif self.pos in self.labels:  # … \qquad (3): the equation's number in its document
                 self.pos = self.labels.pop(self.pos)
-            elif self.latex and c == "$":
-                self._dollar()
+            elif c == "$" and (self.latex or self.text.count("$") % 2 == 0):
+                self._dollar()  # $6$ without a backslash in it is TeX's math too
             elif c in " \t\r\u00a0" or (self.latex and c in "&~"):
                 self.pos += 1
             elif c in ".," and _closes_line(text, self.pos + 1):
