@@ -32,7 +32,6 @@ whatever the state.
 
 from __future__ import annotations
 
-import cmath
 import enum
 import itertools
 import math
@@ -66,7 +65,11 @@ _STEP_MARGIN = 256  # the step is this many times the largest acceleration
 _STEP_ROUNDS = 4  # rounds of reading the reference's rows for the steps
 _MAX_STEP_EXPONENT = 200  # steps up to 2²⁰⁰: beyond, a value's square would overflow a float
 _SPECIAL = 2  # states after the drawn ones (expected.point_count): at rest, and at the origin
-_BISECTIONS = 60  # halvings of a segment between two states, to where a factor changes sign
+# a segment between two states is searched for where a factor changes sign in rounds of _ALONG states:
+# 32¹¹ ≈ 4·10¹⁶ narrows it below a float's resolution, where a zero's row is zero to rounding
+_ALONG, _ROUNDS = 33, 11
+# a factor this many times its size at both ends is near a pole (E/sin θ), not a zero: no need to go on
+_POLE = 1e4
 
 
 def _as_zero(value) -> sympy.Expr:
@@ -252,9 +255,11 @@ def _float_rows(
     return rows
 
 
-def _rows_at(expected: Expected, system: Sequence[Compiled], point: list, step: float, *, exact: bool) -> _Rows:
-    """The rows of a system at one state, at 40 digits or (``exact``, for rational functions)
-    in fractions; raises where it is undefined."""
+def _rows_at(
+    expected: Expected, system: Sequence[Compiled], point: list, step: float, *, exact: bool, floats: bool = False
+) -> _Rows:
+    """The rows of a system at one state, at 40 digits, in floats (``floats``, not remembered) or
+    (``exact``, for rational functions) in fractions; raises where it is undefined."""
     positions = _positions(expected)
     samples = []
     for f in system:
@@ -263,11 +268,13 @@ def _rows_at(expected: Expected, system: Sequence[Compiled], point: list, step: 
             moved = list(point)
             for position, acceleration in zip(positions, accelerations, strict=True):
                 moved[position] = complex(acceleration)
-            value, size = f.exact(moved) if exact else f.precise(moved)
+            value, size = f.exact(moved) if exact else f.at(moved) if floats else f.precise(moved)
+            if floats and not math.isfinite(size):
+                raise ZeroDivisionError("undefined here")
             values.append(value)
             scales.append(size)
         samples.append((values, scales))
-    return _Rows(samples, precise=True, step=Fraction(step) if exact else step)
+    return _Rows(samples, precise=not floats, step=Fraction(step) if exact else step)
 
 
 def _at_each_state(
@@ -413,49 +420,52 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
     There they say nothing of an acceleration. (Of a system, the factor is the determinant of
     the combination: det of the submitted coefficients over the expected ones'.)
 
-    Where the factor has one sign at one state and the other at the next, the segment between
-    them (inside the domain: the parameters stay positive) is bisected to where it changes sign,
-    and there it is a zero of the submitted equations (not a pole of the factor, as in E/θ) or not.
-    A factor of one sign everywhere, as every right answer's is, costs one pass over the rows."""
+    Where the factor has one sign at one state and the other at the next, and the expected
+    equations' own coefficients keep theirs (else the change is theirs: the spherical pendulum's
+    sin θ φ̈ at its pole), the segment between the states (inside the domain: the parameters stay
+    positive) is searched for where the factor changes sign; there it is a zero of the submitted
+    equations (not a pole of the factor, as in E/θ) or not. A factor of one sign everywhere, as
+    every right answer's is, costs one pass over rows already evaluated."""
     if any(expected.setting.domain(symbol) in ("nonzero", "integer") for symbol in expected.variables):
         return False  # a segment between two states could leave the domain
     steps = _steps(expected, reference)
     count = expected.point_count
     mine = _float_rows(expected, reference, steps, reference=True)[:count]
     theirs = _float_rows(expected, submitted, steps)[:count]
-    signs = [
-        (number, factor > 0)
-        for number, (a, b) in enumerate(zip(mine, theirs, strict=True))
-        if a is not None and b is not None and (factor := _scaling(a, b))
-    ]
+    signs = []
+    for number, (a, b) in enumerate(zip(mine, theirs, strict=True)):
+        if a is None or b is None:
+            continue
+        arrays = [np.array(rows.rows, complex)[None] for rows in (a, b)]
+        factor, own = _scalings(*arrays)
+        if np.isfinite(factor[0]) and factor[0] and own[0]:
+            signs.append((number, factor[0] > 0, own[0] > 0))
     states = _states_of(expected)
-    for (first, sign), (second, other) in itertools.pairwise(signs):
-        if sign != other and _silent_between(
-            expected, (reference, submitted), states[first], states[second], steps[first]
-        ):
-            return True
-    return False
+    return any(
+        sign != other
+        and own == own_other
+        and _silent_between(expected, (reference, submitted), states[first], states[second], steps[first])
+        for (first, sign, own), (second, other, own_other) in itertools.pairwise(signs)
+    )
 
 
-def _scaling(a: _Rows, b: _Rows) -> float | None:
-    """The real number whose sign says how rows ``b`` scale rows ``a`` at one state: for one
-    equation the factor (least squares), for a system the ratio of their coefficients'
-    determinants. None where ``a`` says nothing (a zero row, a singular system)."""
-    if len(a.rows) == 1:
-        size = sum(abs(x) ** 2 for x in a.rows[0])
-        return sum(y * x.conjugate() for x, y in zip(a.rows[0], b.rows[0], strict=True)).real / size if size else None
-    mine, theirs = _determinant(a), _determinant(b)
-    return (theirs / mine).real if mine else None
-
-
-def _determinant(rows: _Rows) -> complex:
-    """The determinant of the rows' coefficients of the accelerations (by hand for two: numpy's
-    call costs more than the arithmetic, and this is asked at every state of every right system)."""
-    n = len(rows.rows[0]) - 1
-    if n == 2:
-        (a, b, _), (c, d, _) = rows.rows
-        return a * d - b * c
-    return complex(np.linalg.det(np.array([row[:n] for row in rows.rows], complex)))
+def _scalings(mine: np.ndarray, theirs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """At each of a stack of states (rows: states × equations × (accelerations + 1)): the real
+    number whose sign says how ``theirs`` scale ``mine`` (for one equation the factor, by least
+    squares; for a system the ratio of their coefficients' determinants), and the expected
+    equations' own (the leading coefficient; the determinant). NaN where ``mine`` says nothing."""
+    n = mine.shape[2] - 1
+    if mine.shape[1] == 1:
+        f, g = mine[:, 0, :], theirs[:, 0, :]
+        size = np.sum(np.abs(f) ** 2, axis=1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            factor = (np.sum(g * f.conj(), axis=1) / size).real
+        lead = np.argmax(np.abs(f[:, :n]), axis=1)
+        return factor, f[np.arange(len(f)), lead].real
+    own = np.linalg.det(mine[:, :, :n])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        factor = (np.linalg.det(theirs[:, :, :n]) / own).real
+    return factor, own.real
 
 
 def _says_less(a: _Rows, b: _Rows) -> bool:
@@ -483,44 +493,48 @@ def _silent_between(
     """Whether the factor between the submitted equations and the expected ones (the second of
     ``systems`` and the first), of one sign at ``start`` and the other at ``end``, changes sign
     between them where the submitted say less (:func:`_says_less`); in floats. Not where either
-    is undefined (a pole)."""
-    positions = _positions(expected)
+    is undefined, or the factor grows without bound (a pole, as of E/sin θ).
 
-    def rows_at(point: np.ndarray) -> list[_Rows]:
-        found = []
-        for system in systems:
-            samples = []
-            for c in system:
-                values, scales = [], []
-                for accelerations in _settings(len(positions), step):
-                    moved = point.tolist()
-                    for position, acceleration in zip(positions, accelerations, strict=True):
-                        moved[position] = complex(acceleration)
-                    value, scale = c.at(moved)
-                    if not (cmath.isfinite(value) and math.isfinite(scale)):
-                        raise ZeroDivisionError("undefined here")
-                    values.append(value)
-                    scales.append(scale)
-                samples.append((values, scales))
-            found.append(_Rows(samples, precise=False, step=step))
-        return found
-
-    low, high = start, end
+    The segment is searched in rounds of :data:`_ALONG` states at once, in one numpy pass per
+    equation, each round narrowing it to the two states the sign changes between."""
+    low, high, size = start, end, None
+    for _ in range(_ROUNDS):
+        states = low + np.linspace(0.0, 1.0, _ALONG)[:, None] * (high - low)
+        factors, _ = _scalings(*(_stacked_rows(expected, system, states, step) for system in systems))
+        if not np.isfinite(factors).all():
+            return False  # undefined here, or the expected equations say nothing here either
+        size = size if size is not None else max(abs(factors[0]), abs(factors[-1]))
+        if np.abs(factors).max() > _POLE * size:
+            return False
+        changed = np.nonzero((factors > 0) != (factors[0] > 0))[0]
+        if not len(changed):
+            return False  # the change fell between rounds' states: at a pole's edge, as rounding goes
+        change = int(changed[0])
+        low, high = states[change - 1], states[change]
+    nearest = low if abs(factors[change - 1]) <= abs(factors[change]) else high
     try:
-        sign = _scaling(*rows_at(low)) > 0
-        for _ in range(_BISECTIONS):
-            middle = (low + high) / 2
-            rows = rows_at(middle)
-            factor = _scaling(*rows)
-            if factor is None:
-                return False  # the expected equations say nothing here either
-            if (factor > 0) == sign:
-                low = middle
-            else:
-                high = middle
+        rows = [_rows_at(expected, system, nearest.tolist(), step, exact=False, floats=True) for system in systems]
     except UNDEFINED:
         return False
     return _says_less(*rows)
+
+
+def _stacked_rows(expected: Expected, system: Sequence[Compiled], states: np.ndarray, step: float) -> np.ndarray:
+    """The rows of a system at each of ``states``, stacked: states × equations × (accelerations + 1),
+    (c₁…cₙ, b) as :class:`_Rows` reads them; NaN where undefined. Not remembered."""
+    positions = _positions(expected)
+    settings = np.array(_settings(len(positions), step), complex)
+    width, n = len(settings), len(positions)
+    batch = np.repeat(np.asarray(states, complex), width, axis=0)
+    batch[:, positions] = np.tile(settings, (len(states), 1))
+    stacked = []
+    for f in system:
+        values, scales = f.many_once(batch)
+        values = np.where(np.isfinite(scales), values, np.nan).reshape(len(states), width)
+        b = values[:, 0]
+        c = (values[:, 1 : n + 1] - b[:, None]) / step
+        stacked.append(np.concatenate([c, b[:, None]], axis=1))
+    return np.stack(stacked, axis=1)
 
 
 def _nonlinear(expected: Expected, reference: Sequence[Compiled], submitted: Sequence[Compiled]) -> list[bool]:

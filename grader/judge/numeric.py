@@ -237,6 +237,10 @@ class Compiled:
         """Values and scales at every row of ``points`` (count × variables); NaN where undefined."""
         return self._remembered(("many", points.shape, points.tobytes()), lambda: self._many(points))
 
+    def many_once(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The same as :meth:`many`, never remembered: for points that depend on a submission."""
+        return self._many(points)
+
     def _many(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         if self._vector is None:
             self._vector = _compile(self.expr, self.index, _VECTOR)
