@@ -116,8 +116,9 @@ def function_name(raw: str) -> str | None:
 
 
 _TRAILING_DIGITS = re.compile(r"^([A-Za-z]+)_?([0-9]+)$")
-# A derivative's suffix: dot, ddot, or _d, _dd as code spells them; a subscript may stand either side.
-_SUFFIX = r"(?:_?(?P<dots>d?dot)|_(?P<ds>dd?))"
+# A derivative's suffix: dot, ddot (dotdot, doubledot), or _d, _dd as code spells them; a subscript may stand
+# either side.
+_SUFFIX = r"(?:_?(?P<dots>d?dot|dotdot|doubledot)|_(?P<ds>dd?))"
 # Lazy base so that ``thetaddot`` is theta + ddot, not thetad + dot.
 _DERIVATIVE = re.compile(rf"^(?P<base>[A-Za-z]+?(?:_?[0-9]+)?){_SUFFIX}(?:_?(?P<sub>[0-9]+))?$")
 _PREFIXED = re.compile(r"^(?P<ds>dd?)(?P<base>[A-Za-z]+(?:_[0-9]+)?)$")
@@ -155,8 +156,8 @@ def split_derivative(name: str) -> tuple[str, int] | None:
 
     >>> split_derivative("thetaddot"), split_derivative("theta_1dot"), split_derivative("xdot_2")
     (('theta', 2), ('theta_1', 1), ('x_2', 1))
-    >>> split_derivative("theta_dd"), split_derivative("theta_1_d")
-    (('theta', 2), ('theta_1', 1))
+    >>> split_derivative("theta_dd"), split_derivative("theta_1_d"), split_derivative("theta_dotdot")
+    (('theta', 2), ('theta_1', 1), ('theta', 2))
     >>> split_derivative("theta") is None
     True
     """
@@ -168,7 +169,10 @@ def split_derivative(name: str) -> tuple[str, int] | None:
         if _TRAILING_DIGITS.match(base):
             return None  # two subscripts, as in theta1dot2: not a name we know
         base = f"{base}_{match['sub']}"
-    return canonical_name(base), 2 if match["dots"] == "ddot" or match["ds"] == "dd" else 1
+    return canonical_name(base), 2 if match["dots"] in _TWO_DOTS or match["ds"] == "dd" else 1
+
+
+_TWO_DOTS = ("ddot", "dotdot", "doubledot")
 
 
 # Letters typed for a Greek one on a keyboard without it: w for ω (it looks the part), th, ph.
