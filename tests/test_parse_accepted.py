@@ -174,6 +174,7 @@ DERIVATIVES = [
     ("theta_ddot", D(theta, 2)),
     ("theta_dd + theta_d + theta1_dd", D(theta, 2) + D(theta) + D(theta1, 2)),  # as code spells them
     ("theta_dotdot + thetadoubledot", 2 * D(theta, 2)),  # two dots spelled out
+    ("m.*l.^2./g", m * l**2 / g),  # MATLAB's element-wise operations, on numbers the operations themselves
     ("theta''", D(theta, 2)),
     ("θ’’ + θ’", D(theta, 2) + D(theta)),  # a phone's apostrophe for a prime
     ("θ̈", D(theta, 2)),

@@ -620,6 +620,8 @@ class _Tokenizer:
                 self._command()
             elif c in _DIGITS or (c == "." and text[self.pos + 1 : self.pos + 2] in _DIGITS):
                 self._number()
+            elif c == "." and text[self.pos + 1 : self.pos + 2] in ("^", "*", "/") and self._ends_operand():
+                self.pos += 1  # MATLAB's element-wise l.^2, m.*g, a./b: for numbers, the operations themselves
             elif c == ".":
                 nxt = text[self.pos + 1 : self.pos + 2]
                 if nxt.isalpha() or nxt == "_":
@@ -672,6 +674,12 @@ class _Tokenizer:
         spelled = typed[0] if typed else self.text[self.pos]
         certain = spelled in _IMPLIES or spelled.endswith("=>")
         self._emit("implies" if certain else "arrow", "⇒" if certain else "→", len(spelled))
+
+    def _ends_operand(self) -> bool:
+        """Whether the last token, right before this character, ends an operand: a number, a name
+        or a closing bracket (MATLAB's ``l.^2``)."""
+        last = self.tokens[-1] if self.tokens else None
+        return last is not None and last.end == self.pos and (last.kind in ("num", "name") or last.is_op(")", "]"))
 
     def _after_value(self) -> bool:
         return bool(self.tokens) and (self.tokens[-1].kind in ("num", "sup") or self.tokens[-1].is_op(")", "]", "}"))
