@@ -879,8 +879,8 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
     two were one product. The unit is the longest end of the text that is a product of units alone,
     set apart by a bracket or a comma, or of two units or more (a lone N or J may be the student's
     own name); what comes before it must be a formula in the problem's names (``Q_θ = …`` too, as
-    :func:`_unwrap_named` reads it). None where there is
-    no such end. Returns the formula read, the unit and :func:`in_units` of it."""
+    :func:`_unwrap_named` reads it). None where there is no such end. Returns the formula read,
+    the unit and :func:`in_units` of it. Only an end whose every word is a unit's name is read."""
     if len(text) > _UNIT_TAIL_LENGTH:
         return None
     for cut in _UNIT_CUTS.finditer(text):
@@ -893,6 +893,8 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
             tail = tail[:-1]
         if not tail or not head.strip() or not _UNIT_TEXT.fullmatch(tail):
             continue
+        if not all(word in SI_UNITS for word in _UNIT_WORD.findall(tail)):
+            continue  # a word that is no unit's: no parse is spent on it (an answer has room for 150 ends)
         unit = parse_answer(tail)
         if not unit.ok or unit.kind != "expression" or not unit.symbols:
             continue
@@ -915,6 +917,7 @@ _UNIT_TAIL_LENGTH = 300
 # where a unit may begin after a formula: a comma, an opening bracket, or a space
 _UNIT_CUTS = re.compile(r"\s*[,;]\s*\(?\s*|\s*[(\[]\s*|\s+")
 _UNIT_TEXT = re.compile(r"[A-Za-zΩμµ·⋅*/^ 0-9⁰¹²³⁴⁵⁶⁷⁸⁹⁻()-]+")
+_UNIT_WORD = re.compile(r"[A-Za-zΩμµ]+")
 
 
 def _same_counts(unit, expected: Expected) -> bool:
