@@ -630,6 +630,16 @@ def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, s
         ("1", "3N = 3", "not_equivalent"),
         ("15", "3N = 15", "equivalent"),
         ("2", "2n = 4", "not_equivalent"),
+        # working in a list: the count is the name it ends in, not the first item's value
+        ("1", "3N = 3, k = 2, n = 1", "equivalent"),
+        ("1", "k = 2; 3N = 3; n = 1", "equivalent"),
+        ("2", "3N = 6, k = 4, n = 2", "equivalent"),
+        ("3", "3N = 6, k = 4, n = 2", "not_equivalent"),
+        # a value the count was worked out with is never the count
+        ("15", "3N = 15, N = 5", "equivalent"),
+        ("15", "N = 5, 3N = 15", "equivalent"),
+        # two values and no working: which is meant is for the student to say
+        ("2", "n = 2; m = 3", "invalid"),
     ],
 )
 def test_a_multiple_of_a_name_in_a_count_is_working_not_the_counts_name(expected, submitted, status):
@@ -1499,6 +1509,16 @@ def test_a_power_of_a_base_that_may_be_negative_is_compared_at_whole_exponents(e
 
 def test_a_power_of_a_positive_base_keeps_its_identities():
     assert compare("a^(b c)", "(a^b)^c", known=["a", "b", "c"], domains={"b": "real", "c": "real"}).equivalent
+
+
+PENDULUM_P = {"coords": ["theta"], "known": ["m", "l", "p_theta"]}
+
+
+@pytest.mark.parametrize("factor", ["exp(θ)", "exp(−θ)", "exp(−θ²)", "exp(θ̇)"])
+def test_a_relation_times_a_factor_that_never_vanishes_is_equivalent_though_floats_underflow(factor):
+    # far out on the grid e^θ is 0 in floats and tiny at 40 digits: no root, as the values beside it show
+    verdict = compare("p_theta = m l^2 thetadot", f"(p_θ − m l² θ̇) {factor} = 0", kind="equation", **PENDULUM_P)
+    assert verdict.status == "equivalent", verdict
 
 
 def test_a_relation_multiplied_by_a_parameter_that_may_be_zero_is_not_equivalent():

@@ -763,13 +763,29 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
     answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
     if not answer.ok:
         return None
-    answer = _with_definitions(_with_values(answer), expected, deadline)  # n = 3N − k; N = 1; k = 2
+    answer = _with_definitions(_with_values(_final_of_working(answer)), expected, deadline)  # n = 3N − k; N = 1; k = 2
     value = _unwrap_named(answer, spec, expected).value
     if not isinstance(value, sympy.Expr):
         return None
     if not value.free_symbols or (spec.name == "number" and expected.option("unit") and in_units(value)):
         return answer
     return None
+
+
+def _final_of_working(answer: ParsedAnswer) -> ParsedAnswer:
+    """``3N = 3, k = 2, n = 1``: working where a number is asked for, every item a number and one of
+    them worked out (3N): the value of the last name that no other item uses (n; not N, which 3N
+    uses: ``3N = 15, N = 5`` gives the value it was worked out with), else of the first item that
+    is working (3N = 15). As it was read where that is not so."""
+    if answer.kind != "equations" or not all(item.rhs.is_number and item.lhs != ANSWER for item in answer.value):
+        return answer  # 1, since k = 2: a number and words, read as such (numbers.read_number)
+    items = answer.value
+    if all(item.lhs.is_Symbol for item in items):
+        return answer  # n = 2; m = 3: no working, two values, and which is meant is for the student to say
+    used = [set().union(*(other.lhs.free_symbols for other in items if other is not item)) for item in items]
+    named = [item for item, others in zip(items, used, strict=True) if item.lhs.is_Symbol and item.lhs not in others]
+    final = named[-1] if named else next((item for item in items if not item.lhs.is_Symbol), None)
+    return answer if final is None else ParsedAnswer(answer.text, final.rhs, "expression")
 
 
 def _with_values(answer: ParsedAnswer) -> ParsedAnswer:

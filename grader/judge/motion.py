@@ -703,6 +703,8 @@ def _ratio_test(values, group: int, *, precise: bool) -> list[Closeness]:
     return results
 
 
+_NEAR_ROOT = 1e-3  # relative: how far either side of a root its neighbours are taken, to see it is one
+
 # Where roots are looked for: steps of 1/8 within ±10, and 20 per decade out to 10³ and in to 10⁻³.
 _LINEAR = [i / 8 for i in range(1, 81)]
 _LOGARITHMIC = [10 ** (k / 20) for k in range(-60, 61)]
@@ -837,14 +839,20 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
 
     def really_vanishes(x: float) -> bool:
         # Far out on the grid a float underflows: s² e^(st) at t = −1000 is 0, though no root.
-        # At 40 digits (mpmath's exponents do not underflow) a root is still a root.
+        # At 40 digits (mpmath's exponents do not underflow) a root is still a root. And a value
+        # small beside its terms' scale only because a factor is (E e^θ at θ = −891) is no root
+        # either: a root is small beside the values on both sides of it too.
         try:
             with mpmath.workdps(PRECISE_DIGITS):
                 value, scale = function.precise(_moved(point, position, x))
+                if value == 0:
+                    return True
+                step = _NEAR_ROOT * max(1.0, abs(x))
+                around = [abs(function.precise(_moved(point, position, x + h))[0]) for h in (-step, step)]
         except UNDEFINED:
             return False
         # in mpmath's numbers: as floats, e^(−1000 s) would underflow all over again
-        return value == 0 or abs(value) <= FLOAT_EQUAL * mpmath.mpmathify(scale)
+        return abs(value) <= FLOAT_EQUAL * mpmath.mpmathify(scale) and abs(value) <= FLOAT_EQUAL * min(around)
 
     batch = np.array([point] * len(grid), complex)
     batch[:, position] = grid
