@@ -347,3 +347,14 @@ def test_a_lone_letter_after_a_formula_is_still_a_name_to_define():
     # N may be a normal force and J a moment of inertia: not set apart, they are names
     verdict = compare(TORQUE, "−m g l sin θ J", **PENDULUM)
     assert verdict.diagnosis == "undefined_symbol"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "unit"),
+    [("½ m l² θ̇² + m g l cos θ (J)", "J"), ("½ m l² θ̇² + m g l cos θ, [kg m^2/s^2]", "kg*m^2/s^2"),
+     ("½ m l² θ̇² + m g l cos θ joules", "joules")],
+)  # fmt: skip
+def test_a_lagrangian_may_be_followed_by_its_unit(submitted, unit):
+    # a unit after a sum is its last term's as read: the end of the text is read as the unit
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.", LEFT_OUT.format(unit))), verdict

@@ -211,7 +211,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
             if spec.parsed:
                 names = sorted(expected.names | {symbol.name for symbol, _ in given})
                 answer, read_notes = _read(spec, expected, submitted, names, deadline)
-                split = _unit_tail(submitted, spec, expected) if not answer.ok and spec.name == "expression" else None
+                formula = spec.name in ("expression", "lagrangian")
+                split = _unit_tail(submitted, spec, expected) if not answer.ok and formula else None
                 if split is not None:  # −m g r sin θ, N·m: the comma sets a unit apart, and is no list
                     answer, unit, found = split
                     early, note = _unit_said(unit, found, spec, expected)
@@ -825,7 +826,7 @@ def _in_unit(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[Pars
 
     Returns the answer to judge, an outcome already decided (or None), and a note saying how a
     number in another unit, or a formula with its unit, was read (or None)."""
-    if spec.name == "expression":
+    if spec.name in ("expression", "lagrangian"):
         return _formula_in_unit(answer, spec, expected)
     wanted = expected.option("unit") if spec.name == "number" else None
     if not wanted or answer.kind != "expression" or not answer.value.free_symbols:
@@ -890,13 +891,14 @@ def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outc
 
 
 def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, sympy.Expr, tuple] | None:
-    """``− m g r sin θ N·m``, ``… [N m]``, ``…, kg m²/s²``: the formula and the unit written after
-    it, where the unit has a name the problem uses (m, the mass, for metres), so that as read the
-    two were one product. The unit is the longest end of the text that is a product of units alone,
-    set apart by a bracket or a comma, or of two units or more (a lone N or J may be the student's
-    own name); what comes before it must be a formula in the problem's names (``Q_θ = …`` too, as
-    :func:`_unwrap_named` reads it). None where there is no such end. Returns the formula read,
-    the unit and :func:`in_units` of it. Only an end whose every word is a unit's name is read."""
+    """``− m g r sin θ N·m``, ``… [N m]``, ``…, kg m²/s²``, ``½ m v² + m g h joules``: the formula and
+    the unit written after it, where as read the two were one product, or the unit its last term's.
+    The unit is the longest end of the text that is a product of units alone, set apart by a bracket
+    or a comma, or of two units or more or a name of several letters (a lone N or J may be the
+    student's own name; kg or joules is none); what comes before it must be a formula in the
+    problem's names (``Q_θ = …`` too, as :func:`_unwrap_named` reads it). None where there is no such
+    end. Returns the formula read, the unit and :func:`in_units` of it. Only an end whose every word
+    is a unit's name is read."""
     if len(text) > _UNIT_TAIL_LENGTH:
         return None
     for cut in _UNIT_CUTS.finditer(text):
@@ -916,7 +918,8 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
             continue
         found = in_units(unit.value)
         names = {symbol.name for symbol in unit.symbols}
-        if found is None or found[:2] != (1, 1) or not (set_apart or len(sympy.Mul.make_args(unit.value)) > 1):
+        several = len(sympy.Mul.make_args(unit.value)) > 1 or any(len(name) > 1 for name in names)  # N m, joules
+        if found is None or found[:2] != (1, 1) or not (set_apart or several):
             continue
         if names <= expected.names:
             continue  # nothing here but the problem's names: no unit was written
