@@ -322,12 +322,12 @@ TORQUE = "-m g l sin(theta)"  # a generalized force conjugate to an angle: an en
     [
         # a unit with a name of the problem's in it (m, the mass, for metres), which as read was one
         # product with the formula: the formula is graded, and the note says the unit was left out
-        ("−m g l sin θ N·m", "equivalent", "N*m"),
-        ("−m g l sin θ kg m^2/s^2", "equivalent", "kg*m^2/s^2"),
-        ("−m g l sin θ (N m)", "equivalent", "N*m"),
-        ("−m g l sin θ, N·m", "equivalent", "N*m"),  # the comma sets it apart, and is no list
+        ("−m g l sin θ N·m", "equivalent", "N·m"),
+        ("−m g l sin θ kg m^2/s^2", "equivalent", "kg·m²/s²"),
+        ("−m g l sin θ (N m)", "equivalent", "N·m"),
+        ("−m g l sin θ, N·m", "equivalent", "N·m"),  # the comma sets it apart, and is no list
         ("Q_θ = −m g l sin θ [J]", "equivalent", "J"),  # one letter, set apart by its bracket
-        ("−m g sin θ N·m", "not_equivalent", "N*m"),
+        ("−m g sin θ N·m", "not_equivalent", "N·m"),
     ],
 )
 def test_a_unit_after_a_formula_may_hold_a_name_of_the_problems(submitted, status, unit):
@@ -351,7 +351,7 @@ def test_a_lone_letter_after_a_formula_is_still_a_name_to_define():
 
 @pytest.mark.parametrize(
     ("submitted", "unit"),
-    [("½ m l² θ̇² + m g l cos θ (J)", "J"), ("½ m l² θ̇² + m g l cos θ, [kg m^2/s^2]", "kg*m^2/s^2"),
+    [("½ m l² θ̇² + m g l cos θ (J)", "J"), ("½ m l² θ̇² + m g l cos θ, [kg m^2/s^2]", "kg·m²/s²"),
      ("½ m l² θ̇² + m g l cos θ joules", "joules")],
 )  # fmt: skip
 def test_a_lagrangian_may_be_followed_by_its_unit(submitted, unit):
