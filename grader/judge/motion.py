@@ -23,7 +23,9 @@ at the origin (every coordinate 0). A factor that vanishes there (θ̇, as in dE
 θ or sin θ, cleared from a denominator) leaves an equation that no longer says what q̈
 is in those states, where the expected one does. Where the expected system is itself singular
 there (the spherical pendulum at its pole, where the φ equation says nothing), each acceleration
-it still fixes must be fixed by the submitted one too.
+it still fixes must be fixed by the submitted one too. A factor that vanishes elsewhere (cos θ,
+θ̇ − 1, m₁ − m₂) changes sign between two drawn states, and the segment between them is searched
+for its zero; a factor that changes sign at a pole (1/cos θ) is no mistake.
 
 An equation without accelerations (a constraint, a conserved quantity) is right
 when submitted/expected is, at fixed parameters, the same nonzero number
