@@ -379,6 +379,13 @@ DOUBLE = {"coords": ["theta1", "theta2"], "known": ["m1", "m2", "l1", "l2", "g"]
 DOUBLE_V = "-(m1 + m2) g l1 cos(theta1) - m2 g l2 cos(theta2)"
 
 
+def _instead(right, wrote, instead):
+    return (
+        f"Your answer depends on {right} as the right answer does, and on {wrote} where the right answer"
+        f" depends on {instead}."
+    )
+
+
 def _depends(right, wrong, how="missing"):
     if how == "extra":
         return (
@@ -401,8 +408,8 @@ def _depends(right, wrong, how="missing"):
         (ATWOOD_A, "(m1 - m2) g / m1", MASSES, _depends("g", "m₁ and m₂", "how")),
         ("sqrt(g/l)", "sqrt(g m / l)", PENDULUM, _depends("g and l", "m", "extra")),  # a symbol that has no place
         ("-m g r sin(theta)", "−m g l₀ sin θ", {"coords": ["r", "theta"], "known": ["m", "g", "l0", "k"]},
-         _depends("g, m and θ", "l₀ and r", "how")),  # one symbol for another: both are named
-        (MOMENTUM_PHI, "m l² θ̇ sin²θ", SPHERICAL, _depends("l, m and θ", "φ̇ and θ̇", "how")),  # the wrong velocity
+         _instead("g, m and θ", "l₀", "r")),  # one symbol for another: both are named
+        (MOMENTUM_PHI, "m l² θ̇ sin²θ", SPHERICAL, _instead("l, m and θ", "θ̇", "φ̇")),  # the wrong velocity
         (MOMENTUM_PHI, "m l² φ̇ sin θ", SPHERICAL, _depends("l, m and φ̇", "θ", "how")),
         # the factor depends on every symbol: nothing to name, the terms are described as before
         ("sqrt(g/l)", "sqrt(l/g)", PENDULUM, "A term differs: a gravity term is not right."),

@@ -206,10 +206,16 @@ def _factor_dependence(expected: Expected, key: str, e, s, plain) -> Outcome | N
     names = [_shown(variables[i]) for i in used if i in depends]
     others = [_shown(variables[i]) for i in used if i not in depends]
     details = {"names": _listed(names), "others": _listed(others)}
-    # said as it is: the answer lacks them (g l for g l m), has them where the right one has not, or both
+    # said as it is: the answer lacks them (g l for g l m), has them where the right one has not, has
+    # one symbol for another (l₀ for r), or depends on them in another way
     theirs = [variables[i] in plain.free_symbols for i in used if i in depends]
     ours = [variables[i] in e.free_symbols for i in used if i in depends]
     key = "factor_depends" if not any(theirs) else "factor_depends_extra" if not any(ours) else "factor_depends_how"
+    if key == "factor_depends_how" and not any(a and b for a, b in zip(theirs, ours, strict=True)):
+        wrote = [name for name, mine in zip(names, theirs, strict=True) if mine]
+        instead = [name for name, mine in zip(names, theirs, strict=True) if not mine]
+        details = {**details, "names": _listed(wrote), "instead": _listed(instead)}
+        key = "factor_depends_instead"
     return Outcome("not_equivalent", 0.0, key, details, method="numeric: ratio")
 
 

@@ -126,6 +126,8 @@ FEEDBACK: dict[str, str] = {
     " your answer depends on {names}.",
     "factor_depends_extra": "Your answer depends on {others} as the right answer does, but the right answer does"
     " not depend on {names}.",
+    "factor_depends_instead": "Your answer depends on {others} as the right answer does, and on {names} where the"
+    " right answer depends on {instead}.",
     "factor_depends_how": "Your answer depends on {others} as the right answer does, but on {names} in another way:"
     " check how your answer depends on {names}.",
     "undecided": "This answer could not be checked automatically; it has been set aside for a person to grade.",
