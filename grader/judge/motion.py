@@ -219,14 +219,19 @@ def _accelerated_states(expected: Expected, steps: tuple[float, ...]) -> np.ndar
     """Every sample state at each acceleration setting, one row per (state, setting), state-major."""
     key = ("accelerated states", steps)
     if key not in expected.cache:
-        positions = _positions(expected)
-        points = _states_of(expected)
-        settings = np.array([_settings(len(positions), step) for step in steps], complex)
-        batch = np.repeat(points, settings.shape[1], axis=0)
-        batch[:, positions] = settings.reshape(-1, len(positions))
+        batch = _accelerated(expected, _states_of(expected), steps)
         batch.flags.writeable = False
         expected.cache[key] = batch
     return expected.cache[key]
+
+
+def _accelerated(expected: Expected, states: np.ndarray, steps: Sequence[float]) -> np.ndarray:
+    """``states`` (one per row) each at every acceleration setting of its step, state-major."""
+    positions = _positions(expected)
+    settings = np.array([_settings(len(positions), step) for step in steps], complex)
+    batch = np.repeat(np.asarray(states, complex), settings.shape[1], axis=0)
+    batch[:, positions] = settings.reshape(-1, len(positions))
+    return batch
 
 
 def _float_rows(
@@ -434,14 +439,19 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
     count = expected.point_count
     mine = _float_rows(expected, reference, steps, reference=True)[:count]
     theirs = _float_rows(expected, submitted, steps)[:count]
-    signs = []
-    for number, (a, b) in enumerate(zip(mine, theirs, strict=True)):
-        if a is None or b is None:
-            continue
-        arrays = [np.array(rows.rows, complex)[None] for rows in (a, b)]
-        factor, own = _scalings(*arrays)
-        if np.isfinite(factor[0]) and factor[0] and own[0]:
-            signs.append((number, factor[0] > 0, own[0] > 0))
+    defined = [
+        number for number, (a, b) in enumerate(zip(mine, theirs, strict=True)) if a is not None and b is not None
+    ]
+    if len(defined) < 2:
+        return False
+    factors, owns = _scalings(
+        *(np.array([rows[number].rows for number in defined], complex) for rows in (mine, theirs))
+    )
+    signs = [
+        (number, factor > 0, own > 0)
+        for number, factor, own in zip(defined, factors.tolist(), owns.tolist(), strict=True)
+        if math.isfinite(factor) and factor and own
+    ]
     states = _states_of(expected)
     return any(
         sign != other
@@ -524,11 +534,9 @@ def _silent_between(
 def _stacked_rows(expected: Expected, system: Sequence[Compiled], states: np.ndarray, step: float) -> np.ndarray:
     """The rows of a system at each of ``states``, stacked: states × equations × (accelerations + 1),
     (c₁…cₙ, b) as :class:`_Rows` reads them; NaN where undefined. Not remembered."""
-    positions = _positions(expected)
-    settings = np.array(_settings(len(positions), step), complex)
-    width, n = len(settings), len(positions)
-    batch = np.repeat(np.asarray(states, complex), width, axis=0)
-    batch[:, positions] = np.tile(settings, (len(states), 1))
+    n = len(_positions(expected))
+    width = n + 2  # the settings: q̈ = 0, a step in each q̈ₖ, the probe
+    batch = _accelerated(expected, states, [step] * len(states))
     stacked = []
     for f in system:
         values, scales = f.many_once(batch)
