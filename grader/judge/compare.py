@@ -26,7 +26,7 @@ from sympy.core.function import AppliedUndef
 
 from grader.errors import AuthorError
 from grader.judge.deadline import CheckTimeout, time_limit
-from grader.judge.diagnose import TERM_KEYS
+from grader.judge.diagnose import TERM_KEYS, in_sentence
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression
 from grader.judge.feedback import say
@@ -61,7 +61,7 @@ from grader.parse import (
     too_many_digits,
     within_diff_budget,
 )
-from grader.parse.names import is_arbitrary_constant, superscript, unicode_name
+from grader.parse.names import is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
@@ -887,12 +887,7 @@ def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outc
         details = {"theirs": si(found[2]), "wanted": si(wanted)}
         return Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
     key = "unit_left_out" if _same_counts(unit, expected) else "unit_for_a_person"
-    return None, (key, {"unit": _unit_shown(unit)})
-
-
-def _unit_shown(unit) -> str:
-    """A unit as it is printed: N·m, kg·m²/s², not N*m and kg*m^2/s^2, as an answer is read back."""
-    return re.sub(r"\^(-?[0-9]+)", lambda found: superscript(int(found[1])), to_text(unit)).replace("*", "·")
+    return None, (key, {"unit": in_sentence(to_text(unit), times="·")})  # N·m, kg·m²/s²
 
 
 def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, sympy.Expr, tuple] | None:

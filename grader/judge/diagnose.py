@@ -30,6 +30,7 @@ __all__ = [
     "describe_term",
     "expand_terms",
     "has_angle_functions",
+    "in_sentence",
     "small_angle",
     "symbolic_zero",
     "taylor",
@@ -372,14 +373,19 @@ def describe_term(
 
 
 def _shown(expr, setting: Setting) -> str:
-    """``expr`` (in plain symbols) as a sentence shows it: ω² sin(θ), sin(2θ), not ω^2*sin(θ) and
-    sin(2*θ), which is how an answer is read back, as code would write it."""
-    text = to_text(setting.as_typed(expr))
+    """``expr`` (in plain symbols) as a sentence shows it: ω² sin(θ), sin(2θ)."""
+    return in_sentence(to_text(setting.as_typed(expr)))
+
+
+def in_sentence(text: str, times: str = " ") -> str:
+    """An expression read back (:func:`~grader.parse.readback.to_text`) as a sentence writes it:
+    ω² sin(θ) and sin(2θ), not ω^2*sin(θ) and sin(2*θ), as code would; a product by ``times``
+    (N·m for a unit), and none after a digit."""
     text = _POWER.sub(lambda found: superscript(int(found[1])), text)
-    return _PRODUCT.sub(lambda found: "" if found[1] in "0123456789" else " ", text).replace(" - ", " − ")
+    return _PRODUCT.sub(lambda found: "" if found[1] in "0123456789" else times, text).replace(" - ", " − ")
 
 
-_POWER = re.compile(r"\^(-?[0-9]+)(?![0-9./])")
+_POWER = re.compile(r"\^(-?[0-9]+)(?![0-9.])")  # not x^2.5
 _PRODUCT = re.compile(r"(?<=(.))\*(?!\*)")
 
 
