@@ -201,7 +201,7 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     a unit, and names no number in words but ``number`` (2 (the two angles), not 2 (or three))."""
     if _breaks_down(rest, names, number):
         return True
-    if _REPEATED.fullmatch(rest) and _REPEATED.fullmatch(rest)[1] == number:
+    if (repeated := _REPEATED.fullmatch(rest)) and repeated[1] == number:
         return True  # two (2): the number again, in digits
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
