@@ -1197,6 +1197,33 @@ def test_an_equation_times_a_factor_that_vanishes_anywhere_is_not_equivalent(sub
         assert verdict.diagnosis == "vanishing_factor_between"
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # zero without changing sign: at θ = π, at θ = π/2, where θ̇ = 1
+        ("(1 + cos θ)(l θ̈ + g sin θ) = 0", "not_equivalent"),
+        ("cos²θ (l θ̈ + g sin θ) = 0", "not_equivalent"),
+        ("(θ̇ − 1)² (l θ̈ + g sin θ) = 0", "not_equivalent"),
+        # as low, but never zero: a factor that comes close is still a factor
+        ("(1.01 + cos θ)(l θ̈ + g sin θ) = 0", "equivalent"),
+        ("(1.000001 + cos θ)(l θ̈ + g sin θ) = 0", "equivalent"),
+        ("(1 + θ̇²)(l θ̈ + g sin θ) = 0", "equivalent"),
+    ],
+)
+def test_an_equation_times_a_factor_that_touches_zero_is_not_equivalent(submitted, status):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert verdict.status == status, verdict
+    if status == "not_equivalent":
+        assert verdict.diagnosis == "vanishing_factor_between"
+
+
+def test_a_system_whose_combination_touches_zero_is_not_equivalent():
+    # the θ equation times 1 + cos θ: the determinant of the combination is zero at θ = π
+    submitted = f"(1 + cos θ)({SPHERICAL_THETA}) = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0"
+    verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "vanishing_factor_system_between")
+
+
 def test_a_factor_of_the_parameters_that_vanishes_for_some_of_them_is_not_equivalent():
     # zero where the masses are equal: then the equation says nothing of ẍ
     atwood = {"coords": ["x"], "known": ["m1", "m2", "g"]}

@@ -25,7 +25,10 @@ is in those states, where the expected one does. Where the expected system is it
 there (the spherical pendulum at its pole, where the φ equation says nothing), each acceleration
 it still fixes must be fixed by the submitted one too. A factor that vanishes elsewhere (cos θ,
 θ̇ − 1, m₁ − m₂) changes sign between two drawn states, and the segment between them is searched
-for its zero; a factor that changes sign at a pole (1/cos θ) is no mistake.
+for its zero; a factor that changes sign at a pole (1/cos θ) is no mistake. A factor of the
+state that falls to zero without changing sign (1 + cos θ, (θ̇ − 1)²) dips between two states:
+each dip that looks like a zero is narrowed to see whether it is one. A factor of the parameters
+alone is not searched so: (m₁ − m₂)² is written by nobody, and 1/l by most right answers.
 
 An equation without accelerations (a constraint, a conserved quantity) is right
 when submitted/expected is, at fixed parameters, the same nonzero number
@@ -72,6 +75,12 @@ _SPECIAL = 2  # states after the drawn ones (expected.point_count): at rest, and
 _ALONG, _ROUNDS = 33, 11
 # a factor this many times its size at both ends is near a pole (E/sin θ), not a zero: no need to go on
 _POLE = 1e4
+# factors at the sample states within this of each other (relative) are one constant factor
+_CONSTANT = 1e-9
+# a dip of |factor| whose parabola falls below this part of its neighbours may touch zero (of a
+# double zero's, the parabola misses zero by about h²/12 of them, h the samples' spacing: < 0.01)
+_DIP = 0.05
+_SMOOTH = 2.0  # a pole of the expected equations grows at least 3 times over a dip's samples
 
 
 def _as_zero(value) -> sympy.Expr:
@@ -228,7 +237,8 @@ def _accelerated_states(expected: Expected, steps: tuple[float, ...]) -> np.ndar
 def _accelerated(expected: Expected, states: np.ndarray, steps: Sequence[float]) -> np.ndarray:
     """``states`` (one per row) each at every acceleration setting of its step, state-major."""
     positions = _positions(expected)
-    settings = np.array([_settings(len(positions), step) for step in steps], complex)
+    unique, which = np.unique(np.asarray(steps, float), return_inverse=True)  # many states, few steps
+    settings = np.array([_settings(len(positions), step) for step in unique.tolist()], complex)[which.ravel()]
     batch = np.repeat(np.asarray(states, complex), settings.shape[1], axis=0)
     batch[:, positions] = settings.reshape(-1, len(positions))
     return batch
@@ -453,12 +463,29 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
         if math.isfinite(factor) and factor and own
     ]
     states = _states_of(expected)
-    return any(
+    systems = (reference, submitted)
+    if any(
         sign != other
         and own == own_other
-        and _silent_between(expected, (reference, submitted), states[first], states[second], steps[first])
+        and _silent_between(expected, systems, states[first], states[second], steps[first])
         for (first, sign, own), (second, other, own_other) in itertools.pairwise(signs)
-    )
+    ):
+        return True
+    sizes = {number: abs(factor) for number, factor in zip(defined, factors.tolist(), strict=True)}
+    if _one_value(list(sizes.values())):
+        return False  # the same factor at every state, as a right answer's often is: it vanishes nowhere
+    # A factor of the parameters alone (1/l, m l²) is one value within each run of states that share
+    # them. It is most right answers' and is not searched: such a factor that touches zero without
+    # changing sign ((m₁ − m₂)²) is written by nobody, and the search would cost every one of them.
+    runs = itertools.groupby(sorted(sizes), key=lambda number: number // GROUP)
+    if all(_one_value([sizes[number] for number in run]) for _, run in runs):
+        return False
+    segments = [
+        (states[first], states[second])
+        for (first, sign, own), (second, other, own_other) in itertools.pairwise(signs)
+        if sign == other and own == own_other
+    ]
+    return bool(segments) and _touches_between(expected, systems, segments, steps[0])
 
 
 def _scalings(mine: np.ndarray, theirs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -529,6 +556,95 @@ def _silent_between(
     except UNDEFINED:
         return False
     return _says_less(*rows)
+
+
+def _touches_between(
+    expected: Expected,
+    systems: tuple[Sequence[Compiled], Sequence[Compiled]],
+    segments: Sequence[tuple[np.ndarray, np.ndarray]],
+    step: float,
+) -> bool:
+    """Whether the factor between the submitted equations and the expected ones falls to zero
+    without changing sign on one of ``segments`` (pairs of states where it has the same sign):
+    (1 + cos θ)·E at θ = π, (θ̇ − 1)²·E. There the submitted say less (:func:`_says_less`).
+
+    Each segment is sampled at :data:`_ALONG` states. Each dip of |factor| there that looks like
+    a zero (:func:`_dips`) is narrowed, all at once, in rounds of as many states around its lowest,
+    to a float's resolution. A dip that is a zero is zero to rounding there; one that is not
+    (1.01 + cos θ) is far from it. A dip is let go where the expected equations' own size grows
+    :data:`_POLE` times (their pole) or their own coefficient falls with the factor (their
+    singular point: the spherical pendulum's sin θ φ̈ at θ = 0, where they say no more)."""
+    along = np.linspace(0.0, 1.0, _ALONG)
+    lows = np.array([low for low, _ in segments])
+    spans = np.array([high for _, high in segments]) - lows
+    first = _factor_sizes_at(expected, systems, lows, spans, np.broadcast_to(along, (len(segments), len(along))), step)
+    brackets = [
+        (number, i)
+        for number, rows in enumerate(zip(*first, strict=True))
+        if np.isfinite(rows[0]).all()
+        for i in _dips(*rows)
+    ]
+    if not brackets:
+        return False
+    owners, dips = np.array(brackets).T
+    lows, spans = lows[owners], spans[owners]
+    low, high = (dips - 1) / (_ALONG - 1), (dips + 1) / (_ALONG - 1)
+    norm0, own0 = first[1][owners, dips], first[2][owners, dips]
+    for _ in range(_ROUNDS):
+        where = low[:, None] + along[None, :] * (high - low)[:, None]  # brackets × _ALONG fractions
+        sizes, norms, owns = _factor_sizes_at(expected, systems, lows, spans, where, step)
+        at = np.argmin(np.where(np.isfinite(sizes), sizes, np.inf), axis=1)
+        every = np.arange(len(where))
+        lowest, width = where[every, at], (high - low) / (_ALONG - 1)
+        alive = (norms[every, at] <= _POLE * norm0) & (owns[every, at] >= _DIP * own0)
+        if not alive.any():
+            return False
+        low, high = np.maximum(lowest - width, 0.0)[alive], np.minimum(lowest + width, 1.0)[alive]
+        lows, spans, norm0, own0 = lows[alive], spans[alive], norm0[alive], own0[alive]
+    for start, span, fraction in zip(lows, spans, (low + high) / 2, strict=True):
+        try:
+            point = (start + fraction * span).tolist()
+            rows = [_rows_at(expected, system, point, step, exact=False, floats=True) for system in systems]
+        except UNDEFINED:
+            continue
+        if _says_less(*rows):
+            return True
+    return False
+
+
+def _one_value(sizes: Sequence[float]) -> bool:
+    return max(sizes) - min(sizes) <= _CONSTANT * max(sizes)
+
+
+def _dips(row: np.ndarray, norm: np.ndarray, own: np.ndarray) -> list[int]:
+    """Where samples ``row`` of |factor| dip as if to zero: below both neighbours, with the
+    parabola through the three falling below :data:`_DIP` of the lower neighbour. A smooth
+    minimum that is not a zero (of 2 + cos θ, or of 1/sin²θ between its poles) is shallower.
+
+    Not where the expected equations' own size (``norm``) changes :data:`_SMOOTH` times over the
+    three, as at a pole of theirs (sin²θ times φ̈ + 2 cot θ θ̇ φ̇ at θ = 0), nor where their own
+    coefficient (``own``) falls by half at the dip: their singular point, not the factor's."""
+    found = []
+    for i in range(1, len(row) - 1):
+        a, b, c = row[i - 1], row[i], row[i + 1]
+        curvature = a - 2 * b + c
+        if not (b < a and b <= c and curvature > 0 and b - (c - a) ** 2 / (8 * curvature) < _DIP * min(a, c)):
+            continue
+        around = norm[i - 1 : i + 2]
+        if around.max() <= _SMOOTH * around.min() and 2 * own[i] > min(own[i - 1], own[i + 1]):
+            found.append(i)
+    return found
+
+
+def _factor_sizes_at(expected, systems, starts, spans, where, step) -> tuple[np.ndarray, ...]:
+    """At states ``starts + where · spans``, one row of ``where`` per start: |factor| (NaN where
+    either system is undefined or says nothing), and of the first system, the size of its rows
+    and |its own coefficient| (:func:`_scalings`)."""
+    states = (starts[:, None, :] + where[:, :, None] * spans[:, None, :]).reshape(-1, starts.shape[1])
+    mine, theirs = (_stacked_rows(expected, system, states, step) for system in systems)
+    factors, owns = _scalings(mine, theirs)
+    norms = np.sqrt(np.sum(np.abs(mine) ** 2, axis=(1, 2)))
+    return tuple(np.abs(values).reshape(where.shape) for values in (factors, norms, owns))
 
 
 def _stacked_rows(expected: Expected, system: Sequence[Compiled], states: np.ndarray, step: float) -> np.ndarray:
