@@ -57,21 +57,21 @@ def browser():
     driver.quit()
 
 
-def _part(driver):
-    return driver.find_element(By.CSS_SELECTOR, f'article.part[data-part="{KEY}"]')
+def _part(driver, key: str = KEY):
+    return driver.find_element(By.CSS_SELECTOR, f'article.part[data-part="{key}"]')
 
 
-def _type(driver, text: str) -> None:
-    box = driver.find_element(By.ID, f"answer-{KEY}")
+def _type(driver, text: str, key: str = KEY) -> None:
+    box = driver.find_element(By.ID, f"answer-{key}")
     box.clear()
     box.send_keys(text)
 
 
-def _check(driver, status: str):
+def _check(driver, status: str, key: str = KEY):
     """Click Check and wait for a verdict of ``status``; the result element."""
-    part = _part(driver)
+    part = _part(driver, key)
     part.find_element(By.CSS_SELECTOR, "button.check").click()
-    selector = f'article.part[data-part="{KEY}"] .result.{status}'
+    selector = f'article.part[data-part="{key}"] .result.{status}'
     try:
         return WebDriverWait(driver, 20).until(
             expected_conditions.visibility_of_element_located((By.CSS_SELECTOR, selector))
@@ -85,15 +85,20 @@ def _check(driver, status: str):
         ) from None
 
 
+def _previewed(driver, key: str = KEY):
+    """Wait for the preview of the answer typed to show it read; the preview element."""
+    selector = f'article.part[data-part="{key}"] .preview math'
+    WebDriverWait(driver, 20).until(expected_conditions.presence_of_element_located((By.CSS_SELECTOR, selector)))
+    return _part(driver, key).find_element(By.CSS_SELECTOR, ".preview")
+
+
 def test_type_preview_check_and_hint(server, browser):
     browser.get(server.url)
     assert browser.title == "Self-check — Review questions — the Lagrangian formulation"
     browser.find_element(By.ID, "student").send_keys("ada")
 
     _type(browser, "1/2 m l^2 thetadot^2 + m g l cos(theta)")
-    preview = f'article.part[data-part="{KEY}"] .preview math'
-    WebDriverWait(browser, 20).until(expected_conditions.presence_of_element_located((By.CSS_SELECTOR, preview)))
-    assert _part(browser).find_element(By.CSS_SELECTOR, ".preview .caption").text == "READ AS"
+    assert _previewed(browser).find_element(By.CSS_SELECTOR, ".caption").text == "READ AS"
 
     result = _check(browser, "equivalent")
     assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "✔\nright"
@@ -127,18 +132,12 @@ def test_an_unreadable_answer_is_pointed_at(server, browser):
     assert result.find_element(By.CSS_SELECTOR, ".read .caption").text == "where:"
 
 
+PERIOD = "plane-pendulum.period"
+
+
 def _check_period(browser, answer: str, status: str):
-    period = "plane-pendulum.period"
-    part = browser.find_element(By.CSS_SELECTOR, f'article.part[data-part="{period}"]')
-    box = part.find_element(By.ID, f"answer-{period}")
-    box.clear()
-    box.send_keys(answer)
-    part.find_element(By.CSS_SELECTOR, "button.check").click()
-    return WebDriverWait(browser, 20).until(
-        expected_conditions.visibility_of_element_located(
-            (By.CSS_SELECTOR, f'article.part[data-part="{period}"] .result.{status}')
-        )
-    )
+    _type(browser, answer, PERIOD)
+    return _check(browser, status, PERIOD)
 
 
 def test_a_number_with_a_word_is_shown_as_read(server, browser):
@@ -156,6 +155,20 @@ def test_a_number_in_another_unit_is_read_in_the_one_asked(server, browser):
     browser.get(server.url)
     result = _check_period(browser, "2006 ms", "equivalent")
     assert [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")] == ["Read as 2.006 s."]
+
+
+def test_after_a_check_the_answer_is_shown_as_the_check_read_it(server, browser):
+    # The preview reads the unit's N·m as names, m the mass among them; the check sets the unit apart.
+    key = "generalized-forces.q-theta"
+    browser.get(server.url)
+    _type(browser, "−m g r sin θ N·m", key)
+    assert "N" in _previewed(browser, key).text
+    result = _check(browser, "equivalent", key)
+    assert _part(browser, key).find_element(By.CSS_SELECTOR, ".preview").text == ""
+    shown = result.find_element(By.CSS_SELECTOR, ".read math").text
+    assert "r" in shown and "N" not in shown
+    _type(browser, "−m g r sin θ", key)  # edited: the preview is back
+    assert "N" not in _previewed(browser, key).text
 
 
 def test_hostile_text_stays_text(server, browser):
