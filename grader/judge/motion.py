@@ -80,6 +80,7 @@ _CONSTANT = 1e-9
 # a dip of |factor| whose parabola falls below this part of its neighbours may touch zero (of a
 # double zero's, the parabola misses zero by about h²/12 of them, h the samples' spacing: < 0.01)
 _DIP = 0.05
+_MOST_DIPS = 32  # dips narrowed at most, in one numpy pass a round
 _SMOOTH = 2.0  # a pole of the expected equations grows at least 3 times over a dip's samples
 
 
@@ -578,15 +579,16 @@ def _touches_between(
     lows = np.array([low for low, _ in segments])
     spans = np.array([high for _, high in segments]) - lows
     first = _factor_sizes_at(expected, systems, lows, spans, np.broadcast_to(along, (len(segments), len(along))), step)
-    brackets = [
-        (number, i)
+    found = [
+        (depth, number, i)
         for number, rows in enumerate(zip(*first, strict=True))
         if np.isfinite(rows[0]).all()
-        for i in _dips(*rows)
+        for i, depth in _dips(*rows)
     ]
-    if not brackets:
+    if not found:
         return False
-    owners, dips = np.array(brackets).T
+    # the most zero-like first: a factor as cos²(50 θ) has hundreds of dips, and one zero is enough
+    owners, dips = np.array([(number, i) for _, number, i in sorted(found)[:_MOST_DIPS]]).T
     lows, spans = lows[owners], spans[owners]
     low, high = (dips - 1) / (_ALONG - 1), (dips + 1) / (_ALONG - 1)
     norm0, own0 = first[1][owners, dips], first[2][owners, dips]
@@ -616,9 +618,10 @@ def _one_value(sizes: Sequence[float]) -> bool:
     return max(sizes) - min(sizes) <= _CONSTANT * max(sizes)
 
 
-def _dips(row: np.ndarray, norm: np.ndarray, own: np.ndarray) -> list[int]:
-    """Where samples ``row`` of |factor| dip as if to zero: below both neighbours, with the
-    parabola through the three falling below :data:`_DIP` of the lower neighbour. A smooth
+def _dips(row: np.ndarray, norm: np.ndarray, own: np.ndarray) -> list[tuple[int, float]]:
+    """Where samples ``row`` of |factor| dip as if to zero, and how deep (the parabola's lowest
+    over the lower neighbour): below both neighbours, with the parabola through the three falling
+    below :data:`_DIP` of the lower neighbour. A smooth
     minimum that is not a zero (of 2 + cos θ, or of 1/sin²θ between its poles) is shallower.
 
     Not where the expected equations' own size (``norm``) changes :data:`_SMOOTH` times over the
@@ -628,11 +631,12 @@ def _dips(row: np.ndarray, norm: np.ndarray, own: np.ndarray) -> list[int]:
     for i in range(1, len(row) - 1):
         a, b, c = row[i - 1], row[i], row[i + 1]
         curvature = a - 2 * b + c
-        if not (b < a and b <= c and curvature > 0 and b - (c - a) ** 2 / (8 * curvature) < _DIP * min(a, c)):
+        if not (b < a and b <= c and curvature > 0):
             continue
+        depth = (b - (c - a) ** 2 / (8 * curvature)) / min(a, c)
         around = norm[i - 1 : i + 2]
-        if around.max() <= _SMOOTH * around.min() and 2 * own[i] > min(own[i - 1], own[i + 1]):
-            found.append(i)
+        if depth < _DIP and around.max() <= _SMOOTH * around.min() and 2 * own[i] > min(own[i - 1], own[i + 1]):
+            found.append((i, depth))
     return found
 
 
