@@ -481,12 +481,15 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
     runs = itertools.groupby(sorted(sizes), key=lambda number: number // GROUP)
     if all(_one_value([sizes[number] for number in run]) for _, run in runs):
         return False
-    segments = [
-        (states[first], states[second])
+    pairs = [
+        (first, second)
         for (first, sign, own), (second, other, own_other) in itertools.pairwise(signs)
         if sign == other and own == own_other
     ]
-    return bool(segments) and _touches_between(expected, systems, segments, steps[0])
+    if not pairs:
+        return False
+    step = max(max(steps[first], steps[second]) for first, second in pairs)  # a larger step reads as well
+    return _touches_between(expected, systems, [(states[first], states[second]) for first, second in pairs], step)
 
 
 def _scalings(mine: np.ndarray, theirs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -621,8 +624,8 @@ def _one_value(sizes: Sequence[float]) -> bool:
 def _dips(row: np.ndarray, norm: np.ndarray, own: np.ndarray) -> list[tuple[int, float]]:
     """Where samples ``row`` of |factor| dip as if to zero, and how deep (the parabola's lowest
     over the lower neighbour): below both neighbours, with the parabola through the three falling
-    below :data:`_DIP` of the lower neighbour. A smooth
-    minimum that is not a zero (of 2 + cos θ, or of 1/sin²θ between its poles) is shallower.
+    below :data:`_DIP` of the lower neighbour. A smooth minimum that is not a zero (of 2 + cos θ,
+    or of 1/sin²θ between its poles) is shallower.
 
     Not where the expected equations' own size (``norm``) changes :data:`_SMOOTH` times over the
     three, as at a pole of theirs (sin²θ times φ̈ + 2 cot θ θ̇ φ̇ at θ = 0), nor where their own
