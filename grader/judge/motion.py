@@ -576,8 +576,8 @@ def _touches_between(
     a zero (:func:`_dips`) is narrowed, all at once, in rounds of as many states around its lowest,
     to a float's resolution. A dip that is a zero is zero to rounding there; one that is not
     (1.01 + cos θ) is far from it. A dip is let go where the expected equations' own size grows
-    :data:`_POLE` times (their pole) or their own coefficient falls with the factor (their
-    singular point: the spherical pendulum's sin θ φ̈ at θ = 0, where they say no more)."""
+    :data:`_POLE` times (their pole), or their own coefficient (determinant) falls with the
+    factor (their singular point: sin θ φ̈ + 2 cos θ θ̇ φ̇ at θ = 0, where it fixes no φ̈ either)."""
     along = np.linspace(0.0, 1.0, _ALONG)
     lows = np.array([low for low, _ in segments])
     spans = np.array([high for _, high in segments]) - lows
@@ -629,7 +629,10 @@ def _dips(row: np.ndarray, norm: np.ndarray, own: np.ndarray) -> list[tuple[int,
 
     Not where the expected equations' own size (``norm``) changes :data:`_SMOOTH` times over the
     three, as at a pole of theirs (sin²θ times φ̈ + 2 cot θ θ̇ φ̇ at θ = 0), nor where their own
-    coefficient (``own``) falls by half at the dip: their singular point, not the factor's."""
+    coefficient or determinant (``own``) falls by half at the dip: their singular point, where they
+    fix no acceleration either (sin θ φ̈ + 2 cos θ θ̇ φ̇ at θ = 0). A system may still fix another
+    there (the spherical pendulum's θ̈ at θ = π), so the θ equation times 1 + cos θ is missed: to
+    narrow every such dip to see would cost its right answers 15 ms each."""
     found = []
     for i in range(1, len(row) - 1):
         a, b, c = row[i - 1], row[i], row[i + 1]
@@ -638,7 +641,8 @@ def _dips(row: np.ndarray, norm: np.ndarray, own: np.ndarray) -> list[tuple[int,
             continue
         depth = (b - (c - a) ** 2 / (8 * curvature)) / min(a, c)
         around = norm[i - 1 : i + 2]
-        if depth < _DIP and around.max() <= _SMOOTH * around.min() and 2 * own[i] > min(own[i - 1], own[i + 1]):
+        singular = 2 * own[i] <= min(own[i - 1], own[i + 1])
+        if depth < _DIP and around.max() <= _SMOOTH * around.min() and not singular:
             found.append((i, depth))
     return found
 
