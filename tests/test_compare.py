@@ -1224,6 +1224,25 @@ def test_a_system_whose_combination_touches_zero_is_not_equivalent():
     assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "vanishing_factor_system_between")
 
 
+E1, E2 = (equation.removesuffix(" = 0") for equation in (EOM_DOUBLE_1, EOM_DOUBLE_2))
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # combined by a matrix of determinant 1 − cos²(θ₁ − θ₂ − 1): zero, without changing sign, at θ₁ − θ₂ = 1
+        (f"{E1} + cos(theta1 - theta2 - 1) ({E2}) = 0; cos(theta1 - theta2 - 1) ({E1}) + {E2} = 0", "not_equivalent"),
+        # of determinant 2 − cos²(θ₁ − θ₂), never below 1
+        (f"{E1} + cos(theta1 - theta2) ({E2}) = 0; cos(theta1 - theta2) ({E1}) + 2 ({E2}) = 0", "equivalent"),
+    ],
+)
+def test_a_system_combined_by_a_matrix_whose_determinant_touches_zero_is_not_equivalent(submitted, status):
+    verdict = compare(EOM_DOUBLE, submitted, kind="equations", **DOUBLE)
+    assert verdict.status == status, verdict
+    if status == "not_equivalent":
+        assert verdict.diagnosis == "vanishing_factor_system_between"
+
+
 def test_a_factor_of_the_parameters_that_vanishes_for_some_of_them_is_not_equivalent():
     # zero where the masses are equal: then the equation says nothing of ẍ
     atwood = {"coords": ["x"], "known": ["m1", "m2", "g"]}
