@@ -1217,6 +1217,21 @@ def test_an_equation_times_a_factor_that_touches_zero_is_not_equivalent(submitte
         assert verdict.diagnosis == "vanishing_factor_between"
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # sin θ is zero where the expected φ equation, sin²θ φ̈ + …, already fixes no φ̈: no mistake
+        (f"{SPHERICAL_THETA} = 0; sin θ (sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇) = 0", "equivalent"),
+        (f"{SPHERICAL_THETA} = 0; sin³θ φ̈ + 2 sin²θ cos θ θ̇ φ̇ = 0", "equivalent"),
+        # cos θ is zero where it does
+        (f"{SPHERICAL_THETA} = 0; cos θ (sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇) = 0", "not_equivalent"),
+    ],
+)
+def test_a_factor_that_vanishes_only_where_the_expected_system_is_singular_is_no_mistake(submitted, status):
+    expected = f"{SPHERICAL_THETA} = 0; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0"
+    assert compare(expected, submitted, kind="equations", **SPHERICAL).status == status
+
+
 def test_a_system_whose_combination_touches_zero_is_not_equivalent():
     # the θ equation times 1 + cos θ: the determinant of the combination is zero at θ = π
     submitted = f"(1 + cos θ)({SPHERICAL_THETA}) = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0"

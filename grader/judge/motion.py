@@ -513,17 +513,21 @@ def _scalings(mine: np.ndarray, theirs: np.ndarray) -> tuple[np.ndarray, np.ndar
 
 def _says_less(a: _Rows, b: _Rows) -> bool:
     """Whether rows ``b`` leave undetermined what rows ``a`` say at their state: one equation all
-    of whose entries are within rounding of zero, or a system that no longer fixes an acceleration."""
+    of whose entries are within rounding of zero, or a system that no longer fixes an acceleration.
+
+    What ``a`` says must be plain: an entry of it that rounding cannot tell from zero (closeness
+    unsure) says nothing. At the expected equations' own singular point their coefficient may be
+    10⁻¹³ of its scale there, or 10⁻¹¹, as near as the search came: sin θ times the spherical
+    pendulum's sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ fixes no φ̈ at θ = 0, and neither do they."""
     if len(a.rows) == 1:
-        zero = [
-            all(
-                closeness(x, 0, scale) is Closeness.EQUAL
-                for x, scale in zip(rows.rows[0], rows.entry_scales[0], strict=True)
-            )
-            for rows in (a, b)
-        ]
-        return zero[1] and not zero[0]
-    return any(mine and not yours for mine, yours in zip(_determined(a), _determined(b), strict=True))
+        said = any(
+            closeness(x, 0, scale) is Closeness.DIFFERENT for x, scale in zip(a.rows[0], a.entry_scales[0], strict=True)
+        )
+        silent = all(
+            closeness(x, 0, scale) is Closeness.EQUAL for x, scale in zip(b.rows[0], b.entry_scales[0], strict=True)
+        )
+        return said and silent
+    return any(mine and not yours for mine, yours in zip(_determined(a, plain=True), _determined(b), strict=True))
 
 
 def _silent_between(
@@ -1123,12 +1127,14 @@ def _loses_an_acceleration(expected: Expected, expected_fs, submitted_gs) -> boo
     return False
 
 
-def _determined(rows: _Rows) -> list[bool]:
+def _determined(rows: _Rows, *, plain: bool = False) -> list[bool]:
     """Per coordinate: whether these equations fix its acceleration at their state (whatever the
-    others'). A coefficient within rounding of zero, on its own scale, counts as zero."""
+    others'). A coefficient within rounding of zero, on its own scale, counts as zero; ``plain``,
+    so does one that rounding cannot tell from zero."""
     n = len(rows.rows[0]) - 1
+    zero = (Closeness.EQUAL, Closeness.UNSURE) if plain else (Closeness.EQUAL,)
     coefficients = [
-        [0.0 if closeness(c, 0, scale) is Closeness.EQUAL else c for c, scale in zip(row[:n], scales[:n], strict=True)]
+        [0.0 if closeness(c, 0, scale) in zero else c for c, scale in zip(row[:n], scales[:n], strict=True)]
         for row, scales in zip(rows.rows, rows.entry_scales, strict=True)
     ]
     coefficients = [row for row in coefficients if any(row)]
