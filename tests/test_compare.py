@@ -1282,6 +1282,24 @@ def test_a_system_with_an_equation_times_a_vanishing_factor_is_not_equivalent(su
         assert verdict.diagnosis == "vanishing_factor_system_between"
 
 
+HOOP = {"coords": ["theta"], "known": ["R", "g", "omega"]}
+EOM_HOOP = "theta'' = omega^2 sin(theta) cos(theta) - g/R sin(theta)"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "sentence"),
+    [
+        # sin 2θ is 2 sin θ cos θ: the student's term is named as written, its factor wrong
+        ("θ̈ = ω² sin 2θ − (g/R) sin θ", "A term differs: the term in sin(2θ) has the wrong factor."),
+        ("θ̈ = −½ ω² sin 2θ − (g/R) sin θ", "A term differs: the term in sin(2θ) has the wrong sign."),
+    ],
+)
+def test_a_double_angle_is_matched_with_the_product_it_stands_for(submitted, sentence):
+    verdict = compare(EOM_HOOP, submitted, kind="equation", **HOOP)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,)), verdict
+    assert compare(EOM_HOOP, "θ̈ = ½ ω² sin 2θ − (g/R) sin θ", kind="equation", **HOOP).equivalent
+
+
 def test_one_term_in_its_small_angle_form_is_said_so_not_as_a_term_missing_and_one_too_many():
     submitted = "l θ̈ − l sin θ cos θ φ̇² + g θ = 0; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0"
     verdict = compare(SPHERICAL_EOM, submitted, kind="equations", **SPHERICAL)

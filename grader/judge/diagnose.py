@@ -5,7 +5,8 @@ Contents:
     expand_terms(expr)                            multiplied out as sympy.expand does, without building the sum
     term_changes(expected, submitted, setting)    missing / extra / differing terms, from two such
     describe_term(term, setting)                  "a velocity-dependent term", "a term in cos(θ₁ − θ₂)"
-    in_sines_and_cosines(expr), as_written(shape, answer)   cot θ as cos θ / sin θ, and back as typed
+    in_sines_and_cosines(expr), as_written(shape, answer)   cot θ as cos θ / sin θ, sin 2θ as 2 sin θ cos θ;
+                                                  and back as typed
     small_angle(expr, setting)                    sin u → u, cos u → 1 (and 1 − u²/2)
     taylor(expr, setting, order)                  expansion about the equilibrium q = q̇ = q̈ = 0
     symbolic_zero(expr, setting)                  sympy's last word, with the problem's assumptions
@@ -258,12 +259,13 @@ def told_apart(shape, description: str, shapes: list, setting: Setting, **how) -
 
 def _by_form(collected: dict) -> dict:
     """{form in sines and cosines: (a shape as written, the coefficients of that form summed)}:
-    cot θ θ̇ and cos θ θ̇ / sin θ, written side by side, are one term."""
+    cot θ θ̇ and cos θ θ̇ / sin θ, written side by side, are one term; ω² sin 2θ is the form
+    ω² sin θ cos θ, twice."""
     by_form: dict = {}
     for shape, coefficient in collected.items():
-        form = in_sines_and_cosines(shape)
+        times, form = in_sines_and_cosines(shape).as_coeff_Mul()
         written, before = by_form.get(form, (shape, 0))
-        by_form[form] = (written, before + coefficient)
+        by_form[form] = (written, before + coefficient * times)
     return by_form
 
 
@@ -303,12 +305,24 @@ _AS_SINES_AND_COSINES = {
 
 
 def in_sines_and_cosines(expr):
-    """``expr`` with tan, cot, sec and csc written as quotients of sin and cos: one form for a
-    term however its trigonometry was written (the very same object where there is none)."""
+    """``expr`` with tan, cot, sec and csc written as quotients of sin and cos, and sin 2u as
+    2 sin u cos u (a product still: cos 2u would be a sum): one form for a term however its
+    trigonometry was written (the very same object where there is none)."""
     found = expr.atoms(*_AS_SINES_AND_COSINES)
-    if not found:
+    doubled = {f: half for f in expr.atoms(sympy.sin) if (half := _half(f.args[0])) is not None}
+    if not found and not doubled:
         return expr
-    return expr.xreplace({f: _AS_SINES_AND_COSINES[type(f)](f.args[0]) for f in found})
+    return expr.xreplace(
+        {f: _AS_SINES_AND_COSINES[type(f)](f.args[0]) for f in found}
+        | {f: 2 * sympy.sin(half) * sympy.cos(half) for f, half in doubled.items()}
+    )
+
+
+def _half(angle):
+    """u where ``angle`` is 2u of the state (2θ, 2θ₁ − 2θ₂); else None."""
+    if not angle.free_symbols:
+        return None
+    return angle.extract_multiplicatively(2)
 
 
 def as_written(shape, answer):
