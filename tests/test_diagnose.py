@@ -7,7 +7,7 @@ import sympy
 from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
-from grader.judge.diagnose import EXPANSION_LIMIT, expand_terms, term_changes, terms
+from grader.judge.diagnose import EXPANSION_LIMIT, expand_terms, in_sines_and_cosines, term_changes, terms
 from grader.judge.numeric import UNDEFINED, Compiled, NotCompilable
 from grader.judge.setting import Setting
 
@@ -106,3 +106,23 @@ def test_too_many_terms_are_not_named():
     setting = Setting.build(["theta"], ["m", "l", "g"])
     assert term_changes({m: 1}, terms(many), setting) == []  # nothing said, rather than 495 "extra terms"
     assert term_changes(terms(many), {m: 1}, setting) == []
+
+
+_X, _Y = sympy.symbols("x y", real=True)
+
+
+@pytest.mark.parametrize(
+    ("expr", "form"),
+    [
+        (sympy.sin(2 * _X), 2 * sympy.sin(_X) * sympy.cos(_X)),
+        (sympy.sin(2 * _X - 2 * _Y), 2 * sympy.sin(_X - _Y) * sympy.cos(_X - _Y)),
+        (sympy.cot(_X), sympy.cos(_X) / sympy.sin(_X)),
+        # no double angle: left as written
+        (sympy.sin(_X / 2), sympy.sin(_X / 2)),
+        (sympy.sin(2 * _X / 3), sympy.sin(2 * _X / 3)),
+        (sympy.sin(3 * _X), sympy.sin(3 * _X)),
+        (sympy.cos(2 * _X), sympy.cos(2 * _X)),  # a sum in any other form: not one term
+    ],
+)
+def test_a_term_is_put_in_one_form_of_its_trigonometry(expr, form):
+    assert in_sines_and_cosines(expr) == form

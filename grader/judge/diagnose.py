@@ -319,10 +319,14 @@ def in_sines_and_cosines(expr):
 
 
 def _half(angle):
-    """u where ``angle`` is 2u of the state (2θ, 2θ₁ − 2θ₂); else None."""
+    """u where ``angle`` is 2u, each term of u a whole multiple (2θ, 2θ₁ − 2θ₂, 4θ); else None
+    (θ/2 is no double angle, nor is 2θ/3)."""
     if not angle.free_symbols:
         return None
-    return angle.extract_multiplicatively(2)
+    half = angle.extract_multiplicatively(2)
+    if half is None or not all(term.as_coeff_Mul()[0].is_Integer for term in sympy.Add.make_args(half)):
+        return None
+    return half
 
 
 def as_written(shape, answer):
