@@ -1002,35 +1002,58 @@ def _real_roots(function: Compiled, point, position: int, grid, deadline: Deadli
         (x, (value.real, scale) if math.isfinite(scale) and abs(value.imag) <= 1e-9 * max(1.0, abs(value)) else None)
         for x, value, scale in zip(grid, values.tolist(), scales.tolist(), strict=True)
     ]
-    roots: list[tuple[float, tuple | None]] = []
-    for (x0, s0), (x1, s1), (x2, s2) in zip(samples, samples[1:], samples[2:], strict=False):
-        deadline.check()
+    roots: list[tuple[int, float, tuple | None]] = []  # where on the grid, the root, its bracket
+    changes, dips = [], []  # (where on the grid, x0, x1, f(x0) > 0); (where, x0, x2)
+    for number, ((x0, s0), (x1, s1), (x2, s2)) in enumerate(zip(samples, samples[1:], samples[2:], strict=False)):
         if s0 is None or s1 is None:
             continue
         if s1[0] == 0:
             if really_vanishes(x1):
-                roots.append((x1, None))
+                roots.append((number, x1, None))
         elif s0[0] * s1[0] < 0:
-            low, high = x0, x1
-            for _ in range(60):
-                middle = (low + high) / 2
-                sample = at(middle)
-                if sample is None:
-                    break
-                low, high = (middle, high) if (sample[0] > 0) == (s0[0] > 0) else (low, middle)
-            if vanishes((low + high) / 2):
-                roots.append(((low + high) / 2, (low, high)))
+            changes.append((number, x0, x1, s0[0] > 0))
         elif s2 is not None and abs(s1[0]) < min(abs(s0[0]), abs(s2[0])) and s0[0] * s2[0] > 0:
-            low, high = x0, x2  # golden-section search for the minimum of |f|
-            for _ in range(80):
-                a, b = high - 0.618 * (high - low), low + 0.618 * (high - low)
-                fa, fb = at(a), at(b)
-                if fa is None or fb is None:
-                    break
-                low, high = (low, b) if abs(fa[0]) < abs(fb[0]) else (a, high)
-            if vanishes((low + high) / 2) and really_vanishes((low + high) / 2):
-                roots.append(((low + high) / 2, None))
-    return roots
+            dips.append((number, x0, x2))
+    # every bracket narrowed at once, in one numpy pass a step: bisection where f changes sign,
+    # golden-section search for the least |f| where it dips
+    if changes:
+        low, high = (np.array([change[k] for change in changes], float) for k in (1, 2))
+        positive = np.array([change[3] for change in changes])
+        on = np.ones(len(changes), bool)
+        for _ in range(60):
+            deadline.check()
+            middle = (low + high) / 2
+            value, defined = _along(function, point, position, middle)
+            on &= defined  # where undefined, the bracket stays as it was
+            keep_low = on & ((value > 0) == positive)
+            low, high = np.where(keep_low, middle, low), np.where(on & ~keep_low, middle, high)
+        for (number, *_), a, b in zip(changes, low.tolist(), high.tolist(), strict=True):
+            if vanishes((a + b) / 2):
+                roots.append((number, (a + b) / 2, (a, b)))
+    if dips:
+        low, high = (np.array([dip[k] for dip in dips], float) for k in (1, 2))
+        on = np.ones(len(dips), bool)
+        for _ in range(80):
+            deadline.check()
+            a, b = high - 0.618 * (high - low), low + 0.618 * (high - low)
+            value, defined = _along(function, point, position, np.concatenate([a, b]))
+            on &= defined[: len(a)] & defined[len(a) :]
+            nearer = np.abs(value[: len(a)]) < np.abs(value[len(a) :])
+            low, high = np.where(on & ~nearer, a, low), np.where(on & nearer, b, high)
+        for (number, *_), a, b in zip(dips, low.tolist(), high.tolist(), strict=True):
+            if vanishes((a + b) / 2) and really_vanishes((a + b) / 2):
+                roots.append((number, (a + b) / 2, None))
+    return [(root, bracket) for _, root, bracket in sorted(roots, key=lambda item: item[0])]
+
+
+def _along(function: Compiled, point, position: int, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The real part of ``function`` at ``point`` with one variable at each of ``xs``, and where
+    it is defined and real there (its imaginary part within rounding); not remembered."""
+    batch = np.repeat(np.asarray([point], complex), len(xs), axis=0)
+    batch[:, position] = xs
+    values, scales = function.many_once(batch)
+    defined = np.isfinite(scales) & (np.abs(values.imag) <= 1e-9 * np.maximum(1.0, np.abs(values)))
+    return values.real, defined
 
 
 # -- systems ----------------------------------------------------------------------
