@@ -455,9 +455,8 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
     ]
     if len(defined) < 2:
         return False
-    factors, owns = _scalings(
-        *(np.array([rows[number].rows for number in defined], complex) for rows in (mine, theirs))
-    )
+    stacked = [np.array([rows[number].rows for number in defined], complex) for rows in (mine, theirs)]
+    factors, owns = _scalings(*stacked)
     signs = [
         (number, factor > 0, own > 0)
         for number, factor, own in zip(defined, factors.tolist(), owns.tolist(), strict=True)
@@ -478,8 +477,13 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
     # A factor of the parameters alone (1/l, m l²) is one value within each run of states that share
     # them. It is most right answers' and is not searched: such a factor that touches zero without
     # changing sign ((m₁ − m₂)²) is written by nobody, and the search would cost every one of them.
-    runs = itertools.groupby(sorted(sizes), key=lambda number: number // GROUP)
-    if all(_one_value([sizes[number] for number in run]) for _, run in runs):
+    if _of_parameters(sizes):
+        return False
+    # Nor where the submitted equations' own coefficient (determinant) is of the parameters alone, as
+    # in θ̈₁ = …, θ̈₂ = … solved, or m l² θ̈ + …: the factor is that over the expected equations' own, and
+    # is zero only where theirs is infinite, where they are undefined.
+    _, their_owns = _scalings(stacked[1], stacked[0])
+    if _of_parameters({number: abs(own) for number, own in zip(defined, their_owns.tolist(), strict=True)}):
         return False
     pairs = [
         (first, second)
@@ -619,6 +623,13 @@ def _touches_between(
         if _says_less(*rows):
             return True
     return False
+
+
+def _of_parameters(sizes: dict[int, float]) -> bool:
+    """Whether ``sizes`` at the numbered sample states are one value within each run of states that
+    share the parameters' values (:data:`GROUP`): a function of the parameters alone."""
+    runs = itertools.groupby(sorted(sizes), key=lambda number: number // GROUP)
+    return all(_one_value([sizes[number] for number in run]) for _, run in runs)
 
 
 def _one_value(sizes: Sequence[float]) -> bool:
