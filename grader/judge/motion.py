@@ -28,7 +28,9 @@ it still fixes must be fixed by the submitted one too. A factor that vanishes el
 for its zero; a factor that changes sign at a pole (1/cos θ) is no mistake. A factor of the
 state that falls to zero without changing sign (1 + cos θ, (θ̇ − 1)²) dips between two states:
 each dip that looks like a zero is narrowed to see whether it is one. A factor of the parameters
-alone is not searched so: (m₁ − m₂)² is written by nobody, and 1/l by most right answers.
+alone is not searched so: (m₁ − m₂)² is written by nobody, and 1/l by most right answers. Nor are
+equations whose own coefficients are of the parameters alone (solved, θ̈ = …): their factor is
+zero only where the expected equations are undefined.
 
 An equation without accelerations (a constraint, a conserved quantity) is right
 when submitted/expected is, at fixed parameters, the same nonzero number
