@@ -220,6 +220,8 @@ def _run_grade(args: argparse.Namespace) -> int:
     print(f"  gradebook: {summary.out / 'gradebook.csv'}   summary: {summary.out / 'summary.html'}")
     print(f"  reports: {summary.out / 'reports'}/   for a person to look at: {summary.review_count} answers in "
           f"{summary.out / 'review.csv'}")  # fmt: skip
+    if summary.exports:
+        print(f"  LMS imports made again from these grades: {', '.join(summary.exports)} in {summary.out / 'exports'}")
     for failure in summary.failed:
         print(f"  could not be graded: {failure}")
     return EXIT_SOME_FAILED if summary.failed or summary.issues else EXIT_OK

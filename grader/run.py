@@ -11,10 +11,12 @@ Outputs in the folder ``out``, written all or none (a run that fails changes non
     results/<student>.json   Gradescope's results.json shape, our details under extra_data
     gradebook.csv, scores_long.csv, review.csv, summary.html, reports/<student>.html and .md
     overrides.csv            the person's scores applied, kept so they survive a regrade
+    exports/                 LMS imports (``grader export``): a regrade writes those there again
     input-issues.txt         what was wrong in the submissions, by file and row
 
 results/ and reports/ hold this run's students only (what export reads): a regrade removes
-those of students it did not grade, and ``only`` keeps everyone graded before.
+those of students it did not grade, and ``only`` keeps everyone graded before. The CSVs start
+with a byte-order mark, without which Excel reads UTF-8 as Windows-1252 (θ shows as Î¸).
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ from grader.errors import GraderError
 from grader.export import (
     apply_overrides,
     canvas_csv,
+    csv_file,
     grade_from_json,
     gradebook_csv,
     moodle_csv,
@@ -61,6 +64,7 @@ class RunSummary:
     grades: tuple[SubmissionGrade, ...]
     issues: tuple[str, ...] = ()
     failed: tuple[str, ...] = field(default=())  # students who could not be graded, with the reason
+    exports: tuple[str, ...] = ()  # the LMS imports in out/exports/, written again from these grades
 
     @property
     def review_count(self) -> int:
@@ -135,9 +139,10 @@ def grade_assignment(
         grades = _merged(previous, grades)
     grades, unmatched = apply_overrides(grades, scores)
     issues += unmatched
-    _write_outputs(out, grades, keys, assignment, bank, issues, reveal, scores)
+    refreshed = _earlier_exports(out)
+    _write_outputs(out, grades, keys, assignment, bank, issues, reveal, scores, refreshed)
     failed = tuple(f"{g.student.id}: {g.message}" for g in grades if g.status == "error")
-    return RunSummary(out, tuple(grades), tuple(issues), failed)
+    return RunSummary(out, tuple(grades), tuple(issues), failed, refreshed)
 
 
 def _overrides(out: Path, new: Path | None, max_points: dict[str, float]) -> dict:
@@ -166,8 +171,9 @@ def _merged(previous: list[SubmissionGrade], regraded: list[SubmissionGrade]) ->
     return [fresh.pop(grade.student.id, grade) for grade in previous] + list(fresh.values())
 
 
-def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal, overrides) -> None:
-    """Every output, all or none; results and reports of students not in ``grades`` are removed."""
+def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal, overrides, refreshed) -> None:
+    """Every output, all or none; results and reports of students not in ``grades`` are removed, and
+    the LMS imports in ``refreshed`` are written again from ``grades``."""
     names = [file_name(grade.student.id) for grade in grades]
     ours = {out / folder / f"{name}{suffix}" for name in names for folder, suffix in _PER_STUDENT}
     stale = [path for folder, suffix in _PER_STUDENT for path in (out / folder).glob(f"*{suffix}") if path not in ours]
@@ -178,15 +184,24 @@ def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal, ov
             yield out / "results" / f"{name}.json", result_json(grade)
             yield out / "reports" / f"{name}.html", html
             yield out / "reports" / f"{name}.md", markdown
-        yield out / "gradebook.csv", gradebook_csv(grades, keys)
-        yield out / "scores_long.csv", scores_long_csv(grades)
-        yield out / "review.csv", review_csv(grades)
+        yield out / "gradebook.csv", csv_file(gradebook_csv(grades, keys))
+        yield out / "scores_long.csv", csv_file(scores_long_csv(grades))
+        yield out / "review.csv", csv_file(review_csv(grades))
         yield out / "summary.html", render_summary(list(grades), assignment=assignment, bank=bank, input_issues=issues)
         yield out / "input-issues.txt", "".join(f"{issue}\n" for issue in issues)
         if overrides:
-            yield out / "overrides.csv", overrides_csv(overrides)
+            yield out / "overrides.csv", csv_file(overrides_csv(overrides))
+        yield from exported.items()
 
+    # An LMS import made from the earlier grades would post them: each is made again from these.
+    exported, max_score = {}, sum(points for _, points in keys)
+    in_order = sorted(grades, key=lambda grade: file_name(grade.student.id))  # as export reads results/
+    for to in refreshed:
+        files, gone = _export_files(out, to, in_order, assignment, max_score)
+        exported |= files
+        stale += gone
     write_all_atomic(outputs(), remove=stale)
+    _remove_empty_folders(stale)
 
 
 _PER_STUDENT = (("results", ".json"), ("reports", ".html"), ("reports", ".md"))
@@ -216,12 +231,23 @@ def export_grades(out: Path, to: str, *, assignment: Assignment, max_score: floa
         raise GraderError(f"{out} holds no results: grade first (grader grade … --out {out})")
     grades = [grade_from_json(path.read_text(encoding="utf-8")) for path in paths]
     not_graded = tuple(grade.student for grade in grades if grade.status == "error")
+    files, stale = _export_files(out, to, grades, assignment, max_score)
+    written = write_all_atomic(files, remove=stale)
+    _remove_empty_folders(stale)
+    waiting = sum(part.needs_review for grade in grades for part in grade.parts)
+    return ExportSummary(tuple(written), not_graded, waiting)
+
+
+def _export_files(
+    out: Path, to: str, grades: list[SubmissionGrade], assignment: Assignment, max_score: float
+) -> tuple[dict[Path, str | bytes], list[Path]]:
+    """The files of an LMS import of ``grades`` (in results/'s order), and those of an earlier one to remove."""
     exports, stale = out / "exports", []
     if to == "canvas":
         text = canvas_csv(grades, assignment=assignment.title, assignment_id=assignment.id, max_score=max_score)
-        files = {exports / "canvas.csv": text}
+        files = {exports / "canvas.csv": csv_file(text)}
     elif to == "moodle":
-        files = {exports / "moodle.csv": moodle_csv(grades, assignment=assignment.title)}
+        files = {exports / "moodle.csv": csv_file(moodle_csv(grades, assignment=assignment.title))}
     else:
         folder = exports / "gradescope"
         files = {
@@ -230,9 +256,18 @@ def export_grades(out: Path, to: str, *, assignment: Assignment, max_score: floa
             if grade.status != "error"
         }
         stale = [path for path in folder.glob("*/results.json") if path not in files]
-    written = write_all_atomic(files, remove=stale)
-    for path in stale:  # a student no longer exported: their folder goes too
+    return files, stale
+
+
+def _earlier_exports(out: Path) -> tuple[str, ...]:
+    """The LMS imports an earlier ``grader export`` wrote into ``out``: a regrade writes them again."""
+    exports = out / "exports"
+    made = {"canvas": exports / "canvas.csv", "moodle": exports / "moodle.csv", "gradescope": exports / "gradescope"}
+    return tuple(to for to, path in made.items() if path.exists())
+
+
+def _remove_empty_folders(removed: list[Path]) -> None:
+    """The folders of files removed, where nothing else is left in them (a student no longer exported)."""
+    for path in removed:
         with contextlib.suppress(OSError):
             path.parent.rmdir()
-    waiting = sum(part.needs_review for grade in grades for part in grade.parts)
-    return ExportSummary(tuple(written), not_graded, waiting)

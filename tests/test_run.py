@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import codecs
 import csv
 import io
 import json
@@ -39,7 +40,11 @@ def _class(tmp_path: Path, rows: list[list[str]]) -> Path:
 
 
 def _rows(path: Path) -> list[dict]:
-    return list(csv.DictReader(io.StringIO(path.read_text(encoding="utf-8"))))
+    """A CSV's rows, as Excel reads the file: every CSV we write starts with a byte-order mark,
+    without which Excel takes UTF-8 for Windows-1252."""
+    data = path.read_bytes()
+    assert data.startswith(codecs.BOM_UTF8), path
+    return list(csv.DictReader(io.StringIO(data.decode("utf-8-sig"))))
 
 
 def _grade(tmp_path, submissions, assignment, *more) -> int:
@@ -238,6 +243,50 @@ def test_a_regrade_of_fewer_students_exports_only_them(tmp_path, assignment):
     # --only regrades one student and keeps the rest of this run, and nothing of the one before
     assert _grade(tmp_path, _class(tmp_path, CLASS), assignment, "--only", "s1") == 0
     assert [row["id"] for row in _rows(out / "gradebook.csv")] == ["Points Possible", "s1"]
+
+
+def test_a_regrade_writes_the_lms_imports_again_as_export_would(tmp_path, assignment, capsys):
+    out, submissions = tmp_path / "out", _class(tmp_path, CLASS)
+    assert _grade(tmp_path, submissions, assignment) == 0
+    for target in ("canvas", "gradescope"):
+        assert _export(out, target, assignment) == 0
+    posted = _files(out / "exports")
+    overrides = tmp_path / "overrides.csv"
+    overrides.write_text("student,part,points,comment\ns2,plane-pendulum.lagrangian,3,nearly\n")
+    capsys.readouterr()
+    assert _grade(tmp_path, submissions, assignment, "--overrides", str(overrides)) == 0
+    assert (
+        f"LMS imports made again from these grades: canvas, gradescope in {out / 'exports'}" in capsys.readouterr().out
+    )
+    again = _files(out / "exports")
+    assert sorted(again) == sorted(posted)  # no moodle.csv: it was never asked for
+    assert [row["Pendulum quiz (pendulum)"] for row in _rows(out / "exports" / "canvas.csv")][1:] == ["9.00", "3.00"]
+    assert json.loads(again["gradescope/s2/results.json"])["score"] == 3.0
+    for target in ("canvas", "gradescope"):
+        assert _export(out, target, assignment) == 0
+    assert _files(out / "exports") == again  # what export itself writes from the new grades
+
+
+def test_every_csv_starts_with_a_byte_order_mark_so_excel_reads_utf8(tmp_path, assignment):
+    out = tmp_path / "out"
+    rows = [["s3", "Zoë Müller", "z@x.org", "½ m l² θ̇² + m g l cos θ", "θ̈ = −(g/l) sin θ", "weil sin θ ≈ θ"]]
+    overrides = tmp_path / "overrides.csv"
+    overrides.write_text("student,part,points,comment\ns3,plane-pendulum.why-harmonic,2,gut\n")
+    assert _grade(tmp_path, _class(tmp_path, rows), assignment, "--overrides", str(overrides)) == 0
+    for target in ("canvas", "moodle"):
+        assert _export(out, target, assignment) == 0
+    written = [*out.glob("*.csv"), *(out / "exports").glob("*.csv")]
+    assert sorted(path.name for path in written) == [
+        "canvas.csv",
+        "gradebook.csv",
+        "moodle.csv",
+        "overrides.csv",
+        "review.csv",
+        "scores_long.csv",
+    ]
+    for path in written:
+        assert path.read_bytes().count(codecs.BOM_UTF8) == 1, path  # once, at the start (_rows checks where)
+    assert _rows(out / "gradebook.csv")[1]["name"] == "Zoë Müller"
 
 
 BAD_OVERRIDE_POINTS = [("nan", "4"), ("inf", "4"), ("-1", "4"), ("10", "4"), ("abc", "4")]

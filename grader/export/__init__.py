@@ -6,6 +6,7 @@ Contents:
     gradebook_csv, scores_long_csv, review_csv
     read_overrides, apply_overrides, overrides_csv   a person's scores over the grader's
     canvas_csv, moodle_csv             LMS gradebook imports
+    csv_file                           a CSV's text as its file's bytes, which Excel reads as UTF-8
 """
 
 from grader.export.atomic import write_all_atomic, write_atomic
@@ -19,10 +20,12 @@ from grader.export.gradebook import (
     scores_long_csv,
 )
 from grader.export.overrides import apply_overrides, overrides_csv, read_overrides
+from grader.export.spreadsheet import csv_file
 
 __all__ = [
     "apply_overrides",
     "canvas_csv",
+    "csv_file",
     "grade_from_json",
     "gradebook_csv",
     "moodle_csv",

@@ -2,6 +2,7 @@
 
 Contents:
     csv_text(frame)   every CSV the grader writes: pandas, "\\n" line endings, inert cells
+    csv_file(text)    the bytes of a CSV file: UTF-8 after a byte-order mark, for Excel
     inert(value)      a cell no spreadsheet runs as a formula, on one row
     typed(cell)       a cell as a person typed it, from one :func:`inert` wrote
 
@@ -19,7 +20,7 @@ from __future__ import annotations
 
 import pandas
 
-__all__ = ["csv_text", "inert", "typed"]
+__all__ = ["csv_file", "csv_text", "inert", "typed"]
 
 _FORMULA_START = ("=", "+", "-", "@", "\t", "\r", "\n")
 
@@ -27,6 +28,19 @@ _FORMULA_START = ("=", "+", "-", "@", "\t", "\r", "\n")
 def csv_text(frame: pandas.DataFrame) -> str:
     """``frame`` as CSV text, with every cell made :func:`inert`."""
     return frame.map(inert).to_csv(index=False, lineterminator="\n")
+
+
+def csv_file(text: str) -> bytes:
+    """``text`` as the bytes of a CSV file: UTF-8 after a byte-order mark.
+
+    Excel opens a CSV without one as Windows-1252, so a student's θ̇ or Müller shows as Î¸Ì‡ or
+    MÃ¼ller; with it, Excel reads UTF-8. Canvas and Moodle imports skip the mark, and so do our
+    readers (``utf-8-sig``).
+
+    >>> csv_file("id,θ\\n")
+    b'\\xef\\xbb\\xbfid,\\xce\\xb8\\n'
+    """
+    return text.encode("utf-8-sig")
 
 
 def inert(value):
