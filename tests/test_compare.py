@@ -191,6 +191,10 @@ FEEDBACK = [
      "Your equations are not independent: they do not determine every acceleration."),
     (EOM_DOUBLE, f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2}; theta1 = 0", "equations", DOUBLE, "extra_equation",
      "You gave 3 equations; this system needs exactly 2, one per coordinate."),
+    # an equation that says nothing, as a third: that it is empty is the mistake, not the count
+    (EOM_DOUBLE, f"{EOM_DOUBLE_1}; 0 = 0; {EOM_DOUBLE_2}", "equations", DOUBLE, "trivial_extra_equation",
+     "Equation 2 holds for every motion, so it says nothing about this one: leave it out. This system needs"
+     " exactly 2 equations, one per coordinate."),
 ]  # fmt: skip
 
 
@@ -2235,9 +2239,19 @@ def test_nothing_a_student_types_makes_a_number_with_a_unit_raise(submitted):
     assert verdict.status != "equivalent" or submitted in ("T = 2006 ms", "2.006 s = T", "2,01 = 2,01")
 
 
-def test_an_equation_that_holds_for_every_motion_is_named():
-    verdict = compare(EOM_DOUBLE, f"{EOM_DOUBLE_1}; theta1 = theta1", kind="equations", **DOUBLE)
+@pytest.mark.parametrize("second", ["theta1 = theta1", "0 = 0", "sin(theta1)^2 + cos(theta1)^2 = 1"])
+def test_an_equation_that_holds_for_every_motion_is_named(second):
+    verdict = compare(EOM_DOUBLE, f"{EOM_DOUBLE_1}; {second}", kind="equations", **DOUBLE)
     assert verdict.feedback == ("Equation 2 holds for every motion, so it says nothing about this one.",)
+
+
+@pytest.mark.parametrize("second", ["theta1 = 0", "theta1dot = omega", "l1 cos(theta1) + l2 cos(theta2) = l1"])
+def test_an_equation_without_accelerations_is_not_said_to_hold_for_every_motion(second):
+    # θ₁ = 0 is a relation, not an identity: it holds for some motions, and says no acceleration
+    setting = {**DOUBLE, "known": [*DOUBLE["known"], "omega"]}
+    verdict = compare(EOM_DOUBLE, f"{EOM_DOUBLE_1}; {second}", kind="equations", **setting)
+    assert verdict.status == "not_equivalent"
+    assert verdict.feedback == ("Equation 2 has no acceleration (θ̈₁, θ̈₂) in it, so it is no equation of motion.",)
 
 
 def test_an_expression_for_a_one_coordinate_system_is_told_an_equation_is_asked():

@@ -111,6 +111,10 @@ FEEDBACK: dict[str, str] = {
     "vanishing_factor_system": "One of your equations is right only where a factor of it is not zero: at rest,"
     " or where a coordinate is 0, your equations no longer determine every acceleration. Divide that factor out.",
     "trivial_equation": "Equation {index} holds for every motion, so it says nothing about this one.",
+    "equation_without_acceleration": "Equation {index} has no acceleration ({accelerations}) in it, so it is no"
+    " equation of motion.",
+    "trivial_extra_equation": "Equation {index} holds for every motion, so it says nothing about this one: leave"
+    " it out. This system needs exactly {count} equations, one per coordinate.",
     "not_equation_of_motion": "This should be an equation of motion, with the accelerations ({accelerations}) in it.",
     "not_linear": "Your equation is not linear in the accelerations ({accelerations}), as every equation of motion"
     " from Lagrange's equations is: is an acceleration squared, or inside a function?",

@@ -1078,6 +1078,7 @@ class _State:
 
     verdicts: list[Closeness]  # per submitted equation: satisfied by the expected accelerations?
     trivial: list[bool]  # per submitted equation: no acceleration in it at this state
+    empty: list[bool]  # per submitted equation: nothing in it at all at this state (0 = 0)
     independent: bool  # the submitted equations determine the accelerations
     good: list[list]  # the rows of the submitted equations that are satisfied
     reference: list[list]  # the rows of the expected equations
@@ -1235,7 +1236,7 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
     accelerations = reference.accelerations
     if reference.linear is not Closeness.EQUAL or accelerations is None:
         return None  # a degenerate state of the reference: it says nothing
-    verdicts, trivial = [], []
+    verdicts, trivial, empty = [], [], []
     for i, row in enumerate(submitted.rows):
         # the residual's rounding: the row's entries at these accelerations, its own terms,
         # and what the accelerations carry in
@@ -1247,9 +1248,12 @@ def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
         verdicts.append(_worst(verdict, submitted.linear_each[i]))  # a squared equation is wrong alone
         coefficients = zip(row[:n], submitted.entry_scales[i][:n], strict=True)
         trivial.append(all(closeness(c, 0, s, precise=precise) is Closeness.EQUAL for c, s in coefficients))
+        empty.append(
+            trivial[-1] and closeness(row[n], 0, submitted.entry_scales[i][n], precise=precise) is Closeness.EQUAL
+        )
     good = [row for row, verdict in zip(submitted.rows, verdicts, strict=True) if verdict is Closeness.EQUAL]
     independent = _solve([row[:n] for row in submitted.rows], [-row[n] for row in submitted.rows]) is not None
-    return _State(verdicts, trivial, independent, good, reference.rows)
+    return _State(verdicts, trivial, empty, independent, good, reference.rows)
 
 
 def _system_outcome(expected: Expected, states: list[_State], theirs: Sequence) -> Outcome:
@@ -1262,8 +1266,13 @@ def _system_outcome(expected: Expected, states: list[_State], theirs: Sequence) 
     trivial = [
         all(state.trivial[j] for state in states) and not _accelerations_in(theirs[j], expected) for j in range(given)
     ]
+    # 0 = 0 holds for every motion; θ₁ = 0 has no acceleration in it either, but is no identity
+    empty = [trivial[j] and all(state.empty[j] for state in states) for j in range(given)]
     method = "accelerations"
     if given > n:
+        if any(empty):  # 0 = 0 written as a third equation: that it is empty is what to say
+            details = {"index": empty.index(True) + 1, "count": n}
+            return Outcome("not_equivalent", 0.0, "trivial_extra_equation", details, method)
         return Outcome("not_equivalent", 0.0, "extra_equation", {"given": given, "count": n}, method)
     wrong_or_short = given < n or not all(right)  # only then is it asked which coordinate's equation is off
     unspanned = (
@@ -1271,8 +1280,12 @@ def _system_outcome(expected: Expected, states: list[_State], theirs: Sequence) 
     )
     if given < n:
         return Outcome("not_equivalent", 0.0, "missing_equation", {"coords": _or(unspanned, describe)}, method)
+    if any(empty):
+        return Outcome("not_equivalent", 0.0, "trivial_equation", {"index": empty.index(True) + 1}, method)
     if any(trivial):
-        return Outcome("not_equivalent", 0.0, "trivial_equation", {"index": trivial.index(True) + 1}, method)
+        names = ", ".join(unicode_name(q, 2) for q in coords)
+        details = {"index": trivial.index(True) + 1, "accelerations": names}
+        return Outcome("not_equivalent", 0.0, "equation_without_acceleration", details, method)
     if all(right):
         if all(state.independent for state in states):
             return Outcome("equivalent", 1.0, "equivalent", method=method)
