@@ -2450,3 +2450,40 @@ def test_a_term_written_as_a_product_with_a_sum_is_named_as_one_term(submitted, 
 def test_the_students_own_velocity_dependent_term_is_named_by_its_velocities(expected, submitted, kind, sentences):
     setting = {"coords": ["x", "alpha", "beta"], "known": ["m", "l", "b", "k"]}
     assert compare(expected, submitted, kind=kind, **setting).feedback == sentences
+
+
+L_HOOP = "1/2 m R^2 thetadot^2 + 1/2 m R^2 omega^2 sin(theta)^2 + m g R cos(theta)"
+L_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "sentence"),
+    [
+        # m R² ω θ̇ of (θ̇ + ω)² is d/dt (m R² ω θ): only the missing ½ m R² ω² sin²θ is the mistake
+        (L_HOOP, "1/2 m R^2 (thetadot + omega)^2 + m g R cos(theta)", {**HOOP, "known": ["m", *HOOP["known"]]},
+         "A term is missing: a term in sin(θ)."),
+        # φ̇ is d/dt φ; −φ̇ cos θ is no time derivative
+        (L_SPHERICAL, f"{L_SPHERICAL} + phidot (1 - cos(theta))", SPHERICAL,
+         "There is a term too many: a velocity-dependent term in cos(θ)."),
+        (L_PENDULUM, "1/2 m l^2 thetadot^2 - m g l cos(theta) + m l^2 theta thetadot + t^2", PENDULUM,
+         "It looks like you wrote L = T + V; the Lagrangian is L = T − V."),
+        # t θ̇ is not one: d/dt (t θ) = θ + t θ̇
+        (L_PENDULUM, f"{L_PENDULUM} + m l t thetadot", PENDULUM,
+         "There is a term too many: a velocity-dependent term in θ̇."),
+        # ½ m ẋ is d/dt (½ m x), but it is what the student wrote for ½ m ẋ²: told as written
+        ("1/2 m xdot^2 - 1/2 k x^2", "1/2 m xdot - 1/2 k x^2", DAMPED,
+         "A term differs: a velocity-dependent term in ẋ is not right."),
+        # ½ (m₁ + m₂) g² t² goes; (m₁ + m₂) g t ẋ stays, and is all that is wrong
+        (L_ATWOOD, "1/2 (m1 + m2) (xdot + g t)^2 + (m1 - m2) g x", ATWOOD,
+         "There is a term too many: a velocity-dependent term in ẋ."),
+        # sin θ → θ in T and cos θ → 1 − θ²/2 in V, which an expansion of all of L to second order is not
+        (L_SPHERICAL, "1/2 m l^2 (thetadot^2 + theta^2 phidot^2) - 1/2 m g l theta^2", SPHERICAL,
+         "You used the small-angle approximation, but the full answer is asked for here."),
+    ],
+)  # fmt: skip
+def test_a_wrong_lagrangian_is_told_its_mistake_and_not_its_harmless_total_derivatives(
+    expected, submitted, setting, sentence
+):
+    verdict = compare(expected, submitted, kind="lagrangian", **setting)
+    assert (verdict.status, verdict.score) == ("not_equivalent", 0.0)
+    assert verdict.feedback == (sentence,)

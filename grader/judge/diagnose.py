@@ -430,8 +430,10 @@ def has_angle_functions(expr, setting: Setting) -> bool:
     return any(f.args[0].free_symbols & coordinates for f in expr.atoms(*_TRIG))
 
 
-def small_angle(expr, setting: Setting) -> list:
-    """The small-angle forms of ``expr``: sin u → u, tan u → u, and cos u → 1 or 1 − u²/2."""
+def small_angle(expr, setting: Setting, *, second_order: bool = False) -> list:
+    """The small-angle forms of ``expr``: sin u → u, tan u → u, and cos u → 1 or 1 − u²/2
+    (``second_order``: 1 − u²/2 alone, as a potential is approximated; m g l cos θ → m g l
+    would leave no potential)."""
     coordinates = {setting.state[(q, 0)] for q in setting.coords}
 
     def involves(u) -> bool:
@@ -444,7 +446,8 @@ def small_angle(expr, setting: Setting) -> list:
         )
 
     linear = {sympy.sin: lambda u: u, sympy.tan: lambda u: u}
-    forms = [replace({**linear, sympy.cos: cosine}) for cosine in (lambda u: sympy.Integer(1), lambda u: 1 - u**2 / 2)]
+    cosines = (lambda u: 1 - u**2 / 2,) if second_order else (lambda u: sympy.Integer(1), lambda u: 1 - u**2 / 2)
+    forms = [replace({**linear, sympy.cos: cosine}) for cosine in cosines]
     return [form for form in forms if form != expr]
 
 

@@ -23,7 +23,7 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import taylor, term_changes, terms
+from grader.judge.diagnose import expand_terms, small_angle, taylor, term_changes, terms
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import expected_terms, same_values, single_term_change, term_outcome
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, Closeness, Compiled, closeness
@@ -285,30 +285,92 @@ def _symbolic_dynamics(expected: Expected, submitted, *, precise: bool = False) 
 
 def _diagnose(expected: Expected, lagrangian, submitted, deadline: Deadline) -> Outcome:
     setting = expected.setting
+    if "without total derivatives" not in expected.cache:
+        expected.cache["without total derivatives"] = _without_total_derivatives(lagrangian, setting)
+    lagrangian = expected.cache["without total derivatives"]
+    value = "value" if lagrangian is expected.value else "value, without total derivatives"
+    cleaned = _without_total_derivatives(submitted, setting)
     if "mistaken forms" not in expected.cache:
         at_rest = lagrangian.xreplace({setting.velocity(q): 0 for q in setting.coords})
+        expanded = taylor(lagrangian, setting, 2)
+        # sin θ → θ and cos θ → 1 − θ²/2 alone: the spherical pendulum's ½ m l² θ² φ̇², of fourth
+        # order, is what students keep, and the expansion to second order leaves out
+        substituted = [form for form in small_angle(lagrangian, setting, second_order=True) if form != expanded]
         expected.cache["mistaken forms"] = (
             ("t_plus_v", lagrangian - 2 * at_rest, "T+V"),  # T − V − 2(−V) = T + V, where T vanishes at rest
-            ("small_angle", taylor(lagrangian, setting, 2), "small angle"),
+            ("small_angle", expanded, "small angle"),
+            *(("small_angle", form, f"small angles {number}") for number, form in enumerate(substituted)),
         )
     for key, form, name in expected.cache["mistaken forms"]:
         if form.has(sympy.nan):
             continue  # no small-angle form: the Lagrangian has no expansion at rest
         deadline.check()
-        _, pairs = same_values(expected, form, submitted, deadline, key=name)
+        _, pairs = same_values(expected, form, cleaned, deadline, key=name)
         if constant_difference(pairs):
             return Outcome("not_equivalent", 0.0, key)
+    outcome = _by_terms(expected, value, lagrangian, cleaned, deadline)
+    if cleaned is not submitted:
+        # ½ m ẋ written for ½ m ẋ² is harmless, but is the student's kinetic energy: told as
+        # written ("a term in ẋ is not right") unless that names more terms than it would without
+        written = _by_terms(expected, value, lagrangian, submitted, deadline)
+        if 0 < _named(written) <= _named(outcome) or not _named(outcome):
+            return written
+    return outcome
+
+
+def _by_terms(expected: Expected, value: str, lagrangian, submitted, deadline: Deadline) -> Outcome:
+    """The terms of ``submitted`` that differ from those of ``lagrangian`` (named ``value`` among
+    the expected answer's expressions); where too many do, whether T or V is right."""
+    setting = expected.setting
     # the terms that vary along the motion: another zero of the potential is no mistake
     state = set(setting.state.values()) | {TIME}
-    change = single_term_change(expected, "value", lagrangian, submitted, state)
+    change = single_term_change(expected, value, lagrangian, submitted, state)
     if change:
         return term_outcome([change])
     plain = setting.plain(submitted)
     submitted_terms = terms(plain, varying=state)
-    outcome = term_outcome(term_changes(expected_terms(expected, "value", lagrangian, state), submitted_terms, setting))
+    outcome = term_outcome(term_changes(expected_terms(expected, value, lagrangian, state), submitted_terms, setting))
     if outcome.key != "wrong":
         return outcome
+    deadline.check()
     return _by_energies(expected, lagrangian, plain, deadline) or outcome
+
+
+def _named(outcome: Outcome) -> int:
+    """How many mistakes ``outcome`` names: none for a bare "not right"."""
+    return 0 if outcome.key == "wrong" else 1 + len(outcome.more)
+
+
+def _without_total_derivatives(value, setting: Setting):
+    """``value`` (as parsed) without its terms that are total time derivatives on their own, and
+    so change no equation of motion: f(q) q̇ for one coordinate q (d/dt of ∫f dq), and f(t).
+
+    Named as a term too many, m R² ω θ̇ in ½ m R² (θ̇ + ω)² would send the student after a term
+    that does no harm, beside the one that does. ``value`` itself where it has no such term, or
+    too many terms to look.
+    """
+    plain = setting.plain(value)
+    expansion = expand_terms(plain)
+    if expansion is None:
+        return value
+    harmless = [coefficient * shape for shape, coefficient in expansion.items() if _total_derivative(shape, setting)]
+    if not harmless:
+        return value
+    return setting.as_typed(plain - sympy.Add(*harmless))
+
+
+def _total_derivative(shape, setting: Setting) -> bool:
+    """Whether the term ``shape`` (in plain symbols) is f(q) q̇ for one coordinate q, or f(t)."""
+    moving = set(setting.state.values())
+    symbols = shape.free_symbols
+    if not symbols & moving:
+        return TIME in symbols
+    rates = [setting.velocity(q) for q in setting.coords if setting.velocity(q) in symbols]
+    if len(rates) != 1:
+        return False
+    coefficient, factor = shape.as_independent(rates[0], as_Add=False)
+    coordinate = {setting.state[(q, 0)] for q in setting.coords if setting.velocity(q) == rates[0]}
+    return factor == rates[0] and not coefficient.free_symbols & (moving - coordinate | {TIME})
 
 
 def _by_energies(expected: Expected, lagrangian, plain, deadline: Deadline) -> Outcome | None:
