@@ -178,7 +178,15 @@ def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal, ov
     ours = {out / folder / f"{name}{suffix}" for name in names for folder, suffix in _PER_STUDENT}
     stale = [path for folder, suffix in _PER_STUDENT for path in (out / folder).glob(f"*{suffix}") if path not in ours]
 
-    def outputs() -> Iterator[tuple[Path, str]]:  # made one by one: a class's reports need not fit in memory
+    # An LMS import made from the earlier grades would post them: each is made again from these.
+    exported, max_score = {}, sum(points for _, points in keys)
+    in_order = sorted(grades, key=lambda grade: file_name(grade.student.id))  # as export reads results/
+    for to in refreshed:
+        files, gone = _export_files(out, to, in_order, assignment, max_score)
+        exported |= files
+        stale += gone
+
+    def outputs() -> Iterator[tuple[Path, str | bytes]]:  # made one by one: a class's reports need not fit in memory
         for name, grade in zip(names, grades, strict=True):
             html, markdown = render_student_report(grade, assignment=assignment, bank=bank, reveal=reveal)
             yield out / "results" / f"{name}.json", result_json(grade)
@@ -193,13 +201,6 @@ def _write_outputs(out: Path, grades, keys, assignment, bank, issues, reveal, ov
             yield out / "overrides.csv", csv_file(overrides_csv(overrides))
         yield from exported.items()
 
-    # An LMS import made from the earlier grades would post them: each is made again from these.
-    exported, max_score = {}, sum(points for _, points in keys)
-    in_order = sorted(grades, key=lambda grade: file_name(grade.student.id))  # as export reads results/
-    for to in refreshed:
-        files, gone = _export_files(out, to, in_order, assignment, max_score)
-        exported |= files
-        stale += gone
     write_all_atomic(outputs(), remove=stale)
     _remove_empty_folders(stale)
 
