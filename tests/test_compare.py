@@ -506,8 +506,37 @@ def test_a_system_with_one_equation_squared_blames_that_equation_alone():
 
 def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
     # any constant difference is a multiple of cos 3: only the terms as typed can say which
-    verdict = compare("cos(3) + theta", "cos(3) - 3 + theta", coords=["theta"])
+    verdict = compare("cos(3) + g", "cos(3) - 3 + g")
     assert verdict.feedback == ("There is a term too many: a constant term.",), verdict
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "m g l (1 - cos(theta))",  # the zero of potential at the lowest point: a constant of the parameters
+        "-m g l cos(theta) + 5",
+        "-(m g l cos(theta) + 3)",
+    ],
+)
+def test_a_potential_from_another_zero_is_told_so_where_no_constant_is_allowed(submitted):
+    verdict = compare("-m g l cos(theta)", submitted, coords=["theta"])
+    assert verdict.status == "not_equivalent", verdict
+    assert verdict.feedback[0].startswith("Your answer is right but for an added constant"), verdict
+    assert compare("-m g l cos(theta)", submitted, coords=["theta"], up_to_constant=True).equivalent
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "coords"),
+    [
+        ("sqrt(g/l)", "sqrt(g/l) + 1", []),  # nothing varies: every wrong answer differs by "a constant"
+        ("-m g l cos(theta)", "-m g l cos(theta) + theta", ["theta"]),
+        ("m l^2 thetadot", "m l^2 thetadot + m g l cos(theta)", ["theta"]),
+    ],
+)
+def test_only_a_difference_constant_along_the_motion_is_told_as_a_constant(expected, submitted, coords):
+    verdict = compare(expected, submitted, coords=coords)
+    assert verdict.status == "not_equivalent", verdict
+    assert "added constant" not in " ".join(verdict.feedback), verdict
 
 
 def test_feedback_never_contains_the_expected_answer():
@@ -2487,3 +2516,70 @@ def test_a_wrong_lagrangian_is_told_its_mistake_and_not_its_harmless_total_deriv
     verdict = compare(expected, submitted, kind="lagrangian", **setting)
     assert (verdict.status, verdict.score) == ("not_equivalent", 0.0)
     assert verdict.feedback == (sentence,)
+
+
+P_PHI = "m l^2 sin(theta)^2 phidot"
+
+
+@pytest.mark.parametrize(
+    "submitted", ["p_phi = m l² sin²θ φ̇", "p_\\phi = m l^2 \\sin^2\\theta \\dot\\phi", "p = m l² sin²θ φ̇"]
+)
+def test_the_asked_quantitys_name_or_its_stem_is_a_label_like_any(submitted):
+    assert compare(P_PHI, submitted, name="p_phi", **SPHERICAL).status == "equivalent"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "label"),
+    [("p_theta = m l² sin²θ φ̇", "p_θ"), ("H = m l² sin²θ φ̇", "H"), ("2 p_theta = 2 m l² sin²θ φ̇", "p_θ")],
+)
+def test_a_right_value_under_another_quantitys_name_goes_to_a_person(submitted, label):
+    verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)
+    assert (verdict.status, verdict.score) == ("undecided", 1.0), verdict
+    assert verdict.feedback[0].startswith(f"Your answer is labelled {label}, but the quantity asked for is p_φ."), (
+        verdict
+    )
+    # without the option, any name is a label: the answer is right
+    assert compare(P_PHI, submitted, **SPHERICAL).status == "equivalent"
+
+
+def test_a_wrong_value_under_another_name_is_told_the_label_too():
+    verdict = compare(P_PHI, "p_theta = m l² θ̇", name="p_phi", **SPHERICAL)
+    assert verdict.status == "not_equivalent", verdict
+    assert "Your answer is labelled p_θ, but the quantity asked for is p_φ." in verdict.feedback, verdict
+
+
+def test_a_lagrangian_is_named_l_unless_the_part_says_otherwise():
+    lagrangian = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
+    for label in ("L", "L(θ, θ̇)", "2 L"):
+        right = lagrangian if label != "2 L" else f"2 ({lagrangian})"
+        assert compare(lagrangian, f"{label} = {right}", kind="lagrangian", coords=["theta"]).equivalent, label
+    verdict = compare(lagrangian, f"H = {lagrangian}", kind="lagrangian", coords=["theta"])
+    assert verdict.status == "undecided" and "labelled H" in verdict.feedback[0], verdict
+    assert compare(lagrangian, f"H = {lagrangian}", kind="lagrangian", coords=["theta"], name="H").equivalent
+
+
+@pytest.mark.parametrize("name", [5, [], [1], ["p", 3], ""])
+def test_a_name_option_that_names_nothing_is_the_authors_error(name):
+    with pytest.raises(AuthorError, match="option name"):
+        compare(P_PHI, P_PHI, name=name, **SPHERICAL)
+
+
+def test_a_forces_constant_term_left_out_is_a_term_not_a_zero_level():
+    dimensions = {
+        "m": "mass",
+        "g": "acceleration",
+        "k": "force per length",
+        "r": "length",
+        "l0": "length",
+        "theta": "angle",
+    }
+    expected = "m g cos(theta) - k (r - l0)"
+    verdict = compare(expected, "m g cos(theta) - k r", coords=["r", "theta"], dimensions=dimensions)
+    assert verdict.status == "not_equivalent", verdict
+    assert verdict.feedback[0].startswith("A term is missing"), verdict
+    # the same difference in a potential energy is another zero of it
+    energy = "-m g r cos(theta) + 1/2 k (r - l0)^2"
+    verdict = compare(
+        energy, "-m g r cos(theta) + 1/2 k (r - l0)^2 + m g l0", coords=["r", "theta"], dimensions=dimensions
+    )
+    assert verdict.feedback[0].startswith("Your answer is right but for an added constant"), verdict

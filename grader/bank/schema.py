@@ -45,14 +45,15 @@ PART_KINDS: dict[str, frozenset[str]] = {
     "integer": frozenset(),
     "number": frozenset({"rtol", "atol", "unit"}),
     "choice": frozenset({"multiple"}),
-    "expression": frozenset({"up_to_constant"}),
+    "expression": frozenset({"up_to_constant", "name"}),
     "equation": frozenset(),
     "equations": frozenset(),
-    "lagrangian": frozenset({"factor_credit"}),
+    "lagrangian": frozenset({"factor_credit", "name"}),
     "text": frozenset(),
 }
 SEED_ID = re.compile(r"[SLAE][0-9]{1,2}")
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*")
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(_[A-Za-z0-9]+)?")  # p_phi, Q_theta, omega_0
 _DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
 # The dimensions a symbol may have (grader.judge.units.DIMENSIONS has the same; a test keeps them in step).
 DIMENSIONS = (
@@ -351,6 +352,11 @@ def _part(reader: _Reader, raw, location: tuple, taken: set[str]) -> Part:
             reader.fail(
                 (*location, "options", key), f"option {key!r} does not apply to kind {kind!r} (its options: {allowed})"
             )
+    name = options.get("name")
+    if name is not None and not _names(name):
+        reader.fail(
+            (*location, "options", "name"), "name is the quantity's name, or a list of names, as p_phi or [V, U]"
+        )
     derive_from = reader.get(data, location, "derive_from", str, "")
     if derive_from and kind not in _DERIVABLE:
         reader.fail(
@@ -393,6 +399,12 @@ def _part(reader: _Reader, raw, location: tuple, taken: set[str]) -> Part:
         method_credit=float(reader.get(data, location, "method_credit", (int, float), 0.5, check=_score,
                                        what="a share of the points, from 0 to 1")),
     )  # fmt: skip
+
+
+def _names(value) -> bool:
+    """Whether ``value`` is a name or a non-empty list of names (the option ``name``)."""
+    names = [value] if isinstance(value, str) else value
+    return isinstance(names, list) and bool(names) and all(isinstance(n, str) and _NAME.fullmatch(n) for n in names)
 
 
 def _score(value) -> bool:

@@ -91,10 +91,10 @@ class Kind:
 KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
-        Kind("expression", check_expression, {"up_to_constant": False}, shape="expression"),
+        Kind("expression", check_expression, {"up_to_constant": False, "name": None}, shape="expression"),
         Kind("equation", check_equation, shape="equation"),
         Kind("equations", check_equations, shape="equations"),
-        Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5}, shape="expression"),
+        Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
         Kind("integer", check_integer, shape="expression"),
         Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None}, shape="expression"),
         Kind("choice", check_choice, {"options": (), "multiple": False}, parsed=False),
@@ -162,6 +162,12 @@ def compare(
         )
     if given and not spec.parsed:
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
+    name = settings.get("name")
+    names = [name] if isinstance(name, str) else name
+    if name is not None and not (
+        isinstance(names, list | tuple) and names and all(isinstance(n, str) and n for n in names)
+    ):
+        raise AuthorError(f"option name is the quantity's name or a list of names, not {name!r}")
     if settings.get("unit"):
         _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
     values = given_values(prepared, given) if given else ()
@@ -231,7 +237,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
                 typed, (answer, used) = answer, _with_given(answer, given)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
-                answer = _unwrap_named(answer, spec, expected)
+                named, answer = answer, _unwrap_named(answer, spec, expected)
+                label = _another_name(named, answer, expected)
+                read_notes += (label,) if label else ()
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 with_constant, (answer, constant) = answer, _without_constant_terms(answer, spec, expected)
                 read_notes += (constant,) if constant else ()
@@ -554,6 +562,25 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     return answer
 
 
+def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expected) -> tuple | None:
+    """A note where the name :func:`_unwrap_named` took off is not the asked quantity's (the option
+    ``name``: a name or a list of them): ``p_θ = m l² sin²θ φ̇`` where p_φ is asked, or ``f = √(g/l)``
+    where ω is. Right as read, it goes to a person (a slip of the label, or two quantities confused);
+    p for p_φ is no other name. None where nothing was taken off, or no name is set."""
+    asked = expected.option("name")
+    if not asked or unwrapped is named or not isinstance(named.value, sympy.Eq) or named.value.lhs == ANSWER:
+        return None
+    lhs = named.value.lhs.as_coeff_Mul()[1].as_base_exp()[0]  # L of 2L, ω of ω²
+    if not isinstance(lhs, sympy.Symbol | AppliedUndef):
+        return None  # T − V = …, ẍ = …: no name of one quantity
+    label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
+    names = [asked] if isinstance(asked, str) else list(asked)
+    if label in names or label in {name.split("_")[0] for name in names}:
+        return None
+    described = expected.setting.describe
+    return ("label_for_a_person", {"label": described([label]), "name": " or ".join(described([n]) for n in names)})
+
+
 _DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines one by the other
 
 
@@ -650,6 +677,7 @@ _FOR_A_PERSON = {
     "constant_unsure": "constant_terms_left_out",
     "words_for_a_person": "words_read_past",
     "unit_for_a_person": "unit_left_out",
+    "label_for_a_person": "label_other",
 }
 
 

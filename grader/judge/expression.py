@@ -46,6 +46,7 @@ from grader.judge.sampling import (
     evaluate_pairs,
     nice_number,
 )
+from grader.judge.units import DIMENSIONS, Mixed, units_of
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
 
@@ -159,6 +160,9 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
             return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
         if constant is None:  # a constant so large that it hides the rest: a person decides
             return Outcome("undecided", 0.0, "undecided", method="numeric: a constant hides the answer")
+    elif equal is False and _an_energy(expected) and constant_difference(pairs):
+        # right but for a constant of the motion: a potential measured from another zero than the prompt's
+        return Outcome("not_equivalent", 0.0, "constant_offset")
     if equal is None:
         deadline.check()
         if symbolic_zero(expected.setting.plain(answer.value) - expected.value, expected.setting):
@@ -173,6 +177,19 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     if not (expected.value.is_Add or plain.is_Add):
         return _factor_dependence(expected, "value", expected.value, answer.value, plain) or outcome
     return outcome
+
+
+def _an_energy(expected: Expected) -> bool:
+    """Whether the expected answer changes along the motion and may be an energy, whose zero is a
+    choice: measured in energy, or in units not declared. A force's constant term (k l₀ in
+    −k (r − l₀)) is no zero level, and is told as a term."""
+    if not expected.value.free_symbols & expected.setting.varying:
+        return False
+    try:
+        units = units_of(expected.value, expected.setting)
+    except Mixed:
+        return False
+    return units is None or units == DIMENSIONS["energy"]
 
 
 _MOVED = (1.37, 0.29)  # a variable moved to 1.37 x + 0.29: away from its value, and from 0 where it was 0

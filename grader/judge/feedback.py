@@ -51,6 +51,9 @@ FEEDBACK: dict[str, str] = {
     "unit_for_a_person": "Your formula is labelled `{unit}`. Graded without its unit, it is right; but a"
     " frequency in Hz counts cycles and an angular frequency in rad/s radians, 2π apart (ω = 2πf). A person"
     " will check which you meant.",
+    "label_for_a_person": "Your answer is labelled {label}, but the quantity asked for is {name}. Read as {name},"
+    " it is right; a person will check which you meant.",
+    "label_other": "Your answer is labelled {label}, but the quantity asked for is {name}.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
@@ -60,6 +63,8 @@ FEEDBACK: dict[str, str] = {
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
     "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"
     " in an exponent, or raised to a power that is not a number.",
+    "constant_offset": "Your answer is right but for an added constant, which is not allowed here: does the"
+    " problem fix a zero, of potential energy say, that your answer does not use?",
     "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",
     # "kinetic" and "potential" energy would be wrong words where T has a part without velocities (a hoop
     # turned at a fixed rate): the terms are told by what they hold
