@@ -170,6 +170,9 @@ DERIVATIVES = [
     ("\\dot{\\theta}", D(theta)),
     ("\\dot\\theta", D(theta)),
     ("diff(theta, t)", D(theta)),
+    # the variant letters are the same letter to a student, however typed
+    ("varphidot + varphi' + \\dot\\varphi + ϕ̇ + \\dot\\phi", 5 * D(phi)),
+    ("varphi_ddot + vartheta + ϑ", D(phi, 2) + 2 * theta),
     ("thetaddot", D(theta, 2)),
     ("theta_ddot", D(theta, 2)),
     ("theta_dd + theta_d + theta1_dd", D(theta, 2) + D(theta) + D(theta1, 2)),  # as code spells them

@@ -124,6 +124,11 @@ _DERIVATIVE = re.compile(rf"^(?P<base>[A-Za-z]+?(?:_?[0-9]+)?){_SUFFIX}(?:_?(?P<
 _PREFIXED = re.compile(r"^(?P<ds>dd?)(?P<base>[A-Za-z]+(?:_[0-9]+)?)$")
 
 
+# varphi is φ, as \varphi and ϕ are: the variant letter's name, followed by nothing, an index or dots
+# (varphidot, varphi_1). Not varpi: π is a number, and no student's variant of it.
+_VARIANT = re.compile(r"^var(?=(?:phi|theta|epsilon|rho|sigma)(?:$|[_0-9]|d))")
+
+
 def canonical_name(raw: str) -> str:
     """The one spelling of a name, with Greek letters spelled out in ASCII.
 
@@ -131,8 +136,10 @@ def canonical_name(raw: str) -> str:
     ('theta_1', 'theta_1', 'l_2')
     >>> canonical_name("p_θ"), canonical_name("x_cm"), canonical_name("mgl")
     ('p_theta', 'x_cm', 'mgl')
+    >>> canonical_name("varphidot"), canonical_name("vartheta_1"), canonical_name("varpi"), canonical_name("various")
+    ('phidot', 'theta_1', 'varpi', 'various')
     """
-    ascii_name = "".join(_ascii_char(c) for c in raw)
+    ascii_name = _VARIANT.sub("", "".join(_ascii_char(c) for c in raw))
     match = _TRAILING_DIGITS.match(ascii_name)
     if match:
         return f"{match[1]}_{match[2]}"
