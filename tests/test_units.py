@@ -170,11 +170,32 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
         ("2.006 s^2", "not_equivalent", ("Your answer is in s², but the quantity asked for is measured in s.",),
          "1003*s^2/500"),
         ("2.006 x", "invalid", ("A number is asked for here; your answer contains `x`.",), "1003*x/500"),
+        # SI prefixes: before, 2.006 ns was read as 2.006 and words after it
+        ("0.002006 ks", "equivalent", ("Correct.", "Read as 2.006 s."), "2.006"),
+        ("2.006e6 μs", "equivalent", ("Correct.", "Read as 2.006 s."), "2.006"),
+        ("2006000 us", "equivalent", ("Correct.", "Read as 2.006 s."), "2.006"),
+        ("2.006 ns", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-09 s."),
+         "0.000000002006"),
+        ("2.006 nm", "not_equivalent", ("Your answer is in m, but the quantity asked for is measured in s.",),
+         "1003*nm/500"),
+        # a measured value with its uncertainty: the value is graded
+        ("2.006 ± 0.001 s", "equivalent", ("Correct.", "Read without its uncertainty, `± 0.001`: the value is what is"
+         " graded."), "2.006"),
+        ("T = (2006 +/- 1) ms", "equivalent", ("Correct.", "Read without its uncertainty, `± 1`: the value is what is"
+         " graded.", "Read as 2.006 s."), "2.006"),
+        ("2.1 \\pm 0.2", "not_equivalent", ("Not within the accepted tolerance.", "Read without its uncertainty,"
+         " `± 0.2`: the value is what is graded."), "2.1"),
+        ("2.006 ± 0.001 ± 0.002", "invalid", ("`±` is not something an answer can contain.",),
+         "2.006 ± 0.001 ± 0.002\n      ^"),
     ],
 )  # fmt: skip
 def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback, read_as):
     verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
     assert (verdict.status, verdict.feedback, verdict.read_as) == (status, feedback, read_as)
+
+
+def test_a_count_has_no_uncertainty():
+    assert compare("3", "3 ± 1", kind="integer").status == "invalid"
 
 
 def test_sec_is_the_secant_where_no_unit_is_asked_for():

@@ -58,6 +58,7 @@ FEEDBACK: dict[str, str] = {
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
+    "uncertainty_left_out": "Read without its uncertainty, `± {error}`: the value is what is graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",

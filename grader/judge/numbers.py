@@ -67,14 +67,22 @@ def read_number(
     *,
     decimal_comma: bool = False,
     unit: bool = False,
+    uncertainty: bool = False,
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """The text to judge, its reading (None: read it as typed, and say why it fails), and notes.
 
     ``reads(text)`` is the reading of ``text`` if it is a number (with its unit, where the part has
     one), else None; ``names`` are the problem's, which a remark after the number does not use.
     ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the part asks for a quantity in a unit) reads
-    2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s.
+    2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s; ``uncertainty`` (a measured value may
+    have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
     """
+    uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
+    if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s: the value is graded, its uncertainty is not
+        value = f"{uncertain['name'] or ''}{uncertain['value']} {uncertain['unit'] or ''}".strip()
+        prepared, answer, notes = read_number(value, reads, names, decimal_comma=decimal_comma, unit=unit)  # no ± left
+        if answer is not None:
+            return prepared, answer, (*notes, ("uncertainty_left_out", {"error": uncertain["error"]}))
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
@@ -129,6 +137,14 @@ def _given(text: str, reads, names, decimal_comma: bool, unit: bool) -> tuple[st
     joined = f"{head}; {values}"
     answer = reads(joined)  # T = 2π√(l/g); l = 1; g = 9.81: the values put in place
     return (joined, answer, ()) if answer is not None else (text, None, ())  # not = 1, a value it was given
+
+
+_DECIMAL = r"[0-9]+(?:[.,][0-9]*)?(?:[eE][-+]?[0-9]+)?|[.,][0-9]+"
+_PLUS_MINUS = r"±|\+-|\+/-|\\pm"
+_UNCERTAIN = re.compile(
+    rf"\s*(?P<name>[^\W\d][\w₀-₉]*\s*=\s*)?(?P<open>\()?\s*(?P<value>[-+−]?(?:{_DECIMAL}))\s*(?:{_PLUS_MINUS})\s*(?P<error>{_DECIMAL})\s*"
+    rf"(?(open)\)|)\s*(?P<unit>(?:[^\W\d]|\\)[^±=;]*)?\s*"
+)
 
 
 # where the values an answer was worked out with begin: ", where l = 1", " since k = 2", " for l = 1 m"

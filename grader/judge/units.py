@@ -197,6 +197,16 @@ SI_UNITS: dict[str, tuple[Fraction, Units]] = {
     **dict.fromkeys(("Hz", "hertz"), _si_unit(1, "frequency")),
     **dict.fromkeys(("rad", "radian", "radians"), _si_unit(1, "angle")),
 }
+# The prefixed units by their symbols: ns, μs (read as mus) and us, ks; kN, MJ, mW, kHz, mrad. Without
+# them, 2.006 ns for a period in seconds read as 2.006 and words after it ("not graded").
+_PREFIXES = {"n": Fraction(1, 10**9), "mu": Fraction(1, 10**6), "u": Fraction(1, 10**6), "m": Fraction(1, 1000),
+             "k": Fraction(1000), "M": Fraction(10**6)}  # fmt: skip
+SI_UNITS |= {
+    prefix + unit: (size * SI_UNITS[unit][0], SI_UNITS[unit][1])
+    for prefix, size in _PREFIXES.items()
+    for unit in ("s", "m", "N", "J", "W", "Hz", "rad")
+    if prefix + unit not in SI_UNITS and (unit != "rad" or prefix == "m")
+}
 
 
 def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:
