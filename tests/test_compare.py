@@ -415,8 +415,12 @@ def _depends(right, wrong, how="missing"):
          _instead("g, m and θ", "l₀", "r")),  # one symbol for another: both are named
         (MOMENTUM_PHI, "m l² θ̇ sin²θ", SPHERICAL, _instead("l, m and θ", "θ̇", "φ̇")),  # the wrong velocity
         (MOMENTUM_PHI, "m l² φ̇ sin θ", SPHERICAL, _depends("l, m and φ̇", "θ", "how")),
-        # the factor depends on every symbol: nothing to name, the terms are described as before
-        ("sqrt(g/l)", "sqrt(l/g)", PENDULUM, "A term differs: a gravity term is not right."),
+        # the factor depends on every symbol: each is named, and no term (√(g/l) has one)
+        ("sqrt(g/l)", "sqrt(l/g)", PENDULUM, "Your answer depends on g and l, but not as the right answer does: check"
+         " how it depends on each."),
+        ("sqrt(g/l)", "3.13", PENDULUM,
+         "A formula in the problem's symbols is asked for here; your answer is a number."),
+        ("sqrt(g/l)", "sqrt(2 g/l)", PENDULUM, "Your answer is off by a constant factor: missing a factor 1/√2?"),
         # a sum: its terms are named
         (ATWOOD_A, "m1 g / (m1 + m2)", MASSES, "A term is missing: a gravity term."),
         # two sums: g, in every term of both, is no factor the student got right

@@ -24,6 +24,7 @@ from sympy.core.function import AppliedUndef
 from grader.judge.deadline import Deadline
 from grader.judge.diagnose import (
     MAX_TERMS,
+    TERM_KEYS,
     as_written,
     describe_term,
     has_angle_functions,
@@ -169,14 +170,26 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
             return Outcome("equivalent", 1.0, "equivalent", method="symbolic")
         return Outcome("undecided", 0.0, "undecided", method="numeric: too few defined points")
     outcome = diagnose_difference(expected, expected.value, answer.value, pairs, deadline)
-    if outcome.key not in ("wrong", "term_differs") or outcome.more:
-        return outcome
     plain = expected.setting.plain(answer.value)
-    # a product written wrong is better told by the symbols its factors get wrong than as "a term";
-    # of two sums, a symbol common to every term (g in a potential) is no factor the student got right
-    if not (expected.value.is_Add or plain.is_Add):
-        return _factor_dependence(expected, "value", expected.value, answer.value, plain) or outcome
-    return outcome
+    # a product written wrong is better told by the symbols its factors get wrong than as "a term"
+    # (√(l/g) for √(g/l) has no term wrong); of two sums, a symbol common to every term (g in a
+    # potential) is no factor the student got right
+    if expected.value.is_Add or plain.is_Add or outcome.key not in ("wrong", *TERM_KEYS):
+        return outcome
+    told_as_one = outcome.key in ("wrong", "term_differs") and not outcome.more
+    if not (told_as_one or _monomial(expected)):
+        return outcome  # m₁ g/(m₁ + m₂) for (m₁ − m₂) g/(m₁ + m₂): a term of the numerator is missing
+    if expected.value.free_symbols and not plain.free_symbols:
+        return Outcome("not_equivalent", 0.0, "number_for_formula")  # 3.13 for √(g/l)
+    return _factor_dependence(expected, "value", expected.value, answer.value, plain) or outcome
+
+
+def _monomial(expected: Expected) -> bool:
+    """Whether the expected answer, multiplied out, is one term (√(g/l), m l² sin²θ φ̇): then no
+    term of it can be missing, only a factor wrong."""
+    if "monomial" not in expected.cache:
+        expected.cache["monomial"] = not sympy.expand(expected.value).is_Add
+    return expected.cache["monomial"]
 
 
 def _an_energy(expected: Expected) -> bool:
@@ -218,10 +231,12 @@ def _factor_dependence(expected: Expected, key: str, e, s, plain) -> Outcome | N
             ratio = _ratio(e_c, s_c, moved)
             if ratio is None or abs(ratio - start) > _SAME_RATIO * abs(start):
                 depends.add(i)
-    if not rows or not depends or len(depends) == len(used):
+    if not rows or not depends:
         return None
     names = [_shown(variables[i]) for i in used if i in depends]
     others = [_shown(variables[i]) for i in used if i not in depends]
+    if not others:
+        return Outcome("not_equivalent", 0.0, "factor_depends_all", {"names": _listed(names)}, method="numeric: ratio")
     details = {"names": _listed(names), "others": _listed(others)}
     # said as it is: the answer lacks them (g l for g l m), has them where the right one has not, has
     # one symbol for another (l₀ for r), or depends on them in another way

@@ -138,6 +138,9 @@ FEEDBACK: dict[str, str] = {
     " not depend on {names}.",
     "factor_depends_instead": "Your answer depends on {others} as the right answer does, and on {names} where the"
     " right answer depends on {instead}.",
+    "factor_depends_all": "Your answer depends on {names}, but not as the right answer does: check how it"
+    " depends on each.",
+    "number_for_formula": "A formula in the problem's symbols is asked for here; your answer is a number.",
     "factor_depends_how": "Your answer depends on {others} as the right answer does, but on {names} in another way:"
     " check how your answer depends on {names}.",
     "undecided": "This answer could not be checked automatically; it has been set aside for a person to grade.",

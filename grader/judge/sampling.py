@@ -215,6 +215,8 @@ def nice_number(k: complex) -> str | None:
     ('1/2', '2π', None)
     >>> nice_number(1 / (2 * 3.141592653589793))
     '1/(2π)'
+    >>> nice_number(2**-0.5), nice_number(-(3**0.5)), nice_number((2 / 3) ** 0.5)
+    ('1/√2', '-√3', '√(2/3)')
     """
     if abs(k.imag) > 1e-9 * abs(k):
         return None
@@ -230,4 +232,12 @@ def nice_number(k: complex) -> str | None:
     if fraction is not None:  # 1/(2π): a frequency for an angular one
         below = "π" if fraction.denominator == 1 else f"({fraction.denominator}π)"
         return f"{fraction.numerator}/{below}"
+    fraction = short_fraction(value * value)
+    if fraction is not None:  # √2: a frequency of √(2g/l), or ½ for a √ one
+        sign = "-" if value < 0 else ""
+        if fraction.denominator == 1:
+            return f"{sign}√{fraction.numerator}"
+        if fraction.numerator == 1:
+            return f"{sign}1/√{fraction.denominator}"
+        return f"{sign}√({fraction})"
     return None
