@@ -61,7 +61,7 @@ from grader.parse import (
     too_many_digits,
     within_diff_budget,
 )
-from grader.parse.names import is_arbitrary_constant, unicode_name
+from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
@@ -574,7 +574,7 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     if not isinstance(lhs, sympy.Symbol | AppliedUndef):
         return None  # T − V = …, ẍ = …: no name of one quantity
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
-    names = [asked] if isinstance(asked, str) else list(asked)
+    names = [canonical_name(name) for name in ([asked] if isinstance(asked, str) else asked)]  # p_φ is p_phi
     if label in names or label in {name.split("_")[0] for name in names}:
         return None
     described = expected.setting.describe
