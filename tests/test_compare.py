@@ -421,6 +421,7 @@ def _depends(right, wrong, how="missing"):
         ("sqrt(g/l)", "3.13", PENDULUM,
          "A formula in the problem's symbols is asked for here; your answer is a number."),
         ("sqrt(g/l)", "sqrt(2 g/l)", PENDULUM, "Your answer is off by a constant factor: missing a factor 1/√2?"),
+        ("sqrt(g/l)", "g", PENDULUM, "Your answer does not depend on l, and the right answer does."),
         # a sum: its terms are named
         (ATWOOD_A, "m1 g / (m1 + m2)", MASSES, "A term is missing: a gravity term."),
         # two sums: g, in every term of both, is no factor the student got right
@@ -523,9 +524,13 @@ def test_a_constant_too_many_is_not_a_constant_term_off_by_a_factor():
     ],
 )
 def test_a_potential_from_another_zero_is_told_so_where_no_constant_is_allowed(submitted):
-    verdict = compare("-m g l cos(theta)", submitted, coords=["theta"])
+    verdict = compare("-m g l cos(theta)", submitted, coords=["theta"], name="V")
     assert verdict.status == "not_equivalent", verdict
     assert verdict.feedback[0].startswith("Your answer is right but for an added constant"), verdict
+    # named as no energy, or measured in no energy, its constant is a term
+    for setting in ({"name": "p_phi"}, {}):
+        verdict = compare("-m g l cos(theta)", submitted, coords=["theta"], **setting)
+        assert "added constant" not in verdict.feedback[0], (setting, verdict)
     assert compare("-m g l cos(theta)", submitted, coords=["theta"], up_to_constant=True).equivalent
 
 
@@ -538,7 +543,7 @@ def test_a_potential_from_another_zero_is_told_so_where_no_constant_is_allowed(s
     ],
 )
 def test_only_a_difference_constant_along_the_motion_is_told_as_a_constant(expected, submitted, coords):
-    verdict = compare(expected, submitted, coords=coords)
+    verdict = compare(expected, submitted, coords=coords, name="V")
     assert verdict.status == "not_equivalent", verdict
     assert "added constant" not in " ".join(verdict.feedback), verdict
 
@@ -2588,3 +2593,21 @@ def test_a_forces_constant_term_left_out_is_a_term_not_a_zero_level():
         energy, "-m g r cos(theta) + 1/2 k (r - l0)^2 + m g l0", coords=["r", "theta"], dimensions=dimensions
     )
     assert verdict.feedback[0].startswith("Your answer is right but for an added constant"), verdict
+
+
+def test_a_torques_constant_is_a_term_though_a_torque_is_measured_in_energy():
+    dimensions = {"m": "mass", "g": "acceleration", "r": "length", "l0": "length", "theta": "angle"}
+    torque = "-m g r sin(theta)"
+    for name in ("Q_theta", None):
+        setting = {"coords": ["r", "theta"], "known": ["l0"], "dimensions": dimensions}
+        verdict = compare(torque, "-m g r sin θ + m g l0", name=name, **setting)
+        said = " ".join(verdict.feedback)
+        assert ("added constant" in said) == (name is None), (name, verdict)  # unnamed: measured as an energy
+
+
+def test_a_one_term_answer_is_told_the_symbols_it_lacks_and_those_it_should_not_have():
+    verdict = compare("sqrt(g/l)", "m θ̇", **PENDULUM)
+    assert verdict.feedback == (
+        "Your answer does not depend on g and l, and the right answer does.",
+        "The right answer does not depend on m and θ̇.",
+    ), verdict

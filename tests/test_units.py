@@ -185,6 +185,17 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
          " graded.", "Read as 2.006 s."), "2.006"),
         ("2.1 \\pm 0.2", "not_equivalent", ("Not within the accepted tolerance.", "Read without its uncertainty,"
          " `± 0.2`: the value is what is graded."), "2.1"),
+        ("2.006(5) s", "equivalent", ("Correct.", "Read without its uncertainty, `(5)`: the value is what is graded."),
+         "2.006"),  # the concise form: not 2.006 × 5
+        ("2.006 s ± 0.001 s", "equivalent", ("Correct.", "Read without its uncertainty, `± 0.001`: the value is what"
+         " is graded."), "2.006"),
+        ("2.006 ps", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-12 s."),
+         "0.000000000002006"),  # every prefix is a unit: none is a word left out
+        ("200.6 cs", "equivalent", ("Correct.", "Read as 2.006 s."), "2.006"),
+        # with a unit typed, the number is not asked about another unit ("in ks?" for 2.006 ms)
+        ("2.006 ms", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s."), "0.002006"),
+        ("2006", "not_equivalent", ("Not within the accepted tolerance. Is your number in ms? The answer is asked"
+         " in s.",), "2006"),
         ("2.006 ± 0.001 ± 0.002", "invalid", ("`±` is not something an answer can contain.",),
          "2.006 ± 0.001 ± 0.002\n      ^"),
     ],

@@ -76,8 +76,11 @@ def grade_answer(problem: Problem, part: Part, submitted: str, *, timeout: float
     verdict = compare(expected_answer(problem, part), submitted, **arguments)
     if verdict.status != "not_equivalent" or not part.mistakes:
         return verdict
+    # a mistake is matched by value: a label naming another quantity is said in the verdict's notes
+    # already, and would make the match undecided
+    matching = {**arguments, "name": None} if part.kind in ("expression", "lagrangian") else arguments
     for mistake in part.mistakes:
-        if compare(mistake.answer, submitted, **arguments).equivalent:
+        if compare(mistake.answer, submitted, **matching).equivalent:
             # the mistake's hint replaces the diagnosis; how the answer was read is still said
             feedback = (mistake.feedback, *verdict.notes)
             return dataclasses.replace(

@@ -208,7 +208,7 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
-    answer, conserved, used, typed, read_in, read_notes = None, False, (), None, None, ()
+    answer, conserved, used, typed, read_in, read_notes, shown = None, False, (), None, None, (), None
     with_constant, constant = None, None
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
@@ -249,6 +249,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     # as typed: 2.006 m is not read as a time; and 2 or 3 is not shown as the product 6·or
                     return _verdict(early, None if early.key == "number_hedged" else shown)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+            if outcome.key == "other_unit" and shown is not None and shown.value.free_symbols:
+                # 2.006 ms: the unit was typed, and asking whether the number is in ks is no help
+                outcome = replace(outcome, key="out_of_tolerance", details={})
             outcome, read_notes = _for_a_person(outcome, (*read_notes, read_in))
             for note in read_notes:
                 if note:
@@ -575,10 +578,16 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         return None  # T − V = …, ẍ = …: no name of one quantity
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
     names = [canonical_name(name) for name in ([asked] if isinstance(asked, str) else asked)]  # p_φ is p_phi
-    if label in names or label in {name.split("_")[0] for name in names}:
-        return None
+    definition = _MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
+    same = {label.replace("_", ""), f"p{definition[1]}" if definition else None}
+    if same & {name.replace("_", "") for name in names} or label in {name.split("_")[0] for name in names}:
+        return None  # pφ for p_φ, and p
     described = expected.setting.describe
-    return ("label_for_a_person", {"label": described([label]), "name": " or ".join(described([n]) for n in names)})
+    shown = f"∂L/∂{unicode_name(definition[1], 1)}" if definition else described([label])
+    return ("label_for_a_person", {"label": shown, "name": described(names[:1])})  # ω, not w too
+
+
+_MOMENTUM_DEFINED = re.compile(r"dL_d(\w+?)_?dot")  # the name ∂L/∂φ̇ is read as
 
 
 _DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines one by the other

@@ -193,16 +193,23 @@ def _monomial(expected: Expected) -> bool:
 
 
 def _an_energy(expected: Expected) -> bool:
-    """Whether the expected answer changes along the motion and may be an energy, whose zero is a
-    choice: measured in energy, or in units not declared. A force's constant term (k l₀ in
-    −k (r − l₀)) is no zero level, and is told as a term."""
+    """Whether the expected answer changes along the motion and is an energy, whose zero is a
+    choice: named as one (the option ``name``: V, U, T, H, E, L), or else measured in energy. A
+    force's constant term (k l₀ in −k (r − l₀)) is no zero level, nor is a torque's (Q_θ is
+    measured in energy): each is told as a term."""
     if not expected.value.free_symbols & expected.setting.varying:
         return False
+    name = expected.option("name")
+    if name:
+        first = name if isinstance(name, str) else name[0]
+        return first.split("_")[0] in _ENERGY_NAMES
     try:
-        units = units_of(expected.value, expected.setting)
+        return units_of(expected.value, expected.setting) == DIMENSIONS["energy"]
     except Mixed:
         return False
-    return units is None or units == DIMENSIONS["energy"]
+
+
+_ENERGY_NAMES = frozenset({"V", "U", "T", "K", "H", "E", "L"})
 
 
 _MOVED = (1.37, 0.29)  # a variable moved to 1.37 x + 0.29: away from its value, and from 0 where it was 0
@@ -235,8 +242,15 @@ def _factor_dependence(expected: Expected, key: str, e, s, plain) -> Outcome | N
         return None
     names = [_shown(variables[i]) for i in used if i in depends]
     others = [_shown(variables[i]) for i in used if i not in depends]
-    if not others:
-        return Outcome("not_equivalent", 0.0, "factor_depends_all", {"names": _listed(names)}, method="numeric: ratio")
+    if not others:  # every symbol is wrong: say which the answer lacks, or has where the right one has not
+        lacking = [_shown(variables[i]) for i in used if variables[i] not in plain.free_symbols]
+        extra = [_shown(variables[i]) for i in used if variables[i] not in e.free_symbols]
+        said = [("factor_lacks", {"names": _listed(lacking)})] if lacking else []
+        said += [("factor_extra", {"names": _listed(extra)})] if extra else []
+        if not said:
+            said = [("factor_depends_all", {"names": _listed(names)})]
+        (key, details), *more = said
+        return Outcome("not_equivalent", 0.0, key, details, method="numeric: ratio", more=tuple(more))
     details = {"names": _listed(names), "others": _listed(others)}
     # said as it is: the answer lacks them (g l for g l m), has them where the right one has not, has
     # one symbol for another (l₀ for r), or depends on them in another way

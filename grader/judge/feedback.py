@@ -58,7 +58,7 @@ FEEDBACK: dict[str, str] = {
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
-    "uncertainty_left_out": "Read without its uncertainty, `± {error}`: the value is what is graded.",
+    "uncertainty_left_out": "Read without its uncertainty, `{error}`: the value is what is graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
@@ -140,6 +140,8 @@ FEEDBACK: dict[str, str] = {
     " right answer depends on {instead}.",
     "factor_depends_all": "Your answer depends on {names}, but not as the right answer does: check how it"
     " depends on each.",
+    "factor_lacks": "Your answer does not depend on {names}, and the right answer does.",
+    "factor_extra": "The right answer does not depend on {names}.",
     "number_for_formula": "A formula in the problem's symbols is asked for here; your answer is a number.",
     "factor_depends_how": "Your answer depends on {others} as the right answer does, but on {names} in another way:"
     " check how your answer depends on {names}.",

@@ -78,11 +78,17 @@ def read_number(
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
     """
     uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
-    if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s: the value is graded, its uncertainty is not
-        value = f"{uncertain['name'] or ''}{uncertain['value']} {uncertain['unit'] or ''}".strip()
+    if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s, 2.006(1) s: the value is graded, its uncertainty is not
+        if uncertain["cvalue"]:
+            name, number, after = uncertain["cname"], uncertain["cvalue"], uncertain["cunit"]
+            error = f"({uncertain['digits']})"
+        else:
+            name, number, after = uncertain["name"], uncertain["value"], uncertain["unit"] or uncertain["before"]
+            error = f"± {uncertain['error']}"
+        value = f"{name or ''}{number} {after or ''}".strip()
         prepared, answer, notes = read_number(value, reads, names, decimal_comma=decimal_comma, unit=unit)  # no ± left
         if answer is not None:
-            return prepared, answer, (*notes, ("uncertainty_left_out", {"error": uncertain["error"]}))
+            return prepared, answer, (*notes, ("uncertainty_left_out", {"error": error}))
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
@@ -141,9 +147,14 @@ def _given(text: str, reads, names, decimal_comma: bool, unit: bool) -> tuple[st
 
 _DECIMAL = r"[0-9]+(?:[.,][0-9]*)?(?:[eE][-+]?[0-9]+)?|[.,][0-9]+"
 _PLUS_MINUS = r"±|\+-|\+/-|\\pm"
+_UNIT_WORD = r"[A-Za-zμµ]{1,3}\b"  # s, ms, μs: a unit before the ± (2.006 s ± 0.001 s)
 _UNCERTAIN = re.compile(
-    rf"\s*(?P<name>[^\W\d][\w₀-₉]*\s*=\s*)?(?P<open>\()?\s*(?P<value>[-+−]?(?:{_DECIMAL}))\s*(?:{_PLUS_MINUS})\s*(?P<error>{_DECIMAL})\s*"
+    rf"\s*(?P<name>[^\W\d][\w₀-₉]*\s*=\s*)?(?P<open>\()?\s*(?P<value>[-+−]?(?:{_DECIMAL}))\s*"
+    rf"(?:(?P<before>{_UNIT_WORD})\s*)?(?:{_PLUS_MINUS})\s*(?P<error>{_DECIMAL})\s*"
     rf"(?(open)\)|)\s*(?P<unit>(?:[^\W\d]|\\)[^±=;]*)?\s*"
+    # or the concise form of metrology, 2.006(5) s: the uncertainty in the last digits
+    rf"|\s*(?P<cname>[^\W\d][\w₀-₉]*\s*=\s*)?(?P<cvalue>[-+−]?[0-9]*\.[0-9]+)\((?P<digits>[0-9]{{1,3}})\)"
+    rf"\s*(?P<cunit>(?:[^\W\d]|\\)[^±=;()]*)?\s*"
 )
 
 

@@ -199,14 +199,21 @@ SI_UNITS: dict[str, tuple[Fraction, Units]] = {
 }
 # The prefixed units by their symbols: ns, μs (read as mus) and us, ks; kN, MJ, mW, kHz, mrad. Without
 # them, 2.006 ns for a period in seconds read as 2.006 and words after it ("not graded").
-_PREFIXES = {"n": Fraction(1, 10**9), "mu": Fraction(1, 10**6), "u": Fraction(1, 10**6), "m": Fraction(1, 1000),
-             "k": Fraction(1000), "M": Fraction(10**6)}  # fmt: skip
+# Every prefix is known, so that none is taken for a word after the number (2.006 ps was graded as 2.006).
+_PREFIXES = {"f": Fraction(1, 10**15), "p": Fraction(1, 10**12), "n": Fraction(1, 10**9), "mu": Fraction(1, 10**6),
+             "u": Fraction(1, 10**6), "m": Fraction(1, 1000), "c": Fraction(1, 100), "d": Fraction(1, 10),
+             "h": Fraction(100), "k": Fraction(1000), "M": Fraction(10**6), "G": Fraction(10**9),
+             "T": Fraction(10**12)}  # fmt: skip
+_BASES = ("s", "m", "N", "J", "W", "Hz", "rad")
 SI_UNITS |= {
     prefix + unit: (size * SI_UNITS[unit][0], SI_UNITS[unit][1])
     for prefix, size in _PREFIXES.items()
-    for unit in ("s", "m", "N", "J", "W", "Hz", "rad")
+    for unit in _BASES
     if prefix + unit not in SI_UNITS and (unit != "rad" or prefix == "m")
 }
+_UNUSUAL = frozenset(  # the prefixed units a number is not asked about being in (ms for s, but not ps)
+    prefix + unit for prefix in _PREFIXES if prefix not in ("n", "mu", "m", "k", "M") for unit in _BASES
+) - {"cm"}
 
 
 def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:
@@ -269,9 +276,9 @@ def other_units(text: str) -> list[tuple[str, sympy.Expr]]:
     is 1/1000, Hz for rad/s is 2π. The part's own unit, and other names of it, are left out."""
     size, powers = unit_named(text)
     found = [
-        (name, sympy.Rational(other / size))
+        (name.replace("mu", "μ", 1) if name.startswith("mu") else name, sympy.Rational(other / size))
         for name, (other, its) in SI_UNITS.items()
-        if its == powers and other != size
+        if its == powers and other != size and _usual(name)
     ]
     counts = _unit_counts(text) if powers == DIMENSIONS["frequency"] and size == 1 else None
     if counts == "radians":  # rad/s and Hz: a cycle apart
@@ -279,6 +286,11 @@ def other_units(text: str) -> list[tuple[str, sympy.Expr]]:
     elif counts == "cycles":
         found.append(("rad/s", 1 / (2 * sympy.pi)))
     return found
+
+
+def _usual(name: str) -> bool:
+    """Whether a unit is one a student may have meant (ms, cm, km, min; not ps, or us beside μs)."""
+    return name not in _UNUSUAL
 
 
 def unit_of(dimension: str) -> str:

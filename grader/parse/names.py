@@ -126,7 +126,7 @@ _PREFIXED = re.compile(r"^(?P<ds>dd?)(?P<base>[A-Za-z]+(?:_[0-9]+)?)$")
 
 # varphi is φ, as \varphi and ϕ are: the variant letter's name, followed by nothing, an index or dots
 # (varphidot, varphi_1). Not varpi: π is a number, and no student's variant of it.
-_VARIANT = re.compile(r"^var(?=(?:phi|theta|epsilon|rho|sigma)(?:$|[_0-9]|d))")
+_VARIANT = re.compile(r"(?:^|(?<=_))var(?=(?:phi|theta|epsilon|rho|sigma)(?:$|[_0-9]|d))")  # p_varphi too
 
 
 def canonical_name(raw: str) -> str:
@@ -138,6 +138,8 @@ def canonical_name(raw: str) -> str:
     ('p_theta', 'x_cm', 'mgl')
     >>> canonical_name("varphidot"), canonical_name("vartheta_1"), canonical_name("varpi"), canonical_name("various")
     ('phidot', 'theta_1', 'varpi', 'various')
+    >>> canonical_name("p_varphi"), canonical_name("a_variance")
+    ('p_phi', 'a_variance')
     """
     ascii_name = _VARIANT.sub("", "".join(_ascii_char(c) for c in raw))
     match = _TRAILING_DIGITS.match(ascii_name)
