@@ -662,9 +662,14 @@ def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status
         ("sqrt(g/l)", "ω² = g/l", "expression", "equivalent"),  # a frequency's positive root
         ("sqrt(g/l)", "2ω = 2√(g/l)", "expression", "equivalent"),
         ("sqrt(g/l)", "ω² = l/g", "expression", "not_equivalent"),
+        ("sqrt(g/l)", "1/ω = √(l/g)", "expression", "equivalent"),  # before, the left side was dropped
+        ("sqrt(g/l)", "1/ω² = l/g", "expression", "equivalent"),
+        ("sqrt(g/l)", "√ω = (g/l)^(1/4)", "expression", "equivalent"),
+        ("sqrt(g/l)", "1/ω = √(g/l)", "expression", "not_equivalent"),
         (L_PENDULUM, "2 L = m l² θ̇² + 2 m g l cos θ", "lagrangian", "equivalent"),
         (L_PENDULUM, "L/2 = ¼ m l² θ̇² + ½ m g l cos θ", "lagrangian", "equivalent"),
         (L_PENDULUM, "2L = m l² θ̇² + m g l cos θ", "lagrangian", "not_equivalent"),
+        (L_PENDULUM, "V − T = −½ m l² θ̇² − m g l cos θ", "lagrangian", "equivalent"),  # −L, rightly
     ],
 )
 def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, submitted, kind, status):

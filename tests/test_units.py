@@ -196,6 +196,8 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
         ("2.006 ms", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s."), "0.002006"),
         ("2006", "not_equivalent", ("Not within the accepted tolerance. Is your number in ms? The answer is asked"
          " in s.",), "2006"),
+        ("2.006 s = 2006 ms", "equivalent", ("Correct.", "Graded your final value, `2006 ms`; the working before it"
+         " is not graded.", "Read as 2.006 s."), "2.006"),  # not 2.006 times a name s
         ("2.006 ± 0.001 ± 0.002", "invalid", ("`±` is not something an answer can contain.",),
          "2.006 ± 0.001 ± 0.002\n      ^"),
     ],

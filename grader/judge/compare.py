@@ -555,9 +555,14 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     undefined = {symbol.name for symbol in value.lhs.free_symbols} - expected.names
     defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
     # where a count is asked, 3N = 15 is working, 3N is not the count's name times 3: the value is the last side
+    # and where a number is asked, 2.006 s = 2006 ms is the value in two units, not 2.006 times a name s
+    if spec.name == "number":
+        undefined -= set(SI_UNITS)
     scaled = _scaled_name(value.lhs, undefined) if spec.name != "integer" else None
     if scaled is not None:  # 2L = m l² θ̇² + …, ω² = g/l: the name's value
         return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
+    if spec.name == "lagrangian" and undefined == {"T", "V"} and value.lhs == _V_MINUS_T:
+        return ParsedAnswer(answer.text, -value.rhs, "expression")  # V − T = −L: L is the other side's negative
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     if undefined & _DEFINING and not {symbol.name for symbol in value.rhs.free_symbols} - expected.names:
@@ -587,6 +592,7 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     return ("label_for_a_person", {"label": shown, "name": described(names[:1])})  # ω, not w too
 
 
+_V_MINUS_T = sympy.Symbol("V") - sympy.Symbol("T")
 _MOMENTUM_DEFINED = re.compile(r"dL_d(\w+?)_?dot")  # the name ∂L/∂φ̇ is read as
 
 
@@ -594,15 +600,16 @@ _DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines
 
 
 def _scaled_name(lhs, undefined: set[str]):
-    """For ``2L`` or ``L/2``, the name times a number, and for ``ω²``, its power: what makes the
-    name's value of the other side (halving it; its positive root, as a frequency's); None for any
-    other left side."""
+    """For ``2L`` or ``L/2``, the name times a small fraction, and for ``ω²``, ``1/ω`` or ``√ω``, its
+    power: what makes the name's value of the other side (halving it; its positive root, as a
+    frequency's); None for any other left side."""
     coefficient, rest = lhs.as_coeff_Mul()
-    if rest.is_Symbol and rest.name in undefined and coefficient not in (0, 1) and coefficient.is_Rational:
+    small = coefficient.is_Rational and coefficient.q <= 12 and abs(coefficient.p) <= 100
+    if rest.is_Symbol and rest.name in undefined and coefficient not in (0, 1) and small:
         return lambda rhs: rhs / coefficient
     base, exponent = lhs.as_base_exp()
-    if base.is_Symbol and base.name in undefined and exponent.is_Integer and exponent > 1:
-        return lambda rhs: rhs ** sympy.Rational(1, int(exponent))
+    if base.is_Symbol and base.name in undefined and exponent.is_Rational and exponent not in (0, 1):
+        return lambda rhs: rhs ** (1 / exponent)
     return None
 
 
