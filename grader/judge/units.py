@@ -197,9 +197,8 @@ SI_UNITS: dict[str, tuple[Fraction, Units]] = {
     **dict.fromkeys(("Hz", "hertz"), _si_unit(1, "frequency")),
     **dict.fromkeys(("rad", "radian", "radians"), _si_unit(1, "angle")),
 }
-# The prefixed units by their symbols: ns, μs (read as mus) and us, ks; kN, MJ, mW, kHz, mrad. Without
-# them, 2.006 ns for a period in seconds read as 2.006 and words after it ("not graded").
-# Every prefix is known, so that none is taken for a word after the number (2.006 ps was graded as 2.006).
+# The prefixed units by their symbols: ns, μs (read as mus) and us, ks; kN, MJ, mW, kHz, mrad. Every
+# prefix is known, so that none is taken for a word after the number (2.006 ps was graded as 2.006 s).
 _PREFIXES = {"f": Fraction(1, 10**15), "p": Fraction(1, 10**12), "n": Fraction(1, 10**9), "mu": Fraction(1, 10**6),
              "u": Fraction(1, 10**6), "m": Fraction(1, 1000), "c": Fraction(1, 100), "d": Fraction(1, 10),
              "h": Fraction(100), "k": Fraction(1000), "M": Fraction(10**6), "G": Fraction(10**9),
