@@ -11,7 +11,7 @@ import dataclasses
 from functools import lru_cache
 
 from grader.bank import Part, Problem
-from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
+from grader.judge import DEFAULT_TIMEOUT, KINDS, Verdict, compare
 from grader.judge.lagrangian import equations_of_motion
 
 __all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
@@ -78,7 +78,7 @@ def grade_answer(problem: Problem, part: Part, submitted: str, *, timeout: float
         return verdict
     # a mistake is matched by value: a label naming another quantity is said in the verdict's notes
     # already, and would make the match undecided
-    matching = {**arguments, "name": None} if part.kind in ("expression", "lagrangian") else arguments
+    matching = {**arguments, "name": None} if "name" in KINDS[part.kind].options else arguments
     for mistake in part.mistakes:
         if compare(mistake.answer, submitted, **matching).equivalent:
             # the mistake's hint replaces the diagnosis; how the answer was read is still said

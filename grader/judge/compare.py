@@ -153,6 +153,8 @@ def compare(
             f"option {', '.join(sorted(unknown))} does not apply to kind {kind!r} (its options: {allowed})"
         )
     settings = {**spec.options, **options}
+    if settings.get("name") is not None:
+        settings["name"] = _names(settings["name"])
     frozen = tuple(sorted((key, _hashable(value)) for key, value in settings.items()))
     prepared = prepare(expected, kind, tuple(coords), known, domains, frozen, parsed=spec.parsed, dimensions=dimensions)
     allowed = {spec.shape, "equation"} if spec.shape == "equations" else {spec.shape}  # one coordinate: one equation
@@ -162,12 +164,6 @@ def compare(
         )
     if given and not spec.parsed:
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
-    name = settings.get("name")
-    names = [name] if isinstance(name, str) else name
-    if name is not None and not (
-        isinstance(names, list | tuple) and names and all(isinstance(n, str) and n for n in names)
-    ):
-        raise AuthorError(f"option name is the quantity's name or a list of names, not {name!r}")
     if settings.get("unit"):
         _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
     values = given_values(prepared, given) if given else ()
@@ -196,6 +192,14 @@ def _without_dashes(text: str) -> str | None:
     if len(lines) < 2 or not all(_DASHED.match(line) for line in lines):
         return None
     return "\n".join(line[_DASHED.match(line).end() :] for line in lines)
+
+
+def _names(name) -> tuple[str, ...]:
+    """The option ``name`` (a name or a list of them) as the names an answer is read with: p_φ is p_phi."""
+    names = [name] if isinstance(name, str) else name
+    if not (isinstance(names, list | tuple) and names and all(isinstance(n, str) and n for n in names)):
+        raise AuthorError(f"option name is the quantity's name or a list of names, not {name!r}")
+    return tuple(canonical_name(n) for n in names)
 
 
 _AN = {"expression": "an expression", "equation": "an equation", "equations": "a system of equations"}
@@ -572,17 +576,16 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
 
 def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expected) -> tuple | None:
     """A note where the name :func:`_unwrap_named` took off is not the asked quantity's (the option
-    ``name``: a name or a list of them): ``p_θ = m l² sin²θ φ̇`` where p_φ is asked, or ``f = √(g/l)``
+    ``name``: the names, as :func:`_names` reads them): ``p_θ = m l² sin²θ φ̇`` where p_φ is asked, or ``f = √(g/l)``
     where ω is. Right as read, it goes to a person (a slip of the label, or two quantities confused);
     p for p_φ is no other name. None where nothing was taken off, or no name is set."""
-    asked = expected.option("name")
-    if not asked or unwrapped is named or not isinstance(named.value, sympy.Eq) or named.value.lhs == ANSWER:
+    names = expected.option("name")
+    if not names or unwrapped is named or not isinstance(named.value, sympy.Eq) or named.value.lhs == ANSWER:
         return None
     lhs = named.value.lhs.as_coeff_Mul()[1].as_base_exp()[0]  # L of 2L, ω of ω²
     if not isinstance(lhs, sympy.Symbol | AppliedUndef):
         return None  # T − V = …, ẍ = …: no name of one quantity
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
-    names = [canonical_name(name) for name in ([asked] if isinstance(asked, str) else asked)]  # p_φ is p_phi
     definition = _MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
     same = {label.replace("_", ""), f"p{definition[1]}" if definition else None}
     if same & {name.replace("_", "") for name in names} or label in {name.split("_")[0] for name in names}:

@@ -199,10 +199,9 @@ def _an_energy(expected: Expected) -> bool:
     measured in energy): each is told as a term."""
     if not expected.value.free_symbols & expected.setting.varying:
         return False
-    name = expected.option("name")
-    if name:
-        first = name if isinstance(name, str) else name[0]
-        return first.split("_")[0] in _ENERGY_NAMES
+    names = expected.option("name")  # canonical, first the quantity's own
+    if names:
+        return names[0].split("_")[0] in _ENERGY_NAMES
     try:
         return units_of(expected.value, expected.setting) == DIMENSIONS["energy"]
     except Mixed:
