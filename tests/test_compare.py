@@ -595,6 +595,9 @@ def test_a_lagrangian_is_right_up_to_a_constant_or_a_total_derivative(submitted)
         # the prompts say "Write the Lagrangian L(θ, θ̇)": students write the name with its arguments
         ("L(θ, θ̇) = " + L_PENDULUM, "equivalent"),
         ("L(theta, thetadot, t) = " + L_PENDULUM, "equivalent"),
+        ("L(q, q̇, t) = " + L_PENDULUM, "equivalent"),  # generic variables, in a list: before, the comma was refused
+        (r"L(q_i, \dot q_i) = " + L_PENDULUM, "equivalent"),
+        ("H(q, p) = " + L_PENDULUM, "undecided"),  # another quantity's name: a person decides
         (r"\mathcal{L}(\theta, \dot\theta) = \frac12 m l^2 \dot\theta^2 + m g l \cos\theta", "equivalent"),
         # and the definition on the way: the last side is the answer
         ("L = T - V = " + L_PENDULUM, "equivalent"),
@@ -2185,14 +2188,18 @@ def test_seconds_written_sec_are_not_a_remark_where_no_unit_is_asked_for():
 
 @pytest.mark.parametrize(
     "submitted",
-    ["2.006~\\text{s}", "2.006\\,\\text{ s}", "2.006 \\text{sec}", "2.006~s", "2.006 seconds", "2.006\\ \\textrm{s}"],
-)
+    [
+        "2.006~\\text{s}", "2.006\\,\\text{ s}", "2.006 \\text{sec}", "2.006~s", "2.006 seconds", "2.006\\ \\textrm{s}",
+        # \mathrm, and \mu for the prefix: before, 2006 \mathrm{ms} was read as 2006 m·s
+        "2006 \\mathrm{ms}", "2006\\,\\mathrm{ms}", "2006000\\,\\mu\\mathrm{s}", "2006000~\\mathrm{\\mu s}",
+        "2006000 \\mu s",
+    ],
+)  # fmt: skip
 def test_a_unit_written_in_tex_or_in_words_is_the_parts_unit(submitted):
     # TeX's tie and \text{…} around a unit, as an equation editor writes them
     assert compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s").status == "equivalent"
-    assert compare(PERIOD, submitted.replace("2.006", "2.106"), kind="number", rtol=0.005, unit="s").status == (
-        "not_equivalent"
-    )
+    wrong = submitted.replace("2.006", "2.106").replace("2006", "2106")
+    assert compare(PERIOD, wrong, kind="number", rtol=0.005, unit="s").status == "not_equivalent"
 
 
 def test_a_long_answer_is_read_only_as_typed():
@@ -2557,6 +2564,20 @@ def test_a_right_value_under_another_quantitys_name_goes_to_a_person(submitted, 
     assert compare(P_PHI, submitted, **SPHERICAL).status == "equivalent"
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("m l² sin²θ φ̇ = p_φ", "equivalent"),  # before: p_φ was not defined
+        ("m l² sin²θ φ̇ = p_θ", "undecided"),
+        ("m l² θ̇ = p_φ", "not_equivalent"),
+    ],
+)
+def test_a_value_may_come_before_its_name(submitted, status):
+    verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)
+    assert verdict.status == status, verdict
+    assert "not define" not in " ".join(verdict.feedback), verdict
+
+
 def test_a_wrong_value_under_another_name_is_told_the_label_too():
     verdict = compare(P_PHI, "p_theta = m l² θ̇", name="p_phi", **SPHERICAL)
     assert verdict.status == "not_equivalent", verdict
@@ -2571,6 +2592,35 @@ def test_a_lagrangian_is_named_l_unless_the_part_says_otherwise():
     verdict = compare(lagrangian, f"H = {lagrangian}", kind="lagrangian", coords=["theta"])
     assert verdict.status == "undecided" and "labelled H" in verdict.feedback[0], verdict
     assert compare(lagrangian, f"H = {lagrangian}", kind="lagrangian", coords=["theta"], name="H").equivalent
+
+
+@pytest.mark.parametrize(
+    ("label", "status", "score"),
+    [
+        ("T − V", "equivalent", 1.0),
+        ("T − U", "equivalent", 1.0),
+        ("T + V", "undecided", 1.0),  # the energy, where the Lagrangian is asked: before, Correct
+        ("T + U", "undecided", 1.0),
+        ("2(T − V)", "not_equivalent", 0.5),  # then L is half the right one: a normalization
+        ("(T − V)/2", "not_equivalent", 0.5),
+    ],
+)
+def test_a_left_side_in_the_energies_names_l_only_as_t_minus_v(label, status, score):
+    lagrangian = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
+    verdict = compare(lagrangian, f"{label} = {lagrangian}", kind="lagrangian", coords=["theta"])
+    assert (verdict.status, verdict.score) == (status, score), verdict
+    if status == "undecided":
+        assert verdict.feedback[0].startswith("Your answer is labelled T + "), verdict
+
+
+def test_a_hamiltonian_is_t_plus_v_and_a_tension_t_no_energy():
+    hamiltonian = "p^2/(2 m) + m g l (1 - cos(theta))"
+    assert compare(hamiltonian, f"T + V = {hamiltonian}", coords=["theta"], name="H").equivalent
+    verdict = compare(hamiltonian, f"T − V = {hamiltonian}", coords=["theta"], name="H")
+    assert verdict.status == "undecided" and "labelled T - V" in verdict.feedback[0], verdict
+    # where the problem names a tension T, T + V is no label of energies
+    verdict = compare("T + m g", "T + V = T + m g", name="H")
+    assert "labelled" not in " ".join(verdict.feedback), verdict
 
 
 @pytest.mark.parametrize("name", [5, [], [1], ["p", 3], ""])

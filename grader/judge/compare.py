@@ -241,6 +241,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
                 typed, (answer, used) = answer, _with_given(answer, given)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
+                answer = _name_on_the_left(answer, spec, expected)
                 named, answer = answer, _unwrap_named(answer, spec, expected)
                 label = _another_name(named, answer, expected)
                 read_notes += (label,) if label else ()
@@ -547,6 +548,20 @@ def _rate_of_conserved(item: sympy.Eq, expected: Expected) -> sympy.Eq | None:
     return None
 
 
+def _name_on_the_left(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
+    """``m l² sin²θ φ̇ = p_φ``: a quantity's value, then its name, read as ``p_φ = m l² sin²θ φ̇``
+    where an expression is asked. The right side is a name the problem does not define, alone,
+    and the left side is in the problem's names (else it is an equation between two of the student's)."""
+    value = answer.value
+    if spec.shape != "expression" or not isinstance(value, sympy.Eq) or not value.rhs.is_Symbol:
+        return answer
+    if value.rhs == ANSWER or value.rhs.name in expected.names:
+        return answer
+    if not value.lhs.free_symbols or any(symbol.name not in expected.names for symbol in value.lhs.free_symbols):
+        return answer
+    return ParsedAnswer(answer.text, sympy.Eq(value.rhs, value.lhs, evaluate=False), answer.kind)
+
+
 def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``L = ½ m v²`` for a Lagrangian, ``ω = √(g/l)`` or ``ẍ = …`` for an expression: the name is not
     the answer. Nor is ``T − V = …``, a left side only in names the problem does not define."""
@@ -565,8 +580,10 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     scaled = _scaled_name(value.lhs, undefined) if spec.name != "integer" else None
     if scaled is not None:  # 2L = m l² θ̇² + …, ω² = g/l: the name's value
         return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
-    if spec.name == "lagrangian" and undefined == {"T", "V"} and value.lhs == _V_MINUS_T:
-        return ParsedAnswer(answer.text, -value.rhs, "expression")  # V − T = −L: L is the other side's negative
+    energies = _in_energies(value.lhs, expected.names)
+    multiple = _energy_multiple(value.lhs, expected.option("name")) if energies else None
+    if multiple is not None:  # V − T = −L, 2(T − V) = 2L: L's value
+        return ParsedAnswer(answer.text, value.rhs / multiple, "expression")
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     if undefined & _DEFINING and not {symbol.name for symbol in value.rhs.free_symbols} - expected.names:
@@ -582,7 +599,10 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     names = expected.option("name")
     if not names or unwrapped is named or not isinstance(named.value, sympy.Eq) or named.value.lhs == ANSWER:
         return None
-    lhs = named.value.lhs.as_coeff_Mul()[1].as_base_exp()[0]  # L of 2L, ω of ω²
+    side = named.value.lhs
+    if _in_energies(side, expected.names) and _energy_multiple(side, names) is None:  # T + V = … where L is asked
+        return ("label_for_a_person", {"label": to_text(side), "name": expected.setting.describe(names[:1])})
+    lhs = side.as_coeff_Mul()[1].as_base_exp()[0]  # L of 2L, ω of ω²
     if not isinstance(lhs, sympy.Symbol | AppliedUndef):
         return None  # T − V = …, ẍ = …: no name of one quantity
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
@@ -595,8 +615,31 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     return ("label_for_a_person", {"label": shown, "name": described(names[:1])})  # ω, not w too
 
 
-_V_MINUS_T = sympy.Symbol("V") - sympy.Symbol("T")
 _MOMENTUM_DEFINED = re.compile(r"dL_d(\w+?)_?dot")  # the name ∂L/∂φ̇ is read as
+
+
+# The sums of the energies that name a quantity: L = T − V, and H = E = T + V (U is V)
+_KINETIC, _POTENTIAL, _POTENTIAL_U = sympy.symbols("T V U")
+_ENERGIES = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
+_ENERGY_SUMS = {"L": _KINETIC - _POTENTIAL, "H": _KINETIC + _POTENTIAL, "E": _KINETIC + _POTENTIAL}
+
+
+def _in_energies(side, defined: set[str]) -> bool:
+    """Whether a left side is a sum written in T and V (or U) alone, none of them a name the problem
+    defines (a tension T): ``T − V``, ``T + U``, ``2(T − V)``."""
+    names = side.free_symbols
+    return not side.is_Symbol and bool(names) and names <= _ENERGIES and not {name.name for name in names} & defined
+
+
+def _energy_multiple(side, names) -> sympy.Expr | None:
+    """The number c where a side in the energies is c times the sum one of ``names`` is
+    (``V − T`` is −1 times L's); None where it is none of them (``T + V`` where L is asked)."""
+    side = side.xreplace({_POTENTIAL_U: _POTENTIAL})
+    for name in names or ():
+        ratio = sympy.cancel(side / _ENERGY_SUMS[name]) if name in _ENERGY_SUMS else None
+        if ratio is not None and ratio.is_number and ratio != 0:
+            return ratio
+    return None
 
 
 _DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines one by the other
