@@ -367,6 +367,11 @@ class _Parser:
             return order == 0 and meaning.derivative_count == 1
         return meaning in self.context.coordinate_set and order <= 1
 
+    @staticmethod
+    def _is_generic_variable(token: Token) -> bool:
+        """Whether a token may be a variable in a list of them, as q, q̇, p or t in L(q, q̇, t)."""
+        return token.kind == "name" and token.value.dots + token.value.primes <= 1
+
     def _defines(self, side) -> bool:
         """Whether a side is written in names the problem does not define (T − V, ½ m v², ½ m ẋ²)."""
         defined = set(self.context.known.values()) | {TIME}
@@ -449,9 +454,12 @@ class _Parser:
         j = i + 1
         if tokens[j].is_op("(") and tokens[j + 1].kind == "name":
             j += 1
-            while self._is_variable(tokens[j]) and tokens[j + 1].is_op(","):
+            # with commas, a list of what the quantity depends on, generic ones too: H(q, p), L(q, q̇, t);
+            # one name alone must be the problem's: I(θ̈) = … is I·θ̈, and m(v) m·v
+            listed = self._is_variable if not tokens[j + 1].is_op(",") else self._is_generic_variable
+            while listed(tokens[j]) and tokens[j + 1].is_op(","):
                 j += 2
-            if not (self._is_variable(tokens[j]) and tokens[j + 1].is_op(")")):
+            if not (listed(tokens[j]) and tokens[j + 1].is_op(")")):
                 return None
             j += 2
         if not tokens[j].is_op("="):
