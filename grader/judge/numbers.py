@@ -168,13 +168,25 @@ def _spelled(text: str, decimal_comma: bool, unit: bool) -> tuple[str, tuple]:
         text, comma = _decimal_point(text)
         notes = (comma,) if comma else ()
     if unit and len(text) < _LENGTH:
-        # TeX's unit after a number: 2.006~\text{s}, 2.006\,\text{ s}; the tie ~ is a space there
-        text = _TIE.sub(" ", _TEX_UNIT.sub(r"\1 \2", text))
+        # TeX's unit after a number: 2.006~\text{s}, 2.006\,\mathrm{ s}, 2006\,\mu\mathrm{s}; the tie ~ is
+        # a space there, and \mu the prefix μ
+        text = _TIE.sub(" ", _TEX_UNIT.sub(_tex_unit, text))
+        text = _TEX_MICRO.sub(" μ", text)
         text = _SEC.sub(r"\1\2s", text)
     return text, notes
 
 
-_TEX_UNIT = re.compile(r"([0-9.])\s*(?:~|\\[,;:! ])?\s*\\text(?:rm)?\{\s*([A-Za-z/^0-9 .\\-]+?)\s*\}")
+_TEX_UNIT = re.compile(
+    r"([0-9.])\s*(?:~|\\[,;:! ])?\s*(\\mu\s*|μ)?\\(?:text|textrm|mathrm|rm|mbox)\{\s*([A-Za-z/^0-9 .\\-]+?)\s*\}"
+)
+# 2006 \mu s, and \mathrm{\mu s} once the braces are gone
+_TEX_MICRO = re.compile(r"(?<=[0-9.])\s*(?:~|\\[,;:! ])?\s*\\mu\b\s*(?=(?:s|m|N|J|W|Hz)\b)")
+
+
+def _tex_unit(found: re.Match) -> str:
+    return f"{found[1]} {'μ' if found[2] else ''}{found[3]}"
+
+
 _TIE = re.compile(r"(?<=[0-9.])~(?=\s*[A-Za-z\\])")
 
 
