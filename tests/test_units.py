@@ -198,6 +198,13 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
          " in s.",), "2006"),
         ("2.006 s = 2006 ms", "equivalent", ("Correct.", "Graded your final value, `2006 ms`; the working before it"
          " is not graded.", "Read as 2.006 s."), "2.006"),  # not 2.006 times a name s
+        # in a sentence, or in per cent: before, refused
+        ("The period is 2.006 ± 0.001 s.", "equivalent", ("Correct.", "Graded the number `2.006 s`; the words around"
+         " it are not graded.", "Read without its uncertainty, `± 0.001`: the value is what is graded."), "2.006"),
+        ("2.006 s ± 0.05%", "equivalent", ("Correct.", "Read without its uncertainty, `± 0.05%`: the value is what is"
+         " graded."), "2.006"),
+        ("2.106 s ± 0.05%", "not_equivalent", ("Not within the accepted tolerance.", "Read without its uncertainty,"
+         " `± 0.05%`: the value is what is graded."), "2.106"),
         ("2.006 ± 0.001 ± 0.002", "invalid", ("`±` is not something an answer can contain.",),
          "2.006 ± 0.001 ± 0.002\n      ^"),
     ],

@@ -89,6 +89,12 @@ def read_number(
         prepared, answer, notes = read_number(value, reads, names, decimal_comma=decimal_comma, unit=unit)  # no ± left
         if answer is not None:
             return prepared, answer, (*notes, ("uncertainty_left_out", {"error": error}))
+    inside = _UNCERTAINTY_INSIDE.search(text) if uncertainty and not uncertain and len(text) <= _LENGTH else None
+    if inside and len(_UNCERTAINTY_INSIDE.findall(text)) == 1:  # The period is 2.006 ± 0.001 s.
+        rest = text[: inside.start()] + text[inside.end() :]
+        prepared, answer, notes = read_number(rest, reads, names, decimal_comma=decimal_comma, unit=unit)
+        if answer is not None:
+            return prepared, answer, (*notes, ("uncertainty_left_out", {"error": inside[0].strip()}))
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
@@ -148,6 +154,8 @@ def _given(text: str, reads, names, decimal_comma: bool, unit: bool) -> tuple[st
 _DECIMAL = r"[0-9]+(?:[.,][0-9]*)?(?:[eE][-+]?[0-9]+)?|[.,][0-9]+"
 _PLUS_MINUS = r"±|\+-|\+/-|\\pm"
 _UNIT_WORD = r"[A-Za-zμµ]{1,3}\b"  # s, ms, μs: a unit before the ± (2.006 s ± 0.001 s)
+# the uncertainty after a number in a sentence, or in per cent: 2.006 ± 0.001 s, 2.006 s ± 0.05 %
+_UNCERTAINTY_INSIDE = re.compile(rf"(?<=[0-9.\w])\s*(?:{_PLUS_MINUS})\s*(?:{_DECIMAL})(?:\s*%)?")
 _UNCERTAIN = re.compile(
     rf"\s*(?P<name>[^\W\d][\w₀-₉]*\s*=\s*)?(?P<open>\()?\s*(?P<value>[-+−]?(?:{_DECIMAL}))\s*"
     rf"(?:(?P<before>{_UNIT_WORD})\s*)?(?:{_PLUS_MINUS})\s*(?P<error>{_DECIMAL})\s*"
