@@ -820,6 +820,25 @@ def test_words_that_may_say_otherwise_send_a_right_formula_to_a_person(expected,
     )
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status", "score"),
+    [
+        # the words after = 0 were 0 times words, so 0, and lost: before, each of these was Correct
+        ("θ̈ + (g/l) sin θ = 0 (or minus)", "not_equivalent", 0.0),  # a hedge, as after any other side
+        ("θ̈ + (g/l) sin θ = 0 or not", "not_equivalent", 0.0),
+        ("θ̈ + (g/l) sin θ = 0 (inverted pendulum)", "undecided", 1.0),
+        ("θ̈ + (g/l) sin θ = 0 (θ measured upward)", "undecided", 1.0),
+        ("θ̈ + (g/l) sin θ = 0", "equivalent", 1.0),
+        ("θ̈ + (g/l) sin θ = 0 (1)", "equivalent", 1.0),  # an equation's number is no word
+    ],
+)
+def test_words_after_a_zero_side_are_not_lost(submitted, status, score):
+    verdict = compare("thetaddot = -(g/l) sin(theta)", submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.score) == (status, score), verdict
+    if status == "not_equivalent":
+        assert "which this problem does not define" in verdict.feedback[0], verdict
+
+
 def test_a_wrong_formula_with_words_that_may_say_otherwise_is_not_equivalent():
     verdict = compare(ATWOOD_A, "(m₁ + m₂) g/(m₁ − m₂) upward", **MASSES)
     assert (verdict.status, verdict.score) == ("not_equivalent", 0.0)

@@ -811,7 +811,19 @@ def _without_words(
     cannot be read or uses names the problem does not have; and the notes that say so. Otherwise
     the answer as it was read, and no note."""
     if answer.ok and not _undefined(answer, names):
-        return answer, ()
+        zero = _ZERO_THEN_WORDS.search(submitted)
+        if zero is None:
+            return answer, ()
+        # … = 0 (inverted): 0 times the words is 0, and they were lost. Read past as prose, as after any
+        # formula; else (… = 0 (or minus), a hedge) read with them kept, as they are after any other side
+        read = _formula_before_words(submitted, expected, names, deadline)
+        if read is not None:
+            return read
+        kept = parse_answer(
+            submitted[: zero.start()] + "1" + submitted[zero.start() + 1 :],
+            coords=expected.setting.coords, known=names, deadline=deadline,
+        )  # fmt: skip
+        return (kept if kept.ok and _undefined(kept, names) else answer), ()
     coords = expected.setting.coords
     read = _formula_before_words(submitted, expected, names, deadline)
     if read is not None:
@@ -825,6 +837,10 @@ def _without_words(
         if after is not None and not _undefined(after[0], names):
             return after[0], (before, *after[1])
     return answer, ()
+
+
+# a zero, then a word or a bracket that opens one: … = 0 (inverted), … = 0 or not
+_ZERO_THEN_WORDS = re.compile(r"(?<![\w.])0\s*[(\[]?\s*[^\W\d_]")
 
 
 def _formula_before_words(text: str, expected: Expected, names: list, deadline) -> tuple[ParsedAnswer, tuple] | None:
