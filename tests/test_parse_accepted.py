@@ -42,6 +42,11 @@ ARITHMETIC = [
     ("[a+b]c", (a + b) * c),
     ("1/2 m l^2", m * l**2 / 2),
     ("1/2m", m / 2),
+    # a number glued to a name after a symbol's /: the denominator, as physicists write b/2m (before: b·m/2)
+    ("b/2m", b / (2 * m)),
+    ("m g/2l", m * g / (2 * l)),
+    ("a/2b/c", a / (2 * b * c)),
+    ("3g/2 l", 3 * g * l / 2),  # not across a space
     ("g/l sin θ", g / l * sin(theta)),
     ("0.5 m", Rational(1, 2) * m),
     (".25", Rational(1, 4)),

@@ -496,6 +496,8 @@ class _Parser:
             if token.is_op("*", "/"):
                 self.advance()
                 factor = self.signed()
+                if token.value == "/" and self._glued_denominator(factors):
+                    factor *= self.factor()  # p²/2m, mg/2l: over 2m and 2l, as over lsinθ; but 1/2m is ½ m
                 if token.value == "/":
                     if factor == 0:
                         raise ParseFailure("division_by_zero", token.start, token.end)
@@ -512,6 +514,15 @@ class _Parser:
         product = sympy.Mul(*factors)
         _check_size(product, self.tokens[self.i - 1])  # 9^99·9^99·… is within every limit but one
         return product
+
+    def _glued_denominator(self, numerator: list) -> bool:
+        """Whether the number just read after ``/`` is glued to a name that is in the denominator with
+        it: ``p²/2m`` is p²/(2m), as a physicist reads it. Not after a number alone (``1/2m`` is
+        ½ m, as ``1/2 m`` is), nor across a space (``m g l/2 cos θ``)."""
+        last, token = self.tokens[self.i - 1], self.token
+        if last.kind != "num" or token.kind != "name" or last.end != token.start:
+            return False
+        return any(not factor.is_number for factor in numerator)
 
     def signed(self):
         token = self.token
