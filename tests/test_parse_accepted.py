@@ -356,6 +356,9 @@ SYSTEMS = [
         for step in ("⇔", "⟺", "∴", "<=>", "==>", "→", "⟶", "->", "-->", "so", "hence", "thus", "therefore")
     ),
     ("m ẍ = -k x, so ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
+    # the comma after the word, as a sentence has it (before: refused)
+    ("So, ẍ = a", Eq(D(x, 2), a)),
+    ("m ẍ = -k x, therefore, ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
     ("m ẍ = -k x ->\nẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
     ("m ẍ = -k x\nso ẍ = -k x / m", Eq(D(x, 2), -k * x / m)),
     ("c ẍ = c a -> ẍ = a; θ̈ = b", (Eq(D(x, 2), a), Eq(D(theta, 2), b))),

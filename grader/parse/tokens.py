@@ -323,9 +323,11 @@ def _steps_between_equations(tokens: list[Token], text: str) -> list[Token]:
             continue
         if (i == 0 or _equation_beside(tokens, i, -1)) and _equation_beside(tokens, i, 1):
             steps[i] = Token("implies", "⇒", token.start, token.end)  # or "so θ̈ = …", where the answer starts
+            if token.kind == "name" and tokens[i + 1].is_op(","):
+                steps[i + 1] = None  # So, θ̈ = …: the comma after the word is the sentence's
         elif token.kind == "arrow":
             raise ParseFailure("arrow", token.start, token.end, arrow=text[token.start : token.end])
-    return steps
+    return [step for step in steps if step is not None]
 
 
 def _equation_beside(tokens: list[Token], i: int, step: int) -> bool:
