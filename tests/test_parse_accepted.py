@@ -612,6 +612,15 @@ def test_a_greek_letter_glued_to_names_is_one_piece_never_its_spelling_split():
     assert parse_answer("sinu", known=["u"]).value == sympy.sin(sympy.Symbol("u"))  # mu, nu, pi, xi: too short to tell
 
 
+def test_a_greek_letter_with_a_numbered_subscript_splits_off_a_known_name_glued_after():
+    # ω₀t was one name ω_0t, undefined, where m₁x was already m₁·x
+    omega0 = sympy.Symbol("omega_0")
+    for typed in ("ω₀t", "omega_0t", "\\omega_0t"):
+        assert parse_answer(f"cos({typed})", known=["omega_0"]).value == sympy.cos(omega0 * t), typed  # t is time
+    assert parse_answer("ω₀x", known=["omega_0"]).value == sympy.Symbol("omega_0x")  # x not known: one name
+    assert parse_answer("θ₁g", coords=["theta_1"], known=["g"]).value == g * theta1
+
+
 def test_the_whole_name_wins_over_a_split():
     assert parse_answer("mgl", known=["m", "g", "l", "mgl"]).value == sympy.Symbol("mgl")
 

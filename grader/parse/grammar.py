@@ -59,6 +59,7 @@ _ANGLE_FUNCTIONS = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
 _STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt", "deriv")
 _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
 _GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
+_NUMBERED_THEN_LETTERS = re.compile(r"_[0-9]+[A-Za-z]+$")  # ω_0t: a subscript's number, then a letter glued on
 # A Greek letter spelled out inside a glued name (γx is "gammax" by then) is a piece of its own even
 # where the problem does not define it: the fewest pieces then make γ·x, never g·a·m·m·a·x.
 # Two-letter spellings (mu, nu, pi, xi) are left out: "sinu" is sin u.
@@ -894,7 +895,9 @@ class _Parser:
         if whole is not None:
             return [whole]
         if _GREEK_NAME.match(canonical):
-            return [sympy.Symbol(canonical)]  # lambda is λ, never l·a·m·b·d·a
+            # ω₀t is ω₀·t where ω₀ and t are both known, as m₁x is m₁·x; else one name: lambda is λ, never l·a·m·b·d·a
+            pieces = self.split(name.raw, token) if _NUMBERED_THEN_LETTERS.search(canonical) else None
+            return pieces or [sympy.Symbol(canonical)]
         if canonical == "dt" and "d" not in self.context.known:
             # d/dt, dθ/dt and \frac{d\theta}{dt} would otherwise be read as quotients, and the d's cancel.
             raise ParseFailure("leibniz", token.start, token.end)
