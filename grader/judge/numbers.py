@@ -89,8 +89,9 @@ def read_number(
         prepared, answer, notes = read_number(value, reads, names, decimal_comma=decimal_comma, unit=unit)  # no ± left
         if answer is not None:
             return prepared, answer, (*notes, ("uncertainty_left_out", {"error": error}))
-    inside = _UNCERTAINTY_INSIDE.search(text) if uncertainty and not uncertain and len(text) <= _LENGTH else None
-    if inside and len(_UNCERTAINTY_INSIDE.findall(text)) == 1:  # The period is 2.006 ± 0.001 s.
+    inside = list(_UNCERTAINTY_INSIDE.finditer(text)) if uncertainty and not uncertain and len(text) <= _LENGTH else []
+    if len(inside) == 1:  # The period is 2.006 ± 0.001 s.
+        (inside,) = inside
         rest = text[: inside.start()] + text[inside.end() :]
         prepared, answer, notes = read_number(rest, reads, names, decimal_comma=decimal_comma, unit=unit)
         if answer is not None:
