@@ -66,6 +66,9 @@ BROKEN_MESSAGES = [
      " symbols"),
     ("lagrangian_not_an_energy", "lagrangian_not_an_energy", "lagrangian",
      "a Lagrangian is an energy (kg·m²/s²), but the reference answer is measured in m²/s²"),
+    ("lagrangian_without_motion", "lagrangian_without_motion", "motion",
+     "no equations of motion follow from the Lagrangian 'm g l cos(theta)': they do not determine every"
+     " acceleration (its second derivatives in the velocities are singular; is a kinetic term missing?)"),
     ("test_gets_another_score", "test_gets_another_score", "lagrangian",
      "test '1/2 m l^2 thetadot^2' gets 0, not 1 (not_equivalent: A term is missing: a term in cos(θ).)"),
 ]  # fmt: skip

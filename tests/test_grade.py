@@ -328,6 +328,24 @@ def test_equations_right_for_the_students_own_wrong_lagrangian_earn_method_credi
     )
 
 
+@pytest.mark.parametrize(
+    ("problem", "lagrangian", "motion"),
+    [
+        ("plane-pendulum", "0", "0 = 0"),
+        ("plane-pendulum", "m g l cos θ", "sin θ = 0"),  # no kinetic term: sin θ = 0 is no motion
+        ("atwood-machine", "(m1 - m2) g x", "m1 = m2"),
+        ("rotating-hoop", "θ̇ sin θ + 5", "1 = 1"),  # a total derivative and a constant: no motion at all
+    ],
+)
+def test_equations_that_determine_no_acceleration_earn_no_method_credit(tmp_path, problem, lagrangian, motion):
+    path = tmp_path / "a.yaml"
+    path.write_text(f"schema_version: 1\nid: a\ntitle: A\nproblems:\n  - problem: {problem}\n")
+    answers = {f"{problem}.lagrangian": lagrangian, f"{problem}.motion": motion}
+    grade = grade_submission(Submission(Student("s"), answers), load_assignment(path, BANK), BANK)
+    graded = next(p for p in grade.parts if p.part == "motion")
+    assert graded.auto_score == 0 and graded.method != "error carried forward"
+
+
 def test_an_answer_given_word_for_word_is_graded_once_a_run(tmp_path, monkeypatch):
     assignment = _pendulum_only(tmp_path)
     right, wrong = PENDULUM_L, "1/2 m l^2 thetadot^2 - m g l cos(theta)"

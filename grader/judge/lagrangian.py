@@ -22,6 +22,7 @@ import mpmath
 import numpy as np
 import sympy
 
+from grader.errors import ReferenceAnswerError
 from grader.judge.deadline import Deadline
 from grader.judge.diagnose import expand_terms, small_angle, taylor, term_changes, terms
 from grader.judge.expected import Expected, Outcome, prepare
@@ -66,15 +67,40 @@ def equations_of_motion(lagrangian: str, *, coords, known=(), domains=None, dime
     ``coords``, ``known``, ``domains`` and ``dimensions`` as :func:`~grader.judge.compare` takes them.
 
     Raises:
-        ReferenceAnswerError: when the Lagrangian cannot be read.
+        ReferenceAnswerError: when the Lagrangian cannot be read, or its equations do not
+            determine the accelerations (``m g l cos θ`` has no kinetic term: ``sin θ = 0``
+            is no equation of motion).
     """
     expected = prepare(
         lagrangian, "lagrangian", tuple(coords), tuple(known), tuple(sorted((domains or {}).items())),
         dimensions=tuple(sorted((dimensions or {}).items())),
     )  # fmt: skip
+    if not _determines_accelerations(expected.value, expected.setting):
+        raise ReferenceAnswerError(
+            f"no equations of motion follow from the Lagrangian {lagrangian!r}: they do not determine every"
+            " acceleration (its second derivatives in the velocities are singular; is a kinetic term missing?)"
+        )
     back = {symbol: node for node, symbol in expected.setting.aliases.items()}
     equations = euler_lagrange(expected.value, expected.setting)
     return "; ".join(f"{to_text(sympy.expand(e).xreplace(back))} = 0" for e in equations)
+
+
+def _determines_accelerations(lagrangian, setting: Setting) -> bool:
+    """Whether Lagrange's equations can be solved for the accelerations: ∂²L/∂q̇ᵢ∂q̇ⱼ is regular.
+
+    Its determinant is evaluated at a few seeded states (``simplify`` takes seconds on a double
+    pendulum's); a regular matrix is singular at none of them but on a set of measure zero.
+    """
+    velocities = [setting.velocity(q) for q in setting.coords]
+    determinant = sympy.hessian(lagrangian, velocities).det(method="berkowitz")
+    symbols = sorted(determinant.free_symbols, key=str)
+    generator = np.random.default_rng(20261123)
+    for _ in range(3):
+        point = {s: sympy.Rational(int(generator.integers(11, 97)), 37) for s in symbols}
+        value = sympy.N(determinant.xreplace(point), 30)
+        if value.is_number and value.is_finite and abs(value) > 1e-20:
+            return True
+    return False
 
 
 def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
