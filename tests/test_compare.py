@@ -581,6 +581,10 @@ def test_partial_credit_for_a_rescaled_lagrangian_is_the_parts_option():
         L_PENDULUM + " - m g l",
         L_PENDULUM + " + 2 θ θ̇",  # d/dt(θ²)
         L_PENDULUM + " + m l θ̇ cos θ",  # d/dt(m l sin θ)
+        # large ones: each equation cancels terms far above its value, and draws' ratios agree to 10⁻¹²
+        L_PENDULUM + " + 1000 θ̇ sin θ",
+        L_PENDULUM + " + d/dt(θ^6)",
+        L_PENDULUM + " + 10^6 θ̇ θ^2",
         "L = " + L_PENDULUM,
     ],
 )

@@ -178,17 +178,20 @@ def _ratio_of(columns, proportional, *, precise: bool) -> tuple[complex | Closen
         return proportional, False
     first, *others = proportional.values()
     named = all(closeness(first, other, abs(first)) is Closeness.EQUAL for other in others)
-    k = short_fraction(float(first.real)) if named and abs(first.imag) <= 1e-9 * abs(first) else None
-    if k is not None:
-        for column in columns:
-            for a, scale_a, b, scale_b in column:
-                if not math.isfinite(scale_a + scale_b):
-                    continue
-                scale = max(scale_a, scale_b) * max(1.0, abs(float(k)))
-                if closeness(a * k.numerator / k.denominator, b, scale, precise=precise) is not Closeness.EQUAL:
-                    return None, False
-        return complex(float(k)), True
-    return first, named
+    # A ratio is taken on values that may be small beside the terms that made them (L + 1000 θ̇ sin θ
+    # cancels 10³ in each equation), so draws agree only to 10⁻¹²: a short number near the first
+    # is tried even when they differ, and the check at every point, on the terms' scale, decides.
+    k = short_fraction(float(first.real)) if abs(first.imag) <= 1e-9 * abs(first) else None
+    if k is None:
+        return first, named
+    for column in columns:
+        for a, scale_a, b, scale_b in column:
+            if not math.isfinite(scale_a + scale_b):
+                continue
+            scale = max(scale_a, scale_b) * max(1.0, abs(float(k)))
+            if closeness(a * k.numerator / k.denominator, b, scale, precise=precise) is not Closeness.EQUAL:
+                return (None, False) if named else (first, False)
+    return complex(float(k)), True
 
 
 def _proportional(columns: list[list[tuple]], *, precise: bool = False):
