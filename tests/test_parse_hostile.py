@@ -252,6 +252,11 @@ FORMERLY_ACCEPTED = [
     ("m + exp(exp(exp(100)))", "value_too_large"),  # nor the printer's ordering of the terms
     ("theta/dt", "leibniz"),  # a dt that is no derivative: refused, never read as a quotient
     ("dx/dt^2", "leibniz"),  # the orders of d and dt disagree
+    # a power on a bare angle was read as sin(θ²); who writes it in a Lagrangian mostly means sin²θ
+    ("sin θ^2", "function_argument_power"),
+    ("ω^2 sin θ² + 1", "function_argument_power"),
+    ("\\sin\\theta^2", "function_argument_power"),
+    ("cos 2θ^2", "function_argument_power"),
 ]
 
 
@@ -347,6 +352,12 @@ SHOWN = [
         "2 \u0441\u0442\u0435\u043f\u0435\u043d\u0438",
         "`\u0441` is not something an answer can contain.",
         "2 \u0441\u0442\u0435\u043f\u0435\u043d\u0438\n  ^",
+    ),
+    (
+        "m R^2 ω^2 sin θ^2",
+        "A power after `sin θ` can be read two ways: write sin^2 θ for a power of sin θ, or sin(θ^2) to take the"
+        " power inside.",
+        "m R^2 ω^2 sin θ^2\n" + " " * 14 + "^^",
     ),
     (
         "θ̈ = -g/l θ (θ -> 0)",

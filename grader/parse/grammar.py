@@ -705,11 +705,13 @@ class _Parser:
 
     def name_argument(self, function: str):
         """A glued name as a function's bare argument, and the factor after it that is not in it.
+        A power on a trigonometric function's bare argument (``sin θ^2``) is refused as ambiguous.
 
         ``cos ωt`` is cos(ωt) and ``sin kx`` sin(kx), but ``sin²θφ̇²`` is sin²θ · φ̇²: a velocity
         or an acceleration is never part of an angle, so a trigonometric function's argument ends
         before one (``sqrt lθ̇`` stays √(lθ̇)).
         """
+        named = self.token
         *prefix, base = self.name(self.advance())
         pieces = [*prefix, base]
         angle = function in _ANGLE_FUNCTIONS
@@ -717,6 +719,11 @@ class _Parser:
             (i for i, piece in enumerate(pieces) if angle and i and isinstance(piece, sympy.Derivative)), len(pieces)
         )
         if cut == len(pieces):
+            if angle and (self.token.kind == "sup" or self.token.is_op("^")):
+                # sin θ² is sin(θ²) to a mathematician and sin²θ to most who write it in a Lagrangian
+                raise ParseFailure(
+                    "function_argument_power", named.start, self.token.end, name=function, argument=self.source(named)
+                )
             return sympy.Mul(*prefix, self.exponent_of(base)), sympy.S.One
         return sympy.Mul(*pieces[:cut]), sympy.Mul(*pieces[cut:-1], self.exponent_of(base))
 

@@ -55,6 +55,8 @@ MESSAGES: dict[str, str] = {
     "unit_is_a_name": "`{name}` in this unit is also a name of the problem's: leave the unit out of the answer.",
     "function_inverse": "`{name}^-1` is ambiguous: write a{name}(x) for the inverse function or 1/{name}(x) for the reciprocal.",
     "function_power": "A power written on a function name must be a small whole number, as in sin^2(θ).",
+    "function_argument_power": "A power after `{name} {argument}` can be read two ways: write {name}^2 {argument} for a"
+    " power of {name} {argument}, or {name}({argument}^2) to take the power inside.",
     "missing_argument": "`{name}` needs an argument, as in {name}(θ).",
     "derivative_of_constant": "`{name}` is written as a time derivative, but {base} is not a coordinate of this problem ({coords}).",
     "derivative_order": "Derivatives of order higher than 3 are not accepted here.",
