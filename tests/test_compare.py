@@ -198,6 +198,36 @@ FEEDBACK = [
 ]  # fmt: skip
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "score", "feedback"),
+    [
+        # working on paper, then the tidier form: each line the same equation
+        (EOM_PENDULUM, "m l² θ̈ = −m g l sin θ\nθ̈ = −(g/l) sin θ", "equation", "equivalent", 1,
+         ("Correct.", "Your answer has 2 lines, each the same; the last was graded.")),
+        (EOM_PENDULUM, "m l² θ̈ = −m g l sin θ; θ̈ = −(g/l) sin θ", "equation", "equivalent", 1,
+         ("Correct.", "Your answer has 2 lines, each the same; the last was graded.")),
+        # a slip on the way, put right by the end: which is the answer, a person says
+        (EOM_PENDULUM, "m l² θ̈ = m g l sin θ\nθ̈ = g/l sin θ\nθ̈ = −(g/l) sin θ", "equation", "undecided", 1,
+         ("Your last line is right, but lines 1, 2 do not say the same: a person will decide which is your"
+          " answer.",)),
+        # right, then spoiled: the last line is the answer, and its mistake is named
+        (EOM_PENDULUM, "m l² θ̈ = −m g l sin θ\nθ̈ = (g/l) sin θ", "equation", "not_equivalent", 0,
+         ("A term differs: the term in sin(θ) has the wrong sign.",
+          "Your answer has 2 lines; the last was graded as your answer.")),
+        # the Lagrangian written twice; was read as the equation X = X
+        (L_PENDULUM, f"L = {L_PENDULUM}\nL = {L_PENDULUM}", "lagrangian", "equivalent", 1,
+         ("Correct.", "Your answer has 2 lines, each the same; the last was graded.")),
+        (L_PENDULUM, f"L = 1/2 m l^2 θ̇^2 - m g l cos θ\nL = {L_PENDULUM}", "lagrangian", "undecided", 1,
+         ("Your last line is right, but line 1 does not say the same: a person will decide which is your answer.",)),
+    ],
+)  # fmt: skip
+def test_one_equation_written_on_several_lines_is_graded_by_its_last(
+    expected, submitted, kind, status, score, feedback
+):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback)
+
+
 DRY_FRICTION = "m xddot + b xdot + k x + mu m g sign(xdot) = 0"
 FRICTION = {"coords": ["x"], "known": ["m", "b", "k", "mu", "g"]}
 

@@ -169,6 +169,9 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
+    lines = _lines(submitted) if verdict.diagnosis in _ONE_THING_ASKED else None
+    if lines:
+        verdict = _judge_lines(spec, prepared, lines, timeout - (time.monotonic() - started), values, verdict)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
@@ -176,6 +179,57 @@ def compare(
     if _judge(spec, prepared, listed, left, values).status != "equivalent":
         return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+# one equation, or one expression, is asked for, and the answer has several lines
+_ONE_THING_ASKED = frozenset({"expected_one_equation", "expected_expression"})
+_MAX_LINES = 6
+
+
+def _lines(text: str) -> list[str] | None:
+    """The lines of ``text`` (split at new lines and at ``;`` outside brackets), where it has two
+    to six; else None."""
+    if not isinstance(text, str) or len(text) > LIMITS.length:
+        return None
+    lines, depth, start = [], 0, 0
+    for i, character in enumerate(text):
+        depth += (character in "([{") - (character in ")]}")
+        if character == "\n" or (character == ";" and depth == 0):
+            lines.append(text[start:i])
+            start = i + 1
+    lines = [line for line in [*lines, text[start:]] if line.strip()]
+    return lines if 2 <= len(lines) <= _MAX_LINES else None
+
+
+def _judge_lines(
+    spec: Kind, expected: Expected, lines: list[str], timeout: float, given: tuple, whole: Verdict
+) -> Verdict:
+    """One equation (or one expression) asked for, written on several lines: the working on paper,
+    ``m l² θ̈ = −m g l sin θ`` then ``θ̈ = −(g/l) sin θ``, or the answer written twice. Where each line
+    reads alone as the thing asked for, the last is graded; where it is right but an earlier line is
+    not the same, which is the answer is for a person to say. Otherwise the whole, as it was."""
+    verdicts = []
+    for line in lines:
+        started = time.monotonic()
+        if timeout <= 0:
+            return whole
+        verdict = _judge(spec, expected, line, timeout, given)
+        if verdict.status == "invalid" or verdict.diagnosis in (*_ONE_THING_ASKED, "expected_equation"):
+            return whole
+        verdicts.append(verdict)
+        timeout -= time.monotonic() - started
+    *earlier, last = verdicts
+    wrong = [str(number) for number, verdict in enumerate(earlier, start=1) if verdict.status != "equivalent"]
+    count = {"count": len(lines)}
+    if last.status == "equivalent" and wrong:
+        one = len(wrong) == 1
+        details = {"lines": f"line {wrong[0]}" if one else f"lines {', '.join(wrong)}", "do": "does" if one else "do"}
+        feedback = (say("last_line_right_earlier_not", **details),)
+        # the score the last line earns, proposed to the person who decides
+        return replace(last, status="undecided", feedback=feedback, method="lines", diagnosis="lines_differ", notes=())
+    note = say("lines_agree" if last.status == "equivalent" else "last_line_graded", **count)
+    feedback = tuple(dict.fromkeys([*last.feedback, note]))
+    return replace(last, feedback=feedback, notes=(*last.notes, note))
 
 
 # a line that starts with a dash and a space: a Markdown list's bullet, or a minus sign?
