@@ -1024,6 +1024,11 @@ def test_a_name_that_is_not_only_in_constant_terms_is_undefined(expected, submit
     assert not verdict.notes
 
 
+MOTION_LEFT_OUT = (
+    "The equation of motion after your Lagrangian was not graded: the Lagrangian is what is asked for here."
+)
+
+
 def _working(*names):
     if len(names) == 1:
         return f"The line that defines `{names[0]}` was read as your working: it is not graded."
@@ -1052,6 +1057,14 @@ def _working(*names):
          (_working("L"),)),
         (L_PENDULUM, "T = ½ m l² θ̇²; V = m g l cos θ; L = ½ m l² θ̇² − m g l cos θ", "lagrangian", "not_equivalent",
          (_working("T", "V"),)),
+        # the equations derived after the Lagrangian asked for: L was told it is undefined
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; m l² θ̈ + m g l sin θ = 0", "lagrangian", "equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, "T = ½ m l² θ̇²; V = −m g l cos θ; L = ½ m l² θ̇² + m g l cos θ\nm l² θ̈ + m g l sin θ = 0\n"
+         "θ̈ = −(g/l) sin θ", "lagrangian", "equivalent",
+         (_working("T", "V"), MOTION_LEFT_OUT.replace("equation", "equations").replace("was", "were"))),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ; m l² θ̈ − m g l sin θ = 0", "lagrangian", "not_equivalent",
+         (MOTION_LEFT_OUT,)),
     ],
 )  # fmt: skip
 def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):
@@ -1068,6 +1081,7 @@ def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, sub
         ("1/2 m l^2 thetadot^2", "T = ½ m l² θ̇²; V = −m g l cos θ", "expression"),  # V is not a kinetic energy
         (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; θ̈ = −(g/l) sin θ; θ̈ = −(g/l) θ", "equation"),  # two answers
         (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; p = m l² θ̇", "equation"),  # nothing but working
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; θ̇ = 0", "lagrangian"),  # no equation of motion after L
     ],
 )
 def test_working_is_not_read_where_the_answer_would_be_a_guess(expected, submitted, kind):

@@ -287,7 +287,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer = _with_definitions(answer, expected, deadline)
                 answer, working = _without_working(answer, spec, expected)
-                read_notes += (working,) if working else ()
+                read_notes += working
                 energies = _energies_alone(answer, spec, expected, deadline)
                 if energies:
                     return _verdict(energies, answer)
@@ -461,27 +461,34 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
     return ParsedAnswer(answer.text, tuple(items), "equations")
 
 
-def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple | None]:
+def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple]:
     """``T = ½ m l² θ̇²; V = −m g l cos θ; L = ½ m l² θ̇² + m g l cos θ`` for a Lagrangian, or
     ``L = ½ m l² θ̇² + m g l cos θ; m l² θ̈ + m g l sin θ = 0`` for an equation of motion: lines that
     each give a name of its own to a quantity in the problem's names, a name no other line uses, are
     the working that led to the answer, as on paper. Where an expression is asked for, every line
     must be one, and the answer is the last, named as the answer is (:func:`_names_the_answer`);
-    where equations are asked for, the answer is the lines that are not. Returns the answer and a
-    note naming the lines left out (or None)."""
+    where equations are asked for, the answer is the lines that are not. Where a Lagrangian is asked
+    for, the equations of motion derived from it after it (``L = …; m l² θ̈ + m g l sin θ = 0``) are
+    left out too. Returns the answer and the notes naming the lines left out."""
     if answer.kind != "equations" or spec.shape is None or spec.name in ("integer", "number"):
-        return answer, None  # a number's working is read where it is asked for (see read_number)
+        return answer, ()  # a number's working is read where it is asked for (see read_number)
     items = answer.value
     named = [_quantity_named(item, items, expected) for item in items]
+    motion = _motion_after(items, named, expected) if spec.name == "lagrangian" else 0
+    plural = {"s": "s" if motion > 1 else "", "were": "were" if motion > 1 else "was"}
+    notes = (("motion_left_out", plural),) if motion else ()
+    items, named = items[: len(items) - motion], named[: len(named) - motion]
+    if len(items) == 1:
+        return ParsedAnswer(answer.text, items[0], "equation"), notes
     if spec.shape == "expression":
         if not all(named) or not _names_the_answer(named[-1].name, spec):
-            return answer, None
+            return answer, ()
         rest, left = [items[-1]], named[:-1]
     else:
         rest = [item for item, name in zip(items, named, strict=True) if name is None]
         left = [name for name in named if name is not None]
         if not left or not rest or (spec.shape == "equation" and len(rest) != 1):
-            return answer, None
+            return answer, ()
     one = len(left) == 1
     details = {
         "names": _listing([symbol.name for symbol in left]),
@@ -489,10 +496,28 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
         "were": "was" if one else "were",
         "they": "it is" if one else "they are",
     }
-    note = ("working_left_out", details)
+    notes = (("working_left_out", details), *notes)
     if len(rest) == 1:
-        return ParsedAnswer(answer.text, rest[0], "equation"), note
-    return ParsedAnswer(answer.text, tuple(rest), "equations"), note
+        return ParsedAnswer(answer.text, rest[0], "equation"), notes
+    return ParsedAnswer(answer.text, tuple(rest), "equations"), notes
+
+
+def _motion_after(items: tuple, named: list, expected: Expected) -> int:
+    """How many of the last ``items`` are equations of motion (unnamed, in the problem's names, each
+    with an acceleration) that follow a line naming L: derived from the answer, not part of it."""
+    count = 0
+    for item, name in zip(reversed(items), reversed(named), strict=True):
+        if name is not None:
+            break
+        accelerations = {expected.setting.node(q, 2) for q in expected.setting.coords}
+        if not (accelerations & item.atoms(sympy.Derivative)) or any(
+            symbol.name not in expected.names for symbol in item.free_symbols
+        ):
+            return 0
+        count += 1
+    if count == len(items) or named[len(items) - count - 1].name != "L":
+        return 0
+    return count
 
 
 def _energies_alone(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> Outcome | None:

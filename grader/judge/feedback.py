@@ -43,6 +43,8 @@ FEEDBACK: dict[str, str] = {
     "constant_unsure": "{names} {appear} only in {terms} with no coordinate or velocity, and this problem does not"
     " define {them}. Your answer was judged with {them} as a constant; if {names} {changes} with the motion, write"
     " {them} in the problem's coordinates. A person will check this answer.",
+    "motion_left_out": "The equation{s} of motion after your Lagrangian {were} not graded: the Lagrangian is what is"
+    " asked for here.",
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
     "words_for_a_person": "Your answer says `{words}` beside the formula. The formula was graded on its own;"
