@@ -169,9 +169,12 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
-    lines = _lines(submitted) if verdict.diagnosis in _ONE_THING_ASKED else None
+    lines, parts = (_lines(submitted), "line") if verdict.diagnosis in _ONE_THING_ASKED else (None, "")
+    if getattr(verdict.answer, "code", None) == "too_many_equals" and spec.shape == "expression":
+        lines, parts = _sides(submitted), "side"
     if lines:
-        verdict = _judge_lines(spec, prepared, lines, timeout - (time.monotonic() - started), values, verdict)
+        left = timeout - (time.monotonic() - started)
+        verdict = _judge_lines(spec, prepared, lines, left, values, verdict, parts)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
@@ -201,13 +204,35 @@ def _lines(text: str) -> list[str] | None:
     return lines if 2 <= len(lines) <= _MAX_LINES else None
 
 
+# `=` that is not part of =>, ==, <=, >= or :=
+_EQUALS = re.compile(r"(?<![=<>:!])=(?![=>])")
+
+
+def _sides(text: str) -> list[str] | None:
+    """``L = ½ m (l θ̇)² + … = ½ m l² θ̇² + …`` on one line: ``L = `` with each side after it, where
+    the first is a name (a label) and there are two to six sides after it; else None."""
+    if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip():
+        return None
+    sides, depth, start = [], 0, 0
+    for i, character in enumerate(text):
+        depth += (character in "([{") - (character in ")]}")
+        if depth == 0 and _EQUALS.match(text, i):
+            sides.append(text[start:i])
+            start = i + 1
+    label, *sides = [*sides, text[start:]]
+    if not re.fullmatch(r"\s*[^\W\d][\w\s(),'̇]*", label) or not 2 <= len(sides) <= _MAX_LINES:
+        return None
+    return [f"{label.strip()} = {side.strip()}" for side in sides] if all(side.strip() for side in sides) else None
+
+
 def _judge_lines(
-    spec: Kind, expected: Expected, lines: list[str], timeout: float, given: tuple, whole: Verdict
+    spec: Kind, expected: Expected, lines: list[str], timeout: float, given: tuple, whole: Verdict, parts="line"
 ) -> Verdict:
     """One equation (or one expression) asked for, written on several lines: the working on paper,
-    ``m l² θ̈ = −m g l sin θ`` then ``θ̈ = −(g/l) sin θ``, or the answer written twice. Where each line
-    reads alone as the thing asked for, the last is graded; where it is right but an earlier line is
-    not the same, which is the answer is for a person to say. Otherwise the whole, as it was."""
+    ``m l² θ̈ = −m g l sin θ`` then ``θ̈ = −(g/l) sin θ``, or the answer written twice; or, as
+    ``parts="side"``, a chain ``L = … = …`` (each given as ``L = side``). Where each reads alone as
+    the thing asked for, the last is graded; where it is right but an earlier one is not the same,
+    which is the answer is for a person to say. Otherwise the whole, as it was."""
     verdicts = []
     for line in lines:
         started = time.monotonic()
@@ -219,11 +244,19 @@ def _judge_lines(
         verdicts.append(verdict)
         timeout -= time.monotonic() - started
     *earlier, last = verdicts
-    wrong = [str(number) for number, verdict in enumerate(earlier, start=1) if verdict.status != "equivalent"]
-    count = {"count": len(lines)}
+    if last.diagnosis == "number_for_formula":
+        return whole  # ω = √(g/l) = 3.13: the formula, then its value for numbers of the student's own
+    # L = T − V = …: a side in names of the answer's own is its definition, not a step to check
+    wrong = [
+        str(number)
+        for number, verdict in enumerate(earlier, start=1)
+        if verdict.status != "equivalent" and not (parts == "side" and verdict.diagnosis == "undefined_symbol")
+    ]
+    count = {"count": len(lines), "parts": f"{parts}s" + (" after the name" if parts == "side" else "")}
     if last.status == "equivalent" and wrong:
         one = len(wrong) == 1
-        details = {"lines": f"line {wrong[0]}" if one else f"lines {', '.join(wrong)}", "do": "does" if one else "do"}
+        listed = f"{parts} {wrong[0]}" if one else f"{parts}s {', '.join(wrong)}"
+        details = {"lines": listed, "do": "does" if one else "do", "part": parts}
         feedback = (say("last_line_right_earlier_not", **details),)
         # the score the last line earns, proposed to the person who decides
         return replace(last, status="undecided", feedback=feedback, method="lines", diagnosis="lines_differ", notes=())

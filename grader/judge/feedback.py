@@ -85,9 +85,9 @@ FEEDBACK: dict[str, str] = {
     "undefined_units": "Your answer uses {names}, which this problem does not define: units, it seems."
     " A formula in the problem's own symbols is asked for here, and its units follow from theirs.",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
-    "lines_agree": "Your answer has {count} lines, each the same; the last was graded.",
-    "last_line_graded": "Your answer has {count} lines; the last was graded as your answer.",
-    "last_line_right_earlier_not": "Your last line is right, but {lines} {do} not say the same: a person"
+    "lines_agree": "Your answer has {count} {parts}, each the same; the last was graded.",
+    "last_line_graded": "Your answer has {count} {parts}; the last was graded as your answer.",
+    "last_line_right_earlier_not": "Your last {part} is right, but {lines} {do} not say the same: a person"
     " will decide which is your answer.",
     "expected_one_equation": "One equation is asked for here; your answer has {count}.",
     "eliminate_unknowns": "One equation is asked for here; your answer has {count}, with {names}, which this problem"
