@@ -192,6 +192,8 @@ DERIVATIVES = [
     ("theta1dot", D(theta1)),
     ("theta1'", D(theta1)),
     ("θ̇₁", D(theta1)),
+    ("θ̇_{1}", D(theta1)),  # a Unicode dot, then TeX's braced subscript: was refused at the `_`
+    ("θ̈_{1} + θ̇_{1}^2", D(theta1, 2) + D(theta1) ** 2),
     ("\\dot{\\theta}_1", D(theta1)),
     ("\\dot\\theta_1", D(theta1)),
     ("\\dot{\\theta_1}", D(theta1)),

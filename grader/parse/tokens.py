@@ -853,9 +853,11 @@ class _Tokenizer:
                 if any(m not in _COMBINING_DOTS for m in marks):
                     raise ParseFailure("bad_character", self.pos - 1, self.pos, char=c)
                 dots += sum(_COMBINING_DOTS[m] for m in marks)
-                # a dot ends the name, but its subscript may follow: θ̇₁, θ̇_1, ṗ_θ
+                # a dot ends the name, but its subscript may follow: θ̇₁, θ̇_1, ṗ_θ, θ̇_{1}
                 match = _SUBSCRIPT_AFTER_DOT.match(text, self.pos)
-                if match:  # ṗ_θ: a letter's subscript too, Greek by name
+                if text.startswith("_{", self.pos):
+                    self._subscript(raw)
+                elif match:  # ṗ_θ: a letter's subscript too, Greek by name
                     sub = match[0].lstrip("_")
                     raw.append("_" + "".join(GREEK_BY_LETTER.get(d, SUBSCRIPT_DIGITS.get(d, d)) for d in sub))
                     self.pos = match.end()
