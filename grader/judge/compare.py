@@ -539,10 +539,10 @@ def _motion_after(items: tuple, named: list, expected: Expected) -> int:
     """How many of the last ``items`` are equations of motion (unnamed, in the problem's names, each
     with an acceleration) that follow a line naming L: derived from the answer, not part of it."""
     count = 0
+    accelerations = {expected.setting.node(q, 2) for q in expected.setting.coords}
     for item, name in zip(reversed(items), reversed(named), strict=True):
         if name is not None:
             break
-        accelerations = {expected.setting.node(q, 2) for q in expected.setting.coords}
         if not (accelerations & item.atoms(sympy.Derivative)) or any(
             symbol.name not in expected.names for symbol in item.free_symbols
         ):
