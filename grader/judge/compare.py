@@ -32,7 +32,7 @@ from grader.judge.expression import check_expression
 from grader.judge.feedback import say
 from grader.judge.given import given_values, in_given_names
 from grader.judge.lagrangian import check_lagrangian
-from grader.judge.motion import check_equation, check_equations
+from grader.judge.motion import accelerations_in, check_equation, check_equations
 from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
 from grader.judge.scalar import check_choice, check_integer, check_number
@@ -194,14 +194,21 @@ def _lines(text: str) -> list[str] | None:
     to six; else None."""
     if not isinstance(text, str) or len(text) > LIMITS.length:
         return None
-    lines, depth, start = [], 0, 0
+    cut = _cut(text, lambda i, depth: text[i] == "\n" or (text[i] == ";" and depth == 0))
+    lines = [line for line in cut if line.strip()]
+    return lines if 2 <= len(lines) <= _MAX_LINES else None
+
+
+def _cut(text: str, at: Callable[[int, int], bool]) -> list[str]:
+    """``text`` cut at (and without) each one-character separator ``at(position, depth)`` accepts,
+    where depth counts the brackets open there."""
+    pieces, depth, start = [], 0, 0
     for i, character in enumerate(text):
         depth += (character in "([{") - (character in ")]}")
-        if character == "\n" or (character == ";" and depth == 0):
-            lines.append(text[start:i])
+        if at(i, depth):
+            pieces.append(text[start:i])
             start = i + 1
-    lines = [line for line in [*lines, text[start:]] if line.strip()]
-    return lines if 2 <= len(lines) <= _MAX_LINES else None
+    return [*pieces, text[start:]]
 
 
 # `=` that is not part of =>, ==, <=, >= or :=
@@ -213,13 +220,7 @@ def _sides(text: str) -> list[str] | None:
     the first is a name (a label) and there are two to six sides after it; else None."""
     if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip():
         return None
-    sides, depth, start = [], 0, 0
-    for i, character in enumerate(text):
-        depth += (character in "([{") - (character in ")]}")
-        if depth == 0 and _EQUALS.match(text, i):
-            sides.append(text[start:i])
-            start = i + 1
-    label, *sides = [*sides, text[start:]]
+    label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
     if not re.fullmatch(r"\s*[^\W\d][\w\s(),'̇]*", label) or not 2 <= len(sides) <= _MAX_LINES:
         return None
     return [f"{label.strip()} = {side.strip()}" for side in sides] if all(side.strip() for side in sides) else None
@@ -539,11 +540,10 @@ def _motion_after(items: tuple, named: list, expected: Expected) -> int:
     """How many of the last ``items`` are equations of motion (unnamed, in the problem's names, each
     with an acceleration) that follow a line naming L: derived from the answer, not part of it."""
     count = 0
-    accelerations = {expected.setting.node(q, 2) for q in expected.setting.coords}
     for item, name in zip(reversed(items), reversed(named), strict=True):
         if name is not None:
             break
-        if not (accelerations & item.atoms(sympy.Derivative)) or any(
+        if not accelerations_in(item, expected) or any(
             symbol.name not in expected.names for symbol in item.free_symbols
         ):
             return 0

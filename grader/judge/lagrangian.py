@@ -27,7 +27,7 @@ from grader.judge.deadline import Deadline
 from grader.judge.diagnose import expand_terms, small_angle, taylor, term_changes, terms
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import expected_terms, same_values, single_term_change, term_outcome
-from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, Closeness, Compiled, closeness
+from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, NotCompilable, closeness
 from grader.judge.sampling import (
     GROUP,
     MIN_DEFINED,
@@ -75,7 +75,7 @@ def equations_of_motion(lagrangian: str, *, coords, known=(), domains=None, dime
         lagrangian, "lagrangian", tuple(coords), tuple(known), tuple(sorted((domains or {}).items())),
         dimensions=tuple(sorted((dimensions or {}).items())),
     )  # fmt: skip
-    if not _determines_accelerations(expected.value, expected.setting):
+    if not _determines_accelerations(expected):
         raise ReferenceAnswerError(
             f"no equations of motion follow from the Lagrangian {lagrangian!r}: they do not determine every"
             " acceleration (its second derivatives in the velocities are singular; is a kinetic term missing?)"
@@ -85,22 +85,29 @@ def equations_of_motion(lagrangian: str, *, coords, known=(), domains=None, dime
     return "; ".join(f"{to_text(sympy.expand(e).xreplace(back))} = 0" for e in equations)
 
 
-def _determines_accelerations(lagrangian, setting: Setting) -> bool:
+def _determines_accelerations(expected: Expected) -> bool:
     """Whether Lagrange's equations can be solved for the accelerations: ∂²L/∂q̇ᵢ∂q̇ⱼ is regular.
 
-    Its determinant is evaluated at a few seeded states (``simplify`` takes seconds on a double
-    pendulum's); a regular matrix is singular at none of them but on a set of measure zero.
+    Its determinant is evaluated at the sample states at 40 digits (``simplify`` takes seconds on
+    a double pendulum's): it is singular only where it is 0 at every state the numbers can tell.
     """
-    velocities = [setting.velocity(q) for q in setting.coords]
-    determinant = sympy.hessian(lagrangian, velocities).det(method="berkowitz")
-    symbols = sorted(determinant.free_symbols, key=str)
-    generator = np.random.default_rng(20261123)
-    for _ in range(3):
-        point = {s: sympy.Rational(int(generator.integers(11, 97)), 37) for s in symbols}
-        value = sympy.N(determinant.xreplace(point), 30)
-        if value.is_number and value.is_finite and abs(value) > 1e-20:
+    setting = expected.setting
+    determinant = sympy.hessian(expected.value, [setting.velocity(q) for q in setting.coords]).det(method="berkowitz")
+    if determinant == 0:
+        return False
+    compiled, told = Compiled(determinant, expected.variables), False
+    for point in expected.points(expected.point_count, group=GROUP).tolist():
+        try:
+            value, scale = compiled.precise(point)
+        except UNDEFINED:
+            continue
+        except NotCompilable:  # |θ̇|'s second derivative is a delta: the numbers cannot say
             return True
-    return False
+        seen = closeness(value, 0, scale, precise=True)
+        if seen is Closeness.DIFFERENT:
+            return True
+        told = told or seen is Closeness.EQUAL
+    return not told  # unsure at every state (or defined at none): not called singular
 
 
 def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:

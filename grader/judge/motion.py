@@ -3,6 +3,7 @@
 Contents:
     check_equation(expected, answer, deadline)    one equation
     check_equations(expected, answer, deadline)   a system of equations of motion
+    accelerations_in(expr, expected)              the coordinates whose acceleration it holds
 
 An equation of motion is linear in the accelerations: Σₖ cₖ(q, q̇, t) q̈ₖ + b(q, q̇, t) = 0.
 At each sample state the coefficients are read off numerically, with no symbolic
@@ -60,7 +61,7 @@ from grader.judge.sampling import GROUP, MIN_DEFINED, precise_side_by_side, side
 from grader.parse import ParsedAnswer
 from grader.parse.names import unicode_name
 
-__all__ = ["check_equation", "check_equations"]
+__all__ = ["accelerations_in", "check_equation", "check_equations"]
 
 # accelerations at which linearity is confirmed; the first below 0, where every step is above: |θ̈| is
 # linear for θ̈ > 0
@@ -203,7 +204,7 @@ def _positions(expected: Expected) -> list[int]:
     return [index[expected.setting.acceleration(q)] for q in expected.setting.coords]
 
 
-def _accelerations_in(expr, expected: Expected) -> list[str]:
+def accelerations_in(expr, expected: Expected) -> list[str]:
     """The coordinates whose acceleration occurs in ``expr`` (as parsed, or in plain symbols)."""
     setting = expected.setting
     present = expr.free_symbols | expr.atoms(sympy.Derivative)
@@ -393,10 +394,10 @@ def _decided(results: list[Closeness]) -> bool | None:
 def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
     (f,) = _equations(expected.value)
     (g,) = _equations(answer.value)
-    if not _accelerations_in(f, expected):
+    if not accelerations_in(f, expected):
         return _check_relation(expected, f, expected.setting.plain(g), deadline)
-    if not _accelerations_in(g, expected):
-        names = ", ".join(unicode_name(q, 2) for q in _accelerations_in(f, expected))
+    if not accelerations_in(g, expected):
+        names = ", ".join(unicode_name(q, 2) for q in accelerations_in(f, expected))
         return Outcome("not_equivalent", 0.0, "not_equation_of_motion", {"accelerations": names}, "accelerations")
     expected_f = expected.compiled("equation", f)
     submitted_g = expected.compile(g)
@@ -429,7 +430,7 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         # right wherever states are drawn, wrong at rest or at the origin: a vanishing factor
         return Outcome("not_equivalent", 0.0, "vanishing_factor", method="accelerations")
     if _nonlinear(expected, [expected_f], [submitted_g]) == [True]:
-        names = ", ".join(unicode_name(q, 2) for q in _accelerations_in(f, expected))
+        names = ", ".join(unicode_name(q, 2) for q in accelerations_in(f, expected))
         return Outcome("not_equivalent", 0.0, "not_linear", {"accelerations": names}, "accelerations")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
 
@@ -758,7 +759,7 @@ def _leading_acceleration(f, expected: Expected):
     Dividing by l₁ cos(θ₁ − θ₂) would turn l₁ θ̇₁² sin(θ₁ − θ₂) into a term in tan(θ₁ − θ₂), one the
     student never wrote; dividing the same equation by l₂, the coefficient of θ̈₂, keeps every
     term as written, and a description names the term the student can find."""
-    accelerations = [expected.setting.acceleration(q) for q in _accelerations_in(f, expected)]
+    accelerations = [expected.setting.acceleration(q) for q in accelerations_in(f, expected)]
     for acceleration in accelerations:
         if not any(expected.setting.is_state(symbol) for symbol in _coefficient(f, acceleration).free_symbols):
             return acceleration
@@ -1186,10 +1187,10 @@ def _terms_named(expected: Expected, references: Sequence, g, position: int, dea
     equations with the same accelerations are compared. Nothing when no expected equation is
     so near: the student combined or solved the equations, and the terms they wrote are not
     the expected ones."""
-    named, accelerations, plain = [], set(_accelerations_in(g, expected)), None
+    named, accelerations, plain = [], set(accelerations_in(g, expected)), None
     # the one in the same place first: of two equally near, min keeps the first
     for i, f in sorted(enumerate(references), key=lambda item: item[0] != position):
-        if not accelerations or set(_accelerations_in(f, expected)) != accelerations:
+        if not accelerations or set(accelerations_in(f, expected)) != accelerations:
             continue  # θ̈₁ = … solved is no term or two away from an equation in θ̈₁ and θ̈₂
         plain = plain if plain is not None else expected.setting.plain(g)  # built only when compared
         outcome = _diagnose_motion(expected, f, plain, deadline, key=f"equations {i}, normalized")
@@ -1264,7 +1265,7 @@ def _system_outcome(expected: Expected, states: list[_State], theirs: Sequence) 
     # An equation with an acceleration in it is not trivial, even where its coefficient looks
     # like rounding beside a huge constant (ÿ = e³⁰); only those that look trivial are read.
     trivial = [
-        all(state.trivial[j] for state in states) and not _accelerations_in(theirs[j], expected) for j in range(given)
+        all(state.trivial[j] for state in states) and not accelerations_in(theirs[j], expected) for j in range(given)
     ]
     # 0 = 0 holds for every motion; θ₁ = 0 has no acceleration in it either, but is no identity
     empty = [trivial[j] and all(state.empty[j] for state in states) for j in range(given)]
