@@ -167,6 +167,25 @@ def test_a_listed_mistake_keeps_how_the_answer_was_read():
     assert verdict.diagnosis == "mistake"
 
 
+@pytest.mark.parametrize(
+    ("submitted", "mistake"),
+    [
+        ("f = √(g/l)/(2π)", 1),  # the frequency under its own name: still its mistake
+        ("ω = 2π√(l/g)\nf = √(g/l)/(2π)", 0),  # ω, the period's value: the period's mistake, not f's
+        ("ω = √(l/g)\nT = 2π√(l/g)\nf = √(g/l)/(2π)", None),  # ω is wrong and no listed mistake: before, f's
+    ],
+)
+def test_a_listed_mistake_is_matched_by_the_line_that_was_graded(submitted, mistake):
+    problem = load_bank(BANK)["plane-pendulum"]
+    part = problem.part("frequency")
+    verdict = grade_answer(problem, part, submitted)
+    assert verdict.status == "not_equivalent", verdict
+    if mistake is None:
+        assert verdict.diagnosis != "mistake", verdict
+    else:
+        assert verdict.feedback[0] == part.mistakes[mistake].feedback, verdict
+
+
 def test_equations_of_motion_are_derived_from_the_lagrangian_part():
     problem = load_bank(BANK)["plane-pendulum"]
     assert grade_answer(problem, problem.part("motion"), "θ̈ = -(g/l) sin θ").equivalent

@@ -1105,7 +1105,6 @@ def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, sub
     ("expected", "submitted", "kind"),
     [
         (L_PENDULUM, "T = ½ m l² θ̇²; V = −m g l cos θ", "lagrangian"),  # no L: V is not the Lagrangian
-        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; T = ½ m l² θ̇²", "lagrangian"),  # the last line is not L
         ("1/2 m l^2 thetadot^2", "T = ½ m l² θ̇²; V = −m g l cos θ", "expression"),  # V is not a kinetic energy
         (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; θ̈ = −(g/l) sin θ; θ̈ = −(g/l) θ", "equation"),  # two answers
         (EOM_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; p = m l² θ̇", "equation"),  # nothing but working
@@ -2719,6 +2718,50 @@ def test_a_hamiltonian_is_t_plus_v_and_a_tension_t_no_energy():
     # where the problem names a tension T, T + V is no label of energies
     verdict = compare("T + m g", "T + V = T + m g", name="H")
     assert "labelled" not in " ".join(verdict.feedback), verdict
+
+
+OMEGA = {"coords": ["theta"], "name": ["omega", "omega_0"]}
+LAST_OF_TWO = "Your answer has 2 lines; the last was graded as your answer."
+
+
+def _others(*names):
+    if len(names) == 1:
+        return f"The line that defines `{names[0]}` was not graded: ω is what is asked for here."
+    listed = " and ".join(f"`{name}`" for name in names)
+    return f"The lines that define {listed} were not graded: ω is what is asked for here."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "notes"),
+    [
+        # ω, T and f listed where ω is asked: the line labelled ω is graded, wherever it stands
+        ("ω = √(g/l)\nT = 2π√(l/g)\nf = √(g/l)/(2π)", "equivalent", (_others("T", "f"),)),
+        ("T = 2π√(l/g); f = 1/(2π) √(g/l); ω = √(g/l)", "equivalent", (_working("T", "f"),)),  # last, as before
+        ("T = 2π√(l/g); ω = √(g/l); f = 1/(2π) √(g/l)", "equivalent", (_others("T", "f"),)),
+        # before: the last line, f, was graded, and a right ω marked wrong; a wrong ω passed under a right f
+        ("ω = √(l/g)\nT = 2π√(l/g)\nf = √(g/l)/(2π)", "not_equivalent", (_others("T", "f"),)),
+        # two lines name the asked quantity: two answers, judged line by line (before: the last, Correct)
+        ("ω = √(l/g)\nω₀ = √(g/l)", "undecided", ()),
+        ("ω₀ = √(g/l)\nω = √(l/g)", "not_equivalent", (LAST_OF_TWO,)),
+        # a line that uses ω keeps ω's line the answer: before, ω was put in place and T graded
+        ("ω = √(g/l); T = 2π/ω", "equivalent", (_others("T"),)),
+        ("ω² = g/l; T = 2π/ω", "equivalent", (_others("T"),)),
+        # and ω defined from T is ω's value
+        ("T = 2π√(l/g); ω = 2π/T; f = 1/T", "equivalent", (_others("f"),)),
+    ],
+)
+def test_of_several_quantities_listed_the_one_asked_for_is_graded(submitted, status, notes):
+    verdict = compare("sqrt(g/l)", submitted, **OMEGA)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+
+
+def test_a_lagrangian_labelled_l_is_graded_before_other_quantities():
+    # before: the last line is not L, so the answer was a guess, not equivalent
+    verdict = compare(L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ; T = ½ m l² θ̇²", kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.notes) == (
+        "equivalent",
+        ("The line that defines `T` was not graded: L is what is asked for here.",),
+    ), verdict
 
 
 @pytest.mark.parametrize("name", [5, [], [1], ["p", 3], ""])

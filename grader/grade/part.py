@@ -11,7 +11,7 @@ import dataclasses
 from functools import lru_cache
 
 from grader.bank import Part, Problem
-from grader.judge import DEFAULT_TIMEOUT, KINDS, Verdict, compare
+from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
 from grader.judge.lagrangian import equations_of_motion
 
 __all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
@@ -76,14 +76,17 @@ def grade_answer(problem: Problem, part: Part, submitted: str, *, timeout: float
     verdict = compare(expected_answer(problem, part), submitted, **arguments)
     if verdict.status != "not_equivalent" or not part.mistakes:
         return verdict
-    # a mistake is matched by value: a label naming another quantity is said in the verdict's notes
-    # already, and would make the match undecided
-    matching = {**arguments, "name": None} if "name" in KINDS[part.kind].options else arguments
     for mistake in part.mistakes:
-        if compare(mistake.answer, submitted, **matching).equivalent:
+        if _matches(compare(mistake.answer, submitted, **arguments)):
             # the mistake's hint replaces the diagnosis; how the answer was read is still said
             feedback = (mistake.feedback, *verdict.notes)
             return dataclasses.replace(
                 verdict, score=mistake.score, feedback=feedback, diagnosis="mistake", method="mistake"
             )
     return verdict
+
+
+def _matches(verdict: Verdict) -> bool:
+    """Whether the answer is a mistake's, by value: a label naming another quantity (``f = …`` where ω is
+    asked) is said in the verdict's notes already, and goes to a person only when the value is right."""
+    return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis == "label_for_a_person")

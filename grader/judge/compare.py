@@ -169,7 +169,8 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
-    lines, parts = (_lines(submitted), "line") if verdict.diagnosis in _ONE_THING_ASKED else (None, "")
+    several = verdict.diagnosis in _ONE_THING_ASKED or _answered_twice(verdict.answer, prepared)
+    lines, parts = (_lines(submitted), "line") if several else (None, "")
     if getattr(verdict.answer, "code", None) == "too_many_equals" and spec.shape == "expression":
         lines, parts = _sides(submitted), "side"
     if lines:
@@ -187,6 +188,11 @@ def compare(
 # one equation, or one expression, is asked for, and the answer has several lines
 _ONE_THING_ASKED = frozenset({"expected_one_equation", "expected_expression"})
 _MAX_LINES = 6
+
+
+def _answered_twice(answer, expected: Expected) -> bool:
+    """``ω = √(l/g); ω₀ = √(g/l)``: lines labelled with the asked quantity's names, two answers."""
+    return getattr(answer, "kind", None) == "equations" and len(_asked_lines(answer.value, expected)) > 1
 
 
 def _lines(text: str) -> list[str] | None:
@@ -475,7 +481,10 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
     items = list(answer.value)
     while len(items) > 1:
         deadline.check()
-        found = next(((i, d) for i, item in enumerate(items) if (d := _definition(item, items, expected))), None)
+        asked = _asked_line(items, expected)  # ω = √(g/l); T = 2π/ω where ω is asked: ω's line is the answer
+        found = next(
+            ((i, d) for i, item in enumerate(items) if i != asked and (d := _definition(item, items, expected))), None
+        )
         if found is None:
             break
         position, (symbol, value) = found
@@ -514,6 +523,14 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
     items, named = items[: len(items) - motion], named[: len(named) - motion]
     if len(items) == 1:
         return ParsedAnswer(answer.text, items[0], "equation"), notes
+    asked = _asked_lines(items, expected) if spec.shape == "expression" else []
+    if len(asked) > 1:
+        return answer, ()  # two answers for the asked quantity: each line is judged (see _judge_lines)
+    if asked and not (asked[0] == len(items) - 1 and all(named)):  # else the last line, after its working
+        (asked,) = asked
+        others = [item.lhs for number, item in enumerate(items) if number != asked]
+        details = {**_lines_defining(others), "name": _label(items[asked].lhs, expected)}
+        return ParsedAnswer(answer.text, items[asked], "equation"), (("others_left_out", details), *notes)
     if spec.shape == "expression":
         if not all(named) or not _names_the_answer(named[-1].name, spec):
             return answer, ()
@@ -523,17 +540,58 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
         left = [name for name in named if name is not None]
         if not left or not rest or (spec.shape == "equation" and len(rest) != 1):
             return answer, ()
-    one = len(left) == 1
-    details = {
-        "names": _listing([symbol.name for symbol in left]),
+    notes = (("working_left_out", _lines_defining(left)), *notes)
+    if len(rest) == 1:
+        return ParsedAnswer(answer.text, rest[0], "equation"), notes
+    return ParsedAnswer(answer.text, tuple(rest), "equations"), notes
+
+
+def _lines_defining(names: list) -> dict:
+    """How a note names the lines that define ``names``: ``the lines that define `T` and `f` were``."""
+    one = len(names) == 1
+    return {
+        "names": _listing([symbol.name for symbol in names]),
         "lines": "line that defines" if one else "lines that define",
         "were": "was" if one else "were",
         "they": "it is" if one else "they are",
     }
-    notes = (("working_left_out", details), *notes)
-    if len(rest) == 1:
-        return ParsedAnswer(answer.text, rest[0], "equation"), notes
-    return ParsedAnswer(answer.text, tuple(rest), "equations"), notes
+
+
+def _asked_lines(items, expected: Expected) -> list[int]:
+    """Where an answer lists quantities, ``ω = √(g/l); T = 2π√(l/g); f = √(g/l)/(2π)``, and the part
+    names the one it asks for (the option ``name``): the positions of the lines labelled so, where
+    every line labels a quantity of its own; none where a line labels nothing."""
+    names = expected.option("name")
+    if not names or len(items) < 2:
+        return []
+    asked = []
+    for number, item in enumerate(items):
+        label = item.lhs.as_coeff_Mul()[1].as_base_exp()[0]  # ω of ω², L of 2L
+        if not isinstance(label, sympy.Symbol) or label == ANSWER or label.name in expected.names:
+            return []
+        if _is_asked(label.name, names):
+            asked.append(number)
+    return asked
+
+
+def _asked_line(items, expected: Expected) -> int | None:
+    """The position of the one line labelled with the asked quantity's name (see :func:`_asked_lines`);
+    None where no line is, or more than one (``ω = √(l/g); ω₀ = √(g/l)`` is two answers)."""
+    asked = _asked_lines(items, expected)
+    return asked[0] if len(asked) == 1 else None
+
+
+def _is_asked(label: str, names: tuple) -> bool:
+    """Whether a label names the asked quantity: one of ``names``, spelt with or without its ``_``
+    (pφ for p_φ), its stem (p for p_φ), or ∂L/∂φ̇ for p_φ, by its definition."""
+    definition = _MOMENTUM_DEFINED.fullmatch(label)
+    same = {label.replace("_", ""), f"p{definition[1]}" if definition else None}
+    return bool(same & {name.replace("_", "") for name in names}) or label in {name.split("_")[0] for name in names}
+
+
+def _label(side, expected: Expected) -> str:
+    """The asked quantity's name as the note says it: ω, whether the student wrote ω or ω²."""
+    return expected.setting.describe([side.as_coeff_Mul()[1].as_base_exp()[0].name])
 
 
 def _motion_after(items: tuple, named: list, expected: Expected) -> int:
@@ -718,10 +776,9 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     if not isinstance(lhs, sympy.Symbol | AppliedUndef):
         return None  # T − V = …, ẍ = …: no name of one quantity
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
-    definition = _MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
-    same = {label.replace("_", ""), f"p{definition[1]}" if definition else None}
-    if same & {name.replace("_", "") for name in names} or label in {name.split("_")[0] for name in names}:
+    if _is_asked(label, names):
         return None  # pφ for p_φ, and p
+    definition = _MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
     described = expected.setting.describe
     shown = f"∂L/∂{unicode_name(definition[1], 1)}" if definition else described([label])
     return ("label_for_a_person", {"label": shown, "name": described(names[:1])})  # ω, not w too
