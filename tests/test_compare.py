@@ -591,6 +591,15 @@ def test_a_potential_from_another_zero_is_told_so_where_no_constant_is_allowed(s
     assert compare("-m g l cos(theta)", submitted, coords=["theta"], up_to_constant=True).equivalent
 
 
+@pytest.mark.parametrize("name", ["T", "K", ["T", "K"]])
+def test_a_kinetic_energy_with_a_constant_is_not_told_about_a_zero_of_potential(name):
+    verdict = compare("1/2 m l^2 thetadot^2", "1/2 m l^2 thetadot^2 + m g l", coords=["theta"], known=["g"], name=name)
+    assert verdict.feedback == (
+        "Your answer is right but for an added constant: a kinetic energy has none, it is zero when nothing moves.",
+    ), verdict  # before: "does the problem fix a zero, of potential energy say, …?"
+    assert verdict.status == "not_equivalent"
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "coords"),
     [

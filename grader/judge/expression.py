@@ -162,8 +162,9 @@ def check_expression(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
         if constant is None:  # a constant so large that it hides the rest: a person decides
             return Outcome("undecided", 0.0, "undecided", method="numeric: a constant hides the answer")
     elif equal is False and _an_energy(expected) and constant_difference(pairs):
-        # right but for a constant of the motion: a potential measured from another zero than the prompt's
-        return Outcome("not_equivalent", 0.0, "constant_offset")
+        # right but for a constant of the motion: a potential measured from another zero than the prompt's;
+        # a kinetic energy has no zero to choose
+        return Outcome("not_equivalent", 0.0, "constant_offset_kinetic" if _kinetic(expected) else "constant_offset")
     if equal is None:
         deadline.check()
         if symbolic_zero(expected.setting.plain(answer.value) - expected.value, expected.setting):
@@ -209,6 +210,13 @@ def _an_energy(expected: Expected) -> bool:
 
 
 _ENERGY_NAMES = frozenset({"V", "U", "T", "K", "H", "E", "L"})
+_KINETIC_NAMES = frozenset({"T", "K"})
+
+
+def _kinetic(expected: Expected) -> bool:
+    """Whether the part names its quantity a kinetic energy (T, K)."""
+    names = expected.option("name")
+    return bool(names) and names[0].split("_")[0] in _KINETIC_NAMES
 
 
 _MOVED = (1.37, 0.29)  # a variable moved to 1.37 x + 0.29: away from its value, and from 0 where it was 0

@@ -69,6 +69,8 @@ FEEDBACK: dict[str, str] = {
     " in an exponent, or raised to a power that is not a number.",
     "constant_offset": "Your answer is right but for an added constant, which is not allowed here: does the"
     " problem fix a zero, of potential energy say, that your answer does not use?",
+    "constant_offset_kinetic": "Your answer is right but for an added constant: a kinetic energy has none, it is"
+    " zero when nothing moves.",
     "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",
     # "kinetic" and "potential" energy would be wrong words where T has a part without velocities (a hoop
     # turned at a fixed rate): the terms are told by what they hold
