@@ -1110,6 +1110,33 @@ def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, sub
     assert "=" not in verdict.read_as.split(";")[0] or kind != "lagrangian"  # the answer shown, not the working
 
 
+def _stated(line):
+    return f"The line `{line}` states what the name means; the line that gives its value was graded."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status", "notes"),
+    [
+        # before: L's value was put into L = T − V, and T and V were told undefined
+        (L_PENDULUM, "L = T − V\nL = ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "equivalent",
+         (_stated("L = T - V"),)),
+        (L_PENDULUM, "L = T - U; L = ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "equivalent",
+         (_stated("L = T - U"),)),
+        (L_PENDULUM, "L = T − V\nL = ½ m l² θ̇² − m g l cos θ", {"kind": "lagrangian"}, "not_equivalent",
+         (_stated("L = T - V"),)),
+        # before: line 1 "does not say the same", for a person
+        (H_PENDULUM, "H = T + V\nH = ½ m l² θ̇² − m g l cos θ", {"name": "H"}, "equivalent", (_stated("H = T + V"),)),
+        # not the definition: left for what follows to judge
+        (L_PENDULUM, "L = T + V\nL = ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "not_equivalent", ()),
+        # T and V given values: L = T − V is the conclusion, not a statement
+        (L_PENDULUM, "T = ½ m l² θ̇²; V = −m g l cos θ; L = T − V", {"kind": "lagrangian"}, "equivalent", ()),
+    ],
+)  # fmt: skip
+def test_a_line_that_states_a_definition_is_not_the_answer(expected, submitted, options, status, notes):
+    verdict = compare(expected, submitted, **PENDULUM, **options)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind"),
     [

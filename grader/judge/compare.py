@@ -325,6 +325,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     read_notes += (note,)
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
+                answer, stated = _without_stated_definitions(answer, expected)
+                read_notes += stated
                 answer = _with_definitions(answer, expected, deadline)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += working
@@ -463,6 +465,36 @@ def _replaced(item, replacement: dict):
     if isinstance(item, sympy.Eq):
         return sympy.Eq(item.lhs.xreplace(replacement), item.rhs.xreplace(replacement), evaluate=False)
     return item.xreplace(replacement)
+
+
+def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
+    """``L = T − V`` on a line of its own, then ``L = ½ m l² θ̇² + …``: the first states what L is, in
+    energies no line gives a value; the second gives L's value. The statement is left out, with a
+    note (before, L's value was put into it and T and V were told undefined). Only the definition
+    itself (L = T − V, H = E = T + V, U for V) is so read: ``L = T + V`` stays, for what follows
+    to judge."""
+    if answer.kind != "equations":
+        return answer, ()
+    items = answer.value
+    labels = [item.lhs for item in items]
+    stated = [
+        item
+        for item in items
+        if item.lhs.is_Symbol
+        and item.lhs.name in _ENERGY_SUMS
+        and item.lhs.name not in expected.names
+        and labels.count(item.lhs) > 1
+        and _in_energies(item.rhs, expected.names)
+        and not item.rhs.free_symbols & set(labels)  # T = …, V = …, L = T − V: T and V have values
+        and _energy_multiple(item.rhs, [item.lhs.name]) == 1
+    ]
+    if not stated or len(stated) == len(items):
+        return answer, ()
+    rest = tuple(item for item in items if item not in stated)
+    note = ("definition_left_out", {"line": to_text(stated[0])})
+    if len(rest) == 1:
+        return ParsedAnswer(answer.text, rest[0], "equation"), (note,)
+    return ParsedAnswer(answer.text, rest, "equations"), (note,)
 
 
 def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:

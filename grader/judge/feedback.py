@@ -46,6 +46,7 @@ FEEDBACK: dict[str, str] = {
     "motion_left_out": "The equation{s} of motion after your Lagrangian {were} not graded: the Lagrangian is what is"
     " asked for here.",
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
+    "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
     "words_for_a_person": "Your answer says `{words}` beside the formula. The formula was graded on its own;"
