@@ -246,6 +246,13 @@ def test_a_formula_then_its_value_is_not_graded_by_the_value():
          ("Correct.", "Your answer has 2 lines, each the same; the last was graded.")),
         (L_PENDULUM, f"L = 1/2 m l^2 θ̇^2 - m g l cos θ\nL = {L_PENDULUM}", "lagrangian", "undecided", 1,
          ("Your last line is right, but line 1 does not say the same: a person will decide which is your answer.",)),
+        # a name of the student's own on the way, none in the last line: before, wrong, "eliminate ω"
+        (EOM_PENDULUM, "θ̈ = −ω² sin θ\nθ̈ = −(g/l) sin θ", "equation", "undecided", 1,
+         ("Your last line is right, but line 1 does not say the same: a person will decide which is your answer.",)),
+        # and where the last line is wrong, the hint to eliminate ω stays
+        (EOM_PENDULUM, "θ̈ = −ω² sin θ\nθ̈ = (g/l) sin θ", "equation", "not_equivalent", 0,
+         ("One equation is asked for here; your answer has 2, with `ω`, which this problem does not define."
+          " Eliminate it between your equations, to leave one in the problem's own names.",)),
     ],
 )  # fmt: skip
 def test_one_equation_written_on_several_lines_is_graded_by_its_last(

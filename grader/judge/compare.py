@@ -170,12 +170,17 @@ def compare(
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
     several = verdict.diagnosis in _ONE_THING_ASKED or _answered_twice(verdict.answer, prepared)
-    lines, parts = (_lines(submitted), "line") if several else (None, "")
+    # θ̈ = −ω² sin θ, then θ̈ = −(g/l) sin θ: no definition of ω to eliminate, but a last line that
+    # needs none; only where that line is right does the reading by lines say more
+    unknowns = verdict.diagnosis == "eliminate_unknowns"
+    lines, parts = (_lines(submitted), "line") if several or unknowns else (None, "")
     if getattr(verdict.answer, "code", None) == "too_many_equals" and spec.shape == "expression":
         lines, parts = _sides(submitted), "side"
     if lines:
         left = timeout - (time.monotonic() - started)
-        verdict = _judge_lines(spec, prepared, lines, left, values, verdict, parts)
+        by_lines = _judge_lines(spec, prepared, lines, left, values, verdict, parts)
+        if not unknowns or by_lines.status in ("equivalent", "undecided"):
+            verdict = by_lines
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
