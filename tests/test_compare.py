@@ -830,6 +830,33 @@ def test_a_lagrangian_may_define_its_own_names():
     assert wrong.feedback == ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.",)
 
 
+L_EQUAL = (
+    "m l^2 theta1dot^2 + 1/2 m l^2 theta2dot^2 + m l^2 theta1dot theta2dot cos(theta1 - theta2)"
+    " + 2 m g l cos(theta1) + m g l cos(theta2)"
+)
+EQUAL = {"coords": ["theta1", "theta2"], "known": ["m", "l", "g"]}
+L_EQUAL_DELTA = "m l² θ̇₁² + ½ m l² θ̇₂² + m l² θ̇₁ θ̇₂ cos Δθ + 2 m g l cos θ₁ + m g l cos θ₂"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        # before: Δθ was Δ·θ, two names the problem does not define, even where the answer defines Δθ
+        (f"L = {L_EQUAL_DELTA}, where Δθ = θ₁ − θ₂", "equivalent"),
+        (f"Δθ = θ₁ − θ₂\nL = {L_EQUAL_DELTA.replace('cos Δθ', 'cos(Δθ)')}", "equivalent"),
+        (f"L = {L_EQUAL_DELTA.replace('Δθ', 'δθ')}, where δθ = θ₁ − θ₂", "equivalent"),
+        (f"L = {L_EQUAL_DELTA}, where Δθ = θ₁ + θ₂", "not_equivalent"),
+    ],
+)
+def test_a_difference_the_answer_defines_is_one_name(submitted, status):
+    verdict = compare(L_EQUAL, submitted, kind="lagrangian", **EQUAL)
+    assert verdict.status == status, verdict
+    assert "not define" not in " ".join(verdict.feedback), verdict
+    # where nothing defines it, Δθ is still Δ·θ, which the problem does not define
+    verdict = compare(L_EQUAL, L_EQUAL_DELTA, kind="lagrangian", **EQUAL)
+    assert verdict.diagnosis == "undefined_symbol", verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind", "status"),
     [

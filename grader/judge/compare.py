@@ -1005,8 +1005,24 @@ def _names_defined(answer: ParsedAnswer, names: list) -> list[str]:
     left side of an equation of a list that is a name alone (or its power)."""
     if not answer.ok or answer.kind != "equations":
         return []
-    bases = (item.lhs.as_coeff_Mul()[1].as_base_exp()[0] for item in answer.value if item.lhs != ANSWER)
-    return sorted({base.name for base in bases if base.is_Symbol and base.name not in names})
+    bases = [item.lhs.as_coeff_Mul()[1].as_base_exp()[0] for item in answer.value if item.lhs != ANSWER]
+    defined = {base.name for base in bases if base.is_Symbol and base.name not in names}
+    return sorted(defined | {name for base in bases if (name := _difference_name(base, names))})
+
+
+_DIFFERENCE = frozenset({"Delta", "delta"})
+
+
+def _difference_name(side, names: list) -> str | None:
+    """``Δθ = θ₁ − θ₂``: read as Δ·θ, the name of a difference the answer defines (``Deltatheta``, as
+    the parser spells Δθ); None for any other side, and where the problem has a Δ of its own."""
+    if not side.is_Mul or len(side.args) != 2 or not all(arg.is_Symbol for arg in side.args):
+        return None
+    delta = [arg for arg in side.args if arg.name in _DIFFERENCE]
+    if len(delta) != 1 or delta[0].name in names:
+        return None
+    (other,) = set(side.args) - set(delta)
+    return f"{delta[0].name}{other.name}"
 
 
 def _without_words(
