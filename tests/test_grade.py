@@ -329,6 +329,24 @@ def test_equations_right_for_the_students_own_wrong_lagrangian_earn_method_credi
 
 
 @pytest.mark.parametrize(
+    "lagrangian",
+    [
+        # T + V, written as a Lagrangian part reads it: before, only the bare expression carried credit
+        "L = 1/2 m l^2 thetadot^2 - m g l cos(theta)",
+        "L = T - V = 1/2 m l^2 thetadot^2 - m g l cos(theta)",
+        "L = \\frac12 m l^2 \\dot\\theta^2 - mgl\\cos\\theta",
+        "T = ½ m l² θ̇²; V = m g l cos θ; L = T − V",
+        "1/2 m v^2 - m g l cos(theta), where v = l thetadot",
+    ],
+)
+def test_method_credit_reads_the_lagrangian_as_its_part_does(tmp_path, lagrangian):
+    answers = {"plane-pendulum.lagrangian": lagrangian, "plane-pendulum.motion": "l θ̈ = g sin θ"}
+    grade = grade_submission(Submission(Student("s"), answers), _pendulum_only(tmp_path), BANK)
+    motion = next(p for p in grade.parts if p.part == "motion")
+    assert (motion.auto_score, motion.method) == (1.5, "error carried forward"), motion
+
+
+@pytest.mark.parametrize(
     ("problem", "lagrangian", "motion"),
     [
         ("plane-pendulum", "0", "0 = 0"),

@@ -29,7 +29,6 @@ from grader.grade.submissions import Submission
 from grader.judge import DEFAULT_TIMEOUT, compare
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.lagrangian import equations_of_motion
-from grader.parse import parse_answer
 
 __all__ = ["assignment_parts", "grade_class", "grade_submission", "limit_memory"]
 
@@ -110,16 +109,20 @@ def _grade_part(problem: Problem, part: Part, points: float, answer: str, answer
 
 
 def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str, timeout: float) -> float | None:
-    """The method credit when ``answer`` is what the student's own Lagrangian implies."""
+    """The method credit when ``answer`` is what the student's own Lagrangian implies.
+
+    The Lagrangian is read as its own part reads it: ``L = …``, ``L = T − V = …``, ``T = …; V = …;
+    L = T − V`` and ``½ m v² − …, where v = l θ̇`` are all a Lagrangian (before, only an expression
+    alone was, and a labelled one lost its equations their credit)."""
     if not lagrangian.strip():
         return None
     setting = setting_of(problem)
-    read = parse_answer(lagrangian, coords=setting["coords"], known=setting["known"])
-    if not read.ok or read.kind != "expression":
+    read = grade_answer(problem, problem.part(part.derive_from), lagrangian, timeout=timeout).answer
+    if read is None or not read.ok or read.kind != "expression":
         return None
     try:
         with time_limit(timeout):
-            implied = equations_of_motion(lagrangian, **setting)
+            implied = equations_of_motion(read.read_as_text, **setting)
             verdict = compare(implied, answer, kind=part.kind, **setting, timeout=timeout)
     except (AuthorError, CheckTimeout, ArithmeticError, ValueError, TypeError, RecursionError):
         return None  # the student's Lagrangian is not one we can derive from: no carried credit
