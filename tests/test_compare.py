@@ -951,6 +951,26 @@ def test_a_wrong_formula_with_words_that_may_say_otherwise_is_not_equivalent():
 
 
 @pytest.mark.parametrize(
+    ("submitted", "words"),
+    [
+        # the other sign, and a direction that may be what turns it: before, wrong, "The overall sign is wrong."
+        ("-(m₁ − m₂) g/(m₁ + m₂) (upwards)", "(upwards)"),
+        ("(m₂ − m₁) g/(m₁ + m₂), directed upward", ", directed upward"),
+        ("a = (m₂ − m₁) g/(m₁ + m₂) upwards", "upwards"),
+    ],
+)
+def test_the_opposite_sign_with_words_that_may_turn_it_goes_to_a_person(submitted, words):
+    verdict = compare(ATWOOD_A, submitted, **MASSES)
+    assert (verdict.status, verdict.score) == ("undecided", 0.0), verdict
+    assert verdict.feedback == (
+        f"Your formula has the opposite sign, and your answer says `{words}` beside it: a person will read"
+        " whether the words turn the sign.",
+    )
+    # without the words, the sign is wrong
+    assert compare(ATWOOD_A, submitted.replace(words, ""), **MASSES).diagnosis == "sign"
+
+
+@pytest.mark.parametrize(
     ("submitted", "status"),
     [
         ("½ m l² θ̇² + m g l cos θ up to a constant", "equivalent"),  # "up to" says nothing of the sign

@@ -956,6 +956,11 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
     unsure = [note for note in notes if note and note[0] in _FOR_A_PERSON]
     if not unsure:
         return outcome, notes
+    direction = next((note for note in unsure if note[0] == "words_for_a_person"), None)
+    if direction and outcome.key == "sign":
+        # −(m₁ − m₂) g/(m₁ + m₂), upwards: the words may be what turns the sign; nothing is proposed
+        outcome = replace(outcome, status="undecided", key="sign_words_for_a_person", details=direction[1])
+        return outcome, tuple(note for note in notes if note is not direction)
     if outcome.score == 0:
         return outcome, tuple((_FOR_A_PERSON.get(note[0], note[0]), note[1]) if note else note for note in notes)
     said = ((outcome.key, outcome.details),) if outcome.key and outcome.status != "equivalent" else ()

@@ -49,6 +49,8 @@ FEEDBACK: dict[str, str] = {
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
+    "sign_words_for_a_person": "Your formula has the opposite sign, and your answer says `{words}` beside it: a"
+    " person will read whether the words turn the sign.",
     "words_for_a_person": "Your answer says `{words}` beside the formula. The formula was graded on its own;"
     " a person will read the words against it.",
     "words_before_left_out": "Read without the words before it, `{words}`: the formula is what is graded.",
