@@ -378,6 +378,39 @@ def test_a_unit_after_a_formula_may_hold_a_name_of_the_problems(submitted, statu
     assert verdict.read_as == ("-g*l*m*sin(θ)" if status == "equivalent" else "-g*m*sin(θ)")
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # "in" and the unit: before, read past as words (Correct whatever the unit), or read as names
+        ("√(g/l) in rad/s", "equivalent", ("Correct.", LEFT_OUT.format("rad/s"))),
+        ("ω = √(g/l) in s^-1", "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
+        ("√(g/l) (in 1/s)", "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
+        ("√(g/l), in rad/s", "equivalent", ("Correct.", LEFT_OUT.format("rad/s"))),  # was refused: a comma
+        ("√(g/l) in s", "not_equivalent", ("Your answer is in s, but the quantity asked for is measured in 1/s.",)),
+        ("√(g/l) (in s)", "not_equivalent", ("Your answer is in s, but the quantity asked for is measured in 1/s.",)),
+    ],
+)
+def test_a_unit_may_be_said_with_in(submitted, status, feedback):
+    verdict = compare(OMEGA, submitted, **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+@pytest.mark.parametrize("submitted", ["−m g l sin θ, in N", "−m g l sin θ in m/s"])
+def test_a_unit_said_with_in_that_measures_something_else_is_said_so(submitted):
+    verdict = compare(TORQUE, submitted, **PENDULUM)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "unit_differs"), verdict
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    ["−m g l sin θ (dimensionless)", "−m g l sin θ; dimensions: force", "−m g l sin θ, it has dimensions of energy"],
+)
+def test_words_that_state_dimensions_are_for_a_person_to_read(submitted):
+    # a prompt may ask for the dimensions too (generalized-forces.q-theta): before, read past as Correct
+    verdict = compare(TORQUE, submitted, **PENDULUM)
+    assert (verdict.status, verdict.diagnosis) == ("undecided", "words_for_a_person"), verdict
+
+
 @pytest.mark.parametrize("submitted", ["−m g l sin θ, m/s", "−m g l sin θ (N)"])
 def test_a_unit_after_a_formula_that_measures_something_else_is_said_so(submitted):
     verdict = compare(TORQUE, submitted, **PENDULUM)

@@ -321,13 +321,16 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 names = sorted(expected.names | {symbol.name for symbol, _ in given})
                 answer, read_notes = _read(spec, expected, submitted, names, deadline)
                 formula = spec.name in ("expression", "lagrangian")
-                split = _unit_tail(submitted, spec, expected) if not answer.ok and formula else None
+                # √(g/l) in s: "in" and a unit are no words to read past, nor names of the student's
+                unread = not answer.ok or read_notes or _undefined(answer, names)
+                stated = not answer.ok or (_IN_UNIT.search(submitted) and unread)
+                split = _unit_tail(submitted, spec, expected) if formula and stated else None
                 if split is not None:  # −m g r sin θ, N·m: the comma sets a unit apart, and is no list
                     answer, unit, found = split
                     early, note = _unit_said(unit, found, spec, expected)
                     if early is not None:
                         return _verdict(early, answer)
-                    read_notes += (note,)
+                    read_notes = (note,)  # the words were the unit
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
                 answer, stated = _without_stated_definitions(answer, expected)
@@ -1239,8 +1242,9 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
         head, tail = text[: cut.start()], text[cut.end() :]
         set_apart = bool(cut.group().strip())
         tail = tail.strip()
-        if set_apart and cut.group().strip()[-1:] in "([":
-            if not tail.endswith(")]"[("([".index(cut.group().strip()[-1]))]):
+        opener = next((character for character in cut.group() if character in "(["), None)
+        if opener:
+            if not tail.endswith(")]"["([".index(opener)]):
                 continue
             tail = tail[:-1]
         if not tail or not head.strip() or not _UNIT_TEXT.fullmatch(tail):
@@ -1267,8 +1271,9 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
 
 
 _UNIT_TAIL_LENGTH = 300
-# where a unit may begin after a formula: a comma, an opening bracket, or a space
-_UNIT_CUTS = re.compile(r"\s*[,;]\s*\(?\s*|\s*[(\[]\s*|\s+")
+# where a unit may begin after a formula: a comma, an opening bracket, or a space; and "in" may say it is one
+_UNIT_CUTS = re.compile(r"(?:\s*[,;]\s*\(?\s*|\s*[(\[]\s*|\s+)(?:in\s+)?")
+_IN_UNIT = re.compile(r"(?:^|[\s,;(\[])in\s+\S")
 _UNIT_TEXT = re.compile(r"[A-Za-zΩμµ·⋅*/^ 0-9⁰¹²³⁴⁵⁶⁷⁸⁹⁻()-]+")
 _UNIT_WORD = re.compile(r"[A-Za-zΩμµ]+")
 

@@ -37,11 +37,12 @@ _MATH_WORDS = re.compile(
 # a number of its own, "or", or "not": 2 or 3, θ̈ = … or θ̈ = …, not for small angles
 _HEDGE = re.compile(r"(?<!\w)[0-9]|\b(?:or|not|never|isn't)\b", re.I)
 # words that may say the formula is other than written, or set what its sign means: "… upward",
-# "… inverted", "… except the cosine is a sine". A person reads them against the formula.
+# "… inverted", "… except the cosine is a sine"; or state its dimensions, which a prompt may ask
+# for ("… dimensionless"). A person reads them against the formula.
 _OTHERWISE = re.compile(
     r"\b(?:up|upward|upwards|down|downward|downwards|clockwise|anticlockwise|counterclockwise|"
     r"inverted|invert|flipped|flip|reversed|reverse|swapped|swap|interchanged|except|instead|replaced|"
-    r"replace|wrong|mistake|typo|actually|should|meant)\b(?!\s+to\b)",
+    r"replace|wrong|mistake|typo|actually|should|meant|dimension|dimensions|dimensionless)\b(?!\s+to\b)",
     re.I,
 )
 # a word against a bracket is a function the parser does not know, not prose: floor(θ), Re(e^(iθ))
