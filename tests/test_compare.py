@@ -2273,6 +2273,11 @@ def _final(value):
          (_remark(15, "(5 particles times 3 coordinates)"),)),
         ("5", "6 (3 translations + 3 rotations)", {}, "not_equivalent", "6",
          (_remark(6, "(3 translations + 3 rotations)"),)),
+        # the counts in words: before, refused as names (three, translational, …)
+        ("6", "6 (three translational and three rotational)", {}, "equivalent", "6",
+         (_remark(6, "(three translational and three rotational)"),)),
+        ("2", "2 (four coordinates minus two constraints)", {}, "equivalent", "2",
+         (_remark(2, "(four coordinates minus two constraints)"),)),
         # working, then the final value
         ("2", "6 - 4 = 2", {}, "equivalent", "2", (_final(2),)),
         ("2", "6 - 3 = 3", {}, "not_equivalent", "3", (_final(3),)),

@@ -262,7 +262,7 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
 def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
     """Whether ``rest`` breaks the count ``number`` down, in brackets, into counts of things named
     in words that add up to it: ``(3 translations + 3 rotations)`` for 6, ``(6 coordinates − 1
-    constraint)`` for 5. Counts in digits, joined by signs, by and, plus, minus, times, or listed
+    constraint)`` for 5. Counts in digits or words (``three``), joined by signs, by and, plus, minus, times, or listed
     between commas (``3 translations, 3 rotations``); words that are none of the problem's names.
     A breakdown that does not add up is no remark: which number is meant is for the student to say."""
     found = _BRACKETED.fullmatch(rest)
@@ -271,11 +271,20 @@ def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
     words = _COUNTED.findall(found[1])
     if not words or any(word in names for word in words):
         return False
-    arithmetic = _LISTED.sub(" + ", _COUNTED.sub(lambda word: _SAID_SIGNS.get(word[0].lower(), " "), found[1]))
+    arithmetic = _LISTED.sub(" + ", _COUNTED.sub(_as_count, found[1]))
     if not _COUNTS.fullmatch(arithmetic):
         return False
     read = parse_answer(arithmetic)
     return read.ok and read.kind == "expression" and read.value == int(number)
+
+
+def _as_count(word: re.Match) -> str:
+    """A word of a breakdown as arithmetic: and is +, three is 3 (``three translations and three
+    rotations``), a name of what is counted nothing."""
+    said = word[0].lower()
+    if said in _NUMBER_WORDS:
+        return f" {_NUMBER_WORDS[said]} "
+    return _SAID_SIGNS.get(said, " ")
 
 
 # "one coordinate for each bob": a count per thing, not another number for the answer ("one angle per
