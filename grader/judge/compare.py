@@ -323,8 +323,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 formula = spec.name in ("expression", "lagrangian")
                 # √(g/l) in s: "in" and a unit are no words to read past, nor names of the student's
                 unread = not answer.ok or read_notes or _undefined(answer, names)
-                stated = not answer.ok or (_IN_UNIT.search(submitted) and unread)
-                split = _unit_tail(submitted, spec, expected) if formula and stated else None
+                unit_said = not answer.ok or (_IN_UNIT.search(submitted) and unread)
+                split = _unit_tail(submitted, spec, expected) if formula and unit_said else None
                 if split is not None:  # −m g r sin θ, N·m: the comma sets a unit apart, and is no list
                     answer, unit, found = split
                     early, note = _unit_said(unit, found, spec, expected)
