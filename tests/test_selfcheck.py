@@ -24,6 +24,8 @@ CHECK_EXITS = [
     # (arguments, exit status, what it prints)
     ([LAGRANGIAN, "1/2 m l^2 θ̇^2 + mgl cos θ"], 0,
      "✔ plane-pendulum.lagrangian: right\n  read as: g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),
+    ([LAGRANGIAN, "{1 \\over 2} m l^2 \\dot\\theta^2 + {m g l \\over 1} \\cos\\theta"], 0,
+     "✔ plane-pendulum.lagrangian: right\n  read as: g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),  # plain TeX's \over
     ([LAGRANGIAN, "1/2 m l^2 thetadot^2 - m g l cos(theta)"], 1,
      f"✘ plane-pendulum.lagrangian: not right\n  {SIGN_HINT}\n  read as: -g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),
     (["plane-pendulum.why-harmonic", "sin θ ≈ θ, so the restoring force is proportional to θ"], 1,

@@ -8,12 +8,14 @@ Contents:
 The grammar, loosest binding first::
 
     answer   := item (SEP item)*  |  '[' item (',' item)* ']'
-    item     := expr ('=' expr)?
+    item     := over ('=' over)?
+    over     := expr ('\\over' expr)?                      # TeX's fraction of its group: a \\over b
     expr     := term (('+' | '-') term)*
     term     := signed (('*' | '/') signed | factor)*      # juxtaposition multiplies
     signed   := ('+' | '-') signed | factor
     factor   := primary (SUP | '^' signed)?                 # right-associative
     primary  := number | name | function | group | frac | sqrt
+    group    := '(' over ')' | '[' over ']' | '{' over '}'
 
 Juxtaposition has the precedence of ``*`` and ``/`` and everything associates to
 the left, so ``1/2 m l^2`` is m·l²/2. Every sympy object is built here from a
@@ -299,16 +301,16 @@ class _Parser:
         if operator is not None:
             # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0: the operator, then the equation it gives
             self.i = operator + 1
-            lhs = self.expr()
+            lhs = self.over()
             if not self.token.is_op("="):
                 return first, lhs  # what the operator comes to, without "= 0": an expression
             self.advance()
-            rhs = self.expr()
+            rhs = self.over()
             if self.token.is_op("="):
                 raise ParseFailure("too_many_equals", self.token.start, self.token.end)
             return first, sympy.Eq(lhs, rhs, evaluate=False)
         label = self.label()
-        lhs = label if label is not None else self.expr()
+        lhs = label if label is not None else self.over()
         if not self.token.is_op("="):
             return first, lhs
         self.advance()
@@ -338,7 +340,7 @@ class _Parser:
         the chain says too (m ẍ = −k x). Both sides are in the problem's names and one holds an
         acceleration; anything else (``ω = √(g/l) = 3.13``) is None, the cursor left as it was."""
         start = self.i
-        last = self.expr()
+        last = self.over()
         accelerating = any(d.derivative_count >= 2 for side in (middle, last) for d in side.atoms(sympy.Derivative))
         if self.token.is_op("=") or not accelerating or self._defines(middle) or self._defines(last):
             self.i = start
@@ -385,7 +387,7 @@ class _Parser:
             if quotient is not None and self.tokens[quotient[0]].is_op("="):
                 self.i, name = quotient
                 return sympy.Symbol(name)
-        return self.expr()
+        return self.over()
 
     def _euler_lagrange_operator(self, i: int) -> int | None:
         """``d/dt(∂L/∂θ̇) − ∂L/∂θ`` at ``i``, bracketed or not, in plain notation or TeX's, with
@@ -476,6 +478,30 @@ class _Parser:
         return sympy.Symbol(canonical)
 
     # -- arithmetic ------------------------------------------------------------
+
+    def over(self):
+        """An expression, or TeX's ``a \\over b``: all of a group, or of a side, before ``\\over`` over
+        all of it after (``{m g l \\over 2}``, ``{1 \\over 2} m l^2``). Two in one group are refused,
+        as TeX refuses them: which divides which is anyone's guess."""
+        if self.token.kind == "over":
+            raise ParseFailure("over_side", self.token.start, self.token.end)
+        numerator = self.expr()
+        if self.token.kind != "over":
+            return numerator
+        over = self.advance()
+        after = self.token
+        if after.kind == "over":
+            raise ParseFailure("over_twice", after.start, after.end)
+        if not (after.kind in _STARTS_FACTOR or after.is_op("(", "[", "{", "+", "-")):
+            raise ParseFailure("over_side", over.start, over.end)
+        denominator = self.expr()
+        if self.token.kind == "over":
+            raise ParseFailure("over_twice", self.token.start, self.token.end)
+        if denominator == 0:
+            raise ParseFailure("division_by_zero", over.start, over.end)
+        quotient = numerator * _power(denominator, sympy.Integer(-1), over)
+        _check_size(quotient, over)
+        return quotient
 
     def expr(self):
         terms = [self.term()]
@@ -600,7 +626,7 @@ class _Parser:
     def group(self):
         opener = self.advance()
         self.deeper(opener)
-        value = self.expr()
+        value = self.over()
         self.expect(_OPENERS[opener.value], opener)
         self.depth -= 1
         return value

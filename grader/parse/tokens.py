@@ -93,10 +93,10 @@ class Token:
     Kinds: ``num`` (value: digit string), ``name`` (value: :class:`Name`), ``func``
     (value: canonical function name, or ``diff``), ``op`` (value: one of
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
-    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``partial`` (∂),
-    ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what follows), ``arrow`` (→: the
-    same between two equations, refused elsewhere), ``gap`` (``\\quad``, an environment's end: a
-    ``sep`` between two equations, nothing elsewhere), ``end``; the
+    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``over`` (TeX's ``\\over``),
+    ``sqrt``, ``partial`` (∂), ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what
+    follows), ``arrow`` (→: the same between two equations, refused elsewhere), ``gap`` (``\\quad``,
+    an environment's end: a ``sep`` between two equations, nothing elsewhere), ``end``; the
     grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
     """
 
@@ -996,6 +996,8 @@ class _Tokenizer:
             self.tokens.append(Token("op", _LATEX_OPERATORS[command], start, self.pos))
         elif command in ("frac", "dfrac", "tfrac"):
             self.tokens.append(Token("frac", "frac", start, self.pos))
+        elif command == "over":  # {1 \over 2}: plain TeX's fraction of its group, which the grammar reads
+            self.tokens.append(Token("over", "\\over", start, self.pos))
         elif command == "sqrt":
             self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
         elif command == "partial":
