@@ -907,6 +907,38 @@ def test_a_wrong_formula_with_words_that_may_say_otherwise_is_not_equivalent():
     assert verdict.notes == ("Read without the words `upward`: the formula is what is graded.",)
 
 
+def _for_a_person(words):
+    return (
+        f"Your answer says `{words}` beside the formula. The formula was graded on its own;"
+        " a person will read the words against it."
+    )
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # words that doubt the formula are read past, for a person, whatever else they say in words:
+        # before, `sign` in them was told as a function without its argument
+        ("m l² θ̈ + m g l sin θ = 0 (not sure about the sign)", "undecided",
+         (_for_a_person("(not sure about the sign)"),)),
+        ("θ̈ = −(g/l) sin θ (not sure about the sign, maybe minus)", "undecided",
+         (_for_a_person("(not sure about the sign, maybe minus)"),)),
+        ("θ̈ = −(g/l) sin θ, or the other sign, I think", "undecided",
+         (_for_a_person(", or the other sign, I think"),)),
+        ("θ̈ + (g/l) sin θ = 0 (maybe)", "undecided", (_for_a_person("(maybe)"),)),
+        ("Not sure, but the equation of motion is θ̈ = −(g/l) sin θ", "undecided",
+         (_for_a_person("Not sure, but the equation of motion is"),)),
+        # a wrong formula is graded as written, and the words said to be read past
+        ("m l² θ̈ − m g l sin θ = 0 (not sure about the sign)", "not_equivalent",
+         ("A term differs: the term in sin(θ) has the wrong sign.",
+          "Read without the words `(not sure about the sign)`: the formula is what is graded.")),
+    ],
+)  # fmt: skip
+def test_words_that_doubt_a_formula_send_it_to_a_person(submitted, status, feedback):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status"),
     [
@@ -2260,6 +2292,7 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
         "either 2 or 3",
         "not 3 but 2",
         "not 2",
+        "2 (not sure)",  # a doubt beside a number, which a formula's words may voice, is no remark here
         "the one that swings",  # "one" after an article is a pronoun
     ],
 )

@@ -28,6 +28,12 @@ CHECK_EXITS = [
      "✔ plane-pendulum.lagrangian: right\n  read as: g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),  # plain TeX's \over
     ([LAGRANGIAN, "1/2 m l^2 thetadot^2 - m g l cos(theta)"], 1,
      f"✘ plane-pendulum.lagrangian: not right\n  {SIGN_HINT}\n  read as: -g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),
+    # words that doubt the formula: for a person to read; never `sign` told as a function without its argument
+    (["plane-pendulum.motion", "m l^2 θ̈ + m g l sin θ = 0 (not sure about the sign)"], 1,
+     "? plane-pendulum.motion: a person will check this\n"
+     "  Your answer says `(not sure about the sign)` beside the formula. The formula was graded on its own;"
+     " a person will read the words against it.\n"
+     "  read as: g*l*m*sin(θ) + l^2*m*θ̈ = 0\n"),
     (["plane-pendulum.why-harmonic", "sin θ ≈ θ, so the restoring force is proportional to θ"], 1,
      "? plane-pendulum.why-harmonic: a person will check this\n"
      "  A person will read this answer; the rubric found 2 of its 2 ideas.\n"),
