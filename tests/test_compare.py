@@ -83,12 +83,22 @@ def test_author_mistakes_in_the_call_raise_author_error(call, message):
         call()
 
 
-def test_symbols_the_problem_does_not_define_are_named():
-    verdict = compare(L_PENDULUM, "1/2 m r^2 thetadot^2 + m g l cos(theta)", kind="lagrangian", **PENDULUM)
+@pytest.mark.parametrize(
+    ("submitted", "name"),
+    [
+        ("1/2 m r^2 thetadot^2 + m g l cos(theta)", "r"),
+        # glued to the problem's names before a bracket, the letter it lacks: before, `mgL` was told as
+        # a function we do not know
+        ("1/2 m l^2 θ̇^2 - mgL(1-cosθ)", "L"),
+        ("1/2 m l^2 θ̇^2 + Lmg (cos θ)", "Lmg"),  # apart from its bracket: a name of its own, as always
+    ],
+)
+def test_symbols_the_problem_does_not_define_are_named(submitted, name):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert verdict.status == "not_equivalent"
     assert verdict.feedback == (
-        "Your answer uses `r`, which this problem does not define (it uses g, l, m, θ)."
-        " Write your answer in those, or say what it stands for: …, where r = ….",
+        f"Your answer uses `{name}`, which this problem does not define (it uses g, l, m, θ)."
+        f" Write your answer in those, or say what it stands for: …, where {name} = ….",
     )
     assert verdict.diagnosis == "undefined_symbol"
 

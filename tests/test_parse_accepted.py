@@ -260,6 +260,8 @@ SPLITTING = [
     ("kx^2", k * x**2),
     ("2mgl", 2 * m * g * l),
     ("xyz", sympy.Symbol("xyz")),  # not all pieces known: one unknown name
+    # before a bracket, the problem's names and one letter it lacks: that letter, for the checker to name
+    ("mgL(a + b) + Lmg(a) + mgLsin(θ)", m * g * L * (a + b) + L * m * g * a + m * g * L * sin(theta)),
 ]
 
 EQUATIONS = [

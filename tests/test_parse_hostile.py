@@ -99,6 +99,10 @@ HOSTILE = [
     ("x != 1", "assignment"),
     ("__import__('os')", "bad_character"),
     ("x[0] @ y", "bad_character"),
+    # a call: a glued name before a bracket is the problem's names and one letter it lacks (mgL(…)), only so
+    ("foo(x)", "unknown_function"),
+    ("mgLL(x)", "unknown_function"),
+    ("mgLgamma(x)", "unknown_function"),  # γ, spelled, is no name of the problem's
     # -- brackets ---------------------------------------------------------------
     ("sin(θ", "unclosed"),
     ("((m g l)", "unclosed"),

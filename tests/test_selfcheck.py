@@ -28,6 +28,12 @@ CHECK_EXITS = [
      "✔ plane-pendulum.lagrangian: right\n  read as: g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),  # plain TeX's \over
     ([LAGRANGIAN, "1/2 m l^2 thetadot^2 - m g l cos(theta)"], 1,
      f"✘ plane-pendulum.lagrangian: not right\n  {SIGN_HINT}\n  read as: -g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),
+    # a name the problem lacks, glued to its names before a bracket: told as the name it is, not as a function
+    ([LAGRANGIAN, "1/2 m l^2 θ̇^2 - mgL(1-cosθ)"], 1,
+     "✘ plane-pendulum.lagrangian: not right\n"
+     "  Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+     " or say what it stands for: …, where L = ….\n"
+     "  read as: -L*g*m*(1 - cos(θ)) + l^2*m*θ̇^2/2\n"),
     # words that doubt the formula: for a person to read; never `sign` told as a function without its argument
     (["plane-pendulum.motion", "m l^2 θ̈ + m g l sin θ = 0 (not sure about the sign)"], 1,
      "? plane-pendulum.motion: a person will check this\n"

@@ -946,10 +946,40 @@ class _Parser:
         if name.tex:
             return self.tex_letters(name.raw)
         if self.token.is_op("(") and self.token.start == token.end and len(canonical) > 1 and not name.primes:
+            pieces = self._with_one_undefined(name.raw, token)
+            if pieces:
+                return pieces
             # eval(x), open(f), Integer(1): a call of something that is no function here
             known = ", ".join(sorted(set(FUNCTION_NAMES)))
             raise ParseFailure("unknown_function", token.start, token.end, name=self.source(token), known=known)
         return [sympy.Symbol(canonical)]
+
+    def _with_one_undefined(self, raw: str, token: Token) -> list | None:
+        """``mgL(1 − cos θ)`` where the problem has m, g and l: a glued name before a bracket, of the
+        problem's names and one letter it does not have, as m·g·L. So L is told as a name the problem
+        does not define, as in ``m g L(1 − cos θ)``, not mgL as a function we do not know. None where
+        no one letter, or more than one, makes such a reading: ``foo(x)`` and ``eval(x)`` stay unknown
+        functions, each of letters the problem has not."""
+        readings = []
+        for i, letter in enumerate(raw):
+            before, after = raw[:i], raw[i + 1 :]
+            if not (letter.isascii() and letter.isalpha()) or self.lookup(letter) is not None:
+                continue  # e and t mean something here
+            if after[:1] == "_" or after[:1].isdigit():
+                continue  # mgL_1: the subscript is the letter's, a name no split here reads
+            pieces = [self._pieces_of(before, token), self._pieces_of(after, token)]
+            if None not in pieces:
+                readings.append([*pieces[0], sympy.Symbol(letter), *pieces[1]])
+        return readings[0] if len(readings) == 1 else None
+
+    def _pieces_of(self, raw: str, token: Token) -> list | None:
+        """The problem's names (and functions) that ``raw`` is glued of, one or more; [] for no text;
+        None where it is not so glued, or a piece is no name of the problem's (η in getattr)."""
+        if not raw:
+            return []
+        whole = self._piece(raw)
+        pieces = [whole] if whole is not None else self.split(raw, token)
+        return None if pieces is None or any(self.own(piece) for piece in pieces) else pieces
 
     def tex_letters(self, raw: str) -> list:
         """A LaTeX run that is no known name, read as TeX does: one symbol per letter."""
