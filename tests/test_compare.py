@@ -862,6 +862,13 @@ def _words(words):
          (_words(", a nonlinear equation"),)),  # from the mark before the words, past their article
         ("sqrt(g/l)", "ω = √(g/l) for small oscillations", "expression", "equivalent",
          (_words("for small oscillations"),)),
+        # in TeX, the words in \text{…}: said as they were typed inside the braces, after TeX's space
+        (EOM_PENDULUM, r"m l^2 \ddot\theta + m g l \sin\theta = 0 \text{(nonlinear)}", "equation", "equivalent",
+         (_words("(nonlinear)"),)),
+        ("sqrt(g/l)", r"\omega = \sqrt{g/l}\,\text{for small oscillations}", "expression", "equivalent",
+         (_words("for small oscillations"),)),
+        ("sqrt(g/l)", r"\omega = \sqrt{g/l} \quad \mbox{for oscillations of a small amplitude, about the bottom}",
+         "expression", "equivalent", (_words("for oscillations of a small amplitude, about the bottom"),)),
         # words of arithmetic, or its signs: refused as typed
         ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),
@@ -936,6 +943,8 @@ def _for_a_person(words):
         ("θ̈ = −(g/l) sin θ, or the other sign, I think", "undecided",
          (_for_a_person(", or the other sign, I think"),)),
         ("θ̈ + (g/l) sin θ = 0 (maybe)", "undecided", (_for_a_person("(maybe)"),)),
+        (r"\ddot\theta + \frac gl \sin\theta = 0 \quad \text{(not sure about the sign)}", "undecided",
+         (_for_a_person("(not sure about the sign)"),)),
         ("Not sure, but the equation of motion is θ̈ = −(g/l) sin θ", "undecided",
          (_for_a_person("Not sure, but the equation of motion is"),)),
         # a wrong formula is graded as written, and the words said to be read past
@@ -990,6 +999,8 @@ def _before(words):
         (EOM_PENDULUM, "So the EOM is θ̈ = −(g/l) sin θ for all angles", "equation", "equivalent",
          (_before("So the EOM is"), _words("for all angles"))),
         (EOM_PENDULUM, "Equation of motion: θ̈ = −(g/l) sin θ", "equation", "equivalent", ()),  # the parser's label
+        (EOM_PENDULUM, r"\text{The equation of motion is } ml\ddot\theta = -mg\sin\theta", "equation", "equivalent",
+         (_before("The equation of motion is"),)),
         ("sqrt(g/l)", "The angular frequency is √(g/l)", "expression", "equivalent",
          (_before("The angular frequency is"),)),
         ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),

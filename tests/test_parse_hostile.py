@@ -125,6 +125,7 @@ HOSTILE = [
     ("\\input{/etc/passwd}", "unknown_command"),
     ("\\def\\x{1}", "unknown_command"),
     ("\\text{hello}", "latex_words"),
+    ("x = 1 \\text{(a remark longer than forty characters, in words)}", "latex_words"),  # was: an unknown \\text
     ("\\sqrt{g/l}\\,\\mathrm{radians per second}", "latex_words"),  # words: said so, not "\\mathrm is unknown"
     ("\\sqrt{g/l}\\,\\mathrm{m/s}", "unit_is_a_name"),  # m is the problem's mass: which is it?
     ("\\mathrm{" + "a" * 41 + "/s}", "name_too_long"),  # a unit's words keep the cap on a name

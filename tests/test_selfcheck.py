@@ -40,6 +40,11 @@ CHECK_EXITS = [
      "  Your answer says `(not sure about the sign)` beside the formula. The formula was graded on its own;"
      " a person will read the words against it.\n"
      "  read as: g*l*m*sin(θ) + l^2*m*θ̈ = 0\n"),
+    # a remark in TeX's \\text{…}: words, read past as words after a formula are
+    (["damped-oscillator.motion", "m\\ddot x + b \\dot x + k x = 0 \\text{(damped)}"], 0,
+     "✔ damped-oscillator.motion: right\n"
+     "  Read without the words after it, `(damped)`: the formula is what is graded.\n"
+     "  read as: b*ẋ + k*x + m*ẍ = 0\n"),
     (["plane-pendulum.why-harmonic", "sin θ ≈ θ, so the restoring force is proportional to θ"], 1,
      "? plane-pendulum.why-harmonic: a person will check this\n"
      "  A person will read this answer; the rubric found 2 of its 2 ideas.\n"),

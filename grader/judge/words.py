@@ -4,6 +4,7 @@ Contents:
     is_prose(words, names)                     whether words are about the answer, not more of it
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
+    text_as_words(text, names, coords)         ``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: TeX's text, as words
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
 conserved``, ``a = g (m₁ − m₂)/(m₁ + m₂), with m₁ going down``. A person grades the formula and
@@ -25,7 +26,7 @@ from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
-__all__ = ["formula_then_words", "is_prose", "says_otherwise", "words_then_formula"]
+__all__ = ["formula_then_words", "is_prose", "says_otherwise", "text_as_words", "words_then_formula"]
 
 _MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥≠±∓‒‐‑⁻﹣－")  # with the dashes a minus may be typed as
 # words that change a formula: "√(g/l) times l", "… but negative", "… all squared"
@@ -61,6 +62,10 @@ _LEADS_TO = re.compile(
     re.I,
 )
 _LENGTH = 400  # characters: longer answers are read as typed
+# TeX's commands whose braces may hold words, and the spaces set before them: \,\text{for small angles}
+_TEXT_COMMAND = re.compile(r"\\(?:text|textrm|mathrm|operatorname|mbox)(?![A-Za-z])")
+_TEX_SPACES = ("\\,", "\\;", "\\:", "\\!", "\\quad", "\\qquad", "~")
+_TEXT_GROUPS = 4  # \text{…} of words in one answer, at the most: a remark before the formula, one after
 
 
 def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool:
@@ -131,6 +136,33 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
         words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
         if formula and is_prose(words, names, doubt=True):
             yield words, formula
+
+
+def text_as_words(text: str, names: Collection[str], coords: Collection[str]) -> str:
+    """``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: each ``\\text{…}`` (or ``\\mbox``, ``\\mathrm``…)
+    that the parser reads as words, not as mathematics (a unit, ``\\text{L} =``, ``\\text{ where }``), as
+    the words it holds, with TeX's spaces before it left out; so they are found as words beside a
+    formula are, and said back as typed inside the braces. The text as typed where there are none."""
+    for _ in range(_TEXT_GROUPS):
+        if _TEXT_COMMAND.search(text) is None:
+            break
+        read = parse_answer(text, coords=coords, known=names)
+        if read.ok or read.code != "latex_words":
+            break
+        group = text[read.start : read.end]
+        words = group[group.index("{") + 1 : -1]
+        text = f"{_without_tex_spaces(text[: read.start])} {words} {text[read.end :]}"
+    return text
+
+
+def _without_tex_spaces(text: str) -> str:
+    """``text`` without the spaces it ends in, TeX's (``\\,``, ``\\quad``, ``~``) too."""
+    while True:
+        text = text.rstrip()
+        space = next((space for space in _TEX_SPACES if text.endswith(space)), None)
+        if space is None:
+            return text
+        text = text[: -len(space)]
 
 
 def _is_word(word: str, names: Collection[str], coords: Collection[str]) -> bool:
