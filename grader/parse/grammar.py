@@ -497,11 +497,7 @@ class _Parser:
         denominator = self.expr()
         if self.token.kind == "over":
             raise ParseFailure("over_twice", self.token.start, self.token.end)
-        if denominator == 0:
-            raise ParseFailure("division_by_zero", over.start, over.end)
-        quotient = numerator * _power(denominator, sympy.Integer(-1), over)
-        _check_size(quotient, over)
-        return quotient
+        return _quotient(numerator, denominator, over)
 
     def expr(self):
         terms = [self.term()]
@@ -607,12 +603,7 @@ class _Parser:
         if token.kind == "frac":
             self.advance()
             numerator = self.argument(token)
-            denominator = self.argument(token)
-            if denominator == 0:
-                raise ParseFailure("division_by_zero", token.start, token.end)
-            quotient = numerator * _power(denominator, sympy.Integer(-1), token)
-            _check_size(quotient, token)
-            return quotient
+            return _quotient(numerator, self.argument(token), token)
         if token.kind == "sqrt":
             self.advance()
             if self.token.is_op("[") and token.value == "\\sqrt":  # \sqrt[3]{x}
@@ -1343,6 +1334,16 @@ def _apply(name: str, argument, token: Token):
     if value.has(sympy.zoo, sympy.nan):
         raise ParseFailure("undefined_value", token.start, token.end)
     return value
+
+
+def _quotient(numerator, denominator, token: Token):
+    """``\\frac{numerator}{denominator}`` or ``{numerator \\over denominator}``, refusing a division by
+    zero, and a value too large to build or to check."""
+    if denominator == 0:
+        raise ParseFailure("division_by_zero", token.start, token.end)
+    quotient = numerator * _power(denominator, sympy.Integer(-1), token)
+    _check_size(quotient, token)
+    return quotient
 
 
 def _power(base, exponent, token: Token):
