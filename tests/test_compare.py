@@ -852,6 +852,13 @@ def _words(words):
     return f"Read without the words after it, `{words}`: the formula is what is graded."
 
 
+def _for_a_person(words):
+    return (
+        f"Your answer says `{words}` beside the formula. The formula was graded on its own;"
+        " a person will read the words against it."
+    )
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind", "status", "notes"),
     [
@@ -893,10 +900,7 @@ def test_words_that_may_say_otherwise_send_a_right_formula_to_a_person(expected,
     kind = "lagrangian" if expected == L_PENDULUM else "expression"
     verdict = compare(expected, submitted, kind=kind, **setting)
     assert (verdict.status, verdict.score) == ("undecided", 1.0), verdict
-    assert verdict.feedback == (
-        f"Your answer says `{words}` beside the formula. The formula was graded on its own;"
-        " a person will read the words against it.",
-    )
+    assert verdict.feedback == (_for_a_person(words),)
 
 
 @pytest.mark.parametrize(
@@ -922,13 +926,6 @@ def test_a_wrong_formula_with_words_that_may_say_otherwise_is_not_equivalent():
     verdict = compare(ATWOOD_A, "(m₁ + m₂) g/(m₁ − m₂) upward", **MASSES)
     assert (verdict.status, verdict.score) == ("not_equivalent", 0.0)
     assert verdict.notes == ("Read without the words `upward`: the formula is what is graded.",)
-
-
-def _for_a_person(words):
-    return (
-        f"Your answer says `{words}` beside the formula. The formula was graded on its own;"
-        " a person will read the words against it."
-    )
 
 
 @pytest.mark.parametrize(
