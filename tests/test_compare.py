@@ -83,12 +83,22 @@ def test_author_mistakes_in_the_call_raise_author_error(call, message):
         call()
 
 
-def test_symbols_the_problem_does_not_define_are_named():
-    verdict = compare(L_PENDULUM, "1/2 m r^2 thetadot^2 + m g l cos(theta)", kind="lagrangian", **PENDULUM)
+@pytest.mark.parametrize(
+    ("submitted", "name"),
+    [
+        ("1/2 m r^2 thetadot^2 + m g l cos(theta)", "r"),
+        # glued to the problem's names before a bracket, the letter it lacks: before, `mgL` was told as
+        # a function we do not know
+        ("1/2 m l^2 θ̇^2 - mgL(1-cosθ)", "L"),
+        ("1/2 m l^2 θ̇^2 + Lmg (cos θ)", "Lmg"),  # apart from its bracket: a name of its own, as always
+    ],
+)
+def test_symbols_the_problem_does_not_define_are_named(submitted, name):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert verdict.status == "not_equivalent"
     assert verdict.feedback == (
-        "Your answer uses `r`, which this problem does not define (it uses g, l, m, θ)."
-        " Write your answer in those, or say what it stands for: …, where r = ….",
+        f"Your answer uses `{name}`, which this problem does not define (it uses g, l, m, θ)."
+        f" Write your answer in those, or say what it stands for: …, where {name} = ….",
     )
     assert verdict.diagnosis == "undefined_symbol"
 
@@ -885,6 +895,13 @@ def _words(words):
     return f"Read without the words after it, `{words}`: the formula is what is graded."
 
 
+def _for_a_person(words):
+    return (
+        f"Your answer says `{words}` beside the formula. The formula was graded on its own;"
+        " a person will read the words against it."
+    )
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind", "status", "notes"),
     [
@@ -895,6 +912,13 @@ def _words(words):
          (_words(", a nonlinear equation"),)),  # from the mark before the words, past their article
         ("sqrt(g/l)", "ω = √(g/l) for small oscillations", "expression", "equivalent",
          (_words("for small oscillations"),)),
+        # in TeX, the words in \text{…}: said as they were typed inside the braces, after TeX's space
+        (EOM_PENDULUM, r"m l^2 \ddot\theta + m g l \sin\theta = 0 \text{(nonlinear)}", "equation", "equivalent",
+         (_words("(nonlinear)"),)),
+        ("sqrt(g/l)", r"\omega = \sqrt{g/l}\,\text{for small oscillations}", "expression", "equivalent",
+         (_words("for small oscillations"),)),
+        ("sqrt(g/l)", r"\omega = \sqrt{g/l} \quad \mbox{for oscillations of a small amplitude, about the bottom}",
+         "expression", "equivalent", (_words("for oscillations of a small amplitude, about the bottom"),)),
         # words of arithmetic, or its signs: refused as typed
         ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),
@@ -919,10 +943,7 @@ def test_words_that_may_say_otherwise_send_a_right_formula_to_a_person(expected,
     kind = "lagrangian" if expected == L_PENDULUM else "expression"
     verdict = compare(expected, submitted, kind=kind, **setting)
     assert (verdict.status, verdict.score) == ("undecided", 1.0), verdict
-    assert verdict.feedback == (
-        f"Your answer says `{words}` beside the formula. The formula was graded on its own;"
-        " a person will read the words against it.",
-    )
+    assert verdict.feedback == (_for_a_person(words),)
 
 
 @pytest.mark.parametrize(
@@ -971,6 +992,33 @@ def test_the_opposite_sign_with_words_that_may_turn_it_goes_to_a_person(submitte
 
 
 @pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # words that doubt the formula are read past, for a person, whatever else they say in words:
+        # before, `sign` in them was told as a function without its argument
+        ("m l² θ̈ + m g l sin θ = 0 (not sure about the sign)", "undecided",
+         (_for_a_person("(not sure about the sign)"),)),
+        ("θ̈ = −(g/l) sin θ (not sure about the sign, maybe minus)", "undecided",
+         (_for_a_person("(not sure about the sign, maybe minus)"),)),
+        ("θ̈ = −(g/l) sin θ, or the other sign, I think", "undecided",
+         (_for_a_person(", or the other sign, I think"),)),
+        ("θ̈ + (g/l) sin θ = 0 (maybe)", "undecided", (_for_a_person("(maybe)"),)),
+        (r"\ddot\theta + \frac gl \sin\theta = 0 \quad \text{(not sure about the sign)}", "undecided",
+         (_for_a_person("(not sure about the sign)"),)),
+        ("Not sure, but the equation of motion is θ̈ = −(g/l) sin θ", "undecided",
+         (_for_a_person("Not sure, but the equation of motion is"),)),
+        # a wrong formula is graded as written, and the words said to be read past
+        ("m l² θ̈ − m g l sin θ = 0 (not sure about the sign)", "not_equivalent",
+         ("A term differs: the term in sin(θ) has the wrong sign.",
+          "Read without the words `(not sure about the sign)`: the formula is what is graded.")),
+    ],
+)  # fmt: skip
+def test_words_that_doubt_a_formula_send_it_to_a_person(submitted, status, feedback):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
+
+
+@pytest.mark.parametrize(
     ("submitted", "status"),
     [
         ("½ m l² θ̇² + m g l cos θ up to a constant", "equivalent"),  # "up to" says nothing of the sign
@@ -1011,6 +1059,8 @@ def _before(words):
         (EOM_PENDULUM, "So the EOM is θ̈ = −(g/l) sin θ for all angles", "equation", "equivalent",
          (_before("So the EOM is"), _words("for all angles"))),
         (EOM_PENDULUM, "Equation of motion: θ̈ = −(g/l) sin θ", "equation", "equivalent", ()),  # the parser's label
+        (EOM_PENDULUM, r"\text{The equation of motion is } ml\ddot\theta = -mg\sin\theta", "equation", "equivalent",
+         (_before("The equation of motion is"),)),
         ("sqrt(g/l)", "The angular frequency is √(g/l)", "expression", "equivalent",
          (_before("The angular frequency is"),)),
         ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),
@@ -2354,6 +2404,7 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
         "either 2 or 3",
         "not 3 but 2",
         "not 2",
+        "2 (not sure)",  # a doubt beside a number, which a formula's words may voice, is no remark here
         "the one that swings",  # "one" after an article is a pronoun
     ],
 )
@@ -2502,7 +2553,8 @@ def test_an_expression_for_a_one_coordinate_system_is_told_an_equation_is_asked(
 
 
 _PIECES = ["theta", "thetadot", "θ̈", "m", "g", "l", "sin", "(", ")", "+", "-", "*", "/", "^", "2", "1/2", "=", ";",
-           "\\frac{", "}{", "}", "\\dot\\theta", "x", "d/dt", "[", "]", ",", "9^9", " "]  # fmt: skip
+           "\\frac{", "}{", "}", "\\dot\\theta", "x", "d/dt", "[", "]", ",", "9^9", " ",
+           "\\over", "\\text{(not sure)}", "mgL"]  # fmt: skip
 
 
 @settings(max_examples=150, deadline=None)

@@ -260,6 +260,8 @@ SPLITTING = [
     ("kx^2", k * x**2),
     ("2mgl", 2 * m * g * l),
     ("xyz", sympy.Symbol("xyz")),  # not all pieces known: one unknown name
+    # before a bracket, the problem's names and one letter it lacks: that letter, for the checker to name
+    ("mgL(a + b) + Lmg(a) + mgLsin(θ)", m * g * L * (a + b) + L * m * g * a + m * g * L * sin(theta)),
 ]
 
 EQUATIONS = [
@@ -502,6 +504,13 @@ LATEX = [
     ("a = b \\nonumber \\\\ c = d \\tag*{2} \\notag", (Eq(a, b), Eq(c, d))),
     ("\\overset{..}{\\theta} + \\overset{\\cdot\\cdot}{x} + \\overset{.}{\\phi} + \\overset{\\cdot}{\\theta}_1",
      D(theta, 2) + D(x, 2) + D(phi) + D(theta1)),
+    # plain TeX's \\over: what stands before it in its braces over what stands after; at top level, the side
+    ("{m g l \\over 2} + {1 \\over 2} m l^2 \\dot\\theta^2", m * g * l / 2 + m * l**2 * D(theta) ** 2 / 2),
+    ("\\ddot x = -{k \\over m} x", Eq(D(x, 2), -k / m * x)),
+    ("m g l \\over 2", m * g * l / 2),
+    ("a = b + c \\over 2 m", Eq(a, (b + c) / (2 * m))),
+    ("{{a \\over b} \\over c} + \\sqrt{g \\over l} + \\left( a \\over c \\right)^2",
+     a / (b * c) + sqrt(g / l) + (a / c) ** 2),
 ]  # fmt: skip
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX

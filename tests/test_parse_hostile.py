@@ -99,6 +99,10 @@ HOSTILE = [
     ("x != 1", "assignment"),
     ("__import__('os')", "bad_character"),
     ("x[0] @ y", "bad_character"),
+    # a call: a glued name before a bracket is the problem's names and one letter it lacks (mgL(…)), only so
+    ("foo(x)", "unknown_function"),
+    ("mgLL(x)", "unknown_function"),
+    ("mgLgamma(x)", "unknown_function"),  # γ, spelled, is no name of the problem's
     # -- brackets ---------------------------------------------------------------
     ("sin(θ", "unclosed"),
     ("((m g l)", "unclosed"),
@@ -121,6 +125,7 @@ HOSTILE = [
     ("\\input{/etc/passwd}", "unknown_command"),
     ("\\def\\x{1}", "unknown_command"),
     ("\\text{hello}", "latex_words"),
+    ("x = 1 \\text{(a remark longer than forty characters, in words)}", "latex_words"),  # was: an unknown \\text
     ("\\sqrt{g/l}\\,\\mathrm{radians per second}", "latex_words"),  # words: said so, not "\\mathrm is unknown"
     ("\\sqrt{g/l}\\,\\mathrm{m/s}", "unit_is_a_name"),  # m is the problem's mass: which is it?
     ("\\mathrm{" + "a" * 41 + "/s}", "name_too_long"),  # a unit's words keep the cap on a name
@@ -143,6 +148,16 @@ HOSTILE = [
     ("\\overset{...}{x}", "unknown_command"),
     ("\\text{L} + a", "latex_words"),  # a name in \\text only before `=`, as the quantity written out
     ("a = b \\\\[6pt", "unclosed"),
+    # TeX's \\over: one to a pair of braces (TeX itself refuses two), and something on each side of it
+    ("{a \\over b \\over c}", "over_twice"),
+    ("m \\over g \\over l = x", "over_twice"),
+    ("a \\over " * 200 + "b", "over_twice"),
+    ("{\\over 2}", "over_side"),
+    ("{m g \\over} l", "over_side"),
+    ("x = \\over l", "over_side"),
+    ("\\over", "over_side"),
+    ("{1 \\over 0}", "division_by_zero"),
+    (_nested("{1 \\over ", "}", 41), "too_deep"),
     # -- values that do not exist -----------------------------------------------
     ("1/0", "division_by_zero"),
     ("m/(l-l)", "division_by_zero"),
@@ -296,6 +311,18 @@ SHOWN = [
         "1234567890" * 4 + "\n" + "^" * 40,
     ),
     ("\\input{x}", "`\\input` is not a LaTeX command this grader knows.", "\\input{x}\n^^^^^^"),
+    (
+        "{a \\over b \\over c}",
+        "Two `\\over` in one pair of braces can be read more than one way: give each fraction braces of its own,"
+        " as in {a \\over b} + {c \\over d}, or write \\frac{a}{b}.",
+        "{a \\over b \\over c}\n" + " " * 11 + "^" * 5,
+    ),
+    (
+        "{m g l \\over}",
+        "`\\over` divides what stands before it in its braces by what stands after it, as in {m g l \\over 2}:"
+        " here one of them is missing.",
+        "{m g l \\over}\n" + " " * 7 + "^" * 5,
+    ),
     (
         "\\omega = \\sqrt{g/l}\\,\\text{for small angles}",
         "`\\text{for small angles}` is text, not mathematics: leave units and words out of the answer.",

@@ -111,7 +111,7 @@ TOKENS = [
     # what Mathematica, sympy's LaTeX, Word and MathType paste; equation numbers and a document's marks
     "Sin", "COS", "[t]", "{\\left(t \\right)}", "{(t)}", "\u2061", "\u2062", "\u2009", "〖", "〗",
     "\\theta _1", "{\\theta}", " '", "_1", "\\qquad (3)", "  (2)", "(2) ", "(\\theta) ", "\\\\[6pt]", "\\text{L}",
-    "\\boldsymbol", "\\mathbf{x}", "\\overset{..}", "\\tag*{2}", "\\nonumber",
+    "\\boldsymbol", "\\mathbf{x}", "\\overset{..}", "\\tag*{2}", "\\nonumber", "\\over",
 ]  # fmt: skip
 token_soup = st.lists(st.sampled_from(TOKENS), max_size=40).map("".join)
 

@@ -24,8 +24,27 @@ CHECK_EXITS = [
     # (arguments, exit status, what it prints)
     ([LAGRANGIAN, "1/2 m l^2 θ̇^2 + mgl cos θ"], 0,
      "✔ plane-pendulum.lagrangian: right\n  read as: g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),
+    ([LAGRANGIAN, "{1 \\over 2} m l^2 \\dot\\theta^2 + {m g l \\over 1} \\cos\\theta"], 0,
+     "✔ plane-pendulum.lagrangian: right\n  read as: g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),  # plain TeX's \over
     ([LAGRANGIAN, "1/2 m l^2 thetadot^2 - m g l cos(theta)"], 1,
      f"✘ plane-pendulum.lagrangian: not right\n  {SIGN_HINT}\n  read as: -g*l*m*cos(θ) + l^2*m*θ̇^2/2\n"),
+    # a name the problem lacks, glued to its names before a bracket: told as the name it is, not as a function
+    ([LAGRANGIAN, "1/2 m l^2 θ̇^2 - mgL(1-cosθ)"], 1,
+     "✘ plane-pendulum.lagrangian: not right\n"
+     "  Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+     " or say what it stands for: …, where L = ….\n"
+     "  read as: -L*g*m*(1 - cos(θ)) + l^2*m*θ̇^2/2\n"),
+    # words that doubt the formula: for a person to read; never `sign` told as a function without its argument
+    (["plane-pendulum.motion", "m l^2 θ̈ + m g l sin θ = 0 (not sure about the sign)"], 1,
+     "? plane-pendulum.motion: a person will check this\n"
+     "  Your answer says `(not sure about the sign)` beside the formula. The formula was graded on its own;"
+     " a person will read the words against it.\n"
+     "  read as: g*l*m*sin(θ) + l^2*m*θ̈ = 0\n"),
+    # a remark in TeX's \\text{…}: words, read past as words after a formula are
+    (["damped-oscillator.motion", "m\\ddot x + b \\dot x + k x = 0 \\text{(damped)}"], 0,
+     "✔ damped-oscillator.motion: right\n"
+     "  Read without the words after it, `(damped)`: the formula is what is graded.\n"
+     "  read as: b*ẋ + k*x + m*ẍ = 0\n"),
     (["plane-pendulum.why-harmonic", "sin θ ≈ θ, so the restoring force is proportional to θ"], 1,
      "? plane-pendulum.why-harmonic: a person will check this\n"
      "  A person will read this answer; the rubric found 2 of its 2 ideas.\n"),

@@ -49,7 +49,7 @@ from grader.judge.units import (
     units_of,
 )
 from grader.judge.verdict import Verdict
-from grader.judge.words import formula_then_words, says_otherwise, words_then_formula
+from grader.judge.words import formula_then_words, says_otherwise, text_as_words, words_then_formula
 from grader.parse import (
     ANSWER,
     LIMITS,
@@ -1055,6 +1055,7 @@ def _without_words(
         )  # fmt: skip
         return (kept if kept.ok and _undefined(kept, names) else answer), ()
     coords = expected.setting.coords
+    submitted = text_as_words(submitted, names, coords)  # … = 0 \text{(damped)}: TeX's text is words too
     read = _formula_before_words(submitted, expected, names, deadline)
     if read is not None:
         return read

@@ -269,8 +269,9 @@ def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
     if found is None or not number.isdigit():
         return False
     words = _COUNTED.findall(found[1])
-    if not words or any(word in names for word in words):
-        return False
+    things = [word for word in words if word.lower() not in (*_SAID_SIGNS, *_NUMBER_WORDS)]
+    if not things or any(word in names for word in words):
+        return False  # (three minus one) counts nothing: another number, no breakdown
     arithmetic = _LISTED.sub(" + ", _COUNTED.sub(_as_count, found[1]))
     if not _COUNTS.fullmatch(arithmetic):
         return False

@@ -4,6 +4,7 @@ Contents:
     is_prose(words, names)                     whether words are about the answer, not more of it
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
+    text_as_words(text, names, coords)         ``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: TeX's text, as words
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
 conserved``, ``a = g (m₁ − m₂)/(m₁ + m₂), with m₁ going down``. A person grades the formula and
@@ -11,8 +12,9 @@ reads the words. So it is with a sentence that leads to the formula: ``The angul
 √(g/l)``. The checker does the same, and says which words it did not grade, but only
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have. Words that may say
-the formula is other than written (``… upward``, ``… inverted``) are read past too, but
-:func:`says_otherwise` marks them for a person to read before a right formula earns its credit.
+the formula is other than written (``… upward``, ``… inverted``), or doubt it (``… (not sure about
+the sign)``), are read past too, but :func:`says_otherwise` marks them for a person to read before
+a right formula earns its credit.
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
-__all__ = ["formula_then_words", "is_prose", "says_otherwise", "words_then_formula"]
+__all__ = ["formula_then_words", "is_prose", "says_otherwise", "text_as_words", "words_then_formula"]
 
 _MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥≠±∓‒‐‑⁻﹣－")  # with the dashes a minus may be typed as
 # words that change a formula: "√(g/l) times l", "… but negative", "… all squared"
@@ -34,8 +36,14 @@ _MATH_WORDS = re.compile(
     r"derivative|differentiated|integral|integrated)\b",
     re.I,
 )
-# a number of its own, "or", or "not": 2 or 3, θ̈ = … or θ̈ = …, not for small angles
-_HEDGE = re.compile(r"(?<!\w)[0-9]|\b(?:or|not|never|isn't)\b", re.I)
+_NUMBER = re.compile(r"(?<!\w)[0-9]")  # a number of its own: for angles below 10 degrees
+# "or" or "not": θ̈ = … or θ̈ = …, not for small angles
+_HEDGE = re.compile(r"\b(?:or|not|never|isn't)\b", re.I)
+# words that doubt the formula beside them: "(not sure about the sign)", "maybe minus". Whatever else
+# they say, in words, a person reads them: a formula they doubt earns no credit without one.
+_DOUBT = re.compile(
+    r"\b(?:not\s+(?:sure|certain)|unsure|uncertain|maybe|perhaps|probably|possibly|I\s+think|I\s+guess)\b", re.I
+)
 # words that may say the formula is other than written, or set what its sign means: "… upward",
 # "… inverted", "… except the cosine is a sine"; or state its dimensions, which a prompt may ask
 # for ("… dimensionless"). A person reads them against the formula.
@@ -55,13 +63,22 @@ _LEADS_TO = re.compile(
     re.I,
 )
 _LENGTH = 400  # characters: longer answers are read as typed
+# TeX's commands whose braces may hold words, and the spaces set before them: \,\text{for small angles}
+_TEXT_COMMAND = re.compile(r"\\(?:text|textrm|mathrm|operatorname|mbox)(?![A-Za-z])")
+_TEX_SPACES = ("\\,", "\\;", "\\:", "\\!", "\\quad", "\\qquad", "~")
+_TEXT_GROUPS = 4  # \text{…} of words in one answer, at the most: a remark before the formula, one after
 
 
-def is_prose(words: str, names: Collection[str]) -> bool:
+def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool:
     """Whether ``words`` are about an answer, not more of it: no sign or word of arithmetic, no
     number in digits, no "or" or "not"; and they cannot be read, or use a name that is neither
-    the problem's (``names``) nor a unit."""
-    if not words or _MATH_SIGNS & set(words) or _MATH_WORDS.search(words) or _HEDGE.search(words):
+    the problem's (``names``) nor a unit. With ``doubt``, words that doubt the answer (``not sure
+    about the sign, maybe minus``) may say "or", "not" and arithmetic in words: they are for a
+    person to read (:func:`says_otherwise`), beside a formula; not beside a number, where they
+    may offer another."""
+    if not words or _MATH_SIGNS & set(words) or _NUMBER.search(words):
+        return False
+    if not (doubt and _DOUBT.search(words)) and (_MATH_WORDS.search(words) or _HEDGE.search(words)):
         return False
     if _APPLIED.search(words):
         return False
@@ -73,8 +90,9 @@ def is_prose(words: str, names: Collection[str]) -> bool:
 
 def says_otherwise(words: str) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
-    (``upward``, ``inverted``, ``except …``): a person must read it before the formula earns credit."""
-    return bool(_OTHERWISE.search(words))
+    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``): a person
+    must read it before the formula earns credit."""
+    return bool(_OTHERWISE.search(words) or _DOUBT.search(words))
 
 
 def formula_then_words(text: str, names: Collection[str], coords: Collection[str]) -> Iterator[tuple[str, str]]:
@@ -94,7 +112,7 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     line = text.rfind("\n", 0, cut)
     for start in dict.fromkeys((cut, mark if mark > line else -1)):
         formula, rest = text[:start].rstrip(), text[start:].strip()
-        if start > 0 and formula and is_prose(rest.lstrip(_OPENS), names):
+        if start > 0 and formula and is_prose(rest.lstrip(_OPENS), names, doubt=True):
             yield formula, rest
 
 
@@ -117,8 +135,35 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
         return
     for lead in _LEADS_TO.finditer(text, first.end()):
         words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
-        if formula and is_prose(words, names):
+        if formula and is_prose(words, names, doubt=True):
             yield words, formula
+
+
+def text_as_words(text: str, names: Collection[str], coords: Collection[str]) -> str:
+    """``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: each ``\\text{…}`` (or ``\\mbox``, ``\\mathrm``…)
+    that the parser reads as words, not as mathematics (a unit, ``\\text{L} =``, ``\\text{ where }``), as
+    the words it holds, with TeX's spaces before it left out; so they are found as words beside a
+    formula are, and said back as typed inside the braces. The text as typed where there are none."""
+    for _ in range(_TEXT_GROUPS):
+        if _TEXT_COMMAND.search(text) is None:
+            break
+        read = parse_answer(text, coords=coords, known=names)
+        if read.ok or read.code != "latex_words":
+            break
+        group = text[read.start : read.end]
+        words = group[group.index("{") + 1 : -1]
+        text = f"{_without_tex_spaces(text[: read.start])} {words} {text[read.end :]}"
+    return text
+
+
+def _without_tex_spaces(text: str) -> str:
+    """``text`` without the spaces it ends in, TeX's (``\\,``, ``\\quad``, ``~``) too."""
+    while True:
+        text = text.rstrip()
+        space = next((space for space in _TEX_SPACES if text.endswith(space)), None)
+        if space is None:
+            return text
+        text = text[: -len(space)]
 
 
 def _is_word(word: str, names: Collection[str], coords: Collection[str]) -> bool:

@@ -8,12 +8,14 @@ Contents:
 The grammar, loosest binding first::
 
     answer   := item (SEP item)*  |  '[' item (',' item)* ']'
-    item     := expr ('=' expr)?
+    item     := over ('=' over)?
+    over     := expr ('\\over' expr)?                      # TeX's fraction of its group: a \\over b
     expr     := term (('+' | '-') term)*
     term     := signed (('*' | '/') signed | factor)*      # juxtaposition multiplies
     signed   := ('+' | '-') signed | factor
     factor   := primary (SUP | '^' signed)?                 # right-associative
     primary  := number | name | function | group | frac | sqrt
+    group    := '(' over ')' | '[' over ']' | '{' over '}'
 
 Juxtaposition has the precedence of ``*`` and ``/`` and everything associates to
 the left, so ``1/2 m l^2`` is m·l²/2. Every sympy object is built here from a
@@ -299,16 +301,16 @@ class _Parser:
         if operator is not None:
             # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0: the operator, then the equation it gives
             self.i = operator + 1
-            lhs = self.expr()
+            lhs = self.over()
             if not self.token.is_op("="):
                 return first, lhs  # what the operator comes to, without "= 0": an expression
             self.advance()
-            rhs = self.expr()
+            rhs = self.over()
             if self.token.is_op("="):
                 raise ParseFailure("too_many_equals", self.token.start, self.token.end)
             return first, sympy.Eq(lhs, rhs, evaluate=False)
         label = self.label()
-        lhs = label if label is not None else self.expr()
+        lhs = label if label is not None else self.over()
         if not self.token.is_op("="):
             return first, lhs
         self.advance()
@@ -338,7 +340,7 @@ class _Parser:
         the chain says too (m ẍ = −k x). Both sides are in the problem's names and one holds an
         acceleration; anything else (``ω = √(g/l) = 3.13``) is None, the cursor left as it was."""
         start = self.i
-        last = self.expr()
+        last = self.over()
         accelerating = any(d.derivative_count >= 2 for side in (middle, last) for d in side.atoms(sympy.Derivative))
         if self.token.is_op("=") or not accelerating or self._defines(middle) or self._defines(last):
             self.i = start
@@ -385,7 +387,7 @@ class _Parser:
             if quotient is not None and self.tokens[quotient[0]].is_op("="):
                 self.i, name = quotient
                 return sympy.Symbol(name)
-        return self.expr()
+        return self.over()
 
     def _euler_lagrange_operator(self, i: int) -> int | None:
         """``d/dt(∂L/∂θ̇) − ∂L/∂θ`` at ``i``, bracketed or not, in plain notation or TeX's, with
@@ -476,6 +478,26 @@ class _Parser:
         return sympy.Symbol(canonical)
 
     # -- arithmetic ------------------------------------------------------------
+
+    def over(self):
+        """An expression, or TeX's ``a \\over b``: all of a group, or of a side, before ``\\over`` over
+        all of it after (``{m g l \\over 2}``, ``{1 \\over 2} m l^2``). Two in one group are refused,
+        as TeX refuses them: which divides which is anyone's guess."""
+        if self.token.kind == "over":
+            raise ParseFailure("over_side", self.token.start, self.token.end)
+        numerator = self.expr()
+        if self.token.kind != "over":
+            return numerator
+        over = self.advance()
+        after = self.token
+        if after.kind == "over":
+            raise ParseFailure("over_twice", after.start, after.end)
+        if not (after.kind in _STARTS_FACTOR or after.is_op("(", "[", "{", "+", "-")):
+            raise ParseFailure("over_side", over.start, over.end)
+        denominator = self.expr()
+        if self.token.kind == "over":
+            raise ParseFailure("over_twice", self.token.start, self.token.end)
+        return _quotient(numerator, denominator, over)
 
     def expr(self):
         terms = [self.term()]
@@ -581,12 +603,7 @@ class _Parser:
         if token.kind == "frac":
             self.advance()
             numerator = self.argument(token)
-            denominator = self.argument(token)
-            if denominator == 0:
-                raise ParseFailure("division_by_zero", token.start, token.end)
-            quotient = numerator * _power(denominator, sympy.Integer(-1), token)
-            _check_size(quotient, token)
-            return quotient
+            return _quotient(numerator, self.argument(token), token)
         if token.kind == "sqrt":
             self.advance()
             if self.token.is_op("[") and token.value == "\\sqrt":  # \sqrt[3]{x}
@@ -600,7 +617,7 @@ class _Parser:
     def group(self):
         opener = self.advance()
         self.deeper(opener)
-        value = self.expr()
+        value = self.over()
         self.expect(_OPENERS[opener.value], opener)
         self.depth -= 1
         return value
@@ -920,10 +937,40 @@ class _Parser:
         if name.tex:
             return self.tex_letters(name.raw)
         if self.token.is_op("(") and self.token.start == token.end and len(canonical) > 1 and not name.primes:
+            pieces = self._with_one_undefined(name.raw, token)
+            if pieces:
+                return pieces
             # eval(x), open(f), Integer(1): a call of something that is no function here
             known = ", ".join(sorted(set(FUNCTION_NAMES)))
             raise ParseFailure("unknown_function", token.start, token.end, name=self.source(token), known=known)
         return [sympy.Symbol(canonical)]
+
+    def _with_one_undefined(self, raw: str, token: Token) -> list | None:
+        """``mgL(1 − cos θ)`` where the problem has m, g and l: a glued name before a bracket, of the
+        problem's names and one letter it does not have, as m·g·L. So L is told as a name the problem
+        does not define, as in ``m g L(1 − cos θ)``, not mgL as a function we do not know. None where
+        no one letter, or more than one, makes such a reading: ``foo(x)`` and ``eval(x)`` stay unknown
+        functions, each of letters the problem has not."""
+        readings = []
+        for i, letter in enumerate(raw):
+            before, after = raw[:i], raw[i + 1 :]
+            if not (letter.isascii() and letter.isalpha()) or self.lookup(letter) is not None:
+                continue  # e and t mean something here
+            if after[:1] == "_" or after[:1].isdigit():
+                continue  # mgL_1: the subscript is the letter's, a name no split here reads
+            pieces = [self._pieces_of(before, token), self._pieces_of(after, token)]
+            if None not in pieces:
+                readings.append([*pieces[0], sympy.Symbol(letter), *pieces[1]])
+        return readings[0] if len(readings) == 1 else None
+
+    def _pieces_of(self, raw: str, token: Token) -> list | None:
+        """The problem's names (and functions) that ``raw`` is glued of, one or more; [] for no text;
+        None where it is not so glued, or a piece is no name of the problem's (η in getattr)."""
+        if not raw:
+            return []
+        whole = self._piece(raw)
+        pieces = [whole] if whole is not None else self.split(raw, token)
+        return None if pieces is None or any(self.own(piece) for piece in pieces) else pieces
 
     def tex_letters(self, raw: str) -> list:
         """A LaTeX run that is no known name, read as TeX does: one symbol per letter."""
@@ -1287,6 +1334,16 @@ def _apply(name: str, argument, token: Token):
     if value.has(sympy.zoo, sympy.nan):
         raise ParseFailure("undefined_value", token.start, token.end)
     return value
+
+
+def _quotient(numerator, denominator, token: Token):
+    """``\\frac{numerator}{denominator}`` or ``{numerator \\over denominator}``, refusing a division by
+    zero, and a value too large to build or to check."""
+    if denominator == 0:
+        raise ParseFailure("division_by_zero", token.start, token.end)
+    quotient = numerator * _power(denominator, sympy.Integer(-1), token)
+    _check_size(quotient, token)
+    return quotient
 
 
 def _power(base, exponent, token: Token):

@@ -47,6 +47,8 @@ MESSAGES: dict[str, str] = {
     "value_too_large": "This value is too large to handle.",
     "diff_too_large": "This derivative is too large to work out here; differentiate by hand, or write it with θ̇ and θ̈.",
     "missing_arguments": "`{name}` needs its arguments in braces, as in \\frac{{a}}{{b}} or \\sqrt{{x}}.",
+    "over_side": "`\\over` divides what stands before it in its braces by what stands after it, as in {{m g l \\over 2}}: here one of them is missing.",
+    "over_twice": "Two `\\over` in one pair of braces can be read more than one way: give each fraction braces of its own, as in {{a \\over b}} + {{c \\over d}}, or write \\frac{{a}}{{b}}.",
     "name_too_long": "`{name}` is too long for a name (the limit is {limit} characters).",
     "bad_name": "`{name}` is not a name an answer can use: names are letters and digits, joined by single underscores.",
     "unknown_function": "`{name}` is not a function this grader knows. Known functions: {known}.",

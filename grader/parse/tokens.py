@@ -93,10 +93,10 @@ class Token:
     Kinds: ``num`` (value: digit string), ``name`` (value: :class:`Name`), ``func``
     (value: canonical function name, or ``diff``), ``op`` (value: one of
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
-    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``sqrt``, ``partial`` (∂),
-    ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what follows), ``arrow`` (→: the
-    same between two equations, refused elsewhere), ``gap`` (``\\quad``, an environment's end: a
-    ``sep`` between two equations, nothing elsewhere), ``end``; the
+    ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``over`` (TeX's ``\\over``),
+    ``sqrt``, ``partial`` (∂), ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what
+    follows), ``arrow`` (→: the same between two equations, refused elsewhere), ``gap`` (``\\quad``,
+    an environment's end: a ``sep`` between two equations, nothing elsewhere), ``end``; the
     grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
     """
 
@@ -178,8 +178,9 @@ _LATEX_OPERATORS = {
 }  # fmt: skip
 _LATEX_FONTS = {"mathcal", "mathscr", "mathrm", "mathbf", "mathit", "mathsf", "boldsymbol"}
 # \label{eq:L} and \tag{1} name an equation for a document; \text{.} is the sentence's full stop.
-# (A brace this short after \text or \mathrm is a unit or a few words, as \mathrm{rad/s}.)
 _LATEX_ANNOTATIONS = re.compile(r"\s*\{[^{}]{0,40}\}")
+# a unit or words in \text or \mathrm, as \mathrm{rad/s} or \text{(not sure about the sign)}: a remark's length
+_TEXT_WORDS = re.compile(r"\s*\{[^{}]{0,120}\}")
 _TEXT_COMMANDS = {"text", "textrm", "mathrm", "operatorname", "mbox"}  # whose braces may hold a unit or words
 # rad/s, m/s^2, kg·m^2: words joined by / ^ or ·, as a compound unit is written in \mathrm or \text
 _COMPOUND_UNIT = re.compile(r"\s*\{\s*[A-Za-z]+(?:\s*(?:/|\^|·|\\cdot)\s*\{?-?[A-Za-z0-9]+\}?)+\s*\}")
@@ -996,6 +997,8 @@ class _Tokenizer:
             self.tokens.append(Token("op", _LATEX_OPERATORS[command], start, self.pos))
         elif command in ("frac", "dfrac", "tfrac"):
             self.tokens.append(Token("frac", "frac", start, self.pos))
+        elif command == "over":  # {1 \over 2}: plain TeX's fraction of its group, which the grammar reads
+            self.tokens.append(Token("over", "\\over", start, self.pos))
         elif command == "sqrt":
             self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
         elif command == "partial":
@@ -1047,7 +1050,7 @@ class _Tokenizer:
                 self.tokens[-1] = Token("name", Name(word[1]), start, self.pos)
         elif command in _TEXT_COMMANDS and (unit := _COMPOUND_UNIT.match(text, self.pos)):
             self._compound_unit(unit)
-        elif command in _TEXT_COMMANDS and (words := _LATEX_ANNOTATIONS.match(text, self.pos)):
+        elif command in _TEXT_COMMANDS and (words := _TEXT_WORDS.match(text, self.pos)):
             # \,\mathrm{rad/s}, \text{ for small angles}: more than the mathematics
             raise ParseFailure("latex_words", start, words.end(), words=text[start : words.end()])
         else:
