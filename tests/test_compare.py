@@ -1241,6 +1241,28 @@ def test_a_line_that_states_a_definition_is_not_the_answer(expected, submitted, 
     assert (verdict.status, verdict.notes) == (status, notes), verdict
 
 
+H_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"
+CHAIN = "Your 2 lines, each `H = …`, were read as one chain, H = … = …: its last side was graded."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "notes"),
+    [
+        # the definition in generic names, then the value: before, refused (q is no coordinate here)
+        ("H = Σ p q̇ − L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", (CHAIN,)),
+        ("H = Σ p q̇ − L; H = ½ m l²(θ̇² + sin²θ φ̇²) + m g l cos θ", "not_equivalent", (CHAIN,)),
+        # as on one line
+        ("H = Σ p q̇ − L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ()),
+        # lines of other names, or a last line that cannot be read: refused as before
+        ("H = Σ p q̇ − L\nE = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "invalid", ()),
+        ("H = Σ p q̇ − L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ\nH = foo(θ)", "invalid", ()),
+    ],
+)
+def test_lines_that_give_one_name_values_are_one_chain(submitted, status, notes):
+    verdict = compare(H_SPHERICAL, submitted, name="H", **SPHERICAL)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind"),
     [

@@ -169,6 +169,12 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
+    chain = _chained(submitted) if verdict.status == "invalid" and spec.shape == "expression" else None
+    if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
+        chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
+        if chained.status != "invalid":
+            note = say("lines_as_chain", count=chain[1], label=chain[2])
+            verdict = replace(chained, feedback=(*chained.feedback, note), notes=(*chained.notes, note))
     several = verdict.diagnosis in _ONE_THING_ASKED or _answered_twice(verdict.answer, prepared)
     # θ̈ = −ω² sin θ, then θ̈ = −(g/l) sin θ: no definition of ω to eliminate, but a last line that
     # needs none; only where that line is right does the reading by lines say more
@@ -198,6 +204,23 @@ _MAX_LINES = 6
 def _answered_twice(answer, expected: Expected) -> bool:
     """``ω = √(l/g); ω₀ = √(g/l)``: lines labelled with the asked quantity's names, two answers."""
     return getattr(answer, "kind", None) == "equations" and len(_asked_lines(answer.value, expected)) > 1
+
+
+# a line that gives a name a value: H = …
+_NAMED_LINE = re.compile(r"\s*([^\W\d]\w*)\s*=(?![=>])(.+)", re.DOTALL)
+
+
+def _chained(text: str) -> tuple[str, int, str] | None:
+    """``H = Σ p q̇ − L`` then ``H = ½ m l² θ̇² − …``: lines that each give one name a value, read as
+    the one chain ``H = Σ p q̇ − L = ½ m l² θ̇² − …`` that they are (the parser reads a chain's
+    definitions on the way as such, and grades its last side). Returns the chain, the count of
+    lines and the name; None where the lines are no such list."""
+    lines = _lines(text)
+    found = [_NAMED_LINE.fullmatch(line) for line in lines or ()]
+    if not found or not all(found) or len({match[1] for match in found}) != 1:
+        return None
+    label = found[0][1]
+    return f"{label} = " + " = ".join(match[2].strip() for match in found), len(found), label
 
 
 def _lines(text: str) -> list[str] | None:

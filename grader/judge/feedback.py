@@ -46,6 +46,8 @@ FEEDBACK: dict[str, str] = {
     "motion_left_out": "The equation{s} of motion after your Lagrangian {were} not graded: the Lagrangian is what is"
     " asked for here.",
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
+    "lines_as_chain": "Your {count} lines, each `{label} = …`, were read as one chain, {label} = … = …: its last"
+    " side was graded.",
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
