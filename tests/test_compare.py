@@ -2111,6 +2111,13 @@ def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
         ("b, since l = l(t)", "equivalent", ("Correct.",)),
         ("b - it depends on time", "equivalent", ("Correct.",)),
         ("a: scleronomic", "not_equivalent", ("Not the right choice.",)),
+        # or a reason in brackets, as after a comma
+        ("b (the hoop rotates)", "equivalent", ("Correct.",)),
+        ("b (the hoop's axis turns)", "equivalent", ("Correct.",)),
+        ("a (the hoop's shape is fixed)", "not_equivalent", ("Not the right choice.",)),
+        ("b (a)", "invalid", ("`b (a)` is not one of the options (a, b).",)),
+        ("b (or a)", "invalid", ("`b (or a)` is not one of the options (a, b).",)),
+        ("b (maybe scleronomic)", "invalid", ("`b (maybe scleronomic)` is not one of the options (a, b).",)),
         # the claim, then the reason
         ("rheonomic because l depends on t", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         # the option's words, then a remark in brackets that names no other option and does not hedge

@@ -179,7 +179,8 @@ def _names_another(rest: str, label: str, by_words: dict[str, str | None], texts
 
 def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
     """``b (rheonomic)``, ``b) rheonomic``, ``b: rheonomic``, ``b, since l = l(t)``: a label, then its
-    option's words, or after a mark of punctuation a reason naming no other option. Returns the
+    option's words, or after a mark of punctuation or in brackets (``b (the hoop rotates)``) a reason
+    naming no other option. Returns the
     label and "" ; or the label and the words where they name another option (``b (scleronomic)``);
     or None."""
     match = _LABELLED.fullmatch(submitted) if len(submitted) <= MAX_CHOICE_LENGTH else None
@@ -192,7 +193,8 @@ def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
     labels = choice_labels(words)
     if (labels and all(len(other) <= 2 for other in labels)) or _OR.search(words) or _HEDGE.match(words):
         return None  # a, e: labels, one of them no option's; b - or maybe a, b; not b: a hedge
-    return (label, "") if match["mark"].strip() or _REASON.match(" " + words) else None
+    bracketed = match["words"].startswith("(") and match["words"].endswith(")")  # b (the hoop rotates)
+    return (label, "") if match["mark"].strip() or bracketed or _REASON.match(" " + words) else None
 
 
 # a label, then words: b (rheonomic), (b) rheonomic, b. rheonomic, b - since …
