@@ -2122,6 +2122,8 @@ def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
         ("rheonomic because l depends on t", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         # the option's words, then a remark in brackets that names no other option and does not hedge
         ("rheonomic (t appears explicitly)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("rheonomic (l = l(t), set from outside)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("rheonomic (scleronomic, …)", "invalid", ("`rheonomic (scleronomic, …)` is not one of the options (a, b).",)),
         # Goldstein's names for them
         ("Rheonomous", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         ("b (rheonomous)", "equivalent", ("Correct.",)),

@@ -149,20 +149,31 @@ def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[s
         return None
     by_words: dict[str, str | None] = {}
     for label, text in texts.items():
-        claim = _REASON.split(text, maxsplit=1)[0]
+        claim = _claim(text)[0]
         for words in {_plain(text), _plain(claim)}:
             if words:
                 by_words[words] = None if words in by_words else label  # two options alike name neither
     whole = by_words.get(_plain(submitted))
     if not whole and not multiple:  # "rheonomic because l depends on t": the claim, then the reason
-        claim, *rest = _REASON.split(submitted, maxsplit=1)
+        claim, rest = _claim(submitted)
         whole = by_words.get(_plain(claim)) or _with_remark(claim, by_words) or _said_of(claim, by_words)
-        if whole and rest and _names_another(rest[0], whole, by_words, texts):
+        if whole and rest is not None and _names_another(rest, whole, by_words, texts):
             return None  # "φ, θ", "rheonomic, maybe scleronomic": a list or a hedge, no claim and reason
     if whole or not multiple:
         return [whole] if whole else None
     labels = [by_words.get(_plain(piece)) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
     return labels if labels and all(labels) else None
+
+
+def _claim(text: str) -> tuple[str, str | None]:
+    """``rheonomic, since …``: the claim before the first mark of a reason outside brackets, and the
+    reason after it, or None where there is none. A comma in brackets is the remark's own:
+    ``non-holonomic (r ≥ a, an inequality)`` is one claim."""
+    for mark in _REASON.finditer(text):
+        before = text[: mark.start()]
+        if before.count("(") <= before.count(")"):
+            return before, text[mark.end() :]
+    return text, None
 
 
 def _names_another(rest: str, label: str, by_words: dict[str, str | None], texts: dict[str, str]) -> bool:
@@ -211,14 +222,25 @@ def _with_remark(claim: str, by_words: dict[str, str | None]) -> str | None:
     """``scleronomic (no explicit t)``: one option's words, then a remark in brackets that names no
     other option and does not hedge with "or"; None for any other answer."""
     found = _REMARK.fullmatch(claim)
-    if found is None or _OR.search(found["remark"]):
+    if found is None or not _balanced(found["remark"]) or _OR.search(found["remark"]):
         return None
-    named, other = by_words.get(_plain(found["claim"])), by_words.get(_plain(found["remark"]))
-    return named if other in (None, named) else None
+    named = by_words.get(_plain(found["claim"]))
+    others = {by_words.get(_plain(remark)) for remark in (found["remark"], _claim(found["remark"])[0])}
+    return named if others <= {None, named} else None  # not rheonomic (scleronomic, …)
 
 
-# an option's words, then a remark in brackets: holonomic (an equation among the coordinates)
-_REMARK = re.compile(r"(?P<claim>[^()]+?)\s*\((?P<remark>[^()]*)\)\s*\.?\s*", re.S)
+def _balanced(text: str) -> bool:
+    """Whether every bracket in ``text`` closes one opened before it: ``l = l(t)``, not ``a) (b``."""
+    depth = 0
+    for c in text:
+        depth += (c == "(") - (c == ")")
+        if depth < 0:
+            return False
+    return depth == 0
+
+
+# an option's words, then a remark in brackets: holonomic (an equation among the coordinates), rheonomic (l = l(t))
+_REMARK = re.compile(r"(?P<claim>[^()]+?)\s*\((?P<remark>.*)\)\s*\.?\s*", re.S)
 
 
 def _said_of(claim: str, by_words: dict[str, str | None]) -> str | None:
