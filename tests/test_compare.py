@@ -2100,6 +2100,77 @@ def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
     assert (f"Read as the option you wrote out: {read}." in verdict.feedback) == (read is not None)
 
 
+FORCE_CHOICE = {
+    "kind": "choice",
+    "options": (
+        ("a", r"$-\partial V / \partial q_j$"),
+        ("b", r"$\partial V / \partial q_j$"),
+        ("c", r"$-\partial V / \partial \dot q_j$"),
+        ("d", r"$-\frac{d}{dt}\left(\partial V / \partial \dot q_j\right)$"),
+    ),
+}
+WORK_CHOICE = {
+    "kind": "choice",
+    "options": (("a", "positive"), ("b", "zero"), ("c", "negative"), ("d", "depends on the path")),
+}
+INSTANT_CHOICE = {
+    "kind": "choice",
+    "options": (("a", "advances by $dt$, following the actual motion"), ("b", r"is held fixed, $\delta t = 0$")),
+}
+DOTS_CHOICE = {
+    "kind": "choice",
+    "options": (
+        ("a", r"$\partial \mathbf r_i / \partial q_j$"),
+        ("b", r"$0$, since $\mathbf r_i$ does not depend on $\dot q_j$"),
+        ("c", r"$\partial \mathbf r_i / \partial t$"),
+    ),
+}
+
+
+@pytest.mark.parametrize(
+    ("options", "expected", "submitted", "status", "read"),
+    [
+        # an option that is a formula, typed as one: as the parser reads it, in any notation
+        (FORCE_CHOICE, "a", "-∂V/∂q_j", "equivalent", "a"),
+        (FORCE_CHOICE, "a", "−∂V/∂q_j", "equivalent", "a"),
+        (FORCE_CHOICE, "a", r"-\partial V / \partial q_j", "equivalent", "a"),
+        (FORCE_CHOICE, "a", r"$-\partial V / \partial q_j$", "equivalent", "a"),
+        (FORCE_CHOICE, "a", "Q_j = -∂V/∂q_j", "equivalent", "a"),  # the value after the asked quantity's name
+        (FORCE_CHOICE, "a", "−∂V/∂q_j, by the chain rule", "equivalent", "a"),
+        (FORCE_CHOICE, "a", "∂V/∂q_j", "not_equivalent", "b"),
+        (FORCE_CHOICE, "a", "Q_j = ∂V/∂q_j", "not_equivalent", "b"),
+        (FORCE_CHOICE, "a", "-∂V/∂q̇_j", "not_equivalent", "c"),
+        (FORCE_CHOICE, "a", r"-\partial V / \partial \dot q_j", "not_equivalent", "c"),
+        # its sign, dots and letters count: no option is read where none is typed
+        (FORCE_CHOICE, "a", r"\partial V / \partial \dot q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "∂V/∂q̇_j", "invalid", None),
+        (FORCE_CHOICE, "a", "-∂v/∂q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "-∂V/∂q_j or ∂V/∂q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "-∂V/∂q_j, ∂V/∂q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "∂V/∂q_j = -∂V/∂q_j", "invalid", None),
+        # a number, in digits or words; a formula of its own between an option's commas
+        (WORK_CHOICE, "b", "0", "equivalent", "b"),
+        (WORK_CHOICE, "b", "zero", "equivalent", "b"),
+        (WORK_CHOICE, "b", "1", "invalid", None),
+        (INSTANT_CHOICE, "b", "δt = 0", "equivalent", "b"),
+        (INSTANT_CHOICE, "b", r"\delta t = 0", "equivalent", "b"),
+        (INSTANT_CHOICE, "b", "dt", "invalid", None),  # a formula inside the option's words is no option
+        (DOTS_CHOICE, "a", "∂r_i/∂q_j", "equivalent", "a"),
+        (DOTS_CHOICE, "a", r"\partial \mathbf{r}_i / \partial q_j", "equivalent", "a"),
+        (DOTS_CHOICE, "a", "0", "not_equivalent", "b"),
+        (DOTS_CHOICE, "a", "∂ṙ_i/∂q_j", "invalid", None),
+        # a letter, in any of its spellings
+        (CYCLIC_CHOICE, "b", "varphi", "equivalent", "b"),
+        (CYCLIC_CHOICE, "b", r"\varphi", "equivalent", "b"),
+        (CYCLIC_CHOICE, "b", "vartheta", "not_equivalent", "a"),
+    ],
+)
+def test_an_option_that_is_a_formula_may_be_typed_as_one(options, expected, submitted, status, read):
+    verdict = compare(expected, submitted, **options)
+    assert verdict.status == status, verdict
+    assert (f"Read as the option you wrote out: {read}." in verdict.feedback) == (read is not None)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status", "feedback"),
     [
