@@ -2087,11 +2087,18 @@ CYCLIC_CHOICE = {"kind": "choice", "options": (("a", r"$\theta$"), ("b", r"$\phi
         ("θ is cyclic", "not_equivalent", "a"),
         ("both are cyclic", "not_equivalent", "d"),
         ("neither is cyclic", "not_equivalent", "c"),
+        # a coordinate by its description, then its letter
+        ("the azimuthal angle φ", "equivalent", "b"),
+        ("The azimuthal angle $\\varphi$ is cyclic", "equivalent", "b"),
+        ("the polar angle θ", "not_equivalent", "a"),
         # denied, hedged, or naming two options: which is meant is for the student to say
         ("θ is not cyclic", "invalid", None),
         ("θ isn't cyclic", "invalid", None),
         ("φ is cyclic or θ", "invalid", None),
         ("θ is φ", "invalid", None),
+        ("not the angle φ", "invalid", None),
+        ("maybe the angle φ", "invalid", None),
+        ("the angle φ or θ", "invalid", None),
     ],
 )
 def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):

@@ -188,9 +188,22 @@ _MATH = re.compile(r"\$[^$]+\$")
 
 
 def _named(text: str, readings: dict[str, str | None]) -> str | None:
-    """The label of the one option that ``text`` names, by its words or as its formula, or None."""
-    found = {readings.get(key) for key in _keys(text)} - {None}
+    """The label of the one option that ``text`` names, by its words or as its formula, or by a
+    coordinate's description and its letter (``the azimuthal angle φ``); or None."""
+    keys = _keys(text)
+    described = _DESCRIBED.fullmatch(text)
+    if described:
+        keys |= {"$" + formula for formula in _formulas(described["letter"])}
+    found = {readings.get(key) for key in keys} - {None}
     return found.pop() if len(found) == 1 else None
+
+
+# a coordinate described, then its letter: the azimuthal angle φ, the generalized coordinate q₁; not a hedge
+_DESCRIBED = re.compile(
+    r"\s*(?:the\s+)?(?:(?!(?:or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no|non)\b)[^\W\d_]+\s+){0,2}"
+    r"(?:angle|coordinate|variable)\s+(?P<letter>\S+?)\s*\.?",
+    re.I,
+)
 
 
 def _keys(text: str) -> set[str]:
