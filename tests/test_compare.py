@@ -2034,6 +2034,10 @@ CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $
         ("b", "the second one", "invalid", None),
         ("b", "B", "equivalent", None),  # a label is read as a label first
         ("b", "anholonomic", "equivalent", "b"),  # another textbook's name for it
+        # "not holonomic" is the option that says so in one word, never holonomic
+        ("b", "not holonomic", "equivalent", "b"),
+        ("b", "The constraint is not holonomic.", "equivalent", "b"),
+        ("a", "not non-holonomic", "invalid", None),
     ],
 )
 def test_a_choice_may_be_written_as_the_options_words(expected, submitted, status, read):
@@ -2213,6 +2217,8 @@ def test_an_option_that_is_a_formula_may_be_typed_as_one(options, expected, subm
          ("Your label a and your words `rheonomic` name different options: give one of them.",)),
         # a label, a space, and words that are no reason
         ("b foo", "invalid", ("`b foo` is not one of the options (a, b).",)),
+        ("not scleronomic", "invalid", ("`not scleronomic` is not one of the options (a, b).",)),  # no non-scleronomic
+        ("It is not scleronomic", "invalid", ("`It is not scleronomic` is not one of the options (a, b).",)),
         ("b or a", "invalid", ("or is not one of the options (a, b).",)),
         ("b, e", "invalid", ("e is not one of the options (a, b).",)),
         ("b - or maybe a", "invalid", ("`b - or maybe a` is not one of the options (a, b).",)),

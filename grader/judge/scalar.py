@@ -189,15 +189,21 @@ _MATH = re.compile(r"\$[^$]+\$")
 
 def _named(text: str, readings: dict[str, str | None]) -> str | None:
     """The label of the one option that ``text`` names, by its words or as its formula, or by a
-    coordinate's description and its letter (``the azimuthal angle φ``); or None."""
+    coordinate's description and its letter (``the azimuthal angle φ``); ``not holonomic`` names the
+    option that says so in one word, ``non-holonomic``, where there is one, and never ``holonomic``;
+    or None."""
     keys = _keys(text)
     described = _DESCRIBED.fullmatch(text)
     if described:
         keys |= {"$" + formula for formula in _formulas(described["letter"])}
     found = {readings.get(key) for key in keys} - {None}
+    denied = _NOT.fullmatch(text) if not found else None
+    if denied:
+        found = {readings.get(_plain("non" + denied["words"]))} - {None}
     return found.pop() if len(found) == 1 else None
 
 
+_NOT = re.compile(r"\s*not\s+(?P<words>\S.*?)\s*\.?\s*", re.I | re.S)  # not holonomic, not θ
 # a coordinate described, then its letter: the azimuthal angle φ, the generalized coordinate q₁; not a hedge
 _DESCRIBED = re.compile(
     r"\s*(?:the\s+)?(?:(?!(?:or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no|non)\b)[^\W\d_]+\s+){0,2}"
@@ -330,10 +336,16 @@ _REMARK = re.compile(r"(?P<claim>[^()]+?)\s*\((?P<remark>.*)\)\s*\.?\s*", re.S)
 def _said_of(claim: str, readings: dict[str, str | None]) -> str | None:
     """``φ is cyclic``, ``both are cyclic``, ``The constraint is holonomic``: a sentence whose subject
     or whose predicate, not both, is one option's words; None for any other, and for a sentence
-    that says "not", "no" or "or" (``θ is not cyclic``), which names no option by its words."""
+    that says "not", "no" or "or" (``θ is not cyclic``), which names no option by its words, but
+    for a predicate ``not holonomic`` that names one (``non-holonomic``)."""
     parts = _IS.split(claim, maxsplit=1)
-    if len(parts) != 2 or _DENIES.search(claim):
+    if len(parts) != 2:
         return None
+    negated = _NOT.fullmatch(parts[1])
+    if _DENIES.search(parts[0]) or _DENIES.search(negated["words"] if negated else parts[1]):
+        return None
+    if negated and _named(parts[1], readings) is None:
+        return None  # θ is not cyclic: not θ
     named = {_named(part, readings) for part in parts} - {None}
     return named.pop() if len(named) == 1 else None
 
