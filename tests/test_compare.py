@@ -2193,6 +2193,9 @@ def test_an_option_that_is_a_formula_may_be_typed_as_one(options, expected, subm
         ("b, since l = l(t)", "equivalent", ("Correct.",)),
         ("b - it depends on time", "equivalent", ("Correct.",)),
         ("a: scleronomic", "not_equivalent", ("Not the right choice.",)),
+        ("b, not a", "equivalent", ("Correct.",)),  # the other option set aside
+        ("b (not scleronomic)", "equivalent", ("Correct.",)),
+        ("b, not rheonomic", "invalid", ("`b, not rheonomic` is not one of the options (a, b).",)),
         # or a reason in brackets, as after a comma
         ("b (the hoop rotates)", "equivalent", ("Correct.",)),
         ("b (the hoop's axis turns)", "equivalent", ("Correct.",)),
@@ -2242,6 +2245,17 @@ def test_a_label_may_come_with_its_options_words_or_a_reason(submitted, status, 
         ("rheonomic, maybe scleronomic", TIME_CHOICE, "invalid"),
         ("rheonomic, a", TIME_CHOICE, "invalid"),  # words, then another option's label
         ("b; not b", TIME_CHOICE, "invalid"),
+        # a clarifying "not" before another option confirms the choice; before the same, takes it back
+        ("rheonomic, not scleronomic", TIME_CHOICE, "equivalent"),
+        ("rheonomic, not scleronomic, since l = l(t)", TIME_CHOICE, "equivalent"),
+        ("scleronomic, not rheonomic", TIME_CHOICE, "not_equivalent"),
+        ("φ, not θ", CYCLIC_CHOICE, "equivalent"),
+        ("the azimuthal angle φ, not θ", CYCLIC_CHOICE, "equivalent"),
+        ("rheonomic, not rheonomic", TIME_CHOICE, "invalid"),
+        ("rheonomic (not b)", TIME_CHOICE, "invalid"),
+        ("φ (not φ)", CYCLIC_CHOICE, "invalid"),
+        ("φ, not θ or both", CYCLIC_CHOICE, "invalid"),
+        ("rheonomic, not scleronomic, or maybe scleronomic", TIME_CHOICE, "invalid"),
         # a reason may name the other option: it says why, it does not choose
         ("φ, because θ appears in L", CYCLIC_CHOICE, "equivalent"),
         ("rheonomic, since a constraint depends on t", TIME_CHOICE, "equivalent"),

@@ -154,7 +154,7 @@ def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[s
     whole = _named(submitted, readings)
     if not whole and not multiple:  # "rheonomic because l depends on t": the claim, then the reason
         claim, rest = _claim(submitted)
-        whole = _named(claim, readings) or _with_remark(claim, readings) or _said_of(claim, readings)
+        whole = _named(claim, readings) or _with_remark(claim, readings, texts) or _said_of(claim, readings)
         if whole and rest is not None and _names_another(rest, whole, readings, texts):
             return None  # "φ, θ", "rheonomic, maybe scleronomic": a list or a hedge, no claim and reason
     if whole or not multiple:
@@ -203,10 +203,12 @@ def _named(text: str, readings: dict[str, str | None]) -> str | None:
     return found.pop() if len(found) == 1 else None
 
 
+# the words a hedge starts with: φ, or θ; rheonomic, maybe …; b; not b
+_HEDGES = "or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no"
 _NOT = re.compile(r"\s*not\s+(?P<words>\S.*?)\s*\.?\s*", re.I | re.S)  # not holonomic, not θ
 # a coordinate described, then its letter: the azimuthal angle φ, the generalized coordinate q₁; not a hedge
 _DESCRIBED = re.compile(
-    r"\s*(?:the\s+)?(?:(?!(?:or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no|non)\b)[^\W\d_]+\s+){0,2}"
+    rf"\s*(?:the\s+)?(?:(?!(?:{_HEDGES}|non)\b)[^\W\d_]+\s+){{0,2}}"
     r"(?:angle|coordinate|variable)\s+(?P<letter>\S+?)\s*\.?",
     re.I,
 )
@@ -269,13 +271,29 @@ def _claim(text: str) -> tuple[str, str | None]:
 def _names_another(rest: str, label: str, readings: dict[str, str | None], texts: dict[str, str]) -> bool:
     """Whether what follows an option's words names another option, alone or as labels (``φ, θ``,
     ``rheonomic, c``), or starts with a hedge (``…, or θ``, ``…, maybe …``, ``…, both``): then the
-    answer is no claim with its reason."""
+    answer is no claim with its reason. A clarifying ``not`` before another option confirms the choice
+    (``rheonomic, not scleronomic``); before the same option it takes it back (``b; not b``)."""
+    denial = _denied(rest, readings, texts)
+    if denial:
+        return denial[0] == label or _names_another(denial[1] or "", label, readings, texts)
     if _HEDGE.match(rest):
         return True
     if _named(rest, readings) not in (None, label):
         return True
     labels = choice_labels(rest)
     return bool(labels) and all(other in texts for other in labels) and set(labels) != {label}
+
+
+def _denied(text: str, readings: dict[str, str | None], texts: dict[str, str]) -> tuple[str, str | None] | None:
+    """``not θ``, ``not scleronomic, since …``, ``not a``: the option that a clarifying ``not`` sets
+    aside, by its label, words or formula, and what follows it (or None); None where the text is no
+    such denial of one option."""
+    claim, rest = _claim(text)
+    found = _NOT.fullmatch(claim)
+    if found is None:
+        return None
+    label = found["words"].lower() if found["words"].lower() in texts else _named(found["words"], readings)
+    return (label, rest) if label else None
 
 
 def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
@@ -291,6 +309,10 @@ def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
     named = _by_text(words, texts, multiple=False)
     if named:
         return (label, "") if named == [label] else (label, words)
+    readings = _readings(texts)
+    denial = _denied(words, readings, texts)
+    if denial:  # b, not a
+        return None if _names_another(words, label, readings, texts) else (label, "")
     labels = choice_labels(words)
     if (labels and all(len(other) <= 2 for other in labels)) or _OR.search(words) or _HEDGE.match(words):
         return None  # a, e: labels, one of them no option's; b - or maybe a, b; not b: a hedge
@@ -305,18 +327,22 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
 _OR = re.compile(r"\bor\b", re.I)  # a hedge between options: b - or maybe a
 # what a hedge starts with, after an option: "φ, or θ", "rheonomic, maybe …", "b; not b", "φ, both"
-_HEDGE = re.compile(r"\s*(?:or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no)\b", re.I)
+_HEDGE = re.compile(rf"\s*(?:{_HEDGES})\b", re.I)
 
 
-def _with_remark(claim: str, readings: dict[str, str | None]) -> str | None:
+def _with_remark(claim: str, readings: dict[str, str | None], texts: dict[str, str]) -> str | None:
     """``scleronomic (no explicit t)``: one option's words, then a remark in brackets that names no
-    other option and does not hedge with "or"; None for any other answer."""
+    other option, does not hedge with "or" and does not take the option back (``φ (not φ)``; ``φ
+    (not θ)`` confirms it); None for any other answer."""
     found = _REMARK.fullmatch(claim)
     if found is None or not _balanced(found["remark"]) or _OR.search(found["remark"]):
         return None
     named = _named(found["claim"], readings)
     others = {_named(remark, readings) for remark in (found["remark"], _claim(found["remark"])[0])}
-    return named if others <= {None, named} else None  # not rheonomic (scleronomic, …)
+    if others - {None, named}:
+        return None  # not rheonomic (scleronomic, …)
+    denial = _denied(found["remark"], readings, texts)
+    return None if denial and denial[0] == named else named  # φ (not θ), not φ (not φ)
 
 
 def _balanced(text: str) -> bool:
