@@ -3,7 +3,7 @@
 Contents:
     check_integer    a whole number, exactly (``6/2`` is 3)
     check_number     a number within a tolerance: |submitted − expected| ≤ atol + rtol·|expected|
-    check_choice     one or several option labels, in any order and case, or an option's own words
+    check_choice     one or several option labels, in any order and case, or an option's own words or formula
     choice_labels    the labels in a typed choice answer
     chosen           the labels a choice answer names, read as check_choice reads them
 """
