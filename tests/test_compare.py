@@ -2028,6 +2028,7 @@ CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $
     [
         ("b", "Non-holonomic", "equivalent", "b"),  # an option's own words, in any case, spacing or hyphen
         ("b", "nonholonomic", "equivalent", "b"),
+        ("b", "non - holonomic", "equivalent", "b"),
         ("c", "θ and φ", "equivalent", "c"),  # its TeX as typed letters
         ("c", r"\theta and \phi", "equivalent", "c"),
         ("b", "holonomic", "invalid", None),  # the words of two options name neither

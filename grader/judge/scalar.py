@@ -389,7 +389,7 @@ def _plain(text: str) -> str:
     return _SAME_KIND.sub(lambda found: _SAME_KINDS[found[0]], re.sub(r"[\s$\\{}*_.]", "", text).lower())
 
 
-_WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])[-\u2010\u2011](?=[^\W\d_])")
+_WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])\s*[-\u2010\u2011]\s*(?=[^\W\d_])")  # non-holonomic, non - holonomic
 
 
 # Goldstein's scleronomous and rheonomous, and anholonomic, are scleronomic, rheonomic, nonholonomic
