@@ -2100,12 +2100,17 @@ CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $
     [
         ("b", "Non-holonomic", "equivalent", "b"),  # an option's own words, in any case, spacing or hyphen
         ("b", "nonholonomic", "equivalent", "b"),
+        ("b", "non - holonomic", "equivalent", "b"),
         ("c", "θ and φ", "equivalent", "c"),  # its TeX as typed letters
         ("c", r"\theta and \phi", "equivalent", "c"),
         ("b", "holonomic", "invalid", None),  # the words of two options name neither
         ("b", "the second one", "invalid", None),
         ("b", "B", "equivalent", None),  # a label is read as a label first
         ("b", "anholonomic", "equivalent", "b"),  # another textbook's name for it
+        # "not holonomic" is the option that says so in one word, never holonomic
+        ("b", "not holonomic", "equivalent", "b"),
+        ("b", "The constraint is not holonomic.", "equivalent", "b"),
+        ("a", "not non-holonomic", "invalid", None),
     ],
 )
 def test_a_choice_may_be_written_as_the_options_words(expected, submitted, status, read):
@@ -2159,15 +2164,93 @@ CYCLIC_CHOICE = {"kind": "choice", "options": (("a", r"$\theta$"), ("b", r"$\phi
         ("θ is cyclic", "not_equivalent", "a"),
         ("both are cyclic", "not_equivalent", "d"),
         ("neither is cyclic", "not_equivalent", "c"),
+        # a coordinate by its description, then its letter
+        ("the azimuthal angle φ", "equivalent", "b"),
+        ("The azimuthal angle $\\varphi$ is cyclic", "equivalent", "b"),
+        ("the polar angle θ", "not_equivalent", "a"),
         # denied, hedged, or naming two options: which is meant is for the student to say
         ("θ is not cyclic", "invalid", None),
         ("θ isn't cyclic", "invalid", None),
         ("φ is cyclic or θ", "invalid", None),
         ("θ is φ", "invalid", None),
+        ("not the angle φ", "invalid", None),
+        ("maybe the angle φ", "invalid", None),
+        ("the angle φ or θ", "invalid", None),
     ],
 )
 def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
     verdict = compare("b", submitted, **CYCLIC_CHOICE)
+    assert verdict.status == status, verdict
+    assert (f"Read as the option you wrote out: {read}." in verdict.feedback) == (read is not None)
+
+
+FORCE_CHOICE = {
+    "kind": "choice",
+    "options": (
+        ("a", r"$-\partial V / \partial q_j$"),
+        ("b", r"$\partial V / \partial q_j$"),
+        ("c", r"$-\partial V / \partial \dot q_j$"),
+        ("d", r"$-\frac{d}{dt}\left(\partial V / \partial \dot q_j\right)$"),
+    ),
+}
+WORK_CHOICE = {
+    "kind": "choice",
+    "options": (("a", "positive"), ("b", "zero"), ("c", "negative"), ("d", "depends on the path")),
+}
+INSTANT_CHOICE = {
+    "kind": "choice",
+    "options": (("a", "advances by $dt$, following the actual motion"), ("b", r"is held fixed, $\delta t = 0$")),
+}
+DOTS_CHOICE = {
+    "kind": "choice",
+    "options": (
+        ("a", r"$\partial \mathbf r_i / \partial q_j$"),
+        ("b", r"$0$, since $\mathbf r_i$ does not depend on $\dot q_j$"),
+        ("c", r"$\partial \mathbf r_i / \partial t$"),
+    ),
+}
+
+
+@pytest.mark.parametrize(
+    ("options", "expected", "submitted", "status", "read"),
+    [
+        # an option that is a formula, typed as one: as the parser reads it, in any notation
+        (FORCE_CHOICE, "a", "-∂V/∂q_j", "equivalent", "a"),
+        (FORCE_CHOICE, "a", "−∂V/∂q_j", "equivalent", "a"),
+        (FORCE_CHOICE, "a", r"-\partial V / \partial q_j", "equivalent", "a"),
+        (FORCE_CHOICE, "a", r"$-\partial V / \partial q_j$", "equivalent", "a"),
+        (FORCE_CHOICE, "a", "Q_j = -∂V/∂q_j", "equivalent", "a"),  # the value after the asked quantity's name
+        (FORCE_CHOICE, "a", "−∂V/∂q_j, by the chain rule", "equivalent", "a"),
+        (FORCE_CHOICE, "a", "∂V/∂q_j", "not_equivalent", "b"),
+        (FORCE_CHOICE, "a", "Q_j = ∂V/∂q_j", "not_equivalent", "b"),
+        (FORCE_CHOICE, "a", "-∂V/∂q̇_j", "not_equivalent", "c"),
+        (FORCE_CHOICE, "a", r"-\partial V / \partial \dot q_j", "not_equivalent", "c"),
+        # its sign, dots and letters count: no option is read where none is typed
+        (FORCE_CHOICE, "a", r"\partial V / \partial \dot q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "∂V/∂q̇_j", "invalid", None),
+        (FORCE_CHOICE, "a", "-∂v/∂q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "-∂V/∂q_j or ∂V/∂q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "-∂V/∂q_j, ∂V/∂q_j", "invalid", None),
+        (FORCE_CHOICE, "a", "∂V/∂q_j = -∂V/∂q_j", "invalid", None),
+        # a number, in digits or words; a formula of its own between an option's commas
+        (WORK_CHOICE, "b", "0", "equivalent", "b"),
+        (WORK_CHOICE, "b", "zero", "equivalent", "b"),
+        (WORK_CHOICE, "b", "1", "invalid", None),
+        (INSTANT_CHOICE, "b", "δt = 0", "equivalent", "b"),
+        (INSTANT_CHOICE, "b", r"\delta t = 0", "equivalent", "b"),
+        (INSTANT_CHOICE, "b", "dt", "invalid", None),  # a formula inside the option's words is no option
+        (DOTS_CHOICE, "a", "∂r_i/∂q_j", "equivalent", "a"),
+        (DOTS_CHOICE, "a", r"\partial \mathbf{r}_i / \partial q_j", "equivalent", "a"),
+        (DOTS_CHOICE, "a", "0", "not_equivalent", "b"),
+        (DOTS_CHOICE, "a", "∂ṙ_i/∂q_j", "invalid", None),
+        # a letter, in any of its spellings
+        (CYCLIC_CHOICE, "b", "varphi", "equivalent", "b"),
+        (CYCLIC_CHOICE, "b", r"\varphi", "equivalent", "b"),
+        (CYCLIC_CHOICE, "b", "vartheta", "not_equivalent", "a"),
+    ],
+)
+def test_an_option_that_is_a_formula_may_be_typed_as_one(options, expected, submitted, status, read):
+    verdict = compare(expected, submitted, **options)
     assert verdict.status == status, verdict
     assert (f"Read as the option you wrote out: {read}." in verdict.feedback) == (read is not None)
 
@@ -2183,10 +2266,22 @@ def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
         ("b, since l = l(t)", "equivalent", ("Correct.",)),
         ("b - it depends on time", "equivalent", ("Correct.",)),
         ("a: scleronomic", "not_equivalent", ("Not the right choice.",)),
+        ("b, not a", "equivalent", ("Correct.",)),  # the other option set aside
+        ("b (not scleronomic)", "equivalent", ("Correct.",)),
+        ("b, not rheonomic", "invalid", ("`b, not rheonomic` is not one of the options (a, b).",)),
+        # or a reason in brackets, as after a comma
+        ("b (the hoop rotates)", "equivalent", ("Correct.",)),
+        ("b (the hoop's axis turns)", "equivalent", ("Correct.",)),
+        ("a (the hoop's shape is fixed)", "not_equivalent", ("Not the right choice.",)),
+        ("b (a)", "invalid", ("`b (a)` is not one of the options (a, b).",)),
+        ("b (or a)", "invalid", ("`b (or a)` is not one of the options (a, b).",)),
+        ("b (maybe scleronomic)", "invalid", ("`b (maybe scleronomic)` is not one of the options (a, b).",)),
         # the claim, then the reason
         ("rheonomic because l depends on t", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         # the option's words, then a remark in brackets that names no other option and does not hedge
         ("rheonomic (t appears explicitly)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("rheonomic (l = l(t), set from outside)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("rheonomic (scleronomic, …)", "invalid", ("`rheonomic (scleronomic, …)` is not one of the options (a, b).",)),
         # Goldstein's names for them
         ("Rheonomous", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         ("b (rheonomous)", "equivalent", ("Correct.",)),
@@ -2198,6 +2293,8 @@ def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
          ("Your label a and your words `rheonomic` name different options: give one of them.",)),
         # a label, a space, and words that are no reason
         ("b foo", "invalid", ("`b foo` is not one of the options (a, b).",)),
+        ("not scleronomic", "invalid", ("`not scleronomic` is not one of the options (a, b).",)),  # no non-scleronomic
+        ("It is not scleronomic", "invalid", ("`It is not scleronomic` is not one of the options (a, b).",)),
         ("b or a", "invalid", ("or is not one of the options (a, b).",)),
         ("b, e", "invalid", ("e is not one of the options (a, b).",)),
         ("b - or maybe a", "invalid", ("`b - or maybe a` is not one of the options (a, b).",)),
@@ -2221,6 +2318,17 @@ def test_a_label_may_come_with_its_options_words_or_a_reason(submitted, status, 
         ("rheonomic, maybe scleronomic", TIME_CHOICE, "invalid"),
         ("rheonomic, a", TIME_CHOICE, "invalid"),  # words, then another option's label
         ("b; not b", TIME_CHOICE, "invalid"),
+        # a clarifying "not" before another option confirms the choice; before the same, takes it back
+        ("rheonomic, not scleronomic", TIME_CHOICE, "equivalent"),
+        ("rheonomic, not scleronomic, since l = l(t)", TIME_CHOICE, "equivalent"),
+        ("scleronomic, not rheonomic", TIME_CHOICE, "not_equivalent"),
+        ("φ, not θ", CYCLIC_CHOICE, "equivalent"),
+        ("the azimuthal angle φ, not θ", CYCLIC_CHOICE, "equivalent"),
+        ("rheonomic, not rheonomic", TIME_CHOICE, "invalid"),
+        ("rheonomic (not b)", TIME_CHOICE, "invalid"),
+        ("φ (not φ)", CYCLIC_CHOICE, "invalid"),
+        ("φ, not θ or both", CYCLIC_CHOICE, "invalid"),
+        ("rheonomic, not scleronomic, or maybe scleronomic", TIME_CHOICE, "invalid"),
         # a reason may name the other option: it says why, it does not choose
         ("φ, because θ appears in L", CYCLIC_CHOICE, "equivalent"),
         ("rheonomic, since a constraint depends on t", TIME_CHOICE, "equivalent"),

@@ -2,6 +2,7 @@
 
 Contents:
     read_number(text, reads, names, ...)   the text to judge, its reading, and notes saying how it was read
+    NUMBER_WORDS                           zero to twenty in words, to their digits
 
 Students write a number inside a sentence, as they would on paper: ``≈ 2.01 s``, ``T = 2π√(l/g)
 = 2.01 s``, ``2 (θ₁ and θ₂)``, ``2 degrees of freedom``, ``two``, ``2,01``. The number is what the part
@@ -20,7 +21,7 @@ from collections.abc import Callable, Collection
 from grader.judge.words import is_prose
 from grader.parse import ParsedAnswer, parse_answer
 
-__all__ = ["read_number"]
+__all__ = ["NUMBER_WORDS", "read_number"]
 
 # 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English
 _DECIMAL_COMMA = re.compile(r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,})(?![0-9,])(.*)", re.DOTALL)
@@ -54,7 +55,7 @@ _WORDS = [
     "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
     "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty",
 ]  # fmt: skip
-_NUMBER_WORDS = {word: str(value) for value, word in enumerate(_WORDS)}
+NUMBER_WORDS = {word: str(value) for value, word in enumerate(_WORDS)}
 _NUMBER_WORD = re.compile(r"\b(?:" + "|".join(_WORDS) + r")\b", re.I)
 
 _LENGTH = 200  # longer answers are read as typed: these readings are for a number and a few words
@@ -108,7 +109,7 @@ def read_number(
     last = len(pieces) - 1
     for index in dict.fromkeys((last, 0)):  # the final value, else (2.01 s = T) the first side
         for before, typed, rest in _number_in(pieces[index], names):
-            words = _NUMBER_WORDS.get(typed.lower().rstrip("."))
+            words = NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, unit)
             answer = reads(prepared)
             if answer is None or (rest and not _is_remark(rest, names, words or typed)):
@@ -254,7 +255,7 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
-    if any(_NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(_PER_EACH.sub(" ", words))):
+    if any(NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(_PER_EACH.sub(" ", words))):
         return False
     return is_prose(words, names)
 
