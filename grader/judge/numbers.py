@@ -270,7 +270,7 @@ def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
     if found is None or not number.isdigit():
         return False
     words = _COUNTED.findall(found[1])
-    things = [word for word in words if word.lower() not in (*_SAID_SIGNS, *_NUMBER_WORDS)]
+    things = [word for word in words if word.lower() not in (*_SAID_SIGNS, *NUMBER_WORDS)]
     if not things or any(word in names for word in words):
         return False  # (three minus one) counts nothing: another number, no breakdown
     arithmetic = _LISTED.sub(" + ", _COUNTED.sub(_as_count, found[1]))
@@ -284,8 +284,8 @@ def _as_count(word: re.Match) -> str:
     """A word of a breakdown as arithmetic: and is +, three is 3 (``three translations and three
     rotations``), a name of what is counted nothing."""
     said = word[0].lower()
-    if said in _NUMBER_WORDS:
-        return f" {_NUMBER_WORDS[said]} "
+    if said in NUMBER_WORDS:
+        return f" {NUMBER_WORDS[said]} "
     return _SAID_SIGNS.get(said, " ")
 
 
