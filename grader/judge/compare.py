@@ -590,10 +590,10 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
     if len(asked) > 1:
         return answer, ()  # two answers for the asked quantity: each line is judged (see _judge_lines)
     if asked and not (asked[0] == len(items) - 1 and all(named)):  # else the last line, after its working
-        (asked,) = asked
-        others = [item.lhs for number, item in enumerate(items) if number != asked]
-        details = {**_lines_defining(others), "name": _label(items[asked].lhs, expected)}
-        return ParsedAnswer(answer.text, items[asked], "equation"), (("others_left_out", details), *notes)
+        graded = items[asked[0]]
+        others = [item.lhs for item in items if item is not graded]
+        details = {**_lines_defining(others), "name": _label(graded.lhs, expected)}
+        return ParsedAnswer(answer.text, graded, "equation"), (("others_left_out", details), *notes)
     if spec.shape == "expression":
         if not all(named) or not _names_the_answer(named[-1].name, spec):
             return answer, ()
@@ -629,7 +629,7 @@ def _asked_lines(items, expected: Expected) -> list[int]:
         return []
     asked = []
     for number, item in enumerate(items):
-        label = item.lhs.as_coeff_Mul()[1].as_base_exp()[0]  # ω of ω², L of 2L
+        label = _label_of(item.lhs)
         if not isinstance(label, sympy.Symbol) or label == ANSWER or label.name in expected.names:
             return []
         if _is_asked(label.name, names):
@@ -652,9 +652,14 @@ def _is_asked(label: str, names: tuple) -> bool:
     return bool(same & {name.replace("_", "") for name in names}) or label in {name.split("_")[0] for name in names}
 
 
+def _label_of(side):
+    """What a left side names: ω of ω², L of 2L, and the side itself where it is no multiple or power."""
+    return side.as_coeff_Mul()[1].as_base_exp()[0]
+
+
 def _label(side, expected: Expected) -> str:
     """The asked quantity's name as the note says it: ω, whether the student wrote ω or ω²."""
-    return expected.setting.describe([side.as_coeff_Mul()[1].as_base_exp()[0].name])
+    return expected.setting.describe([_label_of(side).name])
 
 
 def _motion_after(items: tuple, named: list, expected: Expected) -> int:
@@ -835,7 +840,7 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     side = named.value.lhs
     if _in_energies(side, expected.names) and _energy_multiple(side, names) is None:  # T + V = … where L is asked
         return ("label_for_a_person", {"label": to_text(side), "name": expected.setting.describe(names[:1])})
-    lhs = side.as_coeff_Mul()[1].as_base_exp()[0]  # L of 2L, ω of ω²
+    lhs = _label_of(side)
     if not isinstance(lhs, sympy.Symbol | AppliedUndef):
         return None  # T − V = …, ẍ = …: no name of one quantity
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
@@ -1036,7 +1041,7 @@ def _names_defined(answer: ParsedAnswer, names: list) -> list[str]:
     left side of an equation of a list that is a name alone (or its power)."""
     if not answer.ok or answer.kind != "equations":
         return []
-    bases = [item.lhs.as_coeff_Mul()[1].as_base_exp()[0] for item in answer.value if item.lhs != ANSWER]
+    bases = [_label_of(item.lhs) for item in answer.value if item.lhs != ANSWER]
     defined = {base.name for base in bases if base.is_Symbol and base.name not in names}
     return sorted(defined | {name for base in bases if (name := _difference_name(base, names))})
 
