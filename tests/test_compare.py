@@ -402,6 +402,39 @@ def test_one_term_missing_or_off_is_named_without_expanding_the_answer(
     assert verdict.feedback == (sentence,), verdict
 
 
+T_DOUBLE_TERMS = "1/2 (m1+m2) l1^2 θ̇₁^2 + 1/2 m2 l2^2 θ̇₂^2 + m2 l1 l2 θ̇₁ θ̇₂ cos(θ₁ − θ₂)"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "sentences"),
+    [
+        # expanded, m₂ for m₁ + m₂ is a term ½ m₁ l₁² θ̇₁² missing; the student wrote the term in θ̇₁²
+        (T_DOUBLE_TERMS.replace("(m1+m2)", "m2"),
+         ("A term differs: the velocity-dependent term in θ̇₁² has the wrong factor.",)),
+        # and m₁ + m₂ for m₂ is no term too many
+        (T_DOUBLE_TERMS.replace("m2 l2^2", "(m1+m2) l2^2"),
+         ("A term differs: the velocity-dependent term in θ̇₂² has the wrong factor.",)),
+        (T_DOUBLE_TERMS.replace("m2 l1 l2", "(m1+m2) l1 l2"),
+         ("A term differs: the velocity-dependent term in cos(θ₁ − θ₂) has the wrong factor.",)),
+        (T_DOUBLE_TERMS.replace("m2 l1 l2", "m1 l1 l2"),
+         ("A term differs: the velocity-dependent term in cos(θ₁ − θ₂) has the wrong factor.",)),
+        (T_DOUBLE_TERMS.replace("m2 l1 l2", "-m2 l1 l2"),
+         ("A term differs: the velocity-dependent term in cos(θ₁ − θ₂) has the wrong sign.",)),
+        # two terms with wrong masses: both named
+        (T_DOUBLE_TERMS.replace("(m1+m2)", "m1").replace("m2 l2^2", "m1 l2^2"),
+         ("A term differs: the velocity-dependent term in θ̇₂² has the wrong factor.",
+          "A term differs: the velocity-dependent term in θ̇₁² has the wrong factor.")),
+        # a term the student did not write at all is still missing
+        ("1/2 (m1+m2) l1^2 θ̇₁^2 + 1/2 m2 l2^2 θ̇₂^2",
+         ("A term is missing: a velocity-dependent term in cos(θ₁ − θ₂).",)),
+    ],
+)  # fmt: skip
+def test_a_term_with_wrong_masses_is_named_as_the_students_term(submitted, sentences):
+    verdict = compare(T_DOUBLE_TERMS, submitted, **DOUBLE)
+    assert verdict.status == "not_equivalent"
+    assert verdict.feedback == sentences
+
+
 def test_a_term_written_with_another_function_is_named_as_typed():
     # up to a constant, ω²cos²θ is −ω²sin²θ; but the student wrote cos, not a sin of the wrong sign
     hoop = "1/2 m R^2 (thetadot^2 + omega^2 sin(theta)^2) + m g R cos(theta)"
@@ -2729,7 +2762,7 @@ MOMENTA = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
          ("A term is missing: a term in p_φ and sin(θ).", "There is a term too many: a term in p_φ².")),
         ("p_θ²/(2 m l²) + p_φ²/(m l² sin²θ) − m g l cos θ",
          ("A term differs: the term in p_φ² and sin(θ) has the wrong factor.",)),
-        ("p_θ²/(2 m) + p_φ²/(2 m l² sin²θ) − m g l cos θ", ("A term differs: a term in p_θ² is not right.",)),
+        ("p_θ²/(2 m) + p_φ²/(2 m l² sin²θ) − m g l cos θ", ("A term differs: the term in p_θ² has the wrong factor.",)),
         # a missing term is named in the momenta too, by the name alone
         ("p_φ²/(2 m l² sin²θ) − m g l cos θ", ("A term is missing: a term in p_θ.",)),
         # both kinetic terms doubled: one term of the expected answer as written, named by both momenta,

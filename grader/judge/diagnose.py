@@ -5,6 +5,7 @@ Contents:
     expand_terms(expr)                            multiplied out as sympy.expand does, without building the sum
     term_changes(expected, submitted, setting)    missing / extra / differing terms, from two such
     describe_term(term, setting)                  "a velocity-dependent term", "a term in cos(θ₁ − θ₂)"
+    state_part(shape, setting)                    a term's factors in the coordinates and velocities
     in_sines_and_cosines(expr), as_written(shape, answer)   cot θ as cos θ / sin θ, sin 2θ as 2 sin θ cos θ;
                                                   and back as typed
     small_angle(expr, setting)                    sin u → u, cos u → 1 (and 1 − u²/2)
@@ -33,6 +34,7 @@ __all__ = [
     "has_angle_functions",
     "in_sentence",
     "small_angle",
+    "state_part",
     "symbolic_zero",
     "taylor",
     "term_changes",
@@ -225,6 +227,10 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
         if key not in ours:
             gained.append(shape)
             changes.append(("extra_term", describe_term(shape, setting, own=True)))
+    if lost or gained:
+        regrouped = _coefficients_differ(expected_terms, submitted_terms, setting)
+        if regrouped:
+            return regrouped
     if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
         coefficients = (expected_terms.get(lost[0]), submitted_terms.get(gained[0]))
         if coefficients[0] == coefficients[1] and gained[0] in small_angle(lost[0], setting):
@@ -233,6 +239,52 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             return [("term_differs", f"{named} is in its small-angle form, and the full form is asked for")]
         return _one_term_changed(changes, lost[0], gained[0], setting, [shape for shape, _ in theirs.values()])
     return changes
+
+
+def _coefficients_differ(expected_terms: dict, submitted_terms: dict, setting: Setting) -> list[tuple[str, str]]:
+    """Terms that differ only in their parameters, each named once as the term the student
+    wrote; [] where the answer has not the same terms in the coordinates and velocities.
+
+    Expanded, ½ m₂ l₁² θ̇₁² written for ½ (m₁ + m₂) l₁² θ̇₁² is a term ½ m₁ l₁² θ̇₁² missing;
+    but the student wrote a term in θ̇₁² and should look at its factor, not for another term.
+    Terms are grouped by their part in the coordinates and velocities (and given names), their
+    parameters summed; where both answers have the same groups, one or two whose parameters
+    differ are named. The constant group is left to the terms as they are.
+    """
+    ours, theirs = _by_state(expected_terms, setting), _by_state(submitted_terms, setting)
+    if set(ours) != set(theirs):
+        return []
+    differing = [key for key in ours if sympy.expand(ours[key][1] - theirs[key][1]) != 0]
+    if not 1 <= len(differing) <= 2 or any(key is sympy.S.One for key in differing):
+        return []
+    written = [shape for shape, _ in theirs.values()]
+    changes = []
+    for key in differing:
+        shape, coefficient = theirs[key]
+        how = "has the wrong sign" if sympy.expand(coefficient + ours[key][1]) == 0 else "has the wrong factor"
+        named = describe_term(shape, setting, definite=True, own=True)
+        changes.append(("term_differs", f"{told_apart(shape, named, written, setting, own=True)} {how}"))
+    return changes
+
+
+def _by_state(collected: dict, setting: Setting) -> dict:
+    """{a term's part in the coordinates, velocities and given names, in sines and cosines:
+    (that part as written, the rest of the term summed over the terms that share it)}."""
+    varying = setting.varying
+    grouped: dict = {}
+    for shape, coefficient in collected.items():
+        times, form = in_sines_and_cosines(shape).as_coeff_Mul()
+        inside = state_part(form, setting)
+        outside = sympy.Mul(*(f for f in sympy.Mul.make_args(form) if not f.free_symbols & varying))
+        written, before = grouped.get(inside, (state_part(shape, setting), 0))
+        grouped[inside] = (written, before + coefficient * times * outside)
+    return grouped
+
+
+def state_part(shape, setting: Setting):
+    """The factors of a term (as :func:`terms` keys it) in the coordinates, their rates and the
+    given names: θ̇₁² of ½ m₁ l₁² θ̇₁²; 1 for a term of parameters alone."""
+    return sympy.Mul(*(f for f in sympy.Mul.make_args(shape) if f.free_symbols & setting.varying))
 
 
 def told_apart(shape, description: str, shapes: list, setting: Setting, **how) -> str:

@@ -28,7 +28,9 @@ from grader.judge.diagnose import (
     as_written,
     describe_term,
     has_angle_functions,
+    in_sines_and_cosines,
     small_angle,
+    state_part,
     symbolic_zero,
     term_changes,
     terms,
@@ -418,6 +420,8 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
         return None
     (shape, multiple), setting = found[0], expected.setting
     if abs(multiple + 1) < 1e-9:
+        if _written_in_state(shape, s, setting):
+            return None  # ½ m₂ l₁² θ̇₁² for ½ (m₁ + m₂) l₁² θ̇₁²: a factor to look at, named from the terms
         return "missing_term", describe_term(shape, setting)
     if _function_names(shape) - _function_names(s):  # the term in cot θ where the student wrote cot θ
         shape = as_written(shape, expected.setting.plain(s))
@@ -434,6 +438,16 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     if shape in shapes:
         named = told_apart(shape, named, list(shapes), setting, own=True)
     return "term_differs", f"{named} {how}"
+
+
+def _written_in_state(shape, s, setting) -> bool:
+    """Whether the answer ``s`` has a term with the part in the coordinates and velocities that
+    ``shape`` has (one with coordinates or velocities at all)."""
+    inside, plain = state_part(in_sines_and_cosines(shape), setting), setting.plain(s)
+    if inside is sympy.S.One or not all(plain.has(factor) for factor in sympy.Mul.make_args(inside)):
+        return False  # no term of the answer can have it: not worth expanding the answer to see
+    written = terms(plain)
+    return written is not None and any(state_part(in_sines_and_cosines(other), setting) == inside for other in written)
 
 
 def _written_terms(e, shapes: dict, varying: set | None) -> list:
