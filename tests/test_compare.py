@@ -1174,10 +1174,20 @@ def test_a_name_only_in_terms_of_its_own_may_move_with_the_system_so_a_person_de
     assert name in verdict.read_as  # shown as typed
 
 
-def test_an_answer_wrong_whatever_its_own_name_stands_for_is_not_equivalent_with_the_note():
-    verdict = compare(L_ATWOOD, "½ (m₁ + m₂) ẋ² + (m₁ + m₂) g x − m₂ g y", kind="lagrangian", **ATWOOD)
-    assert (verdict.status, verdict.score) == ("not_equivalent", 0.0), verdict
-    assert any("`y` appears only in a term with no coordinate or velocity" in note for note in verdict.notes)
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "½ (m₁ + m₂) ẋ² + (m₁ + m₂) g x − m₂ g y",
+        # m₂'s height, not written in x: wrong with y a constant, and y is most likely no constant
+        "½ (m₁ + m₂) ẋ² + m₁ g x − m₂ g y",
+    ],
+)
+def test_an_answer_wrong_whatever_its_own_name_stands_for_names_it_as_undefined(submitted):
+    verdict = compare(L_ATWOOD, submitted, kind="lagrangian", **ATWOOD)
+    assert (verdict.status, verdict.score, verdict.diagnosis) == ("not_equivalent", 0.0, "undefined_symbol"), verdict
+    assert verdict.feedback[0].startswith("Your answer uses `y`, which this problem does not define")
+    assert len(verdict.feedback) == 1  # not also judged with y as a constant
+    assert "y" in verdict.read_as
 
 
 @pytest.mark.parametrize(

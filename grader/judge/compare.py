@@ -381,6 +381,12 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     # as typed: 2.006 m is not read as a time; and 2 or 3 is not shown as the product 6·or
                     return _verdict(early, None if early.key == "number_hedged" else shown)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+            if constant and constant[0] == "constant_unsure" and outcome.score == 0:
+                # − m₂ g y on Atwood's machine, wrong with y taken as a constant: more likely a height
+                # that moves (m₂'s), in a name the problem does not define; said so, as it was typed
+                undefined = _mismatch(spec, expected, with_constant)
+                if undefined is not None:
+                    return _verdict(undefined, with_constant)
             if outcome.key == "other_unit" and shown is not None and shown.value.free_symbols:
                 # 2.006 ms: the unit was typed, and asking whether the number is in ks is no help
                 outcome = replace(outcome, key="out_of_tolerance", details={})
