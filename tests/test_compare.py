@@ -2792,6 +2792,22 @@ def test_an_answer_in_the_given_names_is_diagnosed_in_them(submitted, sentences)
     assert not any("velocity" in sentence for sentence in verdict.feedback) or "φ̇" in submitted
 
 
+@pytest.mark.parametrize(
+    ("submitted", "diagnosis"),
+    [
+        ("p_θ θ̇ + p_φ φ̇ − L", "undefined_symbol"),  # said before any comparison
+        ("p_θ θ̇ + p_φ φ̇ − m g l cos θ + m g h", "undefined_symbol"),  # wrong with h taken as a constant
+        ("p_θ θ̇ + p_φ φ̇", "wrong"),
+    ],
+)
+def test_what_a_given_name_stands_for_is_never_shown_back(submitted, diagnosis):
+    # another part asks for p_φ itself: reading it back as m l² sin²θ φ̇ would give that answer away
+    verdict = compare(SPHERICAL_H, submitted, given=MOMENTA, up_to_constant=True, **SPHERICAL)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", diagnosis), verdict
+    assert "p_φ" in verdict.read_as and "sin" not in verdict.read_as
+    assert verdict.feedback[-1] == "Read with the problem's own meaning of `p_φ` and `p_θ`."
+
+
 def test_given_names_that_do_not_determine_the_velocities_leave_the_diagnosis_in_them():
     # one name for two velocities: the answer cannot be written in it, and is said in the velocities
     given = {"K": "m l^2 (thetadot^2 + phidot^2)"}

@@ -377,6 +377,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += (constant,) if constant else ()
                 shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
                 early = early or _mismatch(spec, expected, answer)
+                if early and used:
+                    return _verdict(_with_given_note(early, used), typed)  # as for any verdict: see below
                 if early:
                     # as typed: 2.006 m is not read as a time; and 2 or 3 is not shown as the product 6·or
                     return _verdict(early, None if early.key == "number_hedged" else shown)
@@ -386,7 +388,11 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 # that moves (m₂'s), in a name the problem does not define; said so, as it was typed
                 undefined = _mismatch(spec, expected, with_constant)
                 if undefined is not None:
-                    return _verdict(undefined, with_constant)
+                    return (
+                        _verdict(_with_given_note(undefined, used), typed)
+                        if used
+                        else _verdict(undefined, with_constant)
+                    )
             if outcome.key == "other_unit" and shown is not None and shown.value.free_symbols:
                 # 2.006 ms: the unit was typed, and asking whether the number is in ks is no help
                 outcome = replace(outcome, key="out_of_tolerance", details={})
@@ -410,12 +416,16 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
     if used:
         # Neither the note nor the answer shown back says what p_θ stands for: another part
         # of the problem may ask for just that. The answer is shown as typed.
-        names = _listing([symbol.name for symbol, _ in used])
-        outcome = replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
-        return _verdict(outcome, typed)
+        return _verdict(_with_given_note(outcome, used), typed)
     if constant:
         return _verdict(outcome, with_constant)  # shown with the constant the note says was left out
     return _verdict(outcome, answer)  # a number with a unit is shown in the part's unit, the note says so
+
+
+def _with_given_note(outcome: Outcome, used: tuple) -> Outcome:
+    """``outcome`` with the note that the given names (p_θ) were read with the problem's meaning."""
+    names = _listing([symbol.name for symbol, _ in used])
+    return replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
 
 
 def _with_units(outcome: Outcome, spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome:
