@@ -3143,3 +3143,46 @@ def test_a_one_term_answer_is_told_the_symbols_it_lacks_and_those_it_should_not_
         "Your answer does not depend on g and l, and the right answer does.",
         "The right answer does not depend on m and θ̇.",
     ), verdict
+
+
+HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "options", "status", "first"),
+    [
+        # right as a value, but it says L is T + V: a person decides
+        (L_PENDULUM, "L = T + V = 1/2 m l^2 θ̇^2 + m g l cos θ", "lagrangian", {}, "undecided",
+         "Your answer says `L = T + V` on the way to its value, which is not what L is. Its value was graded and"
+         " is right; a person will check this answer."),
+        (L_PENDULUM, "L = T + U = 1/2 m l^2 θ̇^2 + m g l cos θ", "lagrangian", {}, "undecided",
+         "Your answer says `L = T + U` on the way to its value, which is not what L is. Its value was graded and"
+         " is right; a person will check this answer."),
+        (HOOP_H, f"H = T − V = {HOOP_H_TYPED}", "expression", {"name": "H"}, "undecided",
+         "Your answer says `H = T - V` on the way to its value, which is not what H is. Its value was graded and"
+         " is right; a person will check this answer."),
+        # wrong either way: said beside the diagnosis
+        (L_PENDULUM, "L = T + U = 1/2 m l^2 θ̇^2 + 2 m g l cos θ", "lagrangian", {}, "not_equivalent",
+         "A term differs: the term in cos(θ) has the wrong factor."),
+        # what it says is right
+        (L_PENDULUM, "L = T − V = 1/2 m l^2 θ̇^2 + m g l cos θ", "lagrangian", {}, "equivalent", "Correct."),
+        (L_PENDULUM, "L = T − U = 1/2 m l^2 θ̇^2 + m g l cos θ", "lagrangian", {}, "equivalent", "Correct."),
+        # H = T + V is what H is where T is quadratic in the velocities; whether it is here, the bank's
+        # listed mistake (T + V's own value) says, not the statement
+        (HOOP_H, f"H = T + V = {HOOP_H_TYPED}", "expression", {"name": "H"}, "equivalent", "Correct."),
+    ],
+)  # fmt: skip
+def test_a_chain_that_says_its_quantity_is_the_wrong_sum_of_energies(expected, submitted, kind, options, status, first):
+    verdict = compare(expected, submitted, kind=kind, coords=["theta"], known=["m", "g", "l", "R", "omega"], **options)
+    assert verdict.status == status, verdict
+    assert verdict.feedback[0] == first
+    if status == "not_equivalent":
+        statement = submitted.split(" = ")[1]
+        said = f"Your answer says `L = {statement}` on the way to its value, which is not what L is."
+        assert verdict.feedback[-1] == said
+
+
+def test_a_chain_that_says_l_is_t_plus_v_of_its_value_too_is_told_once():
+    verdict = compare(L_PENDULUM, "L = T + V = 1/2 m l^2 θ̇^2 - m g l cos θ", kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "t_plus_v")
+    assert verdict.feedback == ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.",)

@@ -356,6 +356,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     read_notes = (note,)  # the words were the unit
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
+                read_notes += _misstated(answer, expected)
                 answer, stated = _without_stated_definitions(answer, expected)
                 read_notes += stated
                 answer = _with_definitions(answer, expected, deadline)
@@ -512,6 +513,18 @@ def _replaced(item, replacement: dict):
     if isinstance(item, sympy.Eq):
         return sympy.Eq(item.lhs.xreplace(replacement), item.rhs.xreplace(replacement), evaluate=False)
     return item.xreplace(replacement)
+
+
+def _misstated(answer: ParsedAnswer, expected: Expected) -> tuple:
+    """A note where a chain says on its way that its quantity is a sum of the energies it is not:
+    ``L = T + V = ½ m l² θ̇² + m g l cos θ`` is right as a value, but not as what it says L is."""
+    for statement in answer.stated:
+        label, side = statement.lhs, statement.rhs
+        if not isinstance(label, sympy.Symbol) or label.name not in _ENERGY_SUMS or label.name in expected.names:
+            continue
+        if _in_energies(side, expected.names) and _energy_multiple(side, [label.name]) != 1:
+            return (("statement_for_a_person", {"statement": to_text(statement), "label": label.name}),)
+    return ()
 
 
 def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
@@ -993,6 +1006,7 @@ _FOR_A_PERSON = {
     "words_for_a_person": "words_read_past",
     "unit_for_a_person": "unit_left_out",
     "label_for_a_person": "label_other",
+    "statement_for_a_person": "statement_wrong",
 }
 
 
@@ -1009,6 +1023,8 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
         outcome = replace(outcome, status="undecided", key="sign_words_for_a_person", details=direction[1])
         return outcome, tuple(note for note in notes if note is not direction)
     if outcome.score == 0:
+        if outcome.key == "t_plus_v":  # L = T + V = …, as its value says too: said once
+            notes = tuple(note for note in notes if not note or note[0] != "statement_for_a_person")
         return outcome, tuple((_FOR_A_PERSON.get(note[0], note[0]), note[1]) if note else note for note in notes)
     said = ((outcome.key, outcome.details),) if outcome.key and outcome.status != "equivalent" else ()
     (key, details), *others = unsure

@@ -62,6 +62,9 @@ FEEDBACK: dict[str, str] = {
     "label_for_a_person": "Your answer is labelled {label}, but the quantity asked for is {name}. Read as {name},"
     " it is right; a person will check which you meant.",
     "label_other": "Your answer is labelled {label}, but the quantity asked for is {name}.",
+    "statement_for_a_person": "Your answer says `{statement}` on the way to its value, which is not what {label}"
+    " is. Its value was graded and is right; a person will check this answer.",
+    "statement_wrong": "Your answer says `{statement}` on the way to its value, which is not what {label} is.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",

@@ -51,11 +51,14 @@ class ParsedAnswer:
         text: the answer as typed.
         value: a sympy expression, a ``sympy.Eq``, or a tuple of ``Eq`` (a system).
         kind: ``"expression"``, ``"equation"`` or ``"equations"``.
+        stated: what a chain said its quantity is on the way to its value, as ``Eq(label, side)``:
+            ``L = T − V`` of ``L = T − V = ½ m l² θ̇² + …`` (read as L = ½ m l² θ̇² + …).
     """
 
     text: str
     value: object
     kind: str
+    stated: tuple = ()
 
     ok = True
 
@@ -127,7 +130,8 @@ def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = (), dead
         return refusal("empty", text)
     try:
         tokens = tokenize(text)
-        value = parse_tokens(tokens, Context.build(coords, known), text, deadline)
+        stated: list = []
+        value = parse_tokens(tokens, Context.build(coords, known), text, deadline, stated)
     except ParseFailure as failure:
         return failure.to_refusal(text)
     except _SYMPY_FAILURES:
@@ -135,7 +139,7 @@ def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = (), dead
     if _has_undefined(value):
         return refusal("undefined_value", text)
     kind = "equations" if isinstance(value, tuple) else "equation" if isinstance(value, sympy.Eq) else "expression"
-    return ParsedAnswer(text, value, kind)
+    return ParsedAnswer(text, value, kind, tuple(stated))
 
 
 def _has_undefined(value) -> bool:

@@ -135,8 +135,11 @@ def _built(coords: tuple, known: tuple) -> Context:
     return Context._build(coords, known)
 
 
-def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None):
+def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None, stated: list | None = None):
     """An expression, an ``Eq``, or a tuple of ``Eq`` (a system), from the tokens of ``text``.
+
+    ``stated``, if given, receives the middle sides a chain named what the quantity is, each as
+    ``Eq(label, side)``: ``L = T − V`` of ``L = T − V = ½ m l² θ̇² + …``, whose value is the last side.
 
     ``deadline``, if given, is asked to ``check()`` before each term and factor is built:
     within the caps, sympy may still take a second to build one (``(l^-100)^(1/3)`` raised
@@ -146,7 +149,11 @@ def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None
         ParseFailure: when the tokens do not form an answer.
         whatever ``deadline.check()`` raises once the time is up.
     """
-    return _Parser(tokens, context, text, deadline).answer()
+    parser = _Parser(tokens, context, text, deadline)
+    value = parser.answer()
+    if stated is not None:
+        stated.extend(parser.stated)
+    return value
 
 
 class _Parser:
@@ -162,6 +169,7 @@ class _Parser:
         self.powers = 0  # exponents open around the cursor, as in x^(y^(z…))
         self.splits: dict[str, list | None] = {}
         self.rates: dict[str, tuple[int, int]] = {}  # a name of the answer's own → where its rate is first used
+        self.stated: list[sympy.Eq] = []  # the middle sides of chains: see parse_tokens
 
     # -- cursor ----------------------------------------------------------------
 
@@ -318,6 +326,7 @@ class _Parser:
         while label is not None and self.token.is_op("=") and self._defines(rhs):
             # L = T − V = ½ m l² θ̇² + …: the quantity, its definition, and the answer, which is the last
             # side. Not F = m ẍ = −k x, whose middle side is part of an equation (see _chained).
+            self.stated.append(sympy.Eq(label, rhs, evaluate=False))
             self.advance()
             rhs = self.side(label)
         if self.token.is_op("="):
