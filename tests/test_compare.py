@@ -3161,6 +3161,10 @@ HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
         (HOOP_H, f"H = T − V = {HOOP_H_TYPED}", "expression", {"name": "H"}, "undecided",
          "Your answer says `H = T - V` on the way to its value, which is not what H is. Its value was graded and"
          " is right; a person will check this answer."),
+        # in lines of working: V's sign and L = T + V, two slips that make a right value
+        (L_PENDULUM, "T = 1/2 m l^2 θ̇^2, V = m g l cos θ, L = T + V", "lagrangian", {}, "undecided",
+         "Your answer says `L = T + V` on the way to its value, which is not what L is. Its value was graded and"
+         " is right; a person will check this answer."),
         # wrong either way: said beside the diagnosis
         (L_PENDULUM, "L = T + U = 1/2 m l^2 θ̇^2 + 2 m g l cos θ", "lagrangian", {}, "not_equivalent",
          "A term differs: the term in cos(θ) has the wrong factor."),
@@ -3182,7 +3186,10 @@ def test_a_chain_that_says_its_quantity_is_the_wrong_sum_of_energies(expected, s
         assert verdict.feedback[-1] == said
 
 
-def test_a_chain_that_says_l_is_t_plus_v_of_its_value_too_is_told_once():
-    verdict = compare(L_PENDULUM, "L = T + V = 1/2 m l^2 θ̇^2 - m g l cos θ", kind="lagrangian", **PENDULUM)
+@pytest.mark.parametrize(
+    "submitted", ["L = T + V = 1/2 m l^2 θ̇^2 - m g l cos θ", "T = 1/2 m l^2 θ̇^2; V = -m g l cos θ; L = T + V"]
+)
+def test_a_chain_that_says_l_is_t_plus_v_of_its_value_too_is_told_once(submitted):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "t_plus_v")
     assert verdict.feedback == ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.",)

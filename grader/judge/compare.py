@@ -517,8 +517,10 @@ def _replaced(item, replacement: dict):
 
 def _misstated(answer: ParsedAnswer, expected: Expected) -> tuple:
     """A note where a chain says on its way that its quantity is a sum of the energies it is not:
-    ``L = T + V = ½ m l² θ̇² + m g l cos θ`` is right as a value, but not as what it says L is."""
-    for statement in answer.stated:
+    ``L = T + V = ½ m l² θ̇² + m g l cos θ`` is right as a value, but not as what it says L is. So
+    does a line of working, as in ``T = …; V = …; L = T + V``."""
+    working = answer.value if answer.kind == "equations" else ()
+    for statement in (*answer.stated, *working):
         label, side = statement.lhs, statement.rhs
         if not isinstance(label, sympy.Symbol) or label.name not in _ENERGY_SUMS or label.name in expected.names:
             continue
