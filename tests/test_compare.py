@@ -1273,8 +1273,8 @@ def _stated(line):
          (_stated("L = T - V"),)),
         # before: line 1 "does not say the same", for a person
         (H_PENDULUM, "H = T + V\nH = ½ m l² θ̇² − m g l cos θ", {"name": "H"}, "equivalent", (_stated("H = T + V"),)),
-        # not the definition: left for what follows to judge
-        (L_PENDULUM, "L = T + V\nL = ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "not_equivalent", ()),
+        # not the definition: left out too, but a person reads the value against what it says L is
+        (L_PENDULUM, "L = T + V\nL = ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "undecided", ()),
         # T and V given values: L = T − V is the conclusion, not a statement
         (L_PENDULUM, "T = ½ m l² θ̇²; V = −m g l cos θ; L = T − V", {"kind": "lagrangian"}, "equivalent", ()),
     ],
@@ -3165,6 +3165,10 @@ HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
         (L_PENDULUM, "T = 1/2 m l^2 θ̇^2, V = m g l cos θ, L = T + V", "lagrangian", {}, "undecided",
          "Your answer says `L = T + V` on the way to its value, which is not what L is. Its value was graded and"
          " is right; a person will check this answer."),
+        # on a line of its own, before the line that gives L's value
+        (L_PENDULUM, "L = T + V\nL = 1/2 m l^2 θ̇^2 + m g l cos θ", "lagrangian", {}, "undecided",
+         "Your answer says `L = T + V` on the way to its value, which is not what L is. Its value was graded and"
+         " is right; a person will check this answer."),
         # wrong either way: said beside the diagnosis
         (L_PENDULUM, "L = T + U = 1/2 m l^2 θ̇^2 + 2 m g l cos θ", "lagrangian", {}, "not_equivalent",
          "A term differs: the term in cos(θ) has the wrong factor."),
@@ -3187,7 +3191,12 @@ def test_a_chain_that_says_its_quantity_is_the_wrong_sum_of_energies(expected, s
 
 
 @pytest.mark.parametrize(
-    "submitted", ["L = T + V = 1/2 m l^2 θ̇^2 - m g l cos θ", "T = 1/2 m l^2 θ̇^2; V = -m g l cos θ; L = T + V"]
+    "submitted",
+    [
+        "L = T + V = 1/2 m l^2 θ̇^2 - m g l cos θ",
+        "T = 1/2 m l^2 θ̇^2; V = -m g l cos θ; L = T + V",
+        "L = T + V\nL = 1/2 m l^2 θ̇^2 - m g l cos θ",  # not also "the line states what L means"
+    ],
 )
 def test_a_chain_that_says_l_is_t_plus_v_of_its_value_too_is_told_once(submitted):
     verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)

@@ -532,9 +532,8 @@ def _misstated(answer: ParsedAnswer, expected: Expected) -> tuple:
 def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
     """``L = T − V`` on a line of its own, then ``L = ½ m l² θ̇² + …``: the first states what L is, in
     energies no line gives a value; the second gives L's value. The statement is left out, with a
-    note (before, L's value was put into it and T and V were told undefined). Only the definition
-    itself (L = T − V, H = E = T + V, U for V) is so read: ``L = T + V`` stays, for what follows
-    to judge."""
+    note (before, L's value was put into it and T and V were told undefined). A sum of the energies
+    that is not the name's own (``L = T + V``) is left out too: :func:`_misstated` has said so."""
     if answer.kind != "equations":
         return answer, ()
     items = answer.value
@@ -548,15 +547,15 @@ def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tup
         and labels.count(item.lhs) > 1
         and _in_energies(item.rhs, expected.names)
         and not item.rhs.free_symbols & set(labels)  # T = …, V = …, L = T − V: T and V have values
-        and _energy_multiple(item.rhs, [item.lhs.name]) == 1
     ]
     if not stated or len(stated) == len(items):
         return answer, ()
     rest = tuple(item for item in items if item not in stated)
-    note = ("definition_left_out", {"line": to_text(stated[0])})
+    right = [item for item in stated if _energy_multiple(item.rhs, [item.lhs.name]) == 1]
+    notes = (("definition_left_out", {"line": to_text(right[0])}),) if right else ()
     if len(rest) == 1:
-        return ParsedAnswer(answer.text, rest[0], "equation"), (note,)
-    return ParsedAnswer(answer.text, rest, "equations"), (note,)
+        return ParsedAnswer(answer.text, rest[0], "equation"), notes
+    return ParsedAnswer(answer.text, rest, "equations"), notes
 
 
 def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:
