@@ -364,6 +364,25 @@ def test_each_wrong_equation_of_a_system_has_its_terms_named_with_its_number():
     assert not any(sentence.startswith("In your equation 2") for sentence in spherical.feedback), spherical.feedback
 
 
+@pytest.mark.parametrize(
+    ("first", "sentence"),
+    [
+        # solved for θ̈₁, m₁ for m₁ + m₂ puts every other term off by (m₁ + m₂)/m₁: the one term is named
+        (EOM_DOUBLE_1.replace("(m1+m2) l1", "m1 l1"),
+         "A term differs: the term with an acceleration in θ̈₁ has the wrong factor."),
+        (EOM_DOUBLE_1.replace("(m1+m2) l1", "-(m1+m2) l1"),
+         "A term differs: the term with an acceleration in θ̈₁ has the wrong sign."),
+        # the same, the equation multiplied through by l₁: in the ratio most terms share
+        ("l1 (" + EOM_DOUBLE_1.replace("(m1+m2) l1", "m1 l1").replace(" = 0", ") = 0"),
+         "A term differs: the term with an acceleration in θ̈₁ has the wrong factor."),
+    ],
+)  # fmt: skip
+def test_an_acceleration_term_off_is_named_whatever_the_equation_is_multiplied_by(first, sentence):
+    verdict = compare(EOM_DOUBLE, f"{first}; {EOM_DOUBLE_2}", kind="equations", **DOUBLE)
+    assert verdict.status == "not_equivalent"
+    assert verdict.feedback[-1] == sentence, verdict.feedback
+
+
 def test_feedback_shows_velocities_as_typed_never_as_internal_names():
     verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2 + m g l cos(θ̇)", kind="lagrangian", **PENDULUM)
     assert verdict.feedback == (

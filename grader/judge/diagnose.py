@@ -4,6 +4,7 @@ Contents:
     terms(expr, varying=, expanded=)              an expression's terms, keyed by shape
     expand_terms(expr)                            multiplied out as sympy.expand does, without building the sum
     term_changes(expected, submitted, setting)    missing / extra / differing terms, from two such
+    coefficients_differ(...)                      terms that differ only in their parameters
     describe_term(term, setting)                  "a velocity-dependent term", "a term in cos(θ₁ − θ₂)"
     state_part(shape, setting)                    a term's factors in the coordinates and velocities
     in_sines_and_cosines(expr), as_written(shape, answer)   cot θ as cos θ / sin θ, sin 2θ as 2 sin θ cos θ;
@@ -29,6 +30,7 @@ from grader.parse.readback import to_text
 
 __all__ = [
     "TERM_KEYS",
+    "coefficients_differ",
     "describe_term",
     "expand_terms",
     "has_angle_functions",
@@ -228,7 +230,7 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             gained.append(shape)
             changes.append(("extra_term", describe_term(shape, setting, own=True)))
     if lost or gained:
-        regrouped = _coefficients_differ(expected_terms, submitted_terms, setting)
+        regrouped = coefficients_differ(expected_terms, submitted_terms, setting)
         if regrouped:
             return regrouped
     if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
@@ -241,7 +243,9 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
     return changes
 
 
-def _coefficients_differ(expected_terms: dict, submitted_terms: dict, setting: Setting) -> list[tuple[str, str]]:
+def coefficients_differ(
+    expected_terms: dict, submitted_terms: dict, setting: Setting, *, any_factor: bool = False
+) -> list[tuple[str, str]]:
     """Terms that differ only in their parameters, each named once as the term the student
     wrote; [] where the answer has not the same terms in the coordinates and velocities.
 
@@ -250,18 +254,32 @@ def _coefficients_differ(expected_terms: dict, submitted_terms: dict, setting: S
     Terms are grouped by their part in the coordinates and velocities (and given names), their
     parameters summed; where both answers have the same groups, one or two whose parameters
     differ are named. The constant group is left to the terms as they are.
+
+    With ``any_factor`` (an equation, right whatever it is multiplied by), the groups are
+    compared in the ratio most of them share: m₁ l₁ θ̈₁ for (m₁ + m₂) l₁ θ̈₁ is one term off,
+    not every other term off by (m₁ + m₂)/m₁ once the equation is solved for θ̈₁.
     """
     ours, theirs = _by_state(expected_terms, setting), _by_state(submitted_terms, setting)
-    if set(ours) != set(theirs):
+    if set(ours) != set(theirs) or any(coefficient == 0 for _, coefficient in ours.values()):
         return []
-    differing = [key for key in ours if sympy.expand(ours[key][1] - theirs[key][1]) != 0]
+    ratio = sympy.S.One
+    if any_factor:
+        ratios = {key: sympy.cancel(theirs[key][1] / ours[key][1]) for key in ours}
+        shared = [value for value in ratios.values() if value != 0]
+        ratio = max(shared, key=shared.count, default=sympy.S.One)
+        if shared.count(ratio) < 2:
+            return []  # no ratio most terms share: nothing says which terms are off
+    differing = [key for key in ours if sympy.expand(ratio * ours[key][1] - theirs[key][1]) != 0]
     if not 1 <= len(differing) <= 2 or any(key is sympy.S.One for key in differing):
         return []
+    if any_factor and len(ours) - len(differing) < len(differing) + 1:
+        return []  # as many terms off as right: which are "off" is a guess
     written = [shape for shape, _ in theirs.values()]
     changes = []
     for key in differing:
         shape, coefficient = theirs[key]
-        how = "has the wrong sign" if sympy.expand(coefficient + ours[key][1]) == 0 else "has the wrong factor"
+        wrong_sign = sympy.expand(coefficient + ratio * ours[key][1]) == 0
+        how = "has the wrong sign" if wrong_sign else "has the wrong factor"
         named = describe_term(shape, setting, definite=True, own=True)
         changes.append(("term_differs", f"{told_apart(shape, named, written, setting, own=True)} {how}"))
     return changes
@@ -424,6 +442,8 @@ def describe_term(
         named = named or unicode_name(next(iter(given)).name)
         return f"{article} term in {named}{within.replace(' in ', ' and ', 1)}"
     if symbols & accelerations:
+        if own and not within:  # the student's own term: which acceleration, as θ̈₁ beside θ̈₂ cos(θ₁ − θ₂)
+            within = _velocities(term, accelerations, setting)
         return f"{article} term with an acceleration{within}"
     if symbols & velocities:
         if own and not within:  # the student's own term: which velocities, as ½ m l² α̇² beside ½ m l² β̇²

@@ -53,9 +53,9 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import MAX_TERMS, TERM_KEYS, expand_terms, taylor
+from grader.judge.diagnose import MAX_TERMS, TERM_KEYS, coefficients_differ, expand_terms, taylor, terms
 from grader.judge.expected import Expected, Outcome
-from grader.judge.expression import diagnose_difference, same_values
+from grader.judge.expression import diagnose_difference, same_values, term_outcome
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
 from grader.judge.sampling import GROUP, MIN_DEFINED, precise_side_by_side, side_by_side
 from grader.parse import ParsedAnswer
@@ -748,8 +748,24 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "e
         termwise=lambda: _solved(g, acceleration),
     )  # fmt: skip
     if outcome.key in ("sign", "factor", "wrong"):
+        # solved for an acceleration whose own factor is off, every other term is off by it
+        scaled = _off_in_scale(expected, f, g, key)
+        if scaled:
+            return term_outcome(scaled)
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
     return Outcome(outcome.status, 0.0, outcome.key, outcome.details, "accelerations", outcome.more)
+
+
+def _off_in_scale(expected: Expected, f, g, key: str) -> list:
+    """The terms of ``g`` off from ``f``'s when both are compared in the ratio most of their terms
+    share (:func:`~grader.judge.diagnose.coefficients_differ`): m₁ l₁ θ̈₁ for (m₁ + m₂) l₁ θ̈₁."""
+    cache_key = ("terms", key, "as written")
+    if cache_key not in expected.cache:
+        expected.cache[cache_key] = terms(f)
+    ours, theirs = expected.cache[cache_key], terms(g)
+    if ours is None or theirs is None or len(ours) > MAX_TERMS or len(theirs) > MAX_TERMS:
+        return []
+    return coefficients_differ(ours, theirs, expected.setting, any_factor=True)
 
 
 def _leading_acceleration(f, expected: Expected):
