@@ -60,7 +60,7 @@ BROKEN_MESSAGES = [
     ("unknown_dimension", "unknown_dimension", "",
      "line 10: field 'dimension' is 'metres'; allowed: dimensionless, angle, mass, length, time, area, velocity,"
      " acceleration, angular velocity, frequency, angular acceleration, momentum, angular momentum, moment of"
-     " inertia, force, torque, energy, power, force per length, mass per time"),
+     " inertia, force, torque, energy, power, force per length, mass per time, pressure"),
     ("reference_units_mixed", "reference_units_mixed", "lagrangian",
      "in the reference answer, the terms have units kg·m/s² and kg·m²/s²: check it, or the dimensions of its"
      " symbols"),

@@ -308,9 +308,9 @@ LEFT_OUT = "Read without its unit, `{}`: the formula is what is graded."
          ("Your answer is off by a constant factor: missing a factor 1/2?", LEFT_OUT.format("Hz"))),
         # a unit that does not measure the quantity asked for, where the problem gives dimensions
         ("√(l/g) seconds", PENDULUM, "not_equivalent",
-         ("Your answer is in s, but the quantity asked for is measured in 1/s.",)),
+         ("Your answer is in s, which is not how the quantity asked for is measured: check its dimensions.",)),
         ("√(g/l) kg", PENDULUM, "not_equivalent",
-         ("Your answer is in kg, but the quantity asked for is measured in 1/s.",)),
+         ("Your answer is in kg, which is not how the quantity asked for is measured: check its dimensions.",)),
         # a number with units, where a formula is asked for
         ("3.13 rad/s", PENDULUM, "not_equivalent",
          ("Your answer uses `rad` and `s`, which this problem does not define: units, it seems. A formula in the"
@@ -386,8 +386,16 @@ def test_a_unit_after_a_formula_may_hold_a_name_of_the_problems(submitted, statu
         ("ω = √(g/l) in s^-1", "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
         ("√(g/l) (in 1/s)", "equivalent", ("Correct.", LEFT_OUT.format("1/s"))),
         ("√(g/l), in rad/s", "equivalent", ("Correct.", LEFT_OUT.format("rad/s"))),  # was refused: a comma
-        ("√(g/l) in s", "not_equivalent", ("Your answer is in s, but the quantity asked for is measured in 1/s.",)),
-        ("√(g/l) (in s)", "not_equivalent", ("Your answer is in s, but the quantity asked for is measured in 1/s.",)),
+        (
+            "√(g/l) in s",
+            "not_equivalent",
+            ("Your answer is in s, which is not how the quantity asked for is measured: check its dimensions.",),
+        ),
+        (
+            "√(g/l) (in s)",
+            "not_equivalent",
+            ("Your answer is in s, which is not how the quantity asked for is measured: check its dimensions.",),
+        ),
     ],
 )
 def test_a_unit_may_be_said_with_in(submitted, status, feedback):
@@ -395,15 +403,34 @@ def test_a_unit_may_be_said_with_in(submitted, status, feedback):
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
-@pytest.mark.parametrize("submitted", ["−m g l sin θ, in N", "−m g l sin θ in m/s"])
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "−m g l sin θ, in N",
+        "−m g l sin θ in m/s",
+        # a unit that is the problem's name too (m, g): after "in", a unit; before, read past as words
+        "−m g l sin θ, in m",
+        "−m g l sin θ, in g",
+        # prefixed, or spelled out, or a pressure
+        "−m g l sin θ (in cm)",
+        "−m g l sin θ, in kilograms",
+        "−m g l sin θ, in Pa",
+    ],
+)
 def test_a_unit_said_with_in_that_measures_something_else_is_said_so(submitted):
     verdict = compare(TORQUE, submitted, **PENDULUM)
-    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "unit_differs"), verdict
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "formula_unit_differs"), verdict
 
 
 @pytest.mark.parametrize(
     "submitted",
-    ["−m g l sin θ (dimensionless)", "−m g l sin θ; dimensions: force", "−m g l sin θ, it has dimensions of energy"],
+    [
+        "−m g l sin θ (dimensionless)",
+        "−m g l sin θ; dimensions: force",
+        "−m g l sin θ, it has dimensions of energy",
+        "−m g l sin θ, units of force",  # before, read past as words: Correct
+        "−m g l sin θ, units of N",
+    ],
 )
 def test_words_that_state_dimensions_are_for_a_person_to_read(submitted):
     # a prompt may ask for the dimensions too (generalized-forces.q-theta): before, read past as Correct
@@ -414,7 +441,7 @@ def test_words_that_state_dimensions_are_for_a_person_to_read(submitted):
 @pytest.mark.parametrize("submitted", ["−m g l sin θ, m/s", "−m g l sin θ (N)"])
 def test_a_unit_after_a_formula_that_measures_something_else_is_said_so(submitted):
     verdict = compare(TORQUE, submitted, **PENDULUM)
-    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "unit_differs"), verdict
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "formula_unit_differs"), verdict
 
 
 def test_a_lone_letter_after_a_formula_is_still_a_name_to_define():

@@ -59,7 +59,7 @@ _DOMAINS = ("real", "positive", "negative", "nonzero", "integer")
 DIMENSIONS = (
     "dimensionless", "angle", "mass", "length", "time", "area", "velocity", "acceleration",
     "angular velocity", "frequency", "angular acceleration", "momentum", "angular momentum",
-    "moment of inertia", "force", "torque", "energy", "power", "force per length", "mass per time",
+    "moment of inertia", "force", "torque", "energy", "power", "force per length", "mass per time", "pressure",
 )  # fmt: skip
 _DERIVABLE = ("equation", "equations")
 _MATHEMATICS = ("expression", "equation", "equations", "lagrangian")  # the kinds whose answers are read as mathematics

@@ -1283,8 +1283,8 @@ def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outc
     say the formula is another quantity)."""
     wanted = _expected_units(spec, expected)
     if wanted is not None and found[2] != wanted:
-        details = {"theirs": si(found[2]), "wanted": si(wanted)}
-        return Outcome("not_equivalent", 0.0, "unit_differs", details, method="units"), None
+        # not which unit is wanted: where a prompt asks for the formula's dimensions, that is the answer
+        return Outcome("not_equivalent", 0.0, "formula_unit_differs", {"theirs": si(found[2])}, method="units"), None
     key = "unit_left_out" if _same_counts(unit, expected) else "unit_for_a_person"
     return None, (key, {"unit": in_sentence(to_text(unit), times="·")})  # N·m, kg·m²/s²
 
@@ -1319,10 +1319,11 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
         found = in_units(unit.value)
         names = {symbol.name for symbol in unit.symbols}
         several = len(sympy.Mul.make_args(unit.value)) > 1 or any(len(name) > 1 for name in names)  # N m, joules
-        if found is None or found[:2] != (1, 1) or not (set_apart or several):
+        said = bool(re.search(r"\bin\b", cut.group()))  # "in g" names a unit, grams, whatever else g may be
+        if found is None or found[0] != 1 or (found[1] != 1 and not said) or not (set_apart or several):
             continue
-        if names <= expected.names:
-            continue  # nothing here but the problem's names: no unit was written
+        if names <= expected.names and not said:
+            continue  # nothing here but the problem's names: no unit was written (but "in m" says one)
         formula = parse_answer(head.rstrip(" ,;"), coords=expected.setting.coords, known=sorted(expected.names))
         formula = _unwrap_named(formula, spec, expected) if formula.ok else formula  # Q_θ = …
         if not formula.ok or formula.kind != "expression" or not formula.symbols:

@@ -73,6 +73,8 @@ FEEDBACK: dict[str, str] = {
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
+    "formula_unit_differs": "Your answer is in {theirs}, which is not how the quantity asked for is measured:"
+    " check its dimensions.",
     "units_power": "In your {where}, a quantity measured in {units} stands where only a pure number can:"
     " in an exponent, or raised to a power that is not a number.",
     "constant_offset": "Your answer is right but for an added constant, which is not allowed here: does the"

@@ -60,7 +60,7 @@ DIMENSIONS: dict[str, Units] = {
         "angular velocity": (0, 0, -1), "frequency": (0, 0, -1), "angular acceleration": (0, 0, -2),
         "momentum": (1, 1, -1), "angular momentum": (1, 2, -1), "moment of inertia": (1, 2, 0),
         "force": (1, 1, -2), "torque": (1, 2, -2), "energy": (1, 2, -2), "power": (1, 2, -3),
-        "force per length": (1, 0, -2), "mass per time": (1, 0, -1),
+        "force per length": (1, 0, -2), "mass per time": (1, 0, -1), "pressure": (1, -1, -2),
     }.items()
 }  # fmt: skip
 
@@ -189,12 +189,13 @@ SI_UNITS: dict[str, tuple[Fraction, Units]] = {
     "cm": _si_unit(Fraction(1, 100), "length"),
     "mm": _si_unit(Fraction(1, 1000), "length"),
     "km": _si_unit(1000, "length"),
-    "kg": _si_unit(1, "mass"),
+    **dict.fromkeys(("kg", "kilogram", "kilograms"), _si_unit(1, "mass")),
     **dict.fromkeys(("g", "gram", "grams"), _si_unit(Fraction(1, 1000), "mass")),
     **dict.fromkeys(("N", "newton", "newtons"), _si_unit(1, "force")),
     **dict.fromkeys(("J", "joule", "joules"), _si_unit(1, "energy")),
     **dict.fromkeys(("W", "watt", "watts"), _si_unit(1, "power")),
     **dict.fromkeys(("Hz", "hertz"), _si_unit(1, "frequency")),
+    **dict.fromkeys(("Pa", "pascal", "pascals"), _si_unit(1, "pressure")),
     **dict.fromkeys(("rad", "radian", "radians"), _si_unit(1, "angle")),
 }
 # The prefixed units by their symbols: ns, μs (read as mus) and us, ks; kN, MJ, mW, kHz, mrad. Every

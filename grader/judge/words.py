@@ -46,11 +46,11 @@ _DOUBT = re.compile(
 )
 # words that may say the formula is other than written, or set what its sign means: "… upward",
 # "… inverted", "… except the cosine is a sine"; or state its dimensions, which a prompt may ask
-# for ("… dimensionless"). A person reads them against the formula.
+# for ("… dimensionless", "units of force"). A person reads them against the formula.
 _OTHERWISE = re.compile(
     r"\b(?:up|upward|upwards|down|downward|downwards|clockwise|anticlockwise|counterclockwise|"
     r"inverted|invert|flipped|flip|reversed|reverse|swapped|swap|interchanged|except|instead|replaced|"
-    r"replace|wrong|mistake|typo|actually|should|meant|dimension|dimensions|dimensionless)\b(?!\s+to\b)",
+    r"replace|wrong|mistake|typo|actually|should|meant|dimension|dimensions|dimensionless|units?\s+of)\b(?!\s+to\b)",
     re.I,
 )
 # a word against a bracket is a function the parser does not know, not prose: floor(θ), Re(e^(iθ))
