@@ -1263,6 +1263,38 @@ def test_lines_that_give_one_name_values_are_one_chain(submitted, status, notes)
     assert (verdict.status, verdict.notes) == (status, notes), verdict
 
 
+SUM_REFUSED = (
+    "`\\sum` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …, whose"
+    " last side is graded; anywhere else, write the sum out term by term."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # TeX's sum in the definition on the way, as Σ is (before: \\sum was an unknown command)
+        ("H = \\sum_i p_i \\dot q_i - L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.",)),
+        ("H = \\sum_j p_j \\dot{q}_j - L = \\frac12 m l^2(\\dot\\theta^2 + \\sin^2\\theta\\,\\dot\\phi^2)"
+         " - m g l\\cos\\theta", "equivalent", ("Correct.",)),
+        ("H = \\sum p\\dot q - L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.",)),
+        ("H = ∑_j p_j q̇_j − L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.",)),
+        ("H = \\sum_i p_i \\dot q_i - L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.", CHAIN)),
+        # its value graded as Σ's is
+        ("H = \\sum_i p_i \\dot q_i - L = ½ m l²(θ̇² + sin²θ φ̇²) + m g l cos θ", "not_equivalent",
+         ("A term differs: the term in cos(θ) has the wrong sign.",)),
+        # anywhere else a sum is refused, and said why
+        ("H = \\sum_i p_i \\dot q_i - L", "invalid", (SUM_REFUSED,)),
+        ("\\sum_i p_i \\dot q_i - L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "invalid", (SUM_REFUSED,)),
+        ("H = \\sum_i p_i \\dot q_i - L = \\sum_i p_i \\dot q_i - ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "invalid",
+         (SUM_REFUSED,)),
+        ("½ m l² \\sum_i \\dot q_i^2 − m g l cos θ", "invalid", (SUM_REFUSED,)),
+    ],
+)  # fmt: skip
+def test_a_sum_is_read_in_the_definition_passed_over_and_refused_elsewhere(submitted, status, feedback):
+    verdict = compare(H_SPHERICAL, submitted, name="H", **SPHERICAL)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind"),
     [

@@ -94,10 +94,11 @@ class Token:
     (value: canonical function name, or ``diff``), ``op`` (value: one of
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
     ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``over`` (TeX's ``\\over``),
-    ``sqrt``, ``partial`` (∂), ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what
-    follows), ``arrow`` (→: the same between two equations, refused elsewhere), ``gap`` (``\\quad``,
-    an environment's end: a ``sep`` between two equations, nothing elsewhere), ``end``; the
-    grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
+    ``sqrt``, ``partial`` (∂), ``sum`` (``\\sum`` or ∑, its limits read past), ``implies`` (⇒: a
+    derivation's step, :func:`tokenize` keeps what follows), ``arrow`` (→: the same between two
+    equations, refused elsewhere), ``gap`` (``\\quad``, an environment's end: a ``sep`` between two
+    equations, nothing elsewhere), ``end``; the grammar adds ``deriv`` (value: the order) where it
+    reads Leibniz's d/dt.
     """
 
     kind: str
@@ -205,6 +206,11 @@ _ROW_SPACING = re.compile(
     r"\*?\s*\[\s*[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*(?:pt|em|ex|mm|cm|in|bp|pc|dd|cc|sp|mu)\s*\]"
 )
 _ARRAY_COLUMNS = re.compile(r"\s*\{[lcr|@ ]*\}")  # \begin{array}{ll}: how its columns align
+# a sum's limits, read past with it: \sum_i, \sum_{j=1}^{n}, \sum\limits_k; ∑_i as typed. What they
+# bound is not read: a sum is read only where the side it stands in is passed over (see the grammar)
+_SUM_LIMITS = re.compile(
+    r"\s*(?:\\(?:no)?limits(?![A-Za-z])\s*)?(?:[_^]\s*(?:\{[A-Za-z0-9=+\- ]{1,16}\}|[A-Za-z0-9])\s*){0,2}"
+)
 
 
 def tokenize(text: str) -> list[Token]:
@@ -657,6 +663,8 @@ class _Tokenizer:
                 raise ParseFailure("prime_position" if self._after_value() else "string", self.pos, self.pos + 1)
             elif c == "\u2202":  # ∂: only in a quantity's name, ∂L/∂φ̇ = …, which the grammar reads
                 self._emit("partial", "∂", 1)
+            elif c == "\u2211":  # ∑: only in a definition passed over, H = ∑ p q̇ − L = …, as \sum
+                self._sum(self.pos, self.pos + 1)
             elif c in _NAMED_REFUSALS:
                 raise ParseFailure(_NAMED_REFUSALS[c], self.pos, self.pos + 1)
             else:
@@ -1003,6 +1011,8 @@ class _Tokenizer:
             self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
         elif command == "partial":
             self.tokens.append(Token("partial", "∂", start, self.pos))
+        elif command == "sum":
+            self._sum(start, self.pos)
         elif command in _LATEX_IMPLIES:
             self.tokens.append(Token("implies", "⇒", start, self.pos))
         elif command in _LATEX_ARROWS:
@@ -1055,6 +1065,12 @@ class _Tokenizer:
             raise ParseFailure("latex_words", start, words.end(), words=text[start : words.end()])
         else:
             raise ParseFailure("unknown_command", start, self.pos, name=command)
+
+    def _sum(self, start: int, end: int) -> None:
+        """``\\sum_i`` or ``∑``, with its limits: a ``sum`` token, which the grammar reads only in a side it
+        passes over, the definition in ``H = \\sum_j p_j \\dot q_j - L = …``."""
+        self.pos = _SUM_LIMITS.match(self.text, end).end()
+        self.tokens.append(Token("sum", self.text[start:end], start, end))
 
     def _dollar(self) -> None:
         """``$`` or ``$$`` around math is read past; one that opens the math again after it was
