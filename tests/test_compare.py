@@ -867,6 +867,51 @@ def test_a_difference_the_answer_defines_is_one_name(submitted, status):
     assert verdict.diagnosis == "undefined_symbol", verdict
 
 
+L_EQUAL_TEX = (
+    r"m l^2 \dot\theta_1^2 + \frac12 m l^2 \dot\theta_2^2 + m l^2 \dot\theta_1 \dot\theta_2 \cos\Delta\theta"
+    r" + 2 m g l \cos\theta_1 + m g l \cos\theta_2"
+)
+EOM_EQUAL = (
+    "2 l theta1ddot + l theta2ddot cos(theta1 - theta2) + l theta2dot^2 sin(theta1 - theta2) + 2 g sin(theta1) = 0;"
+    " l theta2ddot + l theta1ddot cos(theta1 - theta2) - l theta1dot^2 sin(theta1 - theta2) + g sin(theta2) = 0"
+)
+EOM_EQUAL_TEX = (
+    r"2 \ddot\theta_1 + \ddot\theta_2 \cos\Delta\theta + \dot\theta_2^2 \sin\Delta\theta + 2 \frac gl \sin\theta_1 = 0"
+    r" \\ \ddot\theta_2 + \ddot\theta_1 \cos\Delta\theta - \dot\theta_1^2 \sin\Delta\theta + \frac gl \sin\theta_2 = 0"
+)
+DELTA_TEX = r"\Delta\theta = \theta_1 - \theta_2"
+
+
+@pytest.mark.parametrize(
+    ("expected", "kind", "submitted", "status"),
+    [
+        # before: \cos\Delta\theta was cos(Δ)·θ, and the definition Δ·θ defined nothing
+        (L_EQUAL, "lagrangian", rf"{L_EQUAL_TEX}, \text{{ where }} {DELTA_TEX}", "equivalent"),
+        (L_EQUAL, "lagrangian", rf"{L_EQUAL_TEX}, \Delta \theta = \theta_1 - \theta_2", "equivalent"),
+        (L_EQUAL, "lagrangian", L_EQUAL_TEX.replace(r"\Delta\theta", r"(\Delta\theta)") + f", {DELTA_TEX}",
+         "equivalent"),
+        (L_EQUAL, "lagrangian", L_EQUAL_TEX.replace(r"\Delta", r"\delta") + r", \delta\theta = \theta_1 - \theta_2",
+         "equivalent"),
+        (L_EQUAL, "lagrangian", rf"{L_EQUAL_TEX}, \Delta\theta = \theta_1 + \theta_2", "not_equivalent"),
+        # the sign of the difference: sin Δθ tells θ₁ − θ₂ from θ₂ − θ₁
+        (EOM_EQUAL, "equations", rf"{EOM_EQUAL_TEX} \\ {DELTA_TEX}", "equivalent"),
+        (EOM_EQUAL, "equations", rf"{EOM_EQUAL_TEX} \\ \Delta\theta = \theta_2 - \theta_1", "not_equivalent"),
+    ],
+)  # fmt: skip
+def test_a_difference_the_answer_defines_in_tex_is_one_name(expected, kind, submitted, status):
+    verdict = compare(expected, submitted, kind=kind, **EQUAL)
+    assert verdict.status == status, verdict
+    assert "not define" not in " ".join(verdict.feedback), verdict
+
+
+def test_a_difference_nothing_defines_is_read_in_tex_as_in_unicode():
+    # Δ·θ, names the problem does not define; and the argument of cos all of it, as in `cos Δθ`
+    tex = compare(L_EQUAL, L_EQUAL_TEX, kind="lagrangian", **EQUAL)
+    typed = compare(L_EQUAL, L_EQUAL_DELTA, kind="lagrangian", **EQUAL)
+    assert (tex.diagnosis, tex.feedback, tex.read_as) == (typed.diagnosis, typed.feedback, typed.read_as)
+    assert "cos(Δ*θ)" in tex.read_as
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind", "status"),
     [

@@ -205,6 +205,7 @@ _LATEX_ENVIRONMENTS = {
 _ROW_SPACING = re.compile(
     r"\*?\s*\[\s*[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*(?:pt|em|ex|mm|cm|in|bp|pc|dd|cc|sp|mu)\s*\]"
 )
+_DIFFERENCES = frozenset({"Delta", "delta"})  # TeX's Δ and δ, glued to the name after them as Δθ is
 _ARRAY_COLUMNS = re.compile(r"\s*\{[lcr|@ ]*\}")  # \begin{array}{ll}: how its columns align
 # a sum's limits, read past with it: \sum_i, \sum_{j=1}^{n}, \sum\limits_k; ∑_i as typed. What they
 # bound is not read: a sum is read only where the side it stands in is passed over (see the grammar)
@@ -943,11 +944,24 @@ class _Tokenizer:
         function = None if dots or primes else function_name(raw) or (None if self.latex else _CALLABLE.get(raw))
         if function:
             self.tokens.append(Token("func", function, start, self.pos))
+        elif not (dots or primes) and self._after_difference(start):
+            delta = self.tokens.pop()  # \Delta\theta as Δθ: one name, whose argument of \cos it all is
+            self.tokens.append(Token("name", Name(delta.value.raw + raw, tex=True), delta.start, self.pos))
         else:
             self.tokens.append(Token("name", Name(raw, dots, primes, tex=self.latex), start, self.pos))
         if exponent:  # \theta^{\prime 2}: θ′ squared, the rest of the brace its exponent
             caret, brace = exponent
             self.tokens += [Token("op", "^", caret, caret + 1), Token("op", "{", brace, brace + 1)]
+
+    def _after_difference(self, start: int) -> bool:
+        """Whether the name starting at ``start`` follows TeX's ``\\Delta`` or ``\\delta`` (no marks, only
+        spaces between): ``\\Delta\\theta`` is then one name, as ``Δθ`` typed is. So ``\\cos\\Delta\\theta``
+        is cos(Δθ), as ``cos Δθ`` is, not cos(Δ)·θ; and Δθ, where the answer defines it (``\\Delta\\theta =
+        \\theta_1 - \\theta_2``), is read as that name; elsewhere, as TeX reads it, Δ·θ."""
+        last = self.tokens[-1] if self.tokens and self.latex else None
+        if last is None or last.kind != "name" or last.value.raw not in _DIFFERENCES:
+            return False
+        return not (last.value.dots or last.value.primes or last.value.unit or self.text[last.end : start].strip())
 
     def _tex_primes(self) -> tuple[int, tuple[int, int] | None] | None:
         """TeX's primes as a superscript, as its ' is typeset: ``\\theta^\\prime``, ``\\theta^{\\prime\\prime}``,
