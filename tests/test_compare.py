@@ -974,6 +974,84 @@ def test_words_after_a_formula_are_read_past_and_said_so(expected, submitted, ki
     assert (verdict.status, verdict.notes) == (status, notes)
 
 
+L_GIVEN = "L = ½ m l² θ̇² + m g l cos θ"
+H_PIVOT = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"  # the zero of potential at the pivot
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "feedback"),
+    [
+        # a remark that states the zero of potential energy: before, "Something is missing before `=`"
+        (L_PENDULUM, f"{L_GIVEN} (taking V = 0 at the pivot)", "lagrangian", "equivalent",
+         ("Correct.", _words("(taking V = 0 at the pivot)"))),
+        (L_PENDULUM, f"{L_GIVEN} (with V=0 at the top)", "lagrangian", "equivalent",
+         ("Correct.", _words("(with V=0 at the top)"))),
+        (L_PENDULUM, f"{L_GIVEN} [V = 0 at pivot].", "lagrangian", "equivalent",
+         ("Correct.", _words("[V = 0 at pivot]"))),
+        (L_PENDULUM, f"{L_GIVEN}, (taking the pivot as U = 0)", "lagrangian", "equivalent",
+         ("Correct.", _words("(taking the pivot as U = 0)"))),
+        (L_PENDULUM, r"L = \frac12 m l^2 \dot\theta^2 + m g l\cos\theta \text{ (taking V = 0 at the pivot)}",
+         "lagrangian", "equivalent", ("Correct.", _words("(taking V = 0 at the pivot)"))),
+        (EOM_PENDULUM, "m l² θ̈ + m g l sin θ = 0 (V = 0 at the pivot)", "equation", "equivalent",
+         ("Correct.", _words("(V = 0 at the pivot)"))),
+        # words that doubt it: for a person, as after any formula
+        (L_PENDULUM, f"{L_GIVEN} (V = 0 at the pivot, I think)", "lagrangian", "undecided",
+         (_for_a_person("(V = 0 at the pivot, I think)"),)),
+    ],
+)  # fmt: skip
+def test_a_remark_that_states_the_zero_of_potential_is_read_past(expected, submitted, kind, status, feedback):
+    setting = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]} if expected == H_PIVOT else PENDULUM
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("expected", "formula", "kind", "coords"),
+    [
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ", "lagrangian", ["theta"]),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ", "lagrangian", ["theta"]),  # wrong stays wrong
+        (L_PENDULUM, "L = ½ m l θ̇² + m g l cos θ", "lagrangian", ["theta"]),
+        # the formula's own zero, which the problem does not take, whatever the remark says
+        (H_PIVOT, "½ m l²(θ̇² + sin²θ φ̇²) + m g l (1 − cos θ)", "expression", ["theta", "phi"]),
+        (H_PIVOT, "½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "expression", ["theta", "phi"]),
+        (EOM_PENDULUM, "m l² θ̈ − m g l sin θ = 0", "equation", ["theta"]),
+    ],
+)
+def test_a_remark_on_the_zero_of_potential_changes_no_grade(expected, formula, kind, coords):
+    setting = {"kind": kind, "coords": coords, "known": ["m", "g", "l"]}
+    alone = compare(expected, formula, **setting)
+    remarked = compare(expected, f"{formula} (taking V = 0 at the pivot)", **setting)
+    note = _words("(taking V = 0 at the pivot)")
+    assert (remarked.status, remarked.score, remarked.diagnosis) == (alone.status, alone.score, alone.diagnosis)
+    assert (remarked.feedback, remarked.notes) == ((*alone.feedback, note), (*alone.notes, note))
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        f"{L_GIVEN} (V = 0)",  # no words: a remark is words with the zero in them
+        f"{L_GIVEN} (V = 0 or V = m g l)",  # a hedge, and another value
+        f"{L_GIVEN} (V = 0 at θ = 0)",  # another `=`, and a number
+        f"{L_GIVEN} (θ = 0 at the top)",  # a coordinate's zero may say the formula is other than it reads
+        f"{L_GIVEN} (L = 0 at the pivot)",  # not the potential energy
+        f"{L_GIVEN} (taking V = 0.5 at the pivot)",
+        f"{L_GIVEN} (taking V = 0 at the pivot, times 2)",  # a word of arithmetic
+        f"{L_GIVEN} (taking V = 0 at the pivot) (times 2)",  # the last bracket is no remark on the zero
+        f"{L_GIVEN} (taking V = 0 at the pivot) + m g l",  # the bracket does not end the answer
+        f"{L_GIVEN} (V = 0 at the pivot; V = 0 at the top)",
+    ],
+)
+def test_a_remark_with_an_equals_sign_that_is_not_the_zero_of_potential_is_refused(submitted):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert verdict.status == "invalid", verdict
+
+
+def test_a_remark_on_the_zero_names_no_name_the_problem_has():
+    # V is the problem's own here: V = 0 would say something of the formula
+    verdict = compare("m g V", "m g V (taking V = 0 at the pivot)", known=["m", "g", "V"])
+    assert verdict.status == "invalid", verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "setting", "words"),
     [

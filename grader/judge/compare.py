@@ -49,7 +49,13 @@ from grader.judge.units import (
     units_of,
 )
 from grader.judge.verdict import Verdict
-from grader.judge.words import formula_then_words, says_otherwise, text_as_words, words_then_formula
+from grader.judge.words import (
+    formula_then_convention,
+    formula_then_words,
+    says_otherwise,
+    text_as_words,
+    words_then_formula,
+)
 from grader.parse import (
     ANSWER,
     LIMITS,
@@ -1108,6 +1114,12 @@ def _formula_before_words(text: str, expected: Expected, names: list, deadline) 
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
             return read, ((_words_note("words_left_out", words), {"words": _shown(words)}),)
+    convention = formula_then_convention(text, names)  # … (taking V = 0 at the pivot): the zero, stated
+    if convention is not None:
+        formula, remark = convention
+        read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
+        if read.ok:
+            return read, ((_words_note("words_left_out", remark), {"words": _shown(remark)}),)
     return None
 
 
