@@ -1386,6 +1386,78 @@ def test_lines_that_give_one_name_values_are_one_chain(submitted, status, notes)
     assert (verdict.status, verdict.notes) == (status, notes), verdict
 
 
+MOMENTUM_PHI = "m l^2 sin(theta)^2 phidot"
+CHAIN_P = "Your 2 lines, each `p_φ = …`, were read as one chain, p_φ = … = …: its last side was graded."
+P_DEFINED = r"p_\phi = \frac{\partial L}{\partial \dot\phi}"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "notes"),
+    [
+        ("p_φ = ∂L/∂φ̇\np_φ = m l² sin²θ φ̇", "equivalent", (CHAIN_P,)),
+        ("p_φ = ∂L/∂φ̇,\np_φ = m l² sin²θ φ̇", "equivalent", (CHAIN_P,)),  # the sentence's comma
+        # in TeX, as on one line (before: refused, `∂` out of its place)
+        (rf"{P_DEFINED} \\ p_\phi = m l^2 \sin^2\theta \dot\phi", "equivalent", (CHAIN_P,)),
+        (rf"{P_DEFINED}" "\n" r"p_\phi = m l^2 \sin^2\theta \dot\phi", "equivalent", (CHAIN_P,)),
+        (rf"${P_DEFINED}$" "\n" r"$p_\phi = ml^2\sin^2\theta\,\dot\phi$", "equivalent", (CHAIN_P,)),
+        (r"\[p_{\phi} = \frac{\partial L}{\partial\dot\phi}\]" "\n" r"\[p_\phi = m l^2 \sin^2\theta\,\dot\phi\]",
+         "equivalent", (CHAIN_P,)),
+        (rf"\begin{{aligned}} {P_DEFINED.replace(' =', ' &=')} \\ p_\phi &= m l^2 \sin^2\theta\,\dot\phi"
+         r" \end{aligned}", "equivalent", (CHAIN_P,)),
+        (rf"{P_DEFINED} \\ p_\phi = m l^2 \dot\phi", "not_equivalent", (CHAIN_P,)),
+        # lines that name two quantities, or a line with no name, or no value: as typed
+        ("p_φ = ∂L/∂φ̇\np_θ = m l² sin²θ φ̇", "invalid", ()),
+        ("p_φ = ∂L/∂φ̇\nm l² sin²θ φ̇", "invalid", ()),
+        ("p_φ = ∂L/∂φ̇\np_φ = ∂L/∂φ̇", "invalid", ()),
+        (rf"{P_DEFINED} \\ p_\phi = m l^2 \sin^2\theta \dot\phi \\ p_\phi = foo(\theta)", "invalid", ()),
+        (rf"{P_DEFINED} \\ 2p_\phi = m l^2 \sin^2\theta \dot\phi", "invalid", ()),
+    ],
+)  # fmt: skip
+def test_a_momentum_defined_then_given_its_value_on_the_next_line_is_one_chain(submitted, status, notes):
+    verdict = compare(MOMENTUM_PHI, submitted, name="p_phi", **SPHERICAL)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+
+
+SPHERICAL_EOM = (
+    "thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta);"
+    " sin(theta)^2 phiddot + 2 sin(theta) cos(theta) thetadot phidot = 0"
+)
+
+
+def _one_chain(name):
+    return f"Your 2 lines, each `{name} = …`, were read as one chain, {name} = … = …, as if written on one line."
+
+
+@pytest.mark.parametrize(
+    ("expected", "kind", "setting", "submitted", "status", "notes"),
+    [
+        # a system, or one equation through a momentum: the lines that name it, as on one line
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         "p_φ = ∂L/∂φ̇\np_φ = m l² sin²θ φ̇ = const\nθ̈ = sin θ cos θ φ̇² − (g/l) sin θ", "equivalent",
+         (_one_chain("p_φ"),)),
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         rf"\ddot\theta = \sin\theta\cos\theta\,\dot\phi^2 - \frac gl \sin\theta \\ {P_DEFINED} \\"
+         r" p_\phi = m l^2 \sin^2\theta\,\dot\phi = C", "equivalent", (_one_chain("p_φ"),)),
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ\np_φ = ∂L/∂φ̇\np_φ = m l² sin θ φ̇ = const", "not_equivalent",
+         ("conserved_read", _one_chain("p_φ"))),
+        (EOM_PENDULUM, "equation", PENDULUM, "p_θ = ∂L/∂θ̇\np_θ = m l² θ̇\nṗ_θ = −m g l sin θ", "equivalent",
+         (_one_chain("p_θ"),)),
+        (EOM_PENDULUM, "equation", PENDULUM, "p_θ = ∂L/∂θ̇\np_θ = m l θ̇\nṗ_θ = −m g l sin θ", "not_equivalent",
+         (_one_chain("p_θ"),)),
+        # not in a row: two names for one line each, as typed
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         "p_φ = ∂L/∂φ̇\nθ̈ = sin θ cos θ φ̇² − (g/l) sin θ\np_φ = m l² sin²θ φ̇ = const", "invalid", ()),
+    ],
+)  # fmt: skip
+def test_lines_that_name_one_quantity_in_a_row_are_one_chain_in_a_system(
+    expected, kind, setting, submitted, status, notes
+):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    said = tuple("conserved_read" if "conserved quantity" in note else note for note in verdict.notes)
+    assert (verdict.status, said) == (status, notes), verdict
+
+
 SUM_REFUSED = (
     "`\\sum` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …, whose"
     " last side is graded; anywhere else, write the sum out term by term."
@@ -1590,10 +1662,6 @@ def test_a_system_may_define_its_own_names():
 
 
 SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
-SPHERICAL_EOM = (
-    "thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta);"
-    " sin(theta)^2 phiddot + 2 sin(theta) cos(theta) thetadot phidot = 0"
-)
 
 
 @pytest.mark.parametrize(

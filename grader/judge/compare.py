@@ -175,11 +175,13 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
-    chain = _chained(submitted) if verdict.status == "invalid" and spec.shape == "expression" else None
+    chain = _chained(submitted) if verdict.status == "invalid" and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
         if chained.status != "invalid":
-            note = say("lines_as_chain", count=chain[1], label=chain[2])
+            # where an expression is asked, the chain is the answer; in a system, it is one of its lines
+            key = "lines_as_chain" if spec.shape == "expression" else "lines_as_one_chain"
+            note = say(key, count=chain[1], label=chain[2])
             verdict = replace(chained, feedback=(*chained.feedback, note), notes=(*chained.notes, note))
     several = verdict.diagnosis in _ONE_THING_ASKED or _answered_twice(verdict.answer, prepared)
     # θ̈ = −ω² sin θ, then θ̈ = −(g/l) sin θ: no definition of ω to eliminate, but a last line that
@@ -212,21 +214,60 @@ def _answered_twice(answer, expected: Expected) -> bool:
     return getattr(answer, "kind", None) == "equations" and len(_asked_lines(answer.value, expected)) > 1
 
 
-# a line that gives a name a value: H = …
-_NAMED_LINE = re.compile(r"\s*([^\W\d]\w*)\s*=(?![=>])(.+)", re.DOTALL)
-
-
 def _chained(text: str) -> tuple[str, int, str] | None:
-    """``H = Σ p q̇ − L`` then ``H = ½ m l² θ̇² − …``: lines that each give one name a value, read as
-    the one chain ``H = Σ p q̇ − L = ½ m l² θ̇² − …`` that they are (the parser reads a chain's
-    definitions on the way as such, and grades its last side). Returns the chain, the count of
-    lines and the name; None where the lines are no such list."""
-    lines = _lines(text)
-    found = [_NAMED_LINE.fullmatch(line) for line in lines or ()]
-    if not found or not all(found) or len({match[1] for match in found}) != 1:
+    """``H = Σ p q̇ − L`` then ``H = ½ m l² θ̇² − …``, or ``p_φ = ∂L/∂φ̇`` then ``p_φ = m l² sin²θ φ̇``:
+    lines that each give one name a value, read as the one chain ``H = Σ p q̇ − L = ½ m l² θ̇² − …``
+    that they are (the parser reads a chain's definitions on the way as such, and grades its last
+    side). In TeX too (``p_\\phi = \\frac{\\partial L}{\\partial \\dot\\phi} \\\\ p_\\phi = …``, each line in
+    its ``$…$`` or not); and where other lines follow or come before, as a system's equations do,
+    each run of lines that name one quantity is one chain, the others kept as they are. Returns the
+    answer so read, the count of lines of the first such run and its name as a student reads it;
+    None where no two lines in a row name one quantity."""
+    lines = _chain_lines(text)
+    if lines is None:
         return None
-    label = found[0][1]
-    return f"{label} = " + " = ".join(match[2].strip() for match in found), len(found), label
+    runs: list[list[tuple[str | None, str, str]]] = []  # of (name, label, side): lines in a row that name one
+    for line in lines:
+        name, label, side = _labelled_line(line)
+        if runs and name is not None and runs[-1][-1][0] == name:
+            runs[-1].append((name, label, side))
+        else:
+            runs.append([(name, label, side) if name is not None else (None, "", line.strip())])
+    chains = [run for run in runs if len(run) > 1]
+    if not chains:
+        return None
+    joined = [f"{run[0][1]} = " + " = ".join(side for *_, side in run) if run[0][0] else run[0][2] for run in runs]
+    return "\n".join(joined), len(chains[0]), unicode_name(chains[0][0][0])
+
+
+# TeX's row break, \\ (with the space below it, \\[6pt]), which ends a line as a new line does
+_ROW_BREAK = re.compile(r"\\\\(?:\s*\[[^\]\n]{0,12}\])?")
+# the math's delimiters around a line: $…$, $$…$$, \[…\], \(…\)
+_OPENS_MATH = re.compile(r"^\s*(?:\$\$?|\\\[|\\\()")
+_CLOSES_MATH = re.compile(r"(?:\$\$?|\\\]|\\\))\s*$")
+
+
+def _chain_lines(text: str) -> list[str] | None:
+    """The lines of ``text`` as :func:`_lines` finds them, TeX's ``\\\\`` ending one too, each without the
+    math's delimiters around it; None where there are not two to six."""
+    if not isinstance(text, str) or len(text) > LIMITS.length:
+        return None
+    lines = _lines(_ROW_BREAK.sub("\n", text))
+    return [_CLOSES_MATH.sub("", _OPENS_MATH.sub("", line)) for line in lines] if lines else None
+
+
+def _labelled_line(line: str) -> tuple[str | None, str, str]:
+    """A line that gives a name a value, ``p_\\phi = …``: (the name, its label as typed, what follows
+    its first ``=``); (None, "", "") for any other line. The label is read alone, as a name (H, ``p_φ``,
+    TeX's ``p_{\\phi}``): ``2L``, ``θ̈`` or ``L(θ)`` name no quantity a chain gives values."""
+    label, *sides = _cut(line, lambda i, depth: depth == 0 and _EQUALS.match(line, i) is not None)
+    read = parse_answer(label) if sides and label.strip() and len(label) <= _LABEL_LENGTH else None
+    if read is None or not read.ok or read.kind != "expression" or not read.value.is_Symbol:
+        return None, "", ""
+    return read.value.name, label.strip(), "=".join(sides).strip().rstrip(",")
+
+
+_LABEL_LENGTH = 40  # characters of a label: a name, with its subscript in TeX
 
 
 def _lines(text: str) -> list[str] | None:

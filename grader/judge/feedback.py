@@ -48,6 +48,8 @@ FEEDBACK: dict[str, str] = {
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
     "lines_as_chain": "Your {count} lines, each `{label} = …`, were read as one chain, {label} = … = …: its last"
     " side was graded.",
+    "lines_as_one_chain": "Your {count} lines, each `{label} = …`, were read as one chain, {label} = … = …, as if"
+    " written on one line.",
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
