@@ -1052,6 +1052,81 @@ def test_a_remark_on_the_zero_names_no_name_the_problem_has():
     assert verdict.status == "invalid", verdict
 
 
+EOM_SMALL = "thetaddot = -(g/l) theta"
+BOTH_FORMS = "θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ"
+WHICH = "which for small θ gives"
+
+
+def _small_left_out(words):
+    return f"Graded your formula before `{words}`; the small-angle form after it was not graded."
+
+
+def _full_left_out(words):
+    return f"Graded your formula after `{words}`; the full form before it was not graded."
+
+
+def _forms_for_a_person(words):
+    return (
+        f"Your formula after `{words}` is not the small-angle form of the one before it, as your words say:"
+        " a person will decide which is your answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "kind", "submitted", "status", "score", "feedback"),
+    [
+        # the full form asked: the first is the answer, and its small-angle form after it costs nothing
+        (EOM_PENDULUM, "equation", BOTH_FORMS, "equivalent", 1, ("Correct.", _small_left_out(WHICH))),
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) sin θ; for small θ, θ̈ = −(g/l) θ", "equivalent", 1,
+         ("Correct.", _small_left_out("for small θ"))),
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) sin θ. For small angles this becomes θ̈ = −(g/l) θ", "equivalent", 1,
+         ("Correct.", _small_left_out("For small angles this becomes"))),
+        (L_PENDULUM, "lagrangian", "L = ½ m l² θ̇² + m g l cos θ, which for small θ gives L = ½ m l² θ̇² − ½ m g l θ²",
+         "equivalent", 1, ("Correct.", _small_left_out(WHICH))),
+        # the small-angle form asked: the last is the answer
+        (EOM_SMALL, "equation", BOTH_FORMS, "equivalent", 1, ("Correct.", _full_left_out(WHICH))),
+        (EOM_SMALL, "equation", "m l² θ̈ + m g l sin θ = 0, linearized: l θ̈ + g θ = 0", "equivalent", 1,
+         ("Correct.", _full_left_out("linearized"))),
+        # the one asked wrong, the other right: wrong, and said as of the one asked
+        (EOM_PENDULUM, "equation", "θ̈ = (g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ", "not_equivalent", 0,
+         ("A term differs: the term in sin(θ) has the wrong sign.", _small_left_out(WHICH))),
+        (EOM_SMALL, "equation", "θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = (g/l) θ", "not_equivalent", 0,
+         ("A term differs: the gravity term has the wrong sign.", _full_left_out(WHICH))),
+        # one right, and the other not its other form as the words say: which is the answer? a person says
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = (g/l) θ", "undecided", 1,
+         (_forms_for_a_person(WHICH),)),
+        (EOM_SMALL, "equation", "θ̈ = (g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ", "undecided", 1,
+         (_forms_for_a_person(WHICH),)),
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) θ, which for small θ gives θ̈ = −(g/l) sin θ", "undecided", 1,
+         (_forms_for_a_person(WHICH),)),  # the other way round
+        # neither right, whichever was meant
+        (EOM_PENDULUM, "equation", "θ̈ = (g/l) sin θ, which for small θ gives θ̈ = (g/l) θ", "not_equivalent", 0,
+         (f"Neither your formula before `{WHICH}` nor the one after it is right.",)),
+    ],
+)  # fmt: skip
+def test_a_formula_then_its_small_angle_form_is_graded_by_the_one_asked(
+    expected, kind, submitted, status, score, feedback
+):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("θ̈ = −(g/l) sin θ, or for small θ, θ̈ = −(g/l) θ", "invalid"),  # a hedge: as typed
+        ("θ̈ = −(g/l) sin θ, which for large θ gives θ̈ = −(g/l) θ", "not_equivalent"),  # no small angle
+        ("θ̈ = −(g/l) sin θ, which for small θ is maybe θ̈ = −(g/l) θ", "not_equivalent"),  # doubt
+        ("θ̈ = −(g/l) sin θ, which for small θ times 2 gives θ̈ = −(g/l) θ", "not_equivalent"),  # arithmetic
+        ("θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = foo(θ)", "invalid"),  # the other cannot be read
+    ],
+)
+def test_words_between_two_formulas_that_are_no_small_angle_remark_are_read_as_typed(submitted, status):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert verdict.status == status, verdict
+    assert verdict.method != "forms" and not any("small-angle form" in note for note in verdict.notes), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "setting", "words"),
     [

@@ -51,6 +51,7 @@ from grader.judge.units import (
 from grader.judge.verdict import Verdict
 from grader.judge.words import (
     formula_then_convention,
+    formula_then_small_angle_form,
     formula_then_words,
     says_otherwise,
     text_as_words,
@@ -175,6 +176,9 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
+    forms = _small_angle_forms(spec, prepared, submitted, timeout, values) if verdict.status != "equivalent" else None
+    if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
+        return forms
     chain = _chained(submitted) if verdict.status == "invalid" and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
@@ -202,6 +206,66 @@ def compare(
     if _judge(spec, prepared, listed, left, values).status != "equivalent":
         return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+# what a formula is told where the other form is asked: a small-angle form where the full one is, and back
+_SMALL_FORMS = frozenset({"small_angle", "potential_small_angle"})
+_FULL_FORMS = frozenset({"not_small_angle"})
+
+
+def _small_angle_forms(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple) -> Verdict | None:
+    """``θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ``: a formula, then words that say its
+    small-angle form follows, then that form (:func:`~grader.judge.words.formula_then_small_angle_form`).
+    Where the full form is asked, the first is the answer; where the small-angle form is, the last.
+    Each is judged, and the one asked for is graded where the other is what the words say it is: the
+    other form of the answer asked for (so the remark costs nothing, and is not graded), or, where the
+    one graded is wrong, the other form of the right answer. Where one is right and the other is not
+    its other form, which is the answer is for a person to say; where neither is right, and neither is
+    the other form of the right answer, the answer is wrong whichever was meant. None where there are
+    no two such formulas, or one of them cannot be read or holds names the problem does not have."""
+    if not (spec.parsed and spec.shape):
+        return None
+    started = time.monotonic()
+    names = sorted(expected.names | {symbol.name for symbol, _ in given})
+    coords = expected.setting.coords
+    for first, words, last in formula_then_small_angle_form(submitted, names, coords):
+        if not all(parse_answer(formula, coords=coords, known=names).ok for formula in (first, last)):
+            continue
+        full = _judge(spec, expected, first, timeout - (time.monotonic() - started), given)
+        small = _judge(spec, expected, last, timeout - (time.monotonic() - started), given)
+        if "invalid" in (full.status, small.status) or {full.diagnosis, small.diagnosis} & _NOT_ONE_FORMULA:
+            return None  # … is maybe θ̈ = …: words left in a formula, read as typed
+        return _one_of_two_forms(full, small, _shown(words))
+    return None
+
+
+# what a formula is told where words were left in it, or it is two equations: no one formula of the two forms
+_NOT_ONE_FORMULA = frozenset({"undefined_symbol", "undefined_units", "eliminate_unknowns", "expected_one_equation"})
+
+
+def _one_of_two_forms(full: Verdict, small: Verdict, words: str) -> Verdict:
+    """The verdict on a formula and its small-angle form after ``words``, each judged (see
+    :func:`_small_angle_forms`), with the note that says which was graded."""
+    if full.equivalent and (small.equivalent or small.diagnosis in _SMALL_FORMS):
+        graded, key = full, "small_form_left_out"
+    elif small.equivalent and full.diagnosis in _FULL_FORMS:
+        graded, key = small, "full_form_left_out"
+    elif small.diagnosis in _SMALL_FORMS:  # the full form is asked, and theirs is wrong
+        graded, key = full, "small_form_left_out"
+    elif full.diagnosis in _FULL_FORMS:  # the small-angle form is asked, and theirs is wrong
+        graded, key = small, "full_form_left_out"
+    else:
+        right = full if full.equivalent else small if small.equivalent else None
+        if "undecided" in (full.status, small.status):  # one could not be judged: nothing is said of it
+            outcome = Outcome("undecided", right.score if right else 0.0, "undecided", method="forms")
+        elif right is not None or full.score or small.score:  # which was meant decides the grade
+            score = right.score if right else 0.0
+            outcome = Outcome("undecided", score, "forms_for_a_person", {"words": words}, method="forms")
+        else:  # wrong whichever was meant
+            outcome = Outcome("not_equivalent", 0.0, "forms_both_wrong", {"words": words}, method="forms")
+        return _verdict(outcome, (right or full).answer)
+    note = say(key, words=words)
+    return replace(graded, feedback=(*graded.feedback, note), notes=(*graded.notes, note))
 
 
 # one equation, or one expression, is asked for, and the answer has several lines

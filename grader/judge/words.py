@@ -5,6 +5,8 @@ Contents:
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
     formula_then_convention(text, names)       ``L = … (taking V = 0 at the pivot)``: the formula and its remark
+    formula_then_small_angle_form(text, names, coords)
+                                               ``θ̈ = … sin θ, which for small θ gives θ̈ = … θ``: both formulas
     text_as_words(text, names, coords)         ``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: TeX's text, as words
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
@@ -21,6 +23,10 @@ A remark in brackets after a formula may state where the potential energy is zer
 at the pivot)``: words, and ``V = 0`` (or ``U = 0``) in a name the problem does not have. It says how
 the formula was worked out, not what it is, and changes no grade; it is read past as words are. Any
 other ``=`` in a remark may be more of the answer: it is read as typed.
+
+Words between two formulas may say the second is the first's small-angle form: ``θ̈ = −(g/l) sin θ,
+which for small θ gives θ̈ = −(g/l) θ``. Which of the two is the answer depends on what was asked;
+:func:`formula_then_small_angle_form` only finds them, and ``compare`` decides.
 """
 
 from __future__ import annotations
@@ -34,6 +40,7 @@ from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = [
     "formula_then_convention",
+    "formula_then_small_angle_form",
     "formula_then_words",
     "is_prose",
     "says_otherwise",
@@ -150,6 +157,35 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
         words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
         if formula and is_prose(words, names, doubt=True):
             yield words, formula
+
+
+# words that say what follows is a small-angle form: "which for small θ gives", "linearized:"
+_SMALL = re.compile(r"\b(?:small|smaller|lineari[sz](?:ed|ing|ation)|linear)\b", re.I)
+# where such words hand over to the formula: as a sentence does (gives, becomes, :), or a comma
+_HANDS_OVER = re.compile(rf"{_LEADS_TO.pattern}|,", re.I)
+
+
+def formula_then_small_angle_form(
+    text: str, names: Collection[str], coords: Collection[str]
+) -> Iterator[tuple[str, str, str]]:
+    """``θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ``: the ways to read ``text`` as (a
+    formula, words that say its small-angle form follows, that form). The words begin at the first
+    word that is none of the problem's names, spellings or functions, say ``small`` (or ``linear``,
+    ``linearized``), end with a word that hands over to a formula (``gives``, ``becomes``, ``is``), a
+    colon or a comma, and must be prose (:func:`is_prose`: no ``or``, ``not`` or sign). The formulas
+    are not checked here."""
+    if len(text) > _LENGTH or not _SMALL.search(text):
+        return  # as nearly every answer: no word to look for
+    word = next((found for found in _WORD.finditer(text) if _is_word(found[0], names, coords)), None)
+    if word is None:
+        return
+    formula = text[: word.start()].rstrip(" \t\n,;:.—–")
+    if not formula:
+        return
+    for lead in _HANDS_OVER.finditer(text, word.start()):
+        words, after = text[word.start() : lead.end()].rstrip(" ,:"), text[lead.end() :].strip(" ,:")
+        if after and _SMALL.search(words) and is_prose(words, names):
+            yield formula, words, after
 
 
 # the zero of potential energy a remark states: V = 0, U=0 (not V = 0.5, V = 0x, nor \\nabla V = 0)
