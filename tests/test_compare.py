@@ -919,6 +919,51 @@ def test_a_difference_the_answer_defines_is_one_name(submitted, status):
     assert verdict.diagnosis == "undefined_symbol", verdict
 
 
+L_EQUAL_TEX = (
+    r"m l^2 \dot\theta_1^2 + \frac12 m l^2 \dot\theta_2^2 + m l^2 \dot\theta_1 \dot\theta_2 \cos\Delta\theta"
+    r" + 2 m g l \cos\theta_1 + m g l \cos\theta_2"
+)
+EOM_EQUAL = (
+    "2 l theta1ddot + l theta2ddot cos(theta1 - theta2) + l theta2dot^2 sin(theta1 - theta2) + 2 g sin(theta1) = 0;"
+    " l theta2ddot + l theta1ddot cos(theta1 - theta2) - l theta1dot^2 sin(theta1 - theta2) + g sin(theta2) = 0"
+)
+EOM_EQUAL_TEX = (
+    r"2 \ddot\theta_1 + \ddot\theta_2 \cos\Delta\theta + \dot\theta_2^2 \sin\Delta\theta + 2 \frac gl \sin\theta_1 = 0"
+    r" \\ \ddot\theta_2 + \ddot\theta_1 \cos\Delta\theta - \dot\theta_1^2 \sin\Delta\theta + \frac gl \sin\theta_2 = 0"
+)
+DELTA_TEX = r"\Delta\theta = \theta_1 - \theta_2"
+
+
+@pytest.mark.parametrize(
+    ("expected", "kind", "submitted", "status"),
+    [
+        # before: \cos\Delta\theta was cos(Δ)·θ, and the definition Δ·θ defined nothing
+        (L_EQUAL, "lagrangian", rf"{L_EQUAL_TEX}, \text{{ where }} {DELTA_TEX}", "equivalent"),
+        (L_EQUAL, "lagrangian", rf"{L_EQUAL_TEX}, \Delta \theta = \theta_1 - \theta_2", "equivalent"),
+        (L_EQUAL, "lagrangian", L_EQUAL_TEX.replace(r"\Delta\theta", r"(\Delta\theta)") + f", {DELTA_TEX}",
+         "equivalent"),
+        (L_EQUAL, "lagrangian", L_EQUAL_TEX.replace(r"\Delta", r"\delta") + r", \delta\theta = \theta_1 - \theta_2",
+         "equivalent"),
+        (L_EQUAL, "lagrangian", rf"{L_EQUAL_TEX}, \Delta\theta = \theta_1 + \theta_2", "not_equivalent"),
+        # the sign of the difference: sin Δθ tells θ₁ − θ₂ from θ₂ − θ₁
+        (EOM_EQUAL, "equations", rf"{EOM_EQUAL_TEX} \\ {DELTA_TEX}", "equivalent"),
+        (EOM_EQUAL, "equations", rf"{EOM_EQUAL_TEX} \\ \Delta\theta = \theta_2 - \theta_1", "not_equivalent"),
+    ],
+)  # fmt: skip
+def test_a_difference_the_answer_defines_in_tex_is_one_name(expected, kind, submitted, status):
+    verdict = compare(expected, submitted, kind=kind, **EQUAL)
+    assert verdict.status == status, verdict
+    assert "not define" not in " ".join(verdict.feedback), verdict
+
+
+def test_a_difference_nothing_defines_is_read_in_tex_as_in_unicode():
+    # Δ·θ, names the problem does not define; and the argument of cos all of it, as in `cos Δθ`
+    tex = compare(L_EQUAL, L_EQUAL_TEX, kind="lagrangian", **EQUAL)
+    typed = compare(L_EQUAL, L_EQUAL_DELTA, kind="lagrangian", **EQUAL)
+    assert (tex.diagnosis, tex.feedback, tex.read_as) == (typed.diagnosis, typed.feedback, typed.read_as)
+    assert "cos(Δ*θ)" in tex.read_as
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind", "status"),
     [
@@ -979,6 +1024,159 @@ def _for_a_person(words):
 def test_words_after_a_formula_are_read_past_and_said_so(expected, submitted, kind, status, notes):
     verdict = compare(expected, submitted, kind=kind, **PENDULUM)
     assert (verdict.status, verdict.notes) == (status, notes)
+
+
+L_GIVEN = "L = ½ m l² θ̇² + m g l cos θ"
+H_PIVOT = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"  # the zero of potential at the pivot
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "feedback"),
+    [
+        # a remark that states the zero of potential energy: before, "Something is missing before `=`"
+        (L_PENDULUM, f"{L_GIVEN} (taking V = 0 at the pivot)", "lagrangian", "equivalent",
+         ("Correct.", _words("(taking V = 0 at the pivot)"))),
+        (L_PENDULUM, f"{L_GIVEN} (with V=0 at the top)", "lagrangian", "equivalent",
+         ("Correct.", _words("(with V=0 at the top)"))),
+        (L_PENDULUM, f"{L_GIVEN} [V = 0 at pivot].", "lagrangian", "equivalent",
+         ("Correct.", _words("[V = 0 at pivot]"))),
+        (L_PENDULUM, f"{L_GIVEN}, (taking the pivot as U = 0)", "lagrangian", "equivalent",
+         ("Correct.", _words("(taking the pivot as U = 0)"))),
+        (L_PENDULUM, r"L = \frac12 m l^2 \dot\theta^2 + m g l\cos\theta \text{ (taking V = 0 at the pivot)}",
+         "lagrangian", "equivalent", ("Correct.", _words("(taking V = 0 at the pivot)"))),
+        (EOM_PENDULUM, "m l² θ̈ + m g l sin θ = 0 (V = 0 at the pivot)", "equation", "equivalent",
+         ("Correct.", _words("(V = 0 at the pivot)"))),
+        # words that doubt it: for a person, as after any formula
+        (L_PENDULUM, f"{L_GIVEN} (V = 0 at the pivot, I think)", "lagrangian", "undecided",
+         (_for_a_person("(V = 0 at the pivot, I think)"),)),
+    ],
+)  # fmt: skip
+def test_a_remark_that_states_the_zero_of_potential_is_read_past(expected, submitted, kind, status, feedback):
+    setting = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]} if expected == H_PIVOT else PENDULUM
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("expected", "formula", "kind", "coords"),
+    [
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ", "lagrangian", ["theta"]),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ", "lagrangian", ["theta"]),  # wrong stays wrong
+        (L_PENDULUM, "L = ½ m l θ̇² + m g l cos θ", "lagrangian", ["theta"]),
+        # the formula's own zero, which the problem does not take, whatever the remark says
+        (H_PIVOT, "½ m l²(θ̇² + sin²θ φ̇²) + m g l (1 − cos θ)", "expression", ["theta", "phi"]),
+        (H_PIVOT, "½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "expression", ["theta", "phi"]),
+        (EOM_PENDULUM, "m l² θ̈ − m g l sin θ = 0", "equation", ["theta"]),
+    ],
+)
+def test_a_remark_on_the_zero_of_potential_changes_no_grade(expected, formula, kind, coords):
+    setting = {"kind": kind, "coords": coords, "known": ["m", "g", "l"]}
+    alone = compare(expected, formula, **setting)
+    remarked = compare(expected, f"{formula} (taking V = 0 at the pivot)", **setting)
+    note = _words("(taking V = 0 at the pivot)")
+    assert (remarked.status, remarked.score, remarked.diagnosis) == (alone.status, alone.score, alone.diagnosis)
+    assert (remarked.feedback, remarked.notes) == ((*alone.feedback, note), (*alone.notes, note))
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        f"{L_GIVEN} (V = 0)",  # no words: a remark is words with the zero in them
+        f"{L_GIVEN} (V = 0 or V = m g l)",  # a hedge, and another value
+        f"{L_GIVEN} (V = 0 at θ = 0)",  # another `=`, and a number
+        f"{L_GIVEN} (θ = 0 at the top)",  # a coordinate's zero may say the formula is other than it reads
+        f"{L_GIVEN} (L = 0 at the pivot)",  # not the potential energy
+        f"{L_GIVEN} (taking V = 0.5 at the pivot)",
+        f"{L_GIVEN} (taking V = 0 at the pivot, times 2)",  # a word of arithmetic
+        f"{L_GIVEN} (taking V = 0 at the pivot) (times 2)",  # the last bracket is no remark on the zero
+        f"{L_GIVEN} (taking V = 0 at the pivot) + m g l",  # the bracket does not end the answer
+        f"{L_GIVEN} (V = 0 at the pivot; V = 0 at the top)",
+    ],
+)
+def test_a_remark_with_an_equals_sign_that_is_not_the_zero_of_potential_is_refused(submitted):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert verdict.status == "invalid", verdict
+
+
+def test_a_remark_on_the_zero_names_no_name_the_problem_has():
+    # V is the problem's own here: V = 0 would say something of the formula
+    verdict = compare("m g V", "m g V (taking V = 0 at the pivot)", known=["m", "g", "V"])
+    assert verdict.status == "invalid", verdict
+
+
+EOM_SMALL = "thetaddot = -(g/l) theta"
+BOTH_FORMS = "θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ"
+WHICH = "which for small θ gives"
+
+
+def _small_left_out(words):
+    return f"Graded your formula before `{words}`; the small-angle form after it was not graded."
+
+
+def _full_left_out(words):
+    return f"Graded your formula after `{words}`; the full form before it was not graded."
+
+
+def _forms_for_a_person(words):
+    return (
+        f"Your formula after `{words}` is not the small-angle form of the one before it, as your words say:"
+        " a person will decide which is your answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "kind", "submitted", "status", "score", "feedback"),
+    [
+        # the full form asked: the first is the answer, and its small-angle form after it costs nothing
+        (EOM_PENDULUM, "equation", BOTH_FORMS, "equivalent", 1, ("Correct.", _small_left_out(WHICH))),
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) sin θ; for small θ, θ̈ = −(g/l) θ", "equivalent", 1,
+         ("Correct.", _small_left_out("for small θ"))),
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) sin θ. For small angles this becomes θ̈ = −(g/l) θ", "equivalent", 1,
+         ("Correct.", _small_left_out("For small angles this becomes"))),
+        (L_PENDULUM, "lagrangian", "L = ½ m l² θ̇² + m g l cos θ, which for small θ gives L = ½ m l² θ̇² − ½ m g l θ²",
+         "equivalent", 1, ("Correct.", _small_left_out(WHICH))),
+        # the small-angle form asked: the last is the answer
+        (EOM_SMALL, "equation", BOTH_FORMS, "equivalent", 1, ("Correct.", _full_left_out(WHICH))),
+        (EOM_SMALL, "equation", "m l² θ̈ + m g l sin θ = 0, linearized: l θ̈ + g θ = 0", "equivalent", 1,
+         ("Correct.", _full_left_out("linearized"))),
+        # the one asked wrong, the other right: wrong, and said as of the one asked
+        (EOM_PENDULUM, "equation", "θ̈ = (g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ", "not_equivalent", 0,
+         ("A term differs: the term in sin(θ) has the wrong sign.", _small_left_out(WHICH))),
+        (EOM_SMALL, "equation", "θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = (g/l) θ", "not_equivalent", 0,
+         ("A term differs: the gravity term has the wrong sign.", _full_left_out(WHICH))),
+        # one right, and the other not its other form as the words say: which is the answer? a person says
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = (g/l) θ", "undecided", 1,
+         (_forms_for_a_person(WHICH),)),
+        (EOM_SMALL, "equation", "θ̈ = (g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ", "undecided", 1,
+         (_forms_for_a_person(WHICH),)),
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) θ, which for small θ gives θ̈ = −(g/l) sin θ", "undecided", 1,
+         (_forms_for_a_person(WHICH),)),  # the other way round
+        # neither right, whichever was meant
+        (EOM_PENDULUM, "equation", "θ̈ = (g/l) sin θ, which for small θ gives θ̈ = (g/l) θ", "not_equivalent", 0,
+         (f"Neither your formula before `{WHICH}` nor the one after it is right.",)),
+    ],
+)  # fmt: skip
+def test_a_formula_then_its_small_angle_form_is_graded_by_the_one_asked(
+    expected, kind, submitted, status, score, feedback
+):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status"),
+    [
+        ("θ̈ = −(g/l) sin θ, or for small θ, θ̈ = −(g/l) θ", "invalid"),  # a hedge: as typed
+        ("θ̈ = −(g/l) sin θ, which for large θ gives θ̈ = −(g/l) θ", "not_equivalent"),  # no small angle
+        ("θ̈ = −(g/l) sin θ, which for small θ is maybe θ̈ = −(g/l) θ", "not_equivalent"),  # doubt
+        ("θ̈ = −(g/l) sin θ, which for small θ times 2 gives θ̈ = −(g/l) θ", "not_equivalent"),  # arithmetic
+        ("θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = foo(θ)", "invalid"),  # the other cannot be read
+    ],
+)
+def test_words_between_two_formulas_that_are_no_small_angle_remark_are_read_as_typed(submitted, status):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert verdict.status == status, verdict
+    assert verdict.method != "forms" and not any("small-angle form" in note for note in verdict.notes), verdict
 
 
 @pytest.mark.parametrize(
@@ -1325,6 +1523,110 @@ def test_lines_that_give_one_name_values_are_one_chain(submitted, status, notes)
     assert (verdict.status, verdict.notes) == (status, notes), verdict
 
 
+MOMENTUM_PHI = "m l^2 sin(theta)^2 phidot"
+CHAIN_P = "Your 2 lines, each `p_φ = …`, were read as one chain, p_φ = … = …: its last side was graded."
+P_DEFINED = r"p_\phi = \frac{\partial L}{\partial \dot\phi}"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "notes"),
+    [
+        ("p_φ = ∂L/∂φ̇\np_φ = m l² sin²θ φ̇", "equivalent", (CHAIN_P,)),
+        ("p_φ = ∂L/∂φ̇,\np_φ = m l² sin²θ φ̇", "equivalent", (CHAIN_P,)),  # the sentence's comma
+        # in TeX, as on one line (before: refused, `∂` out of its place)
+        (rf"{P_DEFINED} \\ p_\phi = m l^2 \sin^2\theta \dot\phi", "equivalent", (CHAIN_P,)),
+        (rf"{P_DEFINED}" "\n" r"p_\phi = m l^2 \sin^2\theta \dot\phi", "equivalent", (CHAIN_P,)),
+        (rf"${P_DEFINED}$" "\n" r"$p_\phi = ml^2\sin^2\theta\,\dot\phi$", "equivalent", (CHAIN_P,)),
+        (r"\[p_{\phi} = \frac{\partial L}{\partial\dot\phi}\]" "\n" r"\[p_\phi = m l^2 \sin^2\theta\,\dot\phi\]",
+         "equivalent", (CHAIN_P,)),
+        (rf"\begin{{aligned}} {P_DEFINED.replace(' =', ' &=')} \\ p_\phi &= m l^2 \sin^2\theta\,\dot\phi"
+         r" \end{aligned}", "equivalent", (CHAIN_P,)),
+        (rf"{P_DEFINED} \\ p_\phi = m l^2 \dot\phi", "not_equivalent", (CHAIN_P,)),
+        # lines that name two quantities, or a line with no name, or no value: as typed
+        ("p_φ = ∂L/∂φ̇\np_θ = m l² sin²θ φ̇", "invalid", ()),
+        ("p_φ = ∂L/∂φ̇\nm l² sin²θ φ̇", "invalid", ()),
+        ("p_φ = ∂L/∂φ̇\np_φ = ∂L/∂φ̇", "invalid", ()),
+        (rf"{P_DEFINED} \\ p_\phi = m l^2 \sin^2\theta \dot\phi \\ p_\phi = foo(\theta)", "invalid", ()),
+        (rf"{P_DEFINED} \\ 2p_\phi = m l^2 \sin^2\theta \dot\phi", "invalid", ()),
+    ],
+)  # fmt: skip
+def test_a_momentum_defined_then_given_its_value_on_the_next_line_is_one_chain(submitted, status, notes):
+    verdict = compare(MOMENTUM_PHI, submitted, name="p_phi", **SPHERICAL)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+
+
+SPHERICAL_EOM = (
+    "thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta);"
+    " sin(theta)^2 phiddot + 2 sin(theta) cos(theta) thetadot phidot = 0"
+)
+
+
+def _one_chain(name):
+    return f"Your 2 lines, each `{name} = …`, were read as one chain, {name} = … = …, as if written on one line."
+
+
+@pytest.mark.parametrize(
+    ("expected", "kind", "setting", "submitted", "status", "notes"),
+    [
+        # a system, or one equation through a momentum: the lines that name it, as on one line
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         "p_φ = ∂L/∂φ̇\np_φ = m l² sin²θ φ̇ = const\nθ̈ = sin θ cos θ φ̇² − (g/l) sin θ", "equivalent",
+         (_one_chain("p_φ"),)),
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         rf"\ddot\theta = \sin\theta\cos\theta\,\dot\phi^2 - \frac gl \sin\theta \\ {P_DEFINED} \\"
+         r" p_\phi = m l^2 \sin^2\theta\,\dot\phi = C", "equivalent", (_one_chain("p_φ"),)),
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         "θ̈ = sin θ cos θ φ̇² − (g/l) sin θ\np_φ = ∂L/∂φ̇\np_φ = m l² sin θ φ̇ = const", "not_equivalent",
+         ("conserved_read", _one_chain("p_φ"))),
+        (EOM_PENDULUM, "equation", PENDULUM, "p_θ = ∂L/∂θ̇\np_θ = m l² θ̇\nṗ_θ = −m g l sin θ", "equivalent",
+         (_one_chain("p_θ"),)),
+        (EOM_PENDULUM, "equation", PENDULUM, "p_θ = ∂L/∂θ̇\np_θ = m l θ̇\nṗ_θ = −m g l sin θ", "not_equivalent",
+         (_one_chain("p_θ"),)),
+        # not in a row: two names for one line each, as typed
+        (SPHERICAL_EOM, "equations", SPHERICAL,
+         "p_φ = ∂L/∂φ̇\nθ̈ = sin θ cos θ φ̇² − (g/l) sin θ\np_φ = m l² sin²θ φ̇ = const", "invalid", ()),
+    ],
+)  # fmt: skip
+def test_lines_that_name_one_quantity_in_a_row_are_one_chain_in_a_system(
+    expected, kind, setting, submitted, status, notes
+):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    said = tuple("conserved_read" if "conserved quantity" in note else note for note in verdict.notes)
+    assert (verdict.status, said) == (status, notes), verdict
+
+
+SUM_REFUSED = (
+    "`\\sum` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …, whose"
+    " last side is graded; anywhere else, write the sum out term by term."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # TeX's sum in the definition on the way, as Σ is (before: \\sum was an unknown command)
+        ("H = \\sum_i p_i \\dot q_i - L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.",)),
+        ("H = \\sum_j p_j \\dot{q}_j - L = \\frac12 m l^2(\\dot\\theta^2 + \\sin^2\\theta\\,\\dot\\phi^2)"
+         " - m g l\\cos\\theta", "equivalent", ("Correct.",)),
+        ("H = \\sum p\\dot q - L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.",)),
+        ("H = ∑_j p_j q̇_j − L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.",)),
+        ("H = \\sum_i p_i \\dot q_i - L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ("Correct.", CHAIN)),
+        # its value graded as Σ's is
+        ("H = \\sum_i p_i \\dot q_i - L = ½ m l²(θ̇² + sin²θ φ̇²) + m g l cos θ", "not_equivalent",
+         ("A term differs: the term in cos(θ) has the wrong sign.",)),
+        # anywhere else a sum is refused, and said why
+        ("H = \\sum_i p_i \\dot q_i - L", "invalid", (SUM_REFUSED,)),
+        ("\\sum_i p_i \\dot q_i - L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "invalid", (SUM_REFUSED,)),
+        ("H = \\sum_i p_i \\dot q_i - L = \\sum_i p_i \\dot q_i - ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "invalid",
+         (SUM_REFUSED,)),
+        ("½ m l² \\sum_i \\dot q_i^2 − m g l cos θ", "invalid", (SUM_REFUSED,)),
+    ],
+)  # fmt: skip
+def test_a_sum_is_read_in_the_definition_passed_over_and_refused_elsewhere(submitted, status, feedback):
+    verdict = compare(H_SPHERICAL, submitted, name="H", **SPHERICAL)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "kind"),
     [
@@ -1497,10 +1799,6 @@ def test_a_system_may_define_its_own_names():
 
 
 SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
-SPHERICAL_EOM = (
-    "thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta);"
-    " sin(theta)^2 phiddot + 2 sin(theta) cos(theta) thetadot phidot = 0"
-)
 
 
 @pytest.mark.parametrize(

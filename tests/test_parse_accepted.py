@@ -23,7 +23,7 @@ theta, phi, theta1, theta2, x, alpha, beta, r = (
 )
 
 
-U, W, L = sympy.Symbol("U"), sympy.Symbol("W"), sympy.Symbol("L")
+U, W, L, H, Delta = sympy.symbols("U W L H Delta")
 
 
 def D(q, n=1):
@@ -511,6 +511,20 @@ LATEX = [
     ("a = b + c \\over 2 m", Eq(a, (b + c) / (2 * m))),
     ("{{a \\over b} \\over c} + \\sqrt{g \\over l} + \\left( a \\over c \\right)^2",
      a / (b * c) + sqrt(g / l) + (a / c) ** 2),
+    # a sum in the definition a chain passes over, as Σ is: H = Σ p q̇ − L = … (before: \\sum unknown)
+    ("H = \\sum_i p_i \\dot q_i - L = a", Eq(H, a)),
+    ("H = \\sum_j p_j \\dot{q}_j - L = a", Eq(H, a)),
+    ("H = \\sum p\\dot q - L = a", Eq(H, a)),
+    ("H = \\sum_{j=1}^{n} p_j \\dot q_j - L = a", Eq(H, a)),
+    ("H = \\sum\\limits_{k} p_k \\dot q_k - L = a", Eq(H, a)),
+    ("H = ∑ p q̇ − L = a", Eq(H, a)),
+    ("H = ∑_i p_i q̇_i − L = a", Eq(H, a)),
+    # \\Delta or \\delta, then a name: one name, as Δθ typed is; so all of it is a function's argument
+    # (before: \\cos\\Delta\\theta was cos(Δ)·θ), and where no name of the answer's is that, Δ·θ
+    ("\\cos\\Delta\\theta", cos(Delta * theta)),
+    ("\\sin \\Delta \\theta_1 + \\cos\\delta x", sin(Delta * theta1) + cos(sympy.Symbol("delta") * x)),
+    ("\\Delta\\theta^2 + \\Delta x", Delta * theta**2 + Delta * x),
+    ("\\cos\\Delta_1\\theta_1 + \\cos\\Delta\\dot x", cos(sympy.Symbol("Delta_1")) * theta1 + cos(Delta) * D(x)),
 ]  # fmt: skip
 
 ACCEPTED = ARITHMETIC + FUNCTIONS + NAMES + DERIVATIVES + SPLITTING + EQUATIONS + SYSTEMS + LATEX

@@ -158,6 +158,20 @@ HOSTILE = [
     ("\\over", "over_side"),
     ("{1 \\over 0}", "division_by_zero"),
     (_nested("{1 \\over ", "}", 41), "too_deep"),
+    # a sum only in the definition a chain passes over (H = \\sum_j p_j \\dot q_j - L = …): anywhere else
+    # its terms are not written, and it is refused, limits and all
+    ("\\sum_i m_i", "sum"),
+    ("H = \\sum_i p_i \\dot q_i - L", "sum"),  # the definition alone: no value after it
+    ("\\sum_i p_i \\dot q_i - L = m", "sum"),  # no name before it: nothing passes it over
+    ("H = \\sum_i p_i \\dot q_i - L = \\sum_i p_i \\dot q_i", "sum"),  # the value a sum too
+    ("H = a = \\sum_i x_i", "sum"),
+    ("H = \\sum p \\dot q - L = m \\sum_{j=1}^{2} l_j", "sum"),
+    ("e^{\\sum_i x_i}", "sum"),
+    ("m g l + ∑ m", "sum"),
+    ("∑_i m_i = m", "sum"),
+    ("\\sum_{i=1}^{10^{100}} x", "exponent_too_large"),  # a limit beyond what is read past is read
+    ("\\sin\\sum x", "unexpected"),
+    ("\\sum_{__import__} x", "bad_character"),
     # -- values that do not exist -----------------------------------------------
     ("1/0", "division_by_zero"),
     ("m/(l-l)", "division_by_zero"),
@@ -391,6 +405,18 @@ SHOWN = [
         "`->` is read only between two equations, as a step of a derivation (`a = b -> c = d` is read as"
         " c = d); a limit such as θ → 0 cannot be part of an answer.",
         "θ̈ = -g/l θ (θ -> 0)\n" + " " * 14 + "^^",
+    ),
+    (
+        "H = \\sum_i p_i \\dot q_i - L",
+        "`\\sum` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …,"
+        " whose last side is graded; anywhere else, write the sum out term by term.",
+        "H = \\sum_i p_i \\dot q_i - L\n    ^^^^",
+    ),
+    (
+        "H = \\sum p \\dot q - L = \\sum p \\dot q",  # the sum left in, not the one passed over
+        "`\\sum` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …,"
+        " whose last side is graded; anywhere else, write the sum out term by term.",
+        "H = \\sum p \\dot q - L = \\sum p \\dot q\n" + " " * 24 + "^^^^",
     ),
 ]
 

@@ -49,7 +49,14 @@ from grader.judge.units import (
     units_of,
 )
 from grader.judge.verdict import Verdict
-from grader.judge.words import formula_then_words, says_otherwise, text_as_words, words_then_formula
+from grader.judge.words import (
+    formula_then_convention,
+    formula_then_small_angle_form,
+    formula_then_words,
+    says_otherwise,
+    text_as_words,
+    words_then_formula,
+)
 from grader.parse import (
     ANSWER,
     LIMITS,
@@ -169,11 +176,16 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
-    chain = _chained(submitted) if verdict.status == "invalid" and spec.shape == "expression" else None
+    forms = _small_angle_forms(spec, prepared, submitted, timeout, values) if verdict.status != "equivalent" else None
+    if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
+        return forms
+    chain = _chained(submitted) if verdict.status == "invalid" and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
         if chained.status != "invalid":
-            note = say("lines_as_chain", count=chain[1], label=chain[2])
+            # where an expression is asked, the chain is the answer; in a system, it is one of its lines
+            key = "lines_as_chain" if spec.shape == "expression" else "lines_as_one_chain"
+            note = say(key, count=chain[1], label=chain[2])
             verdict = replace(chained, feedback=(*chained.feedback, note), notes=(*chained.notes, note))
     several = verdict.diagnosis in _ONE_THING_ASKED or _answered_twice(verdict.answer, prepared)
     # θ̈ = −ω² sin θ, then θ̈ = −(g/l) sin θ: no definition of ω to eliminate, but a last line that
@@ -196,6 +208,66 @@ def compare(
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
 
 
+# what a formula is told where the other form is asked: a small-angle form where the full one is, and back
+_SMALL_FORMS = frozenset({"small_angle", "potential_small_angle"})
+_FULL_FORMS = frozenset({"not_small_angle"})
+
+
+def _small_angle_forms(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple) -> Verdict | None:
+    """``θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ``: a formula, then words that say its
+    small-angle form follows, then that form (:func:`~grader.judge.words.formula_then_small_angle_form`).
+    Where the full form is asked, the first is the answer; where the small-angle form is, the last.
+    Each is judged, and the one asked for is graded where the other is what the words say it is: the
+    other form of the answer asked for (so the remark costs nothing, and is not graded), or, where the
+    one graded is wrong, the other form of the right answer. Where one is right and the other is not
+    its other form, which is the answer is for a person to say; where neither is right, and neither is
+    the other form of the right answer, the answer is wrong whichever was meant. None where there are
+    no two such formulas, or one of them cannot be read or holds names the problem does not have."""
+    if not (spec.parsed and spec.shape):
+        return None
+    started = time.monotonic()
+    names = sorted(expected.names | {symbol.name for symbol, _ in given})
+    coords = expected.setting.coords
+    for first, words, last in formula_then_small_angle_form(submitted, names, coords):
+        if not all(parse_answer(formula, coords=coords, known=names).ok for formula in (first, last)):
+            continue
+        full = _judge(spec, expected, first, timeout - (time.monotonic() - started), given)
+        small = _judge(spec, expected, last, timeout - (time.monotonic() - started), given)
+        if "invalid" in (full.status, small.status) or {full.diagnosis, small.diagnosis} & _NOT_ONE_FORMULA:
+            return None  # … is maybe θ̈ = …: words left in a formula, read as typed
+        return _one_of_two_forms(full, small, _shown(words))
+    return None
+
+
+# what a formula is told where words were left in it, or it is two equations: no one formula of the two forms
+_NOT_ONE_FORMULA = frozenset({"undefined_symbol", "undefined_units", "eliminate_unknowns", "expected_one_equation"})
+
+
+def _one_of_two_forms(full: Verdict, small: Verdict, words: str) -> Verdict:
+    """The verdict on a formula and its small-angle form after ``words``, each judged (see
+    :func:`_small_angle_forms`), with the note that says which was graded."""
+    if full.equivalent and (small.equivalent or small.diagnosis in _SMALL_FORMS):
+        graded, key = full, "small_form_left_out"
+    elif small.equivalent and full.diagnosis in _FULL_FORMS:
+        graded, key = small, "full_form_left_out"
+    elif small.diagnosis in _SMALL_FORMS:  # the full form is asked, and theirs is wrong
+        graded, key = full, "small_form_left_out"
+    elif full.diagnosis in _FULL_FORMS:  # the small-angle form is asked, and theirs is wrong
+        graded, key = small, "full_form_left_out"
+    else:
+        right = full if full.equivalent else small if small.equivalent else None
+        if "undecided" in (full.status, small.status):  # one could not be judged: nothing is said of it
+            outcome = Outcome("undecided", right.score if right else 0.0, "undecided", method="forms")
+        elif right is not None or full.score or small.score:  # which was meant decides the grade
+            score = right.score if right else 0.0
+            outcome = Outcome("undecided", score, "forms_for_a_person", {"words": words}, method="forms")
+        else:  # wrong whichever was meant
+            outcome = Outcome("not_equivalent", 0.0, "forms_both_wrong", {"words": words}, method="forms")
+        return _verdict(outcome, (right or full).answer)
+    note = say(key, words=words)
+    return replace(graded, feedback=(*graded.feedback, note), notes=(*graded.notes, note))
+
+
 # one equation, or one expression, is asked for, and the answer has several lines
 _ONE_THING_ASKED = frozenset({"expected_one_equation", "expected_expression"})
 _MAX_LINES = 6
@@ -206,21 +278,60 @@ def _answered_twice(answer, expected: Expected) -> bool:
     return getattr(answer, "kind", None) == "equations" and len(_asked_lines(answer.value, expected)) > 1
 
 
-# a line that gives a name a value: H = …
-_NAMED_LINE = re.compile(r"\s*([^\W\d]\w*)\s*=(?![=>])(.+)", re.DOTALL)
-
-
 def _chained(text: str) -> tuple[str, int, str] | None:
-    """``H = Σ p q̇ − L`` then ``H = ½ m l² θ̇² − …``: lines that each give one name a value, read as
-    the one chain ``H = Σ p q̇ − L = ½ m l² θ̇² − …`` that they are (the parser reads a chain's
-    definitions on the way as such, and grades its last side). Returns the chain, the count of
-    lines and the name; None where the lines are no such list."""
-    lines = _lines(text)
-    found = [_NAMED_LINE.fullmatch(line) for line in lines or ()]
-    if not found or not all(found) or len({match[1] for match in found}) != 1:
+    """``H = Σ p q̇ − L`` then ``H = ½ m l² θ̇² − …``, or ``p_φ = ∂L/∂φ̇`` then ``p_φ = m l² sin²θ φ̇``:
+    lines that each give one name a value, read as the one chain ``H = Σ p q̇ − L = ½ m l² θ̇² − …``
+    that they are (the parser reads a chain's definitions on the way as such, and grades its last
+    side). In TeX too (``p_\\phi = \\frac{\\partial L}{\\partial \\dot\\phi} \\\\ p_\\phi = …``, each line in
+    its ``$…$`` or not); and where other lines follow or come before, as a system's equations do,
+    each run of lines that name one quantity is one chain, the others kept as they are. Returns the
+    answer so read, the count of lines of the first such run and its name as a student reads it;
+    None where no two lines in a row name one quantity."""
+    lines = _chain_lines(text)
+    if lines is None:
         return None
-    label = found[0][1]
-    return f"{label} = " + " = ".join(match[2].strip() for match in found), len(found), label
+    runs: list[list[tuple[str | None, str, str]]] = []  # of (name, label, side): lines in a row that name one
+    for line in lines:
+        name, label, side = _labelled_line(line)
+        if runs and name is not None and runs[-1][-1][0] == name:
+            runs[-1].append((name, label, side))
+        else:
+            runs.append([(name, label, side) if name is not None else (None, "", line.strip())])
+    chains = [run for run in runs if len(run) > 1]
+    if not chains:
+        return None
+    joined = [f"{run[0][1]} = " + " = ".join(side for *_, side in run) if run[0][0] else run[0][2] for run in runs]
+    return "\n".join(joined), len(chains[0]), unicode_name(chains[0][0][0])
+
+
+# TeX's row break, \\ (with the space below it, \\[6pt]), which ends a line as a new line does
+_ROW_BREAK = re.compile(r"\\\\(?:\s*\[[^\]\n]{0,12}\])?")
+# the math's delimiters around a line: $…$, $$…$$, \[…\], \(…\)
+_OPENS_MATH = re.compile(r"^\s*(?:\$\$?|\\\[|\\\()")
+_CLOSES_MATH = re.compile(r"(?:\$\$?|\\\]|\\\))\s*$")
+
+
+def _chain_lines(text: str) -> list[str] | None:
+    """The lines of ``text`` as :func:`_lines` finds them, TeX's ``\\\\`` ending one too, each without the
+    math's delimiters around it; None where there are not two to six."""
+    if not isinstance(text, str) or len(text) > LIMITS.length:
+        return None
+    lines = _lines(_ROW_BREAK.sub("\n", text))
+    return [_CLOSES_MATH.sub("", _OPENS_MATH.sub("", line)) for line in lines] if lines else None
+
+
+def _labelled_line(line: str) -> tuple[str | None, str, str]:
+    """A line that gives a name a value, ``p_\\phi = …``: (the name, its label as typed, what follows
+    its first ``=``); (None, "", "") for any other line. The label is read alone, as a name (H, ``p_φ``,
+    TeX's ``p_{\\phi}``): ``2L``, ``θ̈`` or ``L(θ)`` name no quantity a chain gives values."""
+    label, *sides = _cut(line, lambda i, depth: depth == 0 and _EQUALS.match(line, i) is not None)
+    read = parse_answer(label) if sides and label.strip() and len(label) <= _LABEL_LENGTH else None
+    if read is None or not read.ok or read.kind != "expression" or not read.value.is_Symbol:
+        return None, "", ""
+    return read.value.name, label.strip(), "=".join(sides).strip().rstrip(",")
+
+
+_LABEL_LENGTH = 40  # characters of a label: a name, with its subscript in TeX
 
 
 def _lines(text: str) -> list[str] | None:
@@ -1141,6 +1252,12 @@ def _formula_before_words(text: str, expected: Expected, names: list, deadline) 
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
             return read, ((_words_note("words_left_out", words), {"words": _shown(words)}),)
+    convention = formula_then_convention(text, names)  # … (taking V = 0 at the pivot): the zero, stated
+    if convention is not None:
+        formula, remark = convention
+        read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
+        if read.ok:
+            return read, ((_words_note("words_left_out", remark), {"words": _shown(remark)}),)
     return None
 
 

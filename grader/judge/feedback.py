@@ -48,6 +48,13 @@ FEEDBACK: dict[str, str] = {
     "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
     "lines_as_chain": "Your {count} lines, each `{label} = …`, were read as one chain, {label} = … = …: its last"
     " side was graded.",
+    "lines_as_one_chain": "Your {count} lines, each `{label} = …`, were read as one chain, {label} = … = …, as if"
+    " written on one line.",
+    "small_form_left_out": "Graded your formula before `{words}`; the small-angle form after it was not graded.",
+    "full_form_left_out": "Graded your formula after `{words}`; the full form before it was not graded.",
+    "forms_for_a_person": "Your formula after `{words}` is not the small-angle form of the one before it, as your"
+    " words say: a person will decide which is your answer.",
+    "forms_both_wrong": "Neither your formula before `{words}` nor the one after it is right.",
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",

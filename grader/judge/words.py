@@ -4,6 +4,9 @@ Contents:
     is_prose(words, names)                     whether words are about the answer, not more of it
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
+    formula_then_convention(text, names)       ``L = … (taking V = 0 at the pivot)``: the formula and its remark
+    formula_then_small_angle_form(text, names, coords)
+                                               ``θ̈ = … sin θ, which for small θ gives θ̈ = … θ``: both formulas
     text_as_words(text, names, coords)         ``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: TeX's text, as words
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
@@ -15,6 +18,15 @@ no number, no "or" or "not", and read as names the problem does not have. Words 
 the formula is other than written (``… upward``, ``… inverted``), or doubt it (``… (not sure about
 the sign)``), are read past too, but :func:`says_otherwise` marks them for a person to read before
 a right formula earns its credit.
+
+A remark in brackets after a formula may state where the potential energy is zero, ``(taking V = 0
+at the pivot)``: words, and ``V = 0`` (or ``U = 0``) in a name the problem does not have. It says how
+the formula was worked out, not what it is, and changes no grade; it is read past as words are. Any
+other ``=`` in a remark may be more of the answer: it is read as typed.
+
+Words between two formulas may say the second is the first's small-angle form: ``θ̈ = −(g/l) sin θ,
+which for small θ gives θ̈ = −(g/l) θ``. Which of the two is the answer depends on what was asked;
+:func:`formula_then_small_angle_form` only finds them, and ``compare`` decides.
 """
 
 from __future__ import annotations
@@ -26,7 +38,15 @@ from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
-__all__ = ["formula_then_words", "is_prose", "says_otherwise", "text_as_words", "words_then_formula"]
+__all__ = [
+    "formula_then_convention",
+    "formula_then_small_angle_form",
+    "formula_then_words",
+    "is_prose",
+    "says_otherwise",
+    "text_as_words",
+    "words_then_formula",
+]
 
 _MATH_SIGNS = frozenset("+-−*/^=√·×<>≤≥≠±∓‒‐‑⁻﹣－")  # with the dashes a minus may be typed as
 # words that change a formula: "√(g/l) times l", "… but negative", "… all squared"
@@ -137,6 +157,77 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
         words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
         if formula and is_prose(words, names, doubt=True):
             yield words, formula
+
+
+# words that say what follows is a small-angle form: "which for small θ gives", "linearized:"
+_SMALL = re.compile(r"\b(?:small|smaller|lineari[sz](?:ed|ing|ation)|linear)\b", re.I)
+# where such words hand over to the formula: as a sentence does (gives, becomes, :), or a comma
+_HANDS_OVER = re.compile(rf"{_LEADS_TO.pattern}|,", re.I)
+
+
+def formula_then_small_angle_form(
+    text: str, names: Collection[str], coords: Collection[str]
+) -> Iterator[tuple[str, str, str]]:
+    """``θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ``: the ways to read ``text`` as (a
+    formula, words that say its small-angle form follows, that form). The words begin at the first
+    word that is none of the problem's names, spellings or functions, say ``small`` (or ``linear``,
+    ``linearized``), end with a word that hands over to a formula (``gives``, ``becomes``, ``is``), a
+    colon or a comma, and must be prose (:func:`is_prose`: no ``or``, ``not`` or sign). The formulas
+    are not checked here."""
+    if len(text) > _LENGTH or not _SMALL.search(text):
+        return  # as nearly every answer: no word to look for
+    word = next((found for found in _WORD.finditer(text) if _is_word(found[0], names, coords)), None)
+    if word is None:
+        return
+    formula = text[: word.start()].rstrip(" \t\n,;:.—–")
+    if not formula:
+        return
+    for lead in _HANDS_OVER.finditer(text, word.start()):
+        words, after = text[word.start() : lead.end()].rstrip(" ,:"), text[lead.end() :].strip(" ,:")
+        if after and _SMALL.search(words) and is_prose(words, names):
+            yield formula, words, after
+
+
+# the zero of potential energy a remark states: V = 0, U=0 (not V = 0.5, V = 0x, nor \\nabla V = 0)
+_ZERO_OF_POTENTIAL = re.compile(r"(?<![\w\\])(?P<name>[VU])\s*=\s*0(?![\w.])")
+_CLOSERS = {")": "(", "]": "["}
+
+
+def formula_then_convention(text: str, names: Collection[str]) -> tuple[str, str] | None:
+    """``L = ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)``: the formula, and the remark in
+    brackets that ends the answer, where it states the zero of potential energy and is otherwise
+    prose (:func:`is_prose`): one ``V = 0`` or ``U = 0``, the name not the problem's, and words
+    around it. None for any other text: ``(V = 0 or V = m g l)``, ``(θ = 0 at the top)``, a bracket
+    that does not end the answer, or one without words."""
+    if len(text) > _LENGTH:
+        return None
+    text = text.rstrip().removesuffix(".").rstrip()
+    opener = _opening_of_last_bracket(text)
+    if opener is None:
+        return None
+    inner = text[opener + 1 : -1]
+    zeros = list(_ZERO_OF_POTENTIAL.finditer(inner))
+    if len(zeros) != 1 or zeros[0]["name"] in names:
+        return None
+    zero = zeros[0]
+    words = f"{inner[: zero.start()]} {inner[zero.end() :]}".strip(" ,;:")
+    formula = text[:opener].rstrip(" ,;")
+    if not formula or not is_prose(words, names, doubt=True):
+        return None
+    return formula, text[opener:]
+
+
+def _opening_of_last_bracket(text: str) -> int | None:
+    """Where the bracket that closes ``text`` opens; None where it does not end in one, or it is not
+    balanced."""
+    if not text or text[-1] not in _CLOSERS:
+        return None
+    depth = 0
+    for i in range(len(text) - 1, -1, -1):
+        depth += (text[i] in _CLOSERS) - (text[i] in _CLOSERS.values())
+        if depth == 0:
+            return i if text[i] == _CLOSERS[text[-1]] else None
+    return None
 
 
 def text_as_words(text: str, names: Collection[str], coords: Collection[str]) -> str:

@@ -58,7 +58,11 @@ ANSWER = sympy.Symbol("answer")
 
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
 _ANGLE_FUNCTIONS = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
-_STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt", "deriv")
+_STARTS_FACTOR = ("num", "name", "func", "frac", "sqrt", "deriv", "sum")
+# What a sum (``\sum_j``, ∑) stands for while a side is read: no name a student can type, so it is
+# found again after. A sum is read only in a side the chain passes over, the definition in
+# ``H = \sum_j p_j \dot q_j - L = …`` (whose index has no values here); left in the answer, it is refused.
+_SUM = sympy.Dummy("sum")
 _GREEK = "|".join(sorted(set(GREEK_BY_LETTER.values()), key=len, reverse=True))
 _GREEK_NAME = re.compile(rf"(?:{_GREEK})(?:_[A-Za-z0-9]+)?$")
 _NUMBERED_THEN_LETTERS = re.compile(r"_[0-9]+[A-Za-z]+$")  # ω_0t: a subscript's number, then a letter glued on
@@ -170,6 +174,8 @@ class _Parser:
         self.splits: dict[str, list | None] = {}
         self.rates: dict[str, tuple[int, int]] = {}  # a name of the answer's own → where its rate is first used
         self.stated: list[sympy.Eq] = []  # the middle sides of chains: see parse_tokens
+        self.sums: list[Token] = []  # the sums read, \sum or ∑, but those in a side passed over
+        self.summed = False  # whether any sum was read: none may be left in the answer
 
     # -- cursor ----------------------------------------------------------------
 
@@ -220,6 +226,7 @@ class _Parser:
         items = self.list_of_items() if self._is_bracketed_list() else self.separated_items()
         if self.token.kind != "end":
             self.fail_here()
+        self._sums_passed_over(items)
         self._rates_defined(items)
         if len(items) == 1:
             return items[0][1]
@@ -230,6 +237,15 @@ class _Parser:
             if not isinstance(item, sympy.Eq):
                 raise ParseFailure("not_an_equation", token.start, token.end, index=index)
         return tuple(item for _, item in items)
+
+    def _sums_passed_over(self, items: list) -> None:
+        """Refuse a sum left in the answer: its terms are not written, so only a side passed over may hold
+        one (``H = \\sum_j p_j \\dot q_j - L = …``, as ``H = Σ p q̇ − L = …`` is read)."""
+        if self.summed and any(_SUM in item.free_symbols for _, item in items):
+            if not self.sums:  # a side read twice (see _chained): none to point at
+                raise ParseFailure("sum", name="\\sum")
+            first = self.sums[0]  # the first in a side kept (see item)
+            raise ParseFailure("sum", first.start, first.end, name=self.source(first))
 
     def _rates_defined(self, items: list) -> None:
         """Refuse the rate of a name (``ṗ``, ``d/dt(p)``) unless an equation of the answer defines the
@@ -259,7 +275,7 @@ class _Parser:
 
     def own(self, value) -> bool:
         """Whether ``value`` is a name the problem does not define, which the answer may."""
-        return isinstance(value, sympy.Symbol) and value != TIME and value.name not in self.context.known
+        return isinstance(value, sympy.Symbol) and value not in (TIME, _SUM) and value.name not in self.context.known
 
     def _is_bracketed_list(self) -> bool:
         """``[eq1, eq2]``, ``{eq1, eq2}`` or ``[eq]``: a bracket or brace spanning the whole answer
@@ -322,12 +338,14 @@ class _Parser:
         if not self.token.is_op("="):
             return first, lhs
         self.advance()
+        summed = len(self.sums)
         rhs = self.side(label)
         while label is not None and self.token.is_op("=") and self._defines(rhs):
             # L = T − V = ½ m l² θ̇² + …: the quantity, its definition, and the answer, which is the last
             # side. Not F = m ẍ = −k x, whose middle side is part of an equation (see _chained).
             self.stated.append(sympy.Eq(label, rhs, evaluate=False))
             self.advance()
+            del self.sums[summed:]  # a sum in the definition passed over is read: H = \sum_j p_j \dot q_j - L = …
             rhs = self.side(label)
         if self.token.is_op("="):
             equals = self.advance()
@@ -609,6 +627,10 @@ class _Parser:
         if token.kind == "deriv":
             self.advance()
             return self.leibniz(token)
+        if token.kind == "sum":
+            self.sums.append(self.advance())
+            self.summed = True
+            return _SUM
         if token.kind == "frac":
             self.advance()
             numerator = self.argument(token)

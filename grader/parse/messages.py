@@ -31,6 +31,10 @@ MESSAGES: dict[str, str] = {
         "`∂` is read only in the name of what an answer writes out, before `=`, as in p = ∂L/∂φ̇ = …"
         " or d/dt(∂L/∂θ̇) − ∂L/∂θ = … = 0"
     ),
+    "sum": (
+        "`{name}` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …,"
+        " whose last side is graded; anywhere else, write the sum out term by term."
+    ),
     "string": "Quotes are not allowed: an answer is mathematics, not text.",
     "prime_position": "A prime (') marks a time derivative and must follow a coordinate's name, as in theta'.",
     "comment": "`#` starts a comment in code; it cannot be part of an answer.",

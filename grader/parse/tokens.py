@@ -94,10 +94,11 @@ class Token:
     (value: canonical function name, or ``diff``), ``op`` (value: one of
     ``+ - * / ^ = , ; ( ) [ ] { }``), ``sup`` (value: int, a Unicode superscript),
     ``sep`` (a new line or LaTeX ``\\\\`` between equations), ``frac``, ``over`` (TeX's ``\\over``),
-    ``sqrt``, ``partial`` (∂), ``implies`` (⇒: a derivation's step, :func:`tokenize` keeps what
-    follows), ``arrow`` (→: the same between two equations, refused elsewhere), ``gap`` (``\\quad``,
-    an environment's end: a ``sep`` between two equations, nothing elsewhere), ``end``; the
-    grammar adds ``deriv`` (value: the order) where it reads Leibniz's d/dt.
+    ``sqrt``, ``partial`` (∂), ``sum`` (``\\sum`` or ∑, its limits read past), ``implies`` (⇒: a
+    derivation's step, :func:`tokenize` keeps what follows), ``arrow`` (→: the same between two
+    equations, refused elsewhere), ``gap`` (``\\quad``, an environment's end: a ``sep`` between two
+    equations, nothing elsewhere), ``end``; the grammar adds ``deriv`` (value: the order) where it
+    reads Leibniz's d/dt.
     """
 
     kind: str
@@ -204,7 +205,13 @@ _LATEX_ENVIRONMENTS = {
 _ROW_SPACING = re.compile(
     r"\*?\s*\[\s*[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*(?:pt|em|ex|mm|cm|in|bp|pc|dd|cc|sp|mu)\s*\]"
 )
+_DIFFERENCES = frozenset({"Delta", "delta"})  # TeX's Δ and δ, glued to the name after them as Δθ is
 _ARRAY_COLUMNS = re.compile(r"\s*\{[lcr|@ ]*\}")  # \begin{array}{ll}: how its columns align
+# a sum's limits, read past with it: \sum_i, \sum_{j=1}^{n}, \sum\limits_k; ∑_i as typed. What they
+# bound is not read: a sum is read only where the side it stands in is passed over (see the grammar)
+_SUM_LIMITS = re.compile(
+    r"\s*(?:\\(?:no)?limits(?![A-Za-z])\s*)?(?:[_^]\s*(?:\{[A-Za-z0-9=+\- ]{1,16}\}|[A-Za-z0-9])\s*){0,2}"
+)
 
 
 def tokenize(text: str) -> list[Token]:
@@ -657,6 +664,8 @@ class _Tokenizer:
                 raise ParseFailure("prime_position" if self._after_value() else "string", self.pos, self.pos + 1)
             elif c == "\u2202":  # ∂: only in a quantity's name, ∂L/∂φ̇ = …, which the grammar reads
                 self._emit("partial", "∂", 1)
+            elif c == "\u2211":  # ∑: only in a definition passed over, H = ∑ p q̇ − L = …, as \sum
+                self._sum(self.pos, self.pos + 1)
             elif c in _NAMED_REFUSALS:
                 raise ParseFailure(_NAMED_REFUSALS[c], self.pos, self.pos + 1)
             else:
@@ -935,11 +944,24 @@ class _Tokenizer:
         function = None if dots or primes else function_name(raw) or (None if self.latex else _CALLABLE.get(raw))
         if function:
             self.tokens.append(Token("func", function, start, self.pos))
+        elif not (dots or primes) and self._after_difference(start):
+            delta = self.tokens.pop()  # \Delta\theta as Δθ: one name, whose argument of \cos it all is
+            self.tokens.append(Token("name", Name(delta.value.raw + raw, tex=True), delta.start, self.pos))
         else:
             self.tokens.append(Token("name", Name(raw, dots, primes, tex=self.latex), start, self.pos))
         if exponent:  # \theta^{\prime 2}: θ′ squared, the rest of the brace its exponent
             caret, brace = exponent
             self.tokens += [Token("op", "^", caret, caret + 1), Token("op", "{", brace, brace + 1)]
+
+    def _after_difference(self, start: int) -> bool:
+        """Whether the name starting at ``start`` follows TeX's ``\\Delta`` or ``\\delta`` (no marks, only
+        spaces between): ``\\Delta\\theta`` is then one name, as ``Δθ`` typed is. So ``\\cos\\Delta\\theta``
+        is cos(Δθ), as ``cos Δθ`` is, not cos(Δ)·θ; and Δθ, where the answer defines it (``\\Delta\\theta =
+        \\theta_1 - \\theta_2``), is read as that name; elsewhere, as TeX reads it, Δ·θ."""
+        last = self.tokens[-1] if self.tokens and self.latex else None
+        if last is None or last.kind != "name" or last.value.raw not in _DIFFERENCES:
+            return False
+        return not (last.value.dots or last.value.primes or last.value.unit or self.text[last.end : start].strip())
 
     def _tex_primes(self) -> tuple[int, tuple[int, int] | None] | None:
         """TeX's primes as a superscript, as its ' is typeset: ``\\theta^\\prime``, ``\\theta^{\\prime\\prime}``,
@@ -1003,6 +1025,8 @@ class _Tokenizer:
             self.tokens.append(Token("sqrt", "\\sqrt", start, self.pos))
         elif command == "partial":
             self.tokens.append(Token("partial", "∂", start, self.pos))
+        elif command == "sum":
+            self._sum(start, self.pos)
         elif command in _LATEX_IMPLIES:
             self.tokens.append(Token("implies", "⇒", start, self.pos))
         elif command in _LATEX_ARROWS:
@@ -1055,6 +1079,12 @@ class _Tokenizer:
             raise ParseFailure("latex_words", start, words.end(), words=text[start : words.end()])
         else:
             raise ParseFailure("unknown_command", start, self.pos, name=command)
+
+    def _sum(self, start: int, end: int) -> None:
+        """``\\sum_i`` or ``∑``, with its limits: a ``sum`` token, which the grammar reads only in a side it
+        passes over, the definition in ``H = \\sum_j p_j \\dot q_j - L = …``."""
+        self.pos = _SUM_LIMITS.match(self.text, end).end()
+        self.tokens.append(Token("sum", self.text[start:end], start, end))
 
     def _dollar(self) -> None:
         """``$`` or ``$$`` around math is read past; one that opens the math again after it was
