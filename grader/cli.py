@@ -34,7 +34,7 @@ from grader import KINDS, AuthorError, GraderError, compare, parse_answer
 from grader.bank import BankError, default_bank_path, load_assignment, load_bank
 from grader.grade import expected_answer, validate_bank
 from grader.grade.batch import assignment_parts
-from grader.grade.selfcheck import check, find_part
+from grader.grade.selfcheck import check_many, find_part
 from grader.judge.units import unit_of
 from grader.run import EXPORTS, export_grades, grade_assignment
 from grader.serve import make_server
@@ -272,7 +272,7 @@ def _run_check(args: argparse.Namespace) -> int:
     except GraderError as error:
         print(f"grader check: {error}", file=sys.stderr)
         return EXIT_INVALID
-    results = [check(key, answer, bank=bank, timeout=args.timeout) for key, answer in answers.items()]
+    results = check_many(answers, bank=bank, timeout=args.timeout)  # with each other: method credit
     print("\n".join(str(result) for result in results))
     missing = [] if assignment is None else [
         f"{problem.id}.{part.id}" for problem, part, _ in assignment_parts(assignment, bank)

@@ -12,6 +12,7 @@ from course import BANK
 from grader import CheckResult, check, compare, parse_answer
 from grader.cli import main
 from grader.grade.part import expected_answer, part_options, setting_of
+from grader.grade.selfcheck import check_many
 
 LAGRANGIAN = "plane-pendulum.lagrangian"
 RIGHT = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
@@ -118,6 +119,24 @@ def test_answers_with_one_wrong_exit_1(capsys, tmp_path):
     path = _answers(tmp_path, f'{LAGRANGIAN}: "{RIGHT}"\nplane-pendulum.frequency: sqrt(l/g)\n')
     assert main(["check", "--answers", path]) == 1
     assert capsys.readouterr().out.splitlines()[2] == "✘ plane-pendulum.frequency: not right"
+
+
+CARRIED = "Your equations follow correctly from your own Lagrangian, which is not right: method credit."
+
+
+def test_answers_checked_together_carry_the_method_credit_the_class_grade_gives(capsys, tmp_path):
+    # equations that follow from the student's own wrong Lagrangian: before, ✘ with a term's hint when
+    # checked, and 1.5 of 3 points when graded
+    wrong = "1/2 m l^2 θ̇^2 - m g l cos θ"
+    answers = {LAGRANGIAN: wrong, "plane-pendulum.motion": "m l^2 θ̈ - m g l sin θ = 0"}
+    lagrangian, motion = check_many(answers, bank=BANK)
+    assert (lagrangian.score, motion.status, motion.score, motion.hints) == (0.0, "not_equivalent", 0.5, (CARRIED,))
+    # alone, the equation has no Lagrangian to follow from
+    alone = check("plane-pendulum.motion", answers["plane-pendulum.motion"], bank=BANK)
+    assert alone.score == 0 and alone.hints != (CARRIED,)
+    path = _answers(tmp_path, f'{LAGRANGIAN}: "{wrong}"\nplane-pendulum.motion: "m l^2 θ̈ - m g l sin θ = 0"\n')
+    assert main(["check", "--answers", path]) == 1
+    assert f"  {CARRIED}" in capsys.readouterr().out.splitlines()
 
 
 def test_answers_with_one_unreadable_exit_2(capsys, tmp_path):

@@ -22,13 +22,10 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 from grader.bank import Assignment, Part, Problem
-from grader.errors import AuthorError
-from grader.grade.part import grade_answer, setting_of
+from grader.grade.part import grade_answer, with_method_credit
 from grader.grade.results import PartGrade, SubmissionGrade
 from grader.grade.submissions import Submission
-from grader.judge import DEFAULT_TIMEOUT, compare
-from grader.judge.deadline import CheckTimeout, time_limit
-from grader.judge.lagrangian import equations_of_motion
+from grader.judge import DEFAULT_TIMEOUT
 
 __all__ = ["assignment_parts", "grade_class", "grade_submission", "limit_memory"]
 
@@ -93,12 +90,8 @@ def _grade_part(problem: Problem, part: Part, points: float, answer: str, answer
     if not answer.strip():
         return PartGrade(**base, status="blank", auto_score=0.0, feedback=("No answer.",), method="blank")
     verdict = grade_answer(problem, part, answer, timeout=timeout)
+    verdict = with_method_credit(problem, part, verdict, answer, answers, timeout=timeout)
     score, feedback, method = verdict.score, verdict.feedback, verdict.method
-    if part.derive_from and verdict.status == "not_equivalent":
-        carried = _carried_forward(problem, part, answer, answers.get(f"{problem.id}.{part.derive_from}", ""), timeout)
-        if carried is not None and carried > score:
-            score, method = carried, "error carried forward"
-            feedback = ("Your equations follow correctly from your own Lagrangian, which is not right: method credit.",)
     mathml = ""
     if verdict.answer is not None and verdict.answer.ok:
         mathml = verdict.answer.read_as_mathml
@@ -106,27 +99,6 @@ def _grade_part(problem: Problem, part: Part, points: float, answer: str, answer
         **base, status=verdict.status, auto_score=round(score * points, 6), feedback=feedback,
         diagnosis=verdict.diagnosis, method=method, read_as=verdict.read_as, read_as_mathml=mathml,
     )  # fmt: skip
-
-
-def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str, timeout: float) -> float | None:
-    """The method credit when ``answer`` is what the student's own Lagrangian implies.
-
-    The Lagrangian is read as its own part reads it: ``L = …``, ``L = T − V = …``, ``T = …; V = …;
-    L = T − V`` and ``½ m v² − …, where v = l θ̇`` are all a Lagrangian (before, only an expression
-    alone was, and a labelled one lost its equations their credit)."""
-    if not lagrangian.strip():
-        return None
-    setting = setting_of(problem)
-    read = grade_answer(problem, problem.part(part.derive_from), lagrangian, timeout=timeout).answer
-    if read is None or not read.ok or read.kind != "expression":
-        return None
-    try:
-        with time_limit(timeout):
-            implied = equations_of_motion(read.read_as_text, **setting)
-            verdict = compare(implied, answer, kind=part.kind, **setting, timeout=timeout)
-    except (AuthorError, CheckTimeout, ArithmeticError, ValueError, TypeError, RecursionError):
-        return None  # the student's Lagrangian is not one we can derive from: no carried credit
-    return part.method_credit if verdict.equivalent else None
 
 
 # -- the class, in parallel ----------------------------------------------------------

@@ -3,6 +3,8 @@
 Contents:
     expected_answer(problem, part)                  the reference text (derived for derive_from)
     grade_answer(problem, part, submitted, timeout) the Verdict a student gets
+    with_method_credit(problem, part, verdict, …)   that Verdict, with credit for equations that
+                                                    follow from the student's own wrong Lagrangian
 """
 
 from __future__ import annotations
@@ -11,10 +13,14 @@ import dataclasses
 from functools import lru_cache
 
 from grader.bank import Part, Problem
+from grader.errors import AuthorError
 from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
+from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.lagrangian import equations_of_motion
 
-__all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
+__all__ = ["expected_answer", "grade_answer", "part_options", "setting_of", "with_method_credit"]
+
+CARRIED = "Your equations follow correctly from your own Lagrangian, which is not right: method credit."
 
 
 def setting_of(problem: Problem) -> dict:
@@ -90,3 +96,39 @@ def _matches(verdict: Verdict) -> bool:
     """Whether the answer is a mistake's, by value: a label naming another quantity (``f = …`` where ω is
     asked) is said in the verdict's notes already, and goes to a person only when the value is right."""
     return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis == "label_for_a_person")
+
+
+def with_method_credit(
+    problem: Problem, part: Part, verdict: Verdict, submitted: str, answers: dict, *, timeout: float = DEFAULT_TIMEOUT
+) -> Verdict:
+    """``verdict`` on ``submitted`` (an answer to a part derived from the Lagrangian part), with the
+    part's method credit where it is wrong but what the student's own Lagrangian, among ``answers``
+    (``problem.part`` → answer), implies: an error carried forward is not counted twice. Grading a
+    class and a student's check of their answers give the same credit."""
+    if not part.derive_from or verdict.status != "not_equivalent":
+        return verdict
+    carried = _carried_forward(problem, part, submitted, answers.get(f"{problem.id}.{part.derive_from}", ""), timeout)
+    if carried is None or carried <= verdict.score:
+        return verdict
+    return dataclasses.replace(verdict, score=carried, feedback=(CARRIED,), method="error carried forward")
+
+
+def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str, timeout: float) -> float | None:
+    """The method credit when ``answer`` is what the student's own Lagrangian implies.
+
+    The Lagrangian is read as its own part reads it: ``L = …``, ``L = T − V = …``, ``T = …; V = …;
+    L = T − V`` and ``½ m v² − …, where v = l θ̇`` are all a Lagrangian (before, only an expression
+    alone was, and a labelled one lost its equations their credit)."""
+    if not str(lagrangian).strip():
+        return None
+    setting = setting_of(problem)
+    read = grade_answer(problem, problem.part(part.derive_from), str(lagrangian), timeout=timeout).answer
+    if read is None or not read.ok or read.kind != "expression":
+        return None
+    try:
+        with time_limit(timeout):
+            implied = equations_of_motion(read.read_as_text, **setting)
+            verdict = compare(implied, answer, kind=part.kind, **setting, timeout=timeout)
+    except (AuthorError, CheckTimeout, ArithmeticError, ValueError, TypeError, RecursionError):
+        return None  # the student's Lagrangian is not one we can derive from: no carried credit
+    return part.method_credit if verdict.equivalent else None

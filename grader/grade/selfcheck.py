@@ -21,7 +21,7 @@ from pathlib import Path
 
 from grader.bank import Problem, default_bank_path, load_bank
 from grader.errors import GraderError
-from grader.grade.part import grade_answer
+from grader.grade.part import grade_answer, with_method_credit
 from grader.judge import DEFAULT_TIMEOUT
 
 __all__ = ["CheckResult", "check", "check_many", "find_part"]
@@ -119,9 +119,16 @@ def find_part(key: str, bank: Mapping[str, Problem]):
 
 
 def check(
-    key: str, answer: str, *, bank: Mapping[str, Problem] | None = None, timeout: float = DEFAULT_TIMEOUT
+    key: str,
+    answer: str,
+    *,
+    bank: Mapping[str, Problem] | None = None,
+    timeout: float = DEFAULT_TIMEOUT,
+    answers: Mapping[str, str] | None = None,
 ) -> CheckResult:
-    """Check one answer to ``problem.part`` from the bank.
+    """Check one answer to ``problem.part`` from the bank. With the student's other ``answers``
+    (``problem.part`` → answer), equations that follow from their own wrong Lagrangian earn the
+    method credit grading the class gives them.
 
     Raises:
         GraderError: no such problem or part (the message lists what exists).
@@ -131,6 +138,9 @@ def check(
     if not str(answer).strip():
         return CheckResult(key, "invalid", 0.0, ("Your answer is empty.",))
     verdict = grade_answer(problem, part, str(answer), timeout=timeout)
+    if answers:
+        others = {name: str(text) for name, text in answers.items()}
+        verdict = with_method_credit(problem, part, verdict, str(answer), others, timeout=timeout)
     mathml = verdict.answer.read_as_mathml if verdict.answer is not None and verdict.answer.ok else ""
     return CheckResult(key, verdict.status, verdict.score, verdict.feedback, verdict.read_as, mathml)
 
@@ -138,5 +148,5 @@ def check(
 def check_many(
     answers: Mapping[str, str], *, bank: Mapping[str, Problem] | None = None, timeout: float = DEFAULT_TIMEOUT
 ) -> list[CheckResult]:
-    """Check every ``problem.part → answer`` of a mapping, in its order."""
-    return [check(key, answer, bank=bank, timeout=timeout) for key, answer in answers.items()]
+    """Check every ``problem.part → answer`` of a mapping, in its order, each with the others known."""
+    return [check(key, answer, bank=bank, timeout=timeout, answers=answers) for key, answer in answers.items()]
