@@ -2543,6 +2543,65 @@ def test_the_number_is_found_in_what_a_student_wrote_around_it(expected, submitt
     assert (verdict.status, verdict.read_as, verdict.notes) == (status, read_as, notes)
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "notes"),
+    [
+        # working with steps, as on paper: the value after the last is the answer, whatever came before it
+        ("2", "6 − 4 = 2 → 4", "not_equivalent", "4", (_final(4),)),  # before, the first side, 6 − 4, was graded
+        ("2", "6 − 2 = 4 → 2", "equivalent", "2", (_final(2),)),  # → is a step of the count, not an equals sign
+        ("2", "6 -> 4 -> 2", "equivalent", "2", (_final(2),)),
+        ("2", "6 \\to 2", "equivalent", "2", (_final(2),)),
+        ("2", "6 − 4 ⇒ 2", "equivalent", "2", ()),  # the parser reads ⇒ as the step it is
+        ("1", "Two constraints, so 1", "equivalent", "1", (_final(1),)),
+        ("1", "Two constraints, hence 1 degree of freedom", "equivalent", "1", (_remark(1, "degree of freedom"),)),
+        ("2", "3N − k = 6 − 4, therefore 2", "equivalent", "2", (_final(2),)),
+        ("2", "2 (so two angles)", "equivalent", "2", (_remark(2, "(so two angles)"),)),  # a step in brackets: a remark
+        # a number it is not, after the count: a remark
+        ("6", "9 − 3 = 6 ≠ 9", "equivalent", "6", (_final(6), _remark(6, "≠ 9"))),
+        ("9", "9 − 3 = 6 ≠ 9", "not_equivalent", "6", (_final(6), _remark(6, "≠ 9"))),
+        ("6", "n = 6 != nine", "equivalent", "6", (_remark(6, "!= nine"),)),
+        ("6", "6 \\neq 9", "equivalent", "6", (_remark(6, "\\neq 9"),)),
+        # …but not where it is the count itself, nor before more working: which is the answer is unclear
+        ("6", "9 − 3 = 6 ≠ 6", "invalid", None, ()),
+        ("9", "6 ≠ 9 = 3·3", "invalid", None, ()),  # before, read as 3·3: the number the answer is not
+        ("6", "6 ≠ 9 → 6", "invalid", None, ()),
+        # <=, >= and != are not the = of a chain: n >= 2 is no count of 2
+        ("2", "n >= 2", "invalid", None, ()),
+        ("2", "n <= 2", "invalid", None, ()),
+        (PERIOD, "T >= 2.0 s", "invalid", None, ()),
+        (PERIOD, "2.006 s != 2 s", "invalid", None, ()),
+        # the first side is read where a value stands before its name, not before longer working or a step
+        ("2", "6 − 4 = 2 = 4 θ", "invalid", None, ()),  # before, 6 − 4 was graded
+        ("2", "2 = n", "equivalent", "2", (_number(2),)),
+        ("2", "2 → n", "invalid", None, ()),
+        (PERIOD, "2π√(1/9.81) → 2.01 s", "equivalent", "2.01", (_final("2.01 s"),)),
+    ],
+)  # fmt: skip
+def test_working_with_steps_is_graded_at_its_last_value(expected, submitted, status, read_as, notes):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+    if read_as is not None:
+        assert verdict.read_as == read_as
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        " → ".join(["1"] * 150),  # a long chain is read as typed, and refused
+        "1 → " * 48 + "99999999999999999999999999999999999",  # more digits than the parser reads
+        "((((((((((((((((((((((((((((((((((((((((((((6 − 4))))))))))))))))))))))))))))))))))))))))))) → 2 → 3",
+        "6 − 4 = " + "9" * 60 + " ≠ 2",
+        "2 → ⇒ → so hence thus ≠ 2",
+        "→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→",
+        "2 " + "(" * 90 + " → 1",
+    ],
+)
+def test_hostile_chains_of_steps_are_refused_and_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "not_equivalent"), verdict
+
+
 PENDULUM_PERIOD = {**PERIOD_PART, "known": ["m", "g", "l"], "coords": ["theta"]}
 
 

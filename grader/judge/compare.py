@@ -1063,7 +1063,9 @@ def _read(
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
     measured = spec.name == "number"  # a count has no decimal comma, nor an uncertainty
-    text, answer, notes = read_number(submitted, reads, names, decimal_comma=measured, unit=unit, uncertainty=measured)
+    text, answer, notes = read_number(
+        submitted, reads, names, decimal_comma=measured, unit=unit, uncertainty=measured, count=not measured
+    )
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)
     return answer, notes

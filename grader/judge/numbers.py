@@ -20,6 +20,7 @@ from collections.abc import Callable, Collection
 
 from grader.judge.words import is_prose
 from grader.parse import ParsedAnswer, parse_answer
+from grader.parse.names import IMPLYING_WORDS
 
 __all__ = ["NUMBER_WORDS", "read_number"]
 
@@ -33,8 +34,16 @@ _SEC = re.compile(r"([0-9.]\s*)(m?)(?:secs?|seconds?)\.?\s*$")
 _ABOUT = re.compile(r"^\s*(?:≈|≃|~|\\approx|\\simeq|\\sim|about|approx\.?|approximately|roughly|ca\.|circa)\s*", re.I)
 _ABOUT_AFTER = re.compile(r"\s*\(?\s*(?:approx\.?|approximately|roughly)\s*\)?\s*$", re.I)
 
-# the signs a chain of working is written with: T = 2π√(l/g) ≈ 2.01 s
-_EQUALS = re.compile(r"\\approx|\\simeq|[=≈≃]")
+# the signs a chain of working is written with: T = 2π√(l/g) ≈ 2.01 s; not the = of <=, >=, != or =/=, whose
+# right side is no value of the answer (n >= 2 is not 2)
+_EQUALS = re.compile(r"\\approx|\\simeq|[≈≃]|(?<![<>!/=])=(?![=/>])")
+# and its steps, as on paper: 6 − 4 → 2, 3N − k ⇒ 1, two constraints, so 1. The answer is the value after the
+# last; the parser reads these only between equations
+_STEPS = re.compile(
+    r"==>|-->|=>|->|[→⟶⇒⟹∴]|\\(?:to|rightarrow|longrightarrow|Rightarrow|Longrightarrow|implies|therefore)(?![A-Za-z])"
+    rf"|\b(?:{'|'.join(sorted(IMPLYING_WORDS))})\b",
+    re.I,
+)
 
 _SEPARATED = re.compile(r"[;\n]|\\\\")
 # a quantity's name before its value, which is no working: T, T_0, τ, ω₀
@@ -69,6 +78,7 @@ def read_number(
     decimal_comma: bool = False,
     unit: bool = False,
     uncertainty: bool = False,
+    count: bool = False,
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """The text to judge, its reading (None: read it as typed, and say why it fails), and notes.
 
@@ -77,7 +87,11 @@ def read_number(
     ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the part asks for a quantity in a unit) reads
     2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s; ``uncertainty`` (a measured value may
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
+    ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9.
     """
+    unequal = _NOT_EQUAL.fullmatch(text) if count and len(text) <= _LENGTH else None
+    if unequal:
+        return _unequal(unequal, reads, names)
     uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
     if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s, 2.006(1) s: the value is graded, its uncertainty is not
         if uncertain["cvalue"]:
@@ -104,10 +118,15 @@ def read_number(
     given = _given(text, reads, names, decimal_comma, unit)
     if given is not None:
         return given
+    if re.search(_UNEQUAL_SIGN, text):
+        return prepared, None, notes  # 6 ≠ 9 = 3·3: the chain's last side is what the answer is not
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
-    pieces = [piece.strip() for piece in _EQUALS.split(bare)]
+    pieces, stepped = _sides(bare)
     last = len(pieces) - 1
-    for index in dict.fromkeys((last, 0)):  # the final value, else (2.01 s = T) the first side
+    # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
+    # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last
+    first = () if last != 1 or stepped else (0,)
+    for index in dict.fromkeys((last, *first)):
         for before, typed, rest in _number_in(pieces[index], names):
             words = NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, unit)
@@ -130,6 +149,54 @@ def read_number(
             return prepared, answer, notes
     prepared, notes = _spelled(text, decimal_comma, unit)
     return prepared, None, notes
+
+
+# 9 − 3 = 6 ≠ 9, where a count is asked: the count, then once a number it is not, and nothing after
+_UNEQUAL_SIGN = r"≠|!=|=/=|/=|\\neq?(?![A-Za-z])"
+_NOT_EQUAL = re.compile(
+    rf"(?P<value>(?:(?!{_UNEQUAL_SIGN}).)+?)\s*(?P<sign>{_UNEQUAL_SIGN})\s*"
+    rf"(?P<other>[0-9]+|(?:{'|'.join(_WORDS)})\b)\s*\.?\s*",
+    re.I | re.S,
+)
+
+
+def _unequal(found: re.Match, reads, names) -> tuple[str, ParsedAnswer | None, tuple]:
+    """``9 − 3 = 6 ≠ 9``: the count before ``≠``, read as any count is, with a note that the number it
+    rules out was not graded. As typed (refused, for its sign) where that count is the number it rules
+    out, or is none."""
+    prepared, answer, notes = read_number(found["value"], reads, names, count=True)
+    other = int(NUMBER_WORDS.get(found["other"].lower(), found["other"]))
+    value = _value_of(answer)
+    if value is None or value == other:
+        return found[0], None, ()  # 6 ≠ 6 says no count
+    typed = next((details["value"] for _, details in notes if "value" in details), _sides(found["value"])[0][-1])
+    rest = f"{found['sign']} {found['other']}"
+    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+    return prepared, answer, (*notes, ("remark_ignored", {"value": typed, "rest": rest}))
+
+
+def _value_of(answer: ParsedAnswer | None):
+    """The number an answer read as a number says: its value, or its last side (``n = 2``); else None."""
+    if answer is None or answer.kind not in ("expression", "equation"):
+        return None
+    value = answer.value.rhs if answer.kind == "equation" else answer.value
+    return value if value.is_number else None
+
+
+def _sides(text: str) -> tuple[list[str], bool]:
+    """The sides of a chain of working (``6 − 4 = 2 → 4``: 6 − 4, 2 and 4), split where an equals sign
+    or a step stands outside brackets (``2 (so two angles)`` is one side); and whether a step did."""
+    marks = [(found, False) for found in _EQUALS.finditer(text)] + [(found, True) for found in _STEPS.finditer(text)]
+    marks.sort(key=lambda mark: mark[0].start())
+    depth = [0] * (len(text) + 1)
+    for index, character in enumerate(text):
+        depth[index + 1] = depth[index] + (character in "([{") - (character in ")]}")
+    pieces, start, stepped = [], 0, False
+    for found, step in marks:
+        if found.start() >= start and depth[found.start()] == 0:
+            pieces.append(text[start : found.start()].strip())
+            start, stepped = found.end(), stepped or step
+    return [*pieces, text[start:].strip()], stepped
 
 
 def _given(text: str, reads, names, decimal_comma: bool, unit: bool) -> tuple[str, ParsedAnswer | None, tuple] | None:
