@@ -2831,14 +2831,74 @@ def _final(value):
         (PERIOD, "≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", ()),
         (PERIOD, "about 2.0 s", PERIOD_PART, "equivalent", "2", ()),
         (PERIOD, "2.0 s (approx.)", PERIOD_PART, "equivalent", "2", ()),
-        # as typed first: 2 (3) is 6, and a unit is checked, not taken for a remark
-        ("2", "2 (3)", {}, "not_equivalent", "6", ()),
+        # as typed first, for a measured value: 2 (3) is 6, and a unit is checked, not taken for a remark (for a
+        # count, see test_a_count_followed_by_brackets_is_the_count_where_they_are_its_working)
+        (PERIOD, "2 (3)", PERIOD_PART, "not_equivalent", "6", ()),
         (PERIOD, "2.006 m (roughly)", PERIOD_PART, "not_equivalent", "1003*m/500", ()),
     ],
 )  # fmt: skip
 def test_the_number_is_found_in_what_a_student_wrote_around_it(expected, submitted, options, status, read_as, notes):
     verdict = compare(expected, submitted, **{"kind": "integer", **options})
     assert (verdict.status, verdict.read_as, verdict.notes) == (status, read_as, notes)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "notes"),
+    [
+        # working with steps, as on paper: the value after the last is the answer, whatever came before it
+        ("2", "6 − 4 = 2 → 4", "not_equivalent", "4", (_final(4),)),  # before, the first side, 6 − 4, was graded
+        ("2", "6 − 2 = 4 → 2", "equivalent", "2", (_final(2),)),  # → is a step of the count, not an equals sign
+        ("2", "6 -> 4 -> 2", "equivalent", "2", (_final(2),)),
+        ("2", "6 \\to 2", "equivalent", "2", (_final(2),)),
+        ("2", "6 − 4 ⇒ 2", "equivalent", "2", ()),  # the parser reads ⇒ as the step it is
+        ("1", "Two constraints, so 1", "equivalent", "1", (_final(1),)),
+        ("1", "Two constraints, hence 1 degree of freedom", "equivalent", "1", (_remark(1, "degree of freedom"),)),
+        ("2", "3N − k = 6 − 4, therefore 2", "equivalent", "2", (_final(2),)),
+        ("2", "2 (so two angles)", "equivalent", "2", (_remark(2, "(so two angles)"),)),  # a step in brackets: a remark
+        # a number it is not, after the count: a remark
+        ("6", "9 − 3 = 6 ≠ 9", "equivalent", "6", (_final(6), _remark(6, "≠ 9"))),
+        ("9", "9 − 3 = 6 ≠ 9", "not_equivalent", "6", (_final(6), _remark(6, "≠ 9"))),
+        ("6", "n = 6 != nine", "equivalent", "6", (_remark(6, "!= nine"),)),
+        ("6", "6 \\neq 9", "equivalent", "6", (_remark(6, "\\neq 9"),)),
+        # …but not where it is the count itself, nor before more working: which is the answer is unclear
+        ("6", "9 − 3 = 6 ≠ 6", "invalid", None, ()),
+        ("9", "6 ≠ 9 = 3·3", "invalid", None, ()),  # before, read as 3·3: the number the answer is not
+        ("6", "6 ≠ 9 → 6", "invalid", None, ()),
+        # <=, >= and != are not the = of a chain: n >= 2 is no count of 2
+        ("2", "n >= 2", "invalid", None, ()),
+        ("2", "n <= 2", "invalid", None, ()),
+        (PERIOD, "T >= 2.0 s", "invalid", None, ()),
+        (PERIOD, "2.006 s != 2 s", "invalid", None, ()),
+        # the first side is read where a value stands before its name, not before longer working or a step
+        ("2", "6 − 4 = 2 = 4 θ", "invalid", None, ()),  # before, 6 − 4 was graded
+        ("2", "2 = n", "equivalent", "2", (_number(2),)),
+        ("2", "2 → n", "invalid", None, ()),
+        (PERIOD, "2π√(1/9.81) → 2.01 s", "equivalent", "2.01", (_final("2.01 s"),)),
+    ],
+)  # fmt: skip
+def test_working_with_steps_is_graded_at_its_last_value(expected, submitted, status, read_as, notes):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.notes) == (status, notes), verdict
+    if read_as is not None:
+        assert verdict.read_as == read_as
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        " → ".join(["1"] * 150),  # a long chain is read as typed, and refused
+        "1 → " * 48 + "99999999999999999999999999999999999",  # more digits than the parser reads
+        "((((((((((((((((((((((((((((((((((((((((((((6 − 4))))))))))))))))))))))))))))))))))))))))))) → 2 → 3",
+        "6 − 4 = " + "9" * 60 + " ≠ 2",
+        "2 → ⇒ → so hence thus ≠ 2",
+        "→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→→",
+        "2 " + "(" * 90 + " → 1",
+    ],
+)
+def test_hostile_chains_of_steps_are_refused_and_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "not_equivalent"), verdict
 
 
 PENDULUM_PERIOD = {**PERIOD_PART, "known": ["m", "g", "l"], "coords": ["theta"]}
@@ -2888,9 +2948,8 @@ def test_a_formula_for_the_number_is_not_taken_for_a_number_and_a_remark(submitt
         "2 (or 3)",
         "2 or three",
         "2 (three minus one)",
-        "2 (the 2 angles)",
-        "6 (3 translations + 2 rotations)",  # a breakdown that does not add up
-        "2 (3 coordinates - 2 constraints)",
+        "2 (maybe 3)",
+        "2 (3 in total)",  # another count of what is counted, perhaps: no thing it was counted from
         "either 2 or 3",
         "not 3 but 2",
         "not 2",
@@ -2912,6 +2971,94 @@ def test_a_breakdown_holds_no_name_of_the_problem():
     verdict = compare("4", "4 (2 omega + 2)", kind="integer", known=["omega"])
     assert (verdict.status, verdict.diagnosis) == ("invalid", "not_a_number")
     assert compare("4", "4 (2 omegas + 2)", kind="integer", known=["omega"]).status == "equivalent"
+
+
+def _unclear(value, rest):
+    return f"Your count `{value}` is followed by `{rest}`, which does not come to {value}: a person will decide which" \
+        " number is your answer."  # fmt: skip
+
+
+def _count_or_product(typed):
+    return f"Your answer `{typed}` may be a count with its working in brackets, or the product of the two, and" \
+        " these are different numbers: a person will check which you meant."  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "feedback"),
+    [
+        # a count, then brackets that come to it: the count with its working. As typed, they were its product
+        ("2", "2 (6 − 4)", "equivalent", "2", ("Correct.", _remark(2, "(6 − 4)"))),  # before, 4
+        ("6", "6 (3 + 3)", "equivalent", "6", ("Correct.", _remark(6, "(3 + 3)"))),  # before, 36
+        ("2", "2 (3 − 1)", "equivalent", "2", ("Correct.", _remark(2, "(3 − 1)"))),
+        ("2", "2 (4/2).", "equivalent", "2", ("Correct.", _remark(2, "(4/2)"))),
+        ("2", "2 [6 − 4]", "equivalent", "2", ("Correct.", _remark(2, "[6 − 4]"))),
+        ("2", "2 ((6) − (4))", "equivalent", "2", ("Correct.", _remark(2, "((6) − (4))"))),
+        ("2", "n = 2 (6 − 4)", "equivalent", "2", ("Correct.", _remark(2, "(6 − 4)"))),  # before, n = 4
+        ("2", "6 − 4 = 2 (6 − 4)", "equivalent", "2", ("Correct.", _remark(2, "(6 − 4)"))),
+        ("2", "2 (6 − 4), since k = 4", "equivalent", "2",
+         ("Correct.", _remark(2, "(6 − 4)"), _remark(2, "since k = 4"))),
+        ("3", "3 (6 − 4)", "undecided", "3", (_unclear(3, "(6 − 4)"),)),
+        ("4", "2 (6 − 4)", "undecided", "2", (_count_or_product("2 (6 − 4)"),)),  # 4 only as the product
+        ("3", "2 (6 − 4)", "not_equivalent", "2", ("Not equivalent to the expected answer.", _remark(2, "(6 − 4)"))),
+        ("1", "1 (3 − 2)", "equivalent", "1", ("Correct.", _remark(1, "(3 − 2)"))),  # its product is 1 too
+        # written close, a product, as typed; but where only the count with its working earns, for a person
+        ("4", "2(3 − 1)", "equivalent", "4", ("Correct.",)),
+        ("2", "2(3 − 1)", "undecided", "4", (_count_or_product("2(3 − 1)"),)),
+        ("5", "2(3 − 1)", "not_equivalent", "4", ("Not equivalent to the expected answer.",)),
+        ("6", "3(2)", "equivalent", "6", ("Correct.",)),
+        # brackets that come to another number: which is the answer is unclear, right or wrong (nothing proposed)
+        ("2", "1 (2)", "undecided", "1", (_unclear(1, "(2)"),)),  # before, right: 1·2
+        ("2", "2 (3)", "undecided", "2", (_unclear(2, "(3)"),)),  # before, 6
+        ("5", "2 (3)", "undecided", "2", (_unclear(2, "(3)"),)),
+        ("2", "1 [2]", "undecided", "1", (_unclear(1, "[2]"),)),
+        ("2", "1 (2)(1)", "undecided", "1", (_unclear(1, "(2)(1)"),)),
+        ("2", "n = 1 (2)", "undecided", "1", (_unclear(1, "(2)"),)),  # before, right: n = 2
+        ("2", "two (3)", "undecided", "2", (_unclear("two", "(3)"),)),
+        ("2", "2 (3), since k = 2", "undecided", "2", (_unclear(2, "(3)"),)),
+        ("6", "6 (3 translations + 2 rotations)", "undecided", "6", (_unclear(6, "(3 translations + 2 rotations)"),)),
+        ("2", "2 (3 coordinates - 2 constraints)", "undecided", "2", (_unclear(2, "(3 coordinates - 2 constraints)"),)),
+        ("2", "2 (3 degrees of freedom)", "undecided", "2", (_unclear(2, "(3 degrees of freedom)"),)),
+        ("2", "2 (3 generalized coordinates)", "undecided", "2", (_unclear(2, "(3 generalized coordinates)"),)),
+        # a count in the words, the count again; or how many things it was counted from
+        ("2", "2 (the 2 angles)", "equivalent", "2", ("Correct.", _remark(2, "(the 2 angles)"))),
+        ("15", "15 (5 particles)", "equivalent", "15", ("Correct.", _remark(15, "(5 particles)"))),
+        ("5", "15 (5 particles)", "not_equivalent", "15", ("Not equivalent to the expected answer.",
+                                                            _remark(15, "(5 particles)"))),
+        ("1", "1 (2 holonomic constraints)", "equivalent", "1", ("Correct.", _remark(1, "(2 holonomic constraints)"))),
+        ("2", "2 (6 Cartesian coordinates)", "equivalent", "2", ("Correct.", _remark(2, "(6 Cartesian coordinates)"))),
+        ("6", "6 (1 rigid body)", "equivalent", "6", ("Correct.", _remark(6, "(1 rigid body)"))),
+    ],
+)  # fmt: skip
+def test_a_count_followed_by_brackets_is_the_count_where_they_are_its_working(
+    expected, submitted, status, read_as, feedback
+):
+    verdict = compare(expected, submitted, kind="integer")
+    assert (verdict.status, verdict.read_as, verdict.feedback) == (status, read_as, feedback), verdict
+    assert verdict.score == (1.0 if status == "equivalent" else 0.0)
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "2 (" + "9" * 35 + ")",  # more digits than the parser reads
+        "9" * 35 + " (3)",
+        "2 (" * 60 + "2" + ")" * 60,  # nested deeper than the parser goes
+        "2 " + "(" * 60 + "2" + ")" * 60,
+        "2 (1/0)",
+        "2 (2^2^2^2^2^2^2^2^2)",  # a power is no working: as typed, refused
+        "1 (2) degrees of freedom",  # no product of the count and its bracket, before words: before, right
+        "It has 1 (2)",  # before, right
+        "1 (2",
+        "1 (2))",
+        "1 (2] ",
+        "2 (" + "1 + " * 60 + "1)",
+        "1 " + "(2)" * 80,
+        "1 (2)" + " → 1 (2)" * 30,
+    ],
+)
+def test_hostile_counts_with_brackets_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
 
 
 def test_seconds_written_sec_are_not_a_remark_where_no_unit_is_asked_for():

@@ -508,6 +508,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
             if outcome.key == "other_unit" and shown is not None and shown.value.free_symbols:
                 # 2.006 ms: the unit was typed, and asking whether the number is in ks is no help
                 outcome = replace(outcome, key="out_of_tolerance", details={})
+            outcome, read_notes = _count_unclear(spec, expected, outcome, read_notes, deadline)
             outcome, read_notes = _for_a_person(outcome, (*read_notes, read_in))
             for note in read_notes:
                 if note:
@@ -1144,6 +1145,28 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
     return outcome, tuple(note for note in notes if note not in unsure)
 
 
+def _count_unclear(spec: Kind, expected: Expected, outcome: Outcome, notes: tuple, deadline) -> tuple[Outcome, tuple]:
+    """A count whose bracket leaves unclear which number it is (``1 (2)``, see
+    :func:`~grader.judge.numbers.read_number`): for a person, whatever it would earn. One read as the
+    count with its working (``2 (3 − 1)``), or written close as a product (``2(3 − 1)``), where it earns
+    nothing so but would the other way: for a person too. In both, nothing is proposed: the reading
+    that earns is not the likelier one. Returns the outcome and the notes left."""
+    unclear = next((note for note in notes if note and note[0] == "count_bracket_for_a_person"), None)
+    if unclear is not None:
+        return Outcome("undecided", 0.0, *unclear, method=outcome.method), ()
+    other = next((note for note in notes if note and note[0] == "other_reading"), None)
+    if other is None:
+        return outcome, notes
+    notes = tuple(note for note in notes if note is not other)
+    if outcome.score > 0:
+        return outcome, notes
+    read = parse_answer(other[1]["other"], deadline=deadline)
+    if not (read.ok and spec.check(expected, read, deadline).score > 0):
+        return outcome, notes
+    details = {"typed": other[1]["typed"]}
+    return Outcome("undecided", 0.0, "count_or_product_for_a_person", details, method=outcome.method), ()
+
+
 def _constant_term(term: sympy.Expr, names: set, motion: tuple) -> bool:
     """Whether a term in ``names`` (the student's own) is a constant of theirs: ``m₂ g l``, with the
     problem's names in it too, of degree one in each of theirs, and no coordinate, velocity or time
@@ -1174,7 +1197,9 @@ def _read(
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
     measured = spec.name == "number"  # a count has no decimal comma, nor an uncertainty
-    text, answer, notes = read_number(submitted, reads, names, decimal_comma=measured, unit=unit, uncertainty=measured)
+    text, answer, notes = read_number(
+        submitted, reads, names, decimal_comma=measured, unit=unit, uncertainty=measured, count=not measured
+    )
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)
     return answer, notes

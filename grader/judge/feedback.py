@@ -79,6 +79,10 @@ FEEDBACK: dict[str, str] = {
     "uncertainty_left_out": "Read without its uncertainty, `{error}`: the value is what is graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
+    "count_bracket_for_a_person": "Your count `{value}` is followed by `{rest}`, which does not come to {value}:"
+    " a person will decide which number is your answer.",
+    "count_or_product_for_a_person": "Your answer `{typed}` may be a count with its working in brackets, or the"
+    " product of the two, and these are different numbers: a person will check which you meant.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",
     "formula_unit_differs": "Your answer is in {theirs}, which is not how the quantity asked for is measured:"
     " check its dimensions.",

@@ -5,9 +5,11 @@ Contents:
     NUMBER_WORDS                           zero to twenty in words, to their digits
 
 Students write a number inside a sentence, as they would on paper: ``≈ 2.01 s``, ``T = 2π√(l/g)
-= 2.01 s``, ``2 (θ₁ and θ₂)``, ``2 degrees of freedom``, ``two``, ``2,01``. The number is what the part
-grades, so it is found and graded, and the student is told what was not. Each reading is tried
-only when the answer as typed is not a number: ``2 (3)`` is still 6.
+= 2.01 s``, ``2 (θ₁ and θ₂)``, ``2 degrees of freedom``, ``two``, ``2,01``, ``6 − 4 → 2``. The number
+is what the part grades, so it is found and graded, and the student is told what was not. Each
+reading is tried only when the answer as typed is not a number: for a measured value, ``2 (3)`` is
+still 6. A count is the exception: after one, brackets are more often its working than a factor,
+so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person.
 
 A remark after the number must be words, not mathematics: in ``2 π √(l/g)`` for a period, the
 √(l/g) is part of the answer, which is a formula where a number is asked for, and is refused as one.
@@ -18,8 +20,9 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Collection
 
-from grader.judge.words import is_prose
+from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
+from grader.parse.names import IMPLYING_WORDS
 
 __all__ = ["NUMBER_WORDS", "read_number"]
 
@@ -33,8 +36,16 @@ _SEC = re.compile(r"([0-9.]\s*)(m?)(?:secs?|seconds?)\.?\s*$")
 _ABOUT = re.compile(r"^\s*(?:≈|≃|~|\\approx|\\simeq|\\sim|about|approx\.?|approximately|roughly|ca\.|circa)\s*", re.I)
 _ABOUT_AFTER = re.compile(r"\s*\(?\s*(?:approx\.?|approximately|roughly)\s*\)?\s*$", re.I)
 
-# the signs a chain of working is written with: T = 2π√(l/g) ≈ 2.01 s
-_EQUALS = re.compile(r"\\approx|\\simeq|[=≈≃]")
+# the signs a chain of working is written with: T = 2π√(l/g) ≈ 2.01 s; not the = of <=, >=, != or =/=, whose
+# right side is no value of the answer (n >= 2 is not 2)
+_EQUALS = re.compile(r"\\approx|\\simeq|[≈≃]|(?<![<>!/=])=(?![=/>])")
+# and its steps, as on paper: 6 − 4 → 2, 3N − k ⇒ 1, two constraints, so 1. The answer is the value after the
+# last; the parser reads these only between equations
+_STEPS = re.compile(
+    r"==>|-->|=>|->|[→⟶⇒⟹∴]|\\(?:to|rightarrow|longrightarrow|Rightarrow|Longrightarrow|implies|therefore)(?![A-Za-z])"
+    rf"|\b(?:{'|'.join(sorted(IMPLYING_WORDS))})\b",
+    re.I,
+)
 
 _SEPARATED = re.compile(r"[;\n]|\\\\")
 # a quantity's name before its value, which is no working: T, T_0, τ, ω₀
@@ -69,6 +80,7 @@ def read_number(
     decimal_comma: bool = False,
     unit: bool = False,
     uncertainty: bool = False,
+    count: bool = False,
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """The text to judge, its reading (None: read it as typed, and say why it fails), and notes.
 
@@ -77,7 +89,11 @@ def read_number(
     ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the part asks for a quantity in a unit) reads
     2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s; ``uncertainty`` (a measured value may
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
+    ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9.
     """
+    unequal = _NOT_EQUAL.fullmatch(text) if count and len(text) <= _LENGTH else None
+    if unequal:
+        return _unequal(unequal, reads, names)
     uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
     if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s, 2.006(1) s: the value is graded, its uncertainty is not
         if uncertain["cvalue"]:
@@ -97,18 +113,30 @@ def read_number(
         prepared, answer, notes = read_number(rest, reads, names, decimal_comma=decimal_comma, unit=unit)
         if answer is not None:
             return prepared, answer, (*notes, ("uncertainty_left_out", {"error": inside[0].strip()}))
+    plain = len(text) <= _LENGTH and not _SEPARATED.search(text) and not re.search(_UNEQUAL_SIGN, text)
+    if count and plain:  # 2 (6 − 4), n = 2 (6 − 4): before the product as typed is read
+        bracketed = _count_with_bracket(_sides(text)[0][-1], reads, names)
+        if bracketed is not None:
+            return bracketed
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
         return prepared, answer, notes  # x = 1; y = 2 is a system, not working
-    given = _given(text, reads, names, decimal_comma, unit)
+    given = _given(text, reads, names, decimal_comma, unit, count)
     if given is not None:
         return given
+    if re.search(_UNEQUAL_SIGN, text):
+        return prepared, None, notes  # 6 ≠ 9 = 3·3: the chain's last side is what the answer is not
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
-    pieces = [piece.strip() for piece in _EQUALS.split(bare)]
+    pieces, stepped = _sides(bare)
     last = len(pieces) - 1
-    for index in dict.fromkeys((last, 0)):  # the final value, else (2.01 s = T) the first side
+    # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
+    # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last
+    first = () if last != 1 or stepped else (0,)
+    for index in dict.fromkeys((last, *first)):
         for before, typed, rest in _number_in(pieces[index], names):
+            if count and _COUNT_THEN_BRACKET.fullmatch(typed):
+                continue  # 2 (3), then words: no product of a count and its bracket (see _count_with_bracket)
             words = NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, unit)
             answer = reads(prepared)
@@ -132,7 +160,163 @@ def read_number(
     return prepared, None, notes
 
 
-def _given(text: str, reads, names, decimal_comma: bool, unit: bool) -> tuple[str, ParsedAnswer | None, tuple] | None:
+# 9 − 3 = 6 ≠ 9, where a count is asked: the count, then once a number it is not, and nothing after
+_UNEQUAL_SIGN = r"≠|!=|=/=|/=|\\neq?(?![A-Za-z])"
+_NOT_EQUAL = re.compile(
+    rf"(?P<value>(?:(?!{_UNEQUAL_SIGN}).)+?)\s*(?P<sign>{_UNEQUAL_SIGN})\s*"
+    rf"(?P<other>[0-9]+|(?:{'|'.join(_WORDS)})\b)\s*\.?\s*",
+    re.I | re.S,
+)
+
+
+def _unequal(found: re.Match, reads, names) -> tuple[str, ParsedAnswer | None, tuple]:
+    """``9 − 3 = 6 ≠ 9``: the count before ``≠``, read as any count is, with a note that the number it
+    rules out was not graded. As typed (refused, for its sign) where that count is the number it rules
+    out, or is none."""
+    prepared, answer, notes = read_number(found["value"], reads, names, count=True)
+    other = int(NUMBER_WORDS.get(found["other"].lower(), found["other"]))
+    value = _value_of(answer)
+    if value is None or value == other:
+        return found[0], None, ()  # 6 ≠ 6 says no count
+    typed = next((details["value"] for _, details in notes if "value" in details), _sides(found["value"])[0][-1])
+    rest = f"{found['sign']} {found['other']}"
+    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+    return prepared, answer, (*notes, ("remark_ignored", {"value": typed, "rest": rest}))
+
+
+def _value_of(answer: ParsedAnswer | None):
+    """The number an answer read as a number says: its value, or its last side (``n = 2``); else None."""
+    if answer is None or answer.kind not in ("expression", "equation"):
+        return None
+    value = answer.value.rhs if answer.kind == "equation" else answer.value
+    return value if value.is_number else None
+
+
+def _sides(text: str) -> tuple[list[str], bool]:
+    """The sides of a chain of working (``6 − 4 = 2 → 4``: 6 − 4, 2 and 4), split where an equals sign
+    or a step stands outside brackets (``2 (so two angles)`` is one side); and whether a step did."""
+    marks = [(found, False) for found in _EQUALS.finditer(text)] + [(found, True) for found in _STEPS.finditer(text)]
+    marks.sort(key=lambda mark: mark[0].start())
+    depth = [0] * (len(text) + 1)
+    for index, character in enumerate(text):
+        depth[index + 1] = depth[index] + (character in "([{") - (character in ")]}")
+    pieces, start, stepped = [], 0, False
+    for found, step in marks:
+        if found.start() >= start and depth[found.start()] == 0:
+            pieces.append(text[start : found.start()].strip())
+            start, stepped = found.end(), stepped or step
+    return [*pieces, text[start:].strip()], stepped
+
+
+# a count, then brackets and nothing after them: 2 (6 − 4), 1 (2), 15 (5 particles), two (2)
+_COUNT_THEN_BRACKET = re.compile(
+    rf"\s*(?P<count>[0-9]+|(?:{'|'.join(_WORDS)}))(?P<space>\s*)(?P<rest>[(\[].*[)\]])\s*\.?\s*", re.I | re.S
+)
+_ARITHMETIC = re.compile(r"[0-9\s.+\-−‒*×·/()\[\]]+")  # digits and signs alone: no ^, whose powers can be huge
+# what a degree-of-freedom count counts: 2 (3 degrees of freedom) gives two counts of one thing
+_ASKED = re.compile(r"\b(?:degrees?\s+of\s+freedom|freedoms?|dofs?|generali[sz]ed\s+coordinates?)\b", re.I)
+# things a count of degrees of freedom is worked out from, which a bracket may say how many there are of:
+# 15 (5 particles). A list, not any word: 2 (3 in total), 2 (3 really) offer another count
+_THING = [
+    "particle", "bob", "bead", "point", "atom", "rod", "string", "pendulum", "link", "spring", "wheel", "disc", "disk",
+    "sphere", "ball", "object", "constraint", "coordinate", "angle", "equation", "translation", "rotation", "position",
+]  # fmt: skip
+_THINGS = frozenset({*_THING, *(f"{thing}s" for thing in _THING), "mass", "masses", "body", "bodies", "axis", "axes"})
+_DESCRIBED = re.compile(r"\s*(?:[0-9]+|[A-Za-z]+)\s+(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\s*")  # 5 free particles
+
+
+def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | None, tuple] | None:
+    """A count followed by brackets, where a count is asked: which number it says, and notes. None
+    where ``piece`` is no such thing, or the brackets hold words the remarks after a number are read as.
+
+    As typed, ``1 (2)`` is the product 2; written after a count, a bracket is more often its working
+    (``2 (6 − 4)``, ``6 (3 translations + 3 rotations)``) or what it counts (``15 (5 particles)``). So
+    the count is graded where its bracket comes to it, or names how many things it was counted from.
+    Where the bracket comes to another number (``1 (2)``, ``2 (3 coordinates − 2 constraints)``), which
+    is the answer is unclear, and a note sends it to a person. A product written close (``2(3 − 1)``) is
+    read as one; and where the other reading, count or product, would earn what this one does not, a
+    note sends it to a person too (see :func:`grader.judge.compare._count_unclear`)."""
+    found = _COUNT_THEN_BRACKET.fullmatch(piece)
+    groups = _groups(found["rest"]) if found else None
+    if not groups:
+        return None
+    typed, rest = found["count"], found["rest"]
+    number = int(NUMBER_WORDS.get(typed.lower(), typed))
+    answer = reads(str(number))
+    if answer is None:
+        return None  # more digits than the parser reads: as typed, and refused
+    shown = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+    remark = ("remark_ignored", {"value": typed, "rest": shown})
+    unclear = ("count_bracket_for_a_person", {"value": typed, "rest": shown})
+    spaced = bool(found["space"]) or not typed.isdigit()  # two(2) is no product either
+    if _ARITHMETIC.fullmatch(rest):
+        worked = parse_answer(rest)
+        if not (worked.ok and worked.kind == "expression" and worked.value.is_number):
+            return None  # (1/0): as typed, and refused
+        if worked.value != number:
+            return (str(number), answer, (unclear,)) if spaced else None  # 3(2) is 6, as written
+        product = number * worked.value
+        if not typed.isdigit() or product == number:
+            return str(number), answer, (remark,)
+        if spaced:
+            return str(number), answer, (remark, ("other_reading", {"typed": piece.strip(), "other": str(product)}))
+        written = reads(piece)
+        other = ("other_reading", {"typed": piece.strip(), "other": str(number)})
+        return (piece, written, (other,)) if written is not None else None
+    counted = _counted(groups[0], names) if len(groups) == 1 and spaced else None
+    if counted is None:
+        return None
+    value, summed = counted
+    described = _DESCRIBED.fullmatch(groups[0])
+    thing = described and not summed and described["thing"].lower() in _THINGS
+    if value == number or (thing and not _ASKED.search(groups[0])):
+        return str(number), answer, (remark,)
+    if summed or _ASKED.search(groups[0]):
+        return str(number), answer, (unclear,)
+    return None  # 2 (one coordinate for each bob): words, read as remarks are
+
+
+def _groups(text: str) -> list[str] | None:
+    """What each bracket of ``text`` holds, where ``text`` is brackets side by side (``(6 − 4)``,
+    ``(2)(1)``); None where anything stands between them, or they do not close."""
+    groups, closing, start = [], [], 0
+    for index, character in enumerate(text):
+        if character in "([":
+            start = start if closing else index + 1
+            closing.append(")" if character == "(" else "]")
+        elif character in ")]":
+            if not closing or character != closing.pop():
+                return None
+            if not closing:
+                groups.append(text[start:index])
+        elif not closing and not character.isspace():
+            return None
+    return groups if groups and not closing else None
+
+
+def _counted(inside: str, names: Collection[str]) -> tuple[object, bool] | None:
+    """``5 particles``, ``3 translations + 3 rotations``, ``the 2 angles``: the counts of things named in
+    words that a bracket holds, added up, and whether there were several. None where it holds no count,
+    or words that are none of this: the problem's names, a hedge or a doubt (``or 3``, ``maybe 3``),
+    arithmetic in words alone (``three minus one``)."""
+    words = _COUNTED.findall(inside)
+    things = [word for word in words if word.lower() not in (*_SAID_SIGNS, *NUMBER_WORDS)]
+    if not things or any(word in names for word in words) or says_otherwise(inside):
+        return None
+    if not is_prose(" ".join(things), names):
+        return None
+    arithmetic = _LISTED.sub(" + ", _COUNTED.sub(_as_count, inside))
+    if not _SOME_COUNTS.fullmatch(arithmetic):
+        return None
+    read = parse_answer(arithmetic)
+    if not (read.ok and read.kind == "expression" and read.value.is_number):
+        return None
+    return read.value, bool(_SIGN.search(arithmetic))
+
+
+def _given(
+    text: str, reads, names, decimal_comma: bool, unit: bool, count: bool
+) -> tuple[str, ParsedAnswer | None, tuple] | None:
     """``2.006 s, since l = 1 m``, ``n = 3N − k, where N = 1, k = 2``: a number or a formula, then the
     values it was worked out with. The number is graded, and the note says the rest was not; a
     formula is graded with the values put in its names. None where the text is no such answer; where
@@ -142,7 +326,7 @@ def _given(text: str, reads, names, decimal_comma: bool, unit: bool) -> tuple[st
     if found is None or not found.start():
         return None
     head, values = text[: found.start()], text[found.end() :]
-    prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit)
+    prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
     if answer is not None:
         shown = text[found.start() :].strip(" ,")
         shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
@@ -265,7 +449,8 @@ def _breaks_down(rest: str, names: Collection[str], number: str) -> bool:
     in words that add up to it: ``(3 translations + 3 rotations)`` for 6, ``(6 coordinates − 1
     constraint)`` for 5. Counts in digits or words (``three``), joined by signs, by and, plus, minus, times, or listed
     between commas (``3 translations, 3 rotations``); words that are none of the problem's names.
-    A breakdown that does not add up is no remark: which number is meant is for the student to say."""
+    A breakdown that does not add up is no remark: which number is meant is for the student to say
+    (or, where a count is asked, a person: see :func:`_count_with_bracket`)."""
     found = _BRACKETED.fullmatch(rest)
     if found is None or not number.isdigit():
         return False
@@ -298,3 +483,5 @@ _COUNTED = re.compile(r"(?<![\w\\])[A-Za-z]{2,}(?!\w)")  # translations, rotatio
 _SAID_SIGNS = {"and": "+", "plus": "+", "minus": "-", "times": "*"}
 _LISTED = re.compile(r"[,;]\s")  # counts listed add up: not 3,5, a decimal comma
 _COUNTS = re.compile(r"\s*[0-9]+(?:\s*[-+−*×·]\s*[0-9]+)+\s*")  # 3 + 3, 6 − 1, 3·2 − 1
+_SOME_COUNTS = re.compile(r"\s*[0-9]+(?:\s*[-+−*×·]\s*[0-9]+)*\s*")  # and 5, of 5 particles
+_SIGN = re.compile(r"[-+−*×·]")
