@@ -20,7 +20,9 @@ they never print the expected term itself.
 from __future__ import annotations
 
 import itertools
+import math
 import re
+import zlib
 
 import sympy
 
@@ -230,7 +232,7 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             gained.append(shape)
             changes.append(("extra_term", describe_term(shape, setting, own=True)))
     if lost or gained:
-        regrouped = coefficients_differ(expected_terms, submitted_terms, setting)
+        regrouped = _differing_factors(ours, theirs, setting, any_factor=False)
         if regrouped:
             return regrouped
     if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
@@ -258,18 +260,33 @@ def coefficients_differ(
     With ``any_factor`` (an equation, right whatever it is multiplied by), the groups are
     compared in the ratio most of them share: m₁ l₁ θ̈₁ for (m₁ + m₂) l₁ θ̈₁ is one term off,
     not every other term off by (m₁ + m₂)/m₁ once the equation is solved for θ̈₁.
+
+    The parameters are compared by their values at two generic points, not by sympy's algebra
+    (which cost milliseconds a wrong answer): this only names a term, the verdict is made.
     """
-    ours, theirs = _by_state(expected_terms, setting), _by_state(submitted_terms, setting)
-    if set(ours) != set(theirs) or any(coefficient == 0 for _, coefficient in ours.values()):
+    return _differing_factors(_by_form(expected_terms), _by_form(submitted_terms), setting, any_factor)
+
+
+def _differing_factors(ours_by_form: dict, theirs_by_form: dict, setting: Setting, any_factor: bool) -> list:
+    """:func:`coefficients_differ`, from the terms as :func:`_by_form` groups them."""
+    split_ours, split_theirs = _split_by_state(ours_by_form, setting), _split_by_state(theirs_by_form, setting)
+    if {split[0] for split in split_ours.values()} != {split[0] for split in split_theirs.values()}:
+        return []  # a term in the coordinates and velocities is missing or too many: said as such
+    ours, theirs = _by_state(split_ours), _by_state(split_theirs)
+    if ours is None or theirs is None:
         return []
-    ratio = sympy.S.One
+    if any(not all(abs(v) > _TINY for v in values) for _, values in ours.values()):
+        return []
+    ratio = (1.0,) * len(_GENERIC)
     if any_factor:
-        ratios = {key: sympy.cancel(theirs[key][1] / ours[key][1]) for key in ours}
-        shared = [value for value in ratios.values() if value != 0]
-        ratio = max(shared, key=shared.count, default=sympy.S.One)
-        if shared.count(ratio) < 2:
+        ratios = [tuple(t / o for t, o in zip(theirs[key][1], ours[key][1], strict=True)) for key in ours]
+        shared = [r for r in ratios if all(abs(v) > _TINY for v in r)]
+        best = max(shared, key=lambda r: sum(_close(r, other) for other in shared), default=None)
+        if best is None or sum(_close(best, other) for other in shared) < 2:
             return []  # no ratio most terms share: nothing says which terms are off
-    differing = [key for key in ours if sympy.expand(ratio * ours[key][1] - theirs[key][1]) != 0]
+        ratio = best
+    scaled = {key: tuple(r * v for r, v in zip(ratio, ours[key][1], strict=True)) for key in ours}
+    differing = [key for key in ours if not _close(scaled[key], theirs[key][1])]
     if not 1 <= len(differing) <= 2 or any(key is sympy.S.One for key in differing):
         return []
     if any_factor and len(ours) - len(differing) < len(differing) + 1:
@@ -277,26 +294,81 @@ def coefficients_differ(
     written = [shape for shape, _ in theirs.values()]
     changes = []
     for key in differing:
-        shape, coefficient = theirs[key]
-        wrong_sign = sympy.expand(coefficient + ratio * ours[key][1]) == 0
+        shape, values = theirs[key]
+        wrong_sign = _close(values, tuple(-v for v in scaled[key]))
         how = "has the wrong sign" if wrong_sign else "has the wrong factor"
         named = describe_term(shape, setting, definite=True, own=True)
         changes.append(("term_differs", f"{told_apart(shape, named, written, setting, own=True)} {how}"))
     return changes
 
 
-def _by_state(collected: dict, setting: Setting) -> dict:
-    """{a term's part in the coordinates, velocities and given names, in sines and cosines:
-    (that part as written, the rest of the term summed over the terms that share it)}."""
-    varying = setting.varying
+# The points where coefficients are compared: each symbol's value there comes from its name (crc32,
+# the same on every run and machine), between 0.6 and 1.6, so that two different polynomials of the
+# problem's size do not meet at both.
+_GENERIC = (0, 1)
+_TINY = 1e-12
+
+
+def _close(a: tuple, b: tuple) -> bool:
+    return all(abs(x - y) <= 1e-9 * max(abs(x), abs(y), 1e-300) for x, y in zip(a, b, strict=True))
+
+
+def _split_by_state(by_form: dict, setting: Setting) -> dict:
+    """{form: (its part in the coordinates, velocities and given names; the rest of its factors;
+    its number times its coefficient; that part as written)} for :func:`_by_form`'s grouping."""
+    varying, split = setting.varying, {}
+    for form, (written, coefficient) in by_form.items():
+        times, bare = form.as_coeff_Mul()
+        factors = sympy.Mul.make_args(bare)
+        inside = sympy.Mul(*(f for f in factors if f.free_symbols & varying))
+        outside = [f for f in factors if not f.free_symbols & varying]
+        split[form] = (inside, outside, coefficient * times, state_part(written, setting))
+    return split
+
+
+def _by_state(split: dict) -> dict | None:
+    """{a term's part in the coordinates, velocities and given names (as :func:`_split_by_state`
+    splits them): (that part as the student wrote it, the rest of the terms that share it, summed,
+    at each generic point)}; None where a parameter's part is not a product of powers and sums."""
     grouped: dict = {}
-    for shape, coefficient in collected.items():
-        times, form = in_sines_and_cosines(shape).as_coeff_Mul()
-        inside = state_part(form, setting)
-        outside = sympy.Mul(*(f for f in sympy.Mul.make_args(form) if not f.free_symbols & varying))
-        written, before = grouped.get(inside, (state_part(shape, setting), 0))
-        grouped[inside] = (written, before + coefficient * times * outside)
+    for inside, outside, number, written in split.values():
+        values = []
+        for point in _GENERIC:
+            value = _parameters_at(outside, point)
+            if value is None:
+                return None
+            values.append(float(number) * value)
+        shown, before = grouped.get(inside, (written, (0.0,) * len(_GENERIC)))
+        grouped[inside] = (shown, tuple(b + v for b, v in zip(before, values, strict=True)))
     return grouped
+
+
+def _parameters_at(factors: list, point: int) -> float | None:
+    """The product of ``factors`` (powers of the problem's parameters, and sums of them) at a
+    generic ``point``, each symbol given a value by its name; None for anything else."""
+    total = 1.0
+    for factor in factors:
+        value = _parameter_value(factor, point)
+        if value is None:
+            return None
+        total *= value
+    return total
+
+
+def _parameter_value(expr, point: int) -> float | None:
+    if expr.is_Number:
+        return float(expr)
+    if expr.is_Symbol:
+        return 0.6 + zlib.crc32(f"{expr.name} {point}".encode()) / 2**32
+    if expr.is_Pow and expr.exp.is_Rational:
+        base = _parameter_value(expr.base, point)
+        return None if base is None or base <= 0 else base ** float(expr.exp)
+    if expr.is_Add or expr.is_Mul:
+        values = [_parameter_value(arg, point) for arg in expr.args]
+        if any(value is None for value in values):
+            return None
+        return sum(values) if expr.is_Add else math.prod(values)
+    return None
 
 
 def state_part(shape, setting: Setting):
