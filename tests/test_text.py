@@ -7,8 +7,10 @@ a statement turned round (negated, or said of the rival term) must never earn th
 from __future__ import annotations
 
 import pytest
+from course import BANK
 
 from grader import compare
+from grader.grade import grade_answer
 from grader.judge.text import MAX_TEXT_LENGTH, rubric_score
 
 CONSERVED = ("the momentum is conserved", 1.0, ("conserved",))
@@ -155,3 +157,65 @@ FEEDBACK = [
 def test_the_feedback_never_claims_a_negated_idea(text, score, feedback):
     verdict = compare("", text, kind="text", rubric=(SCLERONOMIC, RHEONOMIC))
     assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", score, (feedback,))
+
+
+PROPOSALS = [
+    # (problem.part, answer, points proposed): a tester's answers, and right ones said otherwise
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic constraints are time-dependent and rheonomic ones are time independent.", 0),  # was 2/2
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic: the constraint equations do not contain t explicitly. Rheonomic: they contain t explicitly.",
+     2),  # was 0/2
+    ("constraint-classification.scleronomic-definition",
+     "A rheonomic constraint depends explicitly on time, while a scleronomic one doesn't depend on time.", 2),
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints are inequalities, e.g. gas in a container; non-holonomic ones can be written as"
+     " f(r,t)=0, e.g. a pendulum.", 0),  # was 4/4
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints cannot be written as f(r, t) = 0 and non-holonomic ones are not inequalities.", 0),
+    ("constraint-classification.holonomic-definition",
+     "Non-holonomic: an inequality, or a non-integrable relation such as a disk rolling without slipping."
+     " Holonomic: an equation of the form f(q, t) = 0, as for a rigid body.", 4),  # right, named after: kept
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "A cyclic coordinate is one whose velocity does not appear in the Lagrangian; then its momentum is not"
+     " conserved.", 1),  # was 3/3; its one idea: it names the momentum
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "A coordinate q_k is cyclic if L does not depend on q_k (only on q̇_k); then its conjugate momentum"
+     " p_k = ∂L/∂q̇_k is conserved.", 3),
+    ("lagrangian-vs-newtonian.advantages",
+     "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
+     " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),
+    ("lagrangian-vs-newtonian.advantages",
+     "No: Newton's method is the better one, since it uses scalar energies and generalized coordinates, the"
+     " forces of constraint never appear in it, and its equations have the same form in any coordinates.", 0),
+    ("lagrangian-vs-newtonian.advantages",
+     "Yes. Unlike Newton's method, which needs vector forces, it uses the scalar energies T and V and any"
+     " generalized coordinates, the constraint forces are eliminated, and its equations have the same form in"
+     " every coordinate system.", 4),  # right, Newton named as a contrast: kept
+    ("plane-pendulum.why-harmonic",
+     "They are not harmonic: we cannot linearize, and the restoring force is not proportional to θ.", 0),
+    ("damped-oscillator.rayleigh-meaning",
+     "It is not quadratic in the velocities and does not describe friction proportional to the velocity; its"
+     " gradient is not the friction force, and 2F is not the rate of energy dissipation.", 0),
+    ("degrees-of-freedom.define-dof",
+     "It is not the number of independent coordinates, since they need not specify the configuration"
+     " completely; it is not 3N − k.", 0),
+    ("generalized-forces.hamiltonian",
+     "H = Σ p_j q̇_j − L. H is conserved when the constraints are scleronomic, and it equals T + V when L has"
+     " no explicit time dependence.", 1),  # the conditions swapped: only the definition
+    ("generalized-forces.hamiltonian",
+     "H = Σ p_j q̇_j − L. H is not equal to T + V even when the constraints are scleronomic, and it is not"
+     " conserved when L does not depend explicitly on time.", 1),
+    ("generalized-forces.hamiltonian",
+     "H = Σ p_j q̇_j − L. It is conserved if ∂L/∂t = 0; it is the total energy T + V if the constraints are"
+     " time independent and V does not depend on the velocities.", 3),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("where", "answer", "points"), PROPOSALS, ids=[f"{row[0]}-{row[2]}" for row in PROPOSALS])
+def test_the_bank_proposes_a_sensible_score(where, answer, points):
+    problem_id, part_id = where.split(".")
+    problem = BANK[problem_id]
+    part = problem.part(part_id)
+    verdict = grade_answer(problem, part, answer)
+    assert (verdict.status, round(verdict.score * part.points, 9)) == ("undecided", points)
