@@ -34,6 +34,7 @@ NEGATION = [
     ("a coordinate that does not appear in L has its momentum conserved", "conserved", FOUND),  # beyond reach
     ("it does not use scalar energies or generalized coordinates", "generalized coordinate", NEGATED),  # "or"
     ("it does not use vector forces but generalized coordinates", "generalized coordinate", FOUND),
+    ("it not only uses scalar energies but also generalized coordinates", "scalar", FOUND),  # affirms
     # the phrasing's own negation is its meaning; one before it, or in its gap, turns it round
     ("the constraint does not contain t explicitly", "not … explicitly", FOUND),
     ("the constraint doesn't explicitly contain t", "not ... explicitly", FOUND),

@@ -49,7 +49,8 @@ GAP = "..."  # "…" after NFKC: in a phrasing, any words of the same clause
 
 # apostrophes a keyboard or a word processor may give "doesn't"
 _APOSTROPHES = str.maketrans({"’": "'", "‘": "'", "ʼ": "'", "´": "'", "`": "'"})
-_NEGATION = re.compile(r"\b(?:not|no|never|none|nothing|neither|nor|without)\b")
+# "not only" affirms: "it not only uses scalar energies but also…"
+_NEGATION = re.compile(r"\b(?:not(?! only\b| just\b)|no|never|none|nothing|neither|nor|without)\b")
 # "doesn't" and "cannot" read as "does not" and "can not", so the phrasing "not be written" is
 # found in "can't be written", and one negation word serves them all
 _CONTRACTED = re.compile(r"n't\b|(?<=\bcan)not\b")
