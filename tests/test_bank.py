@@ -48,6 +48,13 @@ BROKEN_MESSAGES = [
      "line 22: answer 'c' is not one of the choices (a, b)"),
     ("text_without_rubric", "text_without_rubric", "explain",
      "line 18: a text part needs a 'rubric': the ideas an answer must contain, with points and phrasings"),
+    ("rubric_not_about_without_about", "rubric_not_about_without_about", "define",
+     "line 13: not_about needs 'about': the words naming what this idea's phrasings describe"),
+    ("rubric_term_about_and_not_about", "rubric_term_about_and_not_about", "define",
+     "line 14: 'constraint' is in both about and not_about: a term is the idea's own subject or a rival, not both"),
+    ("rubric_phrasing_gap_at_end", "rubric_phrasing_gap_at_end", "define",
+     "line 13: phrasing 'not explicitly …' has a … with no words on one side; … stands for words between two"
+     " others"),
     ("unreadable_reference", "unreadable_reference", "lagrangian",
      "The expected answer '1/2 m l^2 thetadot^2 + m g l cos(theta' cannot be read: Unbalanced bracket: the `(` at"
      " position 33 is never closed.\n…2 m l^2 thetadot^2 + m g l cos(theta\n                               ^"),

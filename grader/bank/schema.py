@@ -108,6 +108,8 @@ class RubricIdea:
     idea: str
     points: float
     phrasings: tuple[str, ...]
+    about: tuple[str, ...] = ()  # the words naming what the phrasings must be said of: [scleronomic]
+    not_about: tuple[str, ...] = ()  # rival terms they may be said of instead: [rheonomic]
 
 
 @dataclass(frozen=True)
@@ -420,16 +422,46 @@ def _mistakes(reader: _Reader, data: dict, location: tuple):
         )
 
 
+_RUBRIC_FIELDS = {"idea", "points", "phrasings", "about", "not_about"}
+_GAP = re.compile(r"…|\.\.\.")  # in a phrasing, any words of the same clause (grader.judge.text)
+
+
 def _rubric(reader: _Reader, data: dict, location: tuple):
-    for here, item in reader.entries(data, location, "rubric", {"idea", "points", "phrasings"}, "a rubric idea", []):
+    for here, item in reader.entries(data, location, "rubric", _RUBRIC_FIELDS, "a rubric idea", []):
         phrasings = reader.get(item, here, "phrasings", list, what="the words that show the idea")
         if not phrasings or not all(isinstance(p, str) and p.strip() for p in phrasings):
             reader.fail((*here, "phrasings"), "phrasings must be a non-empty list of words or phrases")
+        for index, phrasing in enumerate(phrasings):
+            if not all(piece.strip() for piece in _GAP.split(phrasing)):
+                reader.fail(
+                    (*here, "phrasings", index),
+                    f"phrasing {phrasing!r} has a … with no words on one side; … stands for words between two others",
+                )
+        about, not_about = (_terms(reader, item, here, key) for key in ("about", "not_about"))
+        if not_about and not about:
+            reader.fail(
+                (*here, "not_about"), "not_about needs 'about': the words naming what this idea's phrasings describe"
+            )
+        both = sorted({term.casefold() for term in about} & {term.casefold() for term in not_about})
+        if both:
+            reader.fail(
+                (*here, "not_about"),
+                f"{both[0]!r} is in both about and not_about: a term is the idea's own subject or a rival, not both",
+            )
         yield RubricIdea(
             idea=reader.get(item, here, "idea", str),
             points=float(reader.get(item, here, "points", (int, float), check=lambda p: p > 0, what="more than 0")),
             phrasings=tuple(phrasings),
+            about=about,
+            not_about=not_about,
         )
+
+
+def _terms(reader: _Reader, item: dict, here: tuple, key: str) -> tuple[str, ...]:
+    terms = reader.get(item, here, key, list, [])
+    if not all(isinstance(term, str) and term.strip() and not _GAP.search(term) for term in terms):
+        reader.fail((*here, key), f"{key} must be a list of words or phrases, as [scleronomic] or [rheonomic]")
+    return tuple(terms)
 
 
 def _tests(reader: _Reader, data: dict, location: tuple):

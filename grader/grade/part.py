@@ -67,7 +67,9 @@ def part_options(part: Part) -> dict:
     if part.kind == "choice":
         options["options"] = tuple(part.choices.items())  # labels with their words, which a student may write
     if part.kind == "text":
-        options["rubric"] = tuple((idea.idea, idea.points, idea.phrasings) for idea in part.rubric)
+        options["rubric"] = tuple(
+            (idea.idea, idea.points, idea.phrasings, idea.about, idea.not_about) for idea in part.rubric
+        )
     return options
 
 

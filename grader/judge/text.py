@@ -2,57 +2,280 @@
 
 Contents:
     check_text(expected, submitted, deadline)   the kind's checker
-    rubric_score(text, rubric)                  points proposed, ideas found and missed
+    RubricReading                               points proposed, ideas found, missed and discounted
+    rubric_score(text, rubric)                  what the rubric makes of a text
 
 Free text is never graded automatically: the verdict is always ``undecided`` (set
 aside for a person), carrying the rubric's proposal so the grader starts from it.
+
+How a phrasing is read: no grammar, only rules a person can check by eye, each in a sentence.
+A proposal errs towards too little, which the person reviewing raises, never towards full
+credit for a statement turned round.
+
+* It is found as a substring once case, spacing, apostrophes and contractions are made
+  uniform ("doesn't" is "does not", "cannot" is "can not"). ``…`` in a phrasing stands for
+  any words of one clause: ``not … explicitly`` is found in "does not contain t explicitly".
+* It does not count where it is negated: a negation (not, no, never, none, nothing, neither,
+  nor, without) among the six words before it in its clause or in its ``…``, or a negating
+  prefix on its first word (non-, un, in, im, ir: ``conserved`` in "non-conserved",
+  ``dependent`` in "independent"). A negation among the phrasing's own words is its meaning.
+* An idea with ``about`` terms counts only where it is said of one of them. It is said of the
+  nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
+  its clause; else the same in its sentence; else of the last term named before it; else, with
+  no term named yet, of the question's own subject. A term does not stand for itself when it
+  is denied ("H is not equal to T + V when …"), negated by a prefix ("non-holonomic" for
+  holonomic), inside a longer term, or set against the subject ("unlike Newton's method").
+
+Clauses end at . ; : , ! ? and at words that begin another (and, but, while, whereas, so,
+then, since, because, if, when, which, that …), but not at "or": "does not use energies or
+generalized coordinates" denies both. Sentences end at . ; ! ?. Inside brackets only a
+sentence's end counts, so ``f(r, t) = 0`` is one piece.
 """
 
 from __future__ import annotations
 
+import bisect
 import re
 import unicodedata
+from dataclasses import dataclass
 
 from grader.judge.deadline import Deadline
 from grader.judge.expected import Expected, Outcome
 
-__all__ = ["MAX_TEXT_LENGTH", "check_text", "rubric_score"]
+__all__ = ["MAX_TEXT_LENGTH", "RubricReading", "check_text", "rubric_score"]
 
 MAX_TEXT_LENGTH = 5000
+GAP = "..."  # "…" after NFKC: in a phrasing, any words of the same clause
+
+# apostrophes a keyboard or a word processor may give "doesn't"
+_APOSTROPHES = str.maketrans({"’": "'", "‘": "'", "ʼ": "'", "´": "'", "`": "'"})
+# "not only" affirms: "it not only uses scalar energies but also…"
+_NEGATION = re.compile(r"\b(?:not(?! only\b| just\b)|no|never|none|nothing|neither|nor|without)\b")
+# "doesn't" and "cannot" read as "does not" and "can not", so the phrasing "not be written" is
+# found in "can't be written", and one negation word serves them all
+_CONTRACTED = re.compile(r"n't\b|(?<=\bcan)not\b")
+# how many words before a phrasing a negation may stand and still be its own: "cannot in general
+# be written as f(r, t) = 0" is negated, "a coordinate that does not appear in L has its momentum
+# conserved" is not
+NEGATION_REACH = 6
+_REACH_CHARACTERS = 40 * NEGATION_REACH  # so that a long clause is not split again for each phrasing
+# a prefix glued to a word that turns it into its opposite: "non-holonomic", "unconserved",
+# "independent", "impossible", "irreversible"; "non holonomic" is written so too
+_NEGATING_PREFIX = re.compile(r"(?<![^\W\d_])(?:(?:non|un|in|im|ir)-?|non )$")
+# a term set against the subject is not the subject: "unlike Newton's method, it uses energies"
+_CONTRAST = re.compile(
+    r"\b(?:unlike|than|instead of|as opposed to|compared (?:with|to)|in contrast (?:with|to))(?: the| a| an)? $"
+)
+# an aside in brackets negates nothing outside it: "the momentum (p_k, not q̇_k) is conserved"
+_ASIDE = re.compile(r"\([^()]*\)|\[[^\[\]]*\]")
+_SENTENCE_END = re.compile(r"[;!?]|\.(?=\s|$)")
+# not "or": a negation reaches across it ("does not use energies or generalized coordinates")
+_CLAUSE_END = re.compile(
+    r"[,:]|\b(?:and|but|while|whereas|so|then|hence|thus|therefore|since|because|if|when|whenever|"
+    r"although|though|unlike|which|that|whose|where)\b"
+)
+# a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
+_ABBREVIATION = re.compile(r"(?:(?<![^\W\d_])(?:e\.g|i\.e|eg|ie|cf|vs|resp|approx)|\.)$")
 
 
 def _normal(text: str) -> str:
-    """Lower case, accents and extra spaces removed: how phrasings are matched."""
-    text = unicodedata.normalize("NFKC", text).casefold()
-    return re.sub(r"\s+", " ", text).strip()
+    """Case, compatibility forms (… as ...), apostrophes, contractions and spaces made uniform."""
+    text = unicodedata.normalize("NFKC", text).casefold().translate(_APOSTROPHES)
+    return re.sub(r"\s+", " ", _CONTRACTED.sub(" not", text)).strip()
 
 
-def rubric_score(text: str, rubric) -> tuple[float, list[str], list[str]]:
-    """(points proposed, ideas found, ideas missing) for ``text`` against ``rubric``.
+@dataclass(frozen=True)
+class RubricReading:
+    """What a rubric makes of one text.
 
-    ``rubric`` is a sequence of (idea, points, phrasings); an idea counts when any of
-    its phrasings occurs in the text.
+    Attributes:
+        points: the points proposed, those of the ideas found.
+        found: the ideas found, in the rubric's order.
+        missing: the ideas not found, in the rubric's order (``discounted`` among them).
+        discounted: the ideas whose phrasings the text holds, but only negated or said of
+            another term than the idea's: a person should read these first.
+    """
+
+    points: float
+    found: tuple[str, ...]
+    missing: tuple[str, ...]
+    discounted: tuple[str, ...] = ()
+
+
+class _Reading:
+    """A normalised text cut into clauses and sentences, with the boundaries' spans sorted."""
+
+    def __init__(self, text: str):
+        self.text = text
+        self.clauses, self.sentences = _boundaries(text)
+        self.clause_ends = [start for start, _ in self.clauses]
+        self.sentence_ends = [start for start, _ in self.sentences]
+
+    def clause(self, start: int, end: int) -> tuple[int, int]:
+        return _around(self.clauses, self.clause_ends, start, end, len(self.text))
+
+    def sentence(self, start: int, end: int) -> tuple[int, int]:
+        return _around(self.sentences, self.sentence_ends, start, end, len(self.text))
+
+
+def _boundaries(text: str) -> tuple[list[tuple[int, int]], list[tuple[int, int]]]:
+    """The spans that end clauses, and those that end sentences (which end clauses too)."""
+    sentences = [
+        match.span()
+        for match in _SENTENCE_END.finditer(text)
+        if not (match.group() == "." and _ABBREVIATION.search(text, max(0, match.start() - 8), match.start()))
+    ]
+    # a comma or an "and" inside brackets belongs to a formula or an aside: f(r, t), (a, b);
+    # a sentence's end closes any bracket left open, so one stray "(" cannot join the whole text
+    depth, inside, sentence_at = 0, [], {start for start, _ in sentences}
+    for index, char in enumerate(text):
+        if index in sentence_at:
+            depth = 0
+        elif char in "([{":
+            depth += 1
+        elif char in ")]}" and depth:
+            depth -= 1
+        inside.append(depth > 0)
+    clauses = [match.span() for match in _CLAUSE_END.finditer(text) if not inside[match.start()]]
+    return sorted(set(clauses) | set(sentences)), sentences
+
+
+def _around(spans, starts, start: int, end: int, length: int) -> tuple[int, int]:
+    """The stretch between the last boundary that ends by ``start`` and the first that starts from ``end``."""
+    after = bisect.bisect_left(starts, end)
+    high = spans[after][0] if after < len(spans) else length
+    low = 0
+    for index in range(min(after, len(spans)) - 1, -1, -1):  # boundaries inside the phrasing are its own
+        if spans[index][1] <= start:
+            low = spans[index][1]
+            break
+    return low, high
+
+
+def _occurrences(reading: _Reading, phrasing: str):
+    """Each place a phrasing is found: (start, end, negated). A phrasing with gaps is found piece by
+    piece, in order, within the clause of its first piece."""
+    pieces = [piece.strip() for piece in phrasing.split(GAP)]
+    text, first = reading.text, pieces[0]
+    start = text.find(first)
+    while start >= 0:
+        end = start + len(first)
+        low, high = reading.clause(start, end)
+        negated = _negated_before(text, low, start, first)
+        for piece in pieces[1:]:
+            found = text.find(piece, end, high)
+            if found < 0:
+                break
+            negated = negated or bool(_NEGATION.search(text, end, found))
+            end = found + len(piece)
+        else:
+            yield start, end, negated
+        start = text.find(first, start + 1)
+
+
+def _negated_before(text: str, low: int, start: int, phrasing: str) -> bool:
+    """Whether a negation among the words just before ``start`` in its clause, or a negating prefix
+    glued to the phrasing, turns it into its opposite."""
+    if phrasing[:1].isalpha() and _NEGATING_PREFIX.search(text, max(0, start - 4), start):
+        return True
+    before = _ASIDE.sub(" ", text[max(low, start - _REACH_CHARACTERS) : start])
+    return bool(_NEGATION.search(" ".join(before.split()[-NEGATION_REACH:])))
+
+
+def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int, bool]], list[int]]:
+    """Where the idea's terms are named as what is spoken of: (start, end, whether it is the idea's
+    own), in order, and their starts. A term inside a longer one is not named there ("holonomic" in "non-holonomic");
+    a term with a negating prefix glued to it names something else; a term set against another
+    ("unlike Newton's") is not what is spoken of."""
+    text, found = reading.text, []
+    for terms, own in ((about, True), (not_about, False)):
+        for term in {_normal(term) for term in terms}:
+            start = text.find(term)
+            while start >= 0:
+                negated = term[:1].isalpha() and bool(_NEGATING_PREFIX.search(text, max(0, start - 4), start))
+                found.append((start, start + len(term), own and not negated))
+                start = text.find(term, start + 1)
+    found.sort(key=lambda mention: (mention[0], -mention[1]))
+    kept, reach = [], -1
+    for mention in found:
+        if mention[1] <= reach:
+            continue  # inside a longer term, which is what is named there
+        reach = max(reach, mention[1])
+        if not _CONTRAST.search(text, max(0, mention[0] - 24), mention[0]):
+            kept.append(mention)
+    return kept, [mention[0] for mention in kept]
+
+
+def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int) -> bool:
+    """Whether the term the phrasing at ``start:end`` is said of is the idea's own."""
+    for low, high in (reading.clause(start, end), reading.sentence(start, end)):
+        first, last = bisect.bisect_left(starts, low), bisect.bisect_left(starts, end)
+        if last > first:  # named before it (or in it)
+            return _own_subject(reading, mentions[last - 1], start)
+        if last < len(mentions) and starts[last] < high:  # named after it
+            return mentions[last][2]
+    earlier = bisect.bisect_left(starts, start)
+    return _own_subject(reading, mentions[earlier - 1], start) if earlier else True  # else the question's own
+
+
+def _own_subject(reading: _Reading, mention, start: int) -> bool:
+    """Whether a term named before a phrasing is the idea's own and not denied: in "H is not
+    equal to T + V when the constraints are scleronomic", scleronomic is said of a denied T + V."""
+    if not mention[2] or mention[0] >= start:  # a term inside the phrasing is its own words
+        return mention[2]
+    low, _ = reading.clause(mention[0], mention[1])
+    return not _negated_before(reading.text, low, mention[0], "")
+
+
+def rubric_score(text: str, rubric) -> RubricReading:
+    """What ``rubric`` makes of ``text``: the points proposed, the ideas found and missed.
+
+    ``rubric`` is a sequence of (idea, points, phrasings) or (idea, points, phrasings, about,
+    not_about); an idea counts when one of its phrasings is found in the text, not negated,
+    and (with ``about``) said of one of the ``about`` terms rather than of a ``not_about`` one.
 
     >>> rubric = [("small angle", 1.0, ("sin θ ≈ θ",)), ("proportional", 1.0, ("proportional",))]
     >>> rubric_score("For small angles sin θ ≈ θ", rubric)
-    (1.0, ['small angle'], ['proportional'])
+    RubricReading(points=1.0, found=('small angle',), missing=('proportional',), discounted=())
+    >>> rubric_score("sin θ ≈ θ, but the force is not proportional to θ", rubric).discounted
+    ('proportional',)
+    >>> scleronomic = [("fixed in time", 1.0, ("time independent",), ("scleronom",), ("rheonom",))]
+    >>> rubric_score("Scleronomic ones are time independent", scleronomic).points
+    1.0
+    >>> rubric_score("Scleronomic ones depend on t and rheonomic ones are time independent", scleronomic).points
+    0.0
     """
-    normal = _normal(text[:MAX_TEXT_LENGTH])
-    found, missing, points = [], [], 0.0
-    for idea, worth, phrasings in rubric:
-        if any(_normal(phrase) in normal for phrase in phrasings):
+    reading = _Reading(_normal(text[:MAX_TEXT_LENGTH]))
+    found, missing, discounted, points = [], [], [], 0.0
+    for idea, worth, phrasings, *binding in rubric:
+        about, not_about = (*binding, (), ())[:2]  # a rubric of (idea, points, phrasings) binds nothing
+        mentions, starts = _mentions(reading, about, not_about) if about else ([], [])
+        seen = counted = False
+        for phrasing in phrasings:
+            for start, end, negated in _occurrences(reading, _normal(phrasing)):
+                seen = True
+                if not negated and (not about or _said_of_own(reading, mentions, starts, start, end)):
+                    counted = True
+                    break
+            if counted:
+                break
+        if counted:
             found.append(idea)
             points += worth
         else:
             missing.append(idea)
-    return points, found, missing
+            if seen:
+                discounted.append(idea)
+    return RubricReading(points, tuple(found), tuple(missing), tuple(discounted))
 
 
 def check_text(expected: Expected, submitted: str, deadline: Deadline) -> Outcome:
     rubric = expected.option("rubric") or ()
-    total = sum(worth for _, worth, _ in rubric) or 1.0
-    points, found, _ = rubric_score(submitted if isinstance(submitted, str) else "", rubric)
-    return Outcome(
-        "undecided", points / total, "text_review",
-        {"found": len(found), "total": len(rubric)}, method="rubric",
-    )  # fmt: skip
+    total = sum(idea[1] for idea in rubric) or 1.0
+    reading = rubric_score(submitted if isinstance(submitted, str) else "", rubric)
+    details = {"found": len(reading.found), "total": len(rubric)}
+    if reading.discounted:
+        key, details = "text_review_discounted", {**details, "discounted": len(reading.discounted)}
+    else:
+        key = "text_review"
+    return Outcome("undecided", reading.points / total, key, details, method="rubric")

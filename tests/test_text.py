@@ -1,0 +1,222 @@
+"""The ``text`` kind's rubric: what it proposes, and what it must not be fooled into proposing.
+
+A proposal is what a person starts from and, until one scores the answer, what the LMS gets:
+a statement turned round (negated, or said of the rival term) must never earn the idea.
+"""
+
+from __future__ import annotations
+
+import pytest
+from course import BANK
+
+from grader import compare
+from grader.grade import grade_answer
+from grader.judge.text import MAX_TEXT_LENGTH, rubric_score
+
+CONSERVED = ("the momentum is conserved", 1.0, ("conserved",))
+
+FOUND, NEGATED, ABSENT = (True, False), (False, True), (False, False)  # (found, discounted)
+NEGATION = [
+    # (text, phrasing, what becomes of the idea)
+    ("its momentum is conserved", "conserved", FOUND),
+    ("its momentum is not conserved", "conserved", NEGATED),
+    ("its momentum is never conserved", "conserved", NEGATED),
+    ("its momentum isn’t conserved", "conserved", NEGATED),  # a word processor's apostrophe
+    ("there is no conserved momentum", "conserved", NEGATED),
+    ("the momentum is non-conserved", "conserved", NEGATED),  # a negating prefix, hyphened or not
+    ("the momentum is unconserved", "conserved", NEGATED),
+    ("the constraint is time-independent", "dependent", NEGATED),
+    ("it cannot in general be written as f(r, t) = 0", "f(r", NEGATED),  # six words before still reach
+    ("they can't be written as f(r, t) = 0", "f(r", NEGATED),
+    ("q does not appear in L, so its momentum is conserved", "conserved", FOUND),  # another clause
+    ("q does not appear in L and its momentum is conserved", "conserved", FOUND),
+    ("No. Its momentum is conserved.", "conserved", FOUND),  # another sentence
+    ("a coordinate that does not appear in L has its momentum conserved", "conserved", FOUND),  # beyond reach
+    ("it does not use scalar energies or generalized coordinates", "generalized coordinate", NEGATED),  # "or"
+    ("it does not use vector forces but generalized coordinates", "generalized coordinate", FOUND),
+    ("it not only uses scalar energies but also generalized coordinates", "scalar", FOUND),  # affirms
+    # the phrasing's own negation is its meaning; one before it, or in its gap, turns it round
+    ("the constraint does not contain t explicitly", "not … explicitly", FOUND),
+    ("the constraint doesn't explicitly contain t", "not ... explicitly", FOUND),
+    ("the constraint contains t explicitly", "not … explicitly", ABSENT),
+    ("it contains t explicitly", "contain … explicitly", FOUND),
+    ("it does not contain t explicitly", "contain … explicitly", NEGATED),
+    ("it contains no t explicitly", "contain … explicitly", NEGATED),
+    ("it contains the coordinates, and t explicitly", "contain … explicitly", ABSENT),  # a gap stays in its clause
+    ("the momentum does not change", "does not change", FOUND),
+    ("the momentum doesn't change", "does not change", FOUND),
+    # brackets hold formulas and asides, whose commas end nothing
+    ("the momentum (p_k, not q̇_k) is conserved", "conserved", FOUND),
+    ("it is not (in general, for any system) conserved", "conserved", NEGATED),
+    ("e.g. not a pendulum, but conserved", "conserved", FOUND),
+]
+
+
+@pytest.mark.parametrize(("text", "phrasing", "outcome"), NEGATION)
+def test_a_negated_phrasing_earns_nothing(text, phrasing, outcome):
+    reading = rubric_score(text, [(*CONSERVED[:2], (phrasing,))])
+    assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
+# the two ideas of "define scleronomic and rheonomic", each tied to the term it describes
+SCLERONOMIC = ("scleronomic: no explicit t", 1.0, ("time independent", "time-independent", "not … explicitly"),
+               ("scleronom",), ("rheonom",))  # fmt: skip
+RHEONOMIC = ("rheonomic: explicit t", 1.0, ("time dependent", "time-dependent", "contain … explicitly"),
+             ("rheonom",), ("scleronom",))  # fmt: skip
+BOTH, NEITHER = (SCLERONOMIC[0], RHEONOMIC[0]), ()
+FIRST, SECOND = (SCLERONOMIC[0],), (RHEONOMIC[0],)
+
+SUBJECTS = [
+    # (text, the ideas found)
+    ("Scleronomic constraints are time independent and rheonomic ones are time dependent.", BOTH),
+    ("Scleronomic constraints are time-dependent and rheonomic ones are time independent.", NEITHER),  # swapped
+    ("Scleronomic constraints are time-dependent; rheonomic ones are time-independent.", NEITHER),
+    ("Time-independent constraints are scleronomic; time-dependent ones are rheonomic.", BOTH),  # named after
+    ("Time-independent constraints are called rheonomic and time-dependent ones scleronomic.", NEITHER),
+    ("Scleronomic: the equations do not contain t explicitly. Rheonomic: they contain t explicitly.", BOTH),
+    ("Scleronomic constraints, e.g. x² + y² = l², are time independent.", FIRST),
+    ("A scleronomic constraint is a fixed wire. It is time independent.", FIRST),  # the last term named
+    ("A rheonomic constraint is a moving wire. It is time independent.", NEITHER),
+    ("One kind is time independent, the other time dependent.", BOTH),  # no term: the question's own
+    ("Unlike rheonomic constraints, scleronomic ones are time independent.", FIRST),
+    ("Scleronomic constraints, unlike rheonomic ones, are time independent.", FIRST),  # set against: not named
+    ("A constraint that is not scleronomic is time independent.", NEITHER),  # a denied term
+    ("Rheonomic constraints are time dependent, while scleronomic ones are not.", SECOND),
+]
+
+
+@pytest.mark.parametrize(("text", "found"), SUBJECTS)
+def test_a_phrasing_counts_only_said_of_its_own_term(text, found):
+    assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
+
+
+HOLONOMIC = ("holonomic: f(r, t) = 0", 1.0, ("f(r",), ("holonomic",), ("non-holonomic",))
+NON_HOLONOMIC = ("non-holonomic: inequalities", 1.0, ("inequalit",), ("non-holonomic",), ("holonomic",))
+
+TERMS_INSIDE_TERMS = [
+    ("Holonomic constraints are f(r, t) = 0; non-holonomic ones are inequalities.", ("holonomic: f(r, t) = 0",
+                                                                                  "non-holonomic: inequalities")),
+    ("Holonomic constraints are inequalities; non-holonomic ones are f(r, t) = 0.", ()),
+    # "holonomic" inside "nonholonomic", which the rubric does not list, is not holonomic
+    ("Nonholonomic constraints can be written as f(r, t) = 0.", ()),
+    ("Non holonomic constraints can be written as f(r, t) = 0.", ()),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("text", "found"), TERMS_INSIDE_TERMS)
+def test_a_term_inside_a_longer_or_negated_one_is_not_named(text, found):
+    assert rubric_score(text, [HOLONOMIC, NON_HOLONOMIC]).found == found
+
+
+def test_an_unbound_rubric_reads_as_before():
+    # a rubric of (idea, points, phrasings), with no terms, is found anywhere it is not negated
+    rubric = [("small angle", 1.0, ("sin θ ≈ θ",)), ("proportional", 1.0, ("proportional to",))]
+    assert rubric_score("Rheonomic? For small angles sin θ ≈ θ, proportional to θ", rubric).points == 2.0
+
+
+HOSTILE = [
+    # (text): long or strange texts get a proposal, quickly, and never raise
+    "not " * 2000,
+    "(" * 6000,
+    ")" * 6000,
+    ", and " * 1000,
+    "a. " * 2000,
+    "..." * 2000,
+    "…" * 6000,
+    "scleronomic rheonomic not time independent " * 200,
+    "n't" * 3000,
+    "\u0000\u202e time independent",
+]
+
+
+@pytest.mark.parametrize("text", HOSTILE, ids=[f"hostile-{index}" for index in range(len(HOSTILE))])
+def test_a_hostile_text_gets_a_proposal(text):
+    reading = rubric_score(text, [SCLERONOMIC, RHEONOMIC])
+    assert 0 <= reading.points <= 2 and len(reading.found) + len(reading.missing) == 2
+
+
+def test_a_text_is_read_up_to_its_limit():
+    padding = " " * MAX_TEXT_LENGTH
+    assert rubric_score("conserved" + padding, [CONSERVED]).found
+    assert not rubric_score(padding + "conserved", [CONSERVED]).found
+
+
+FEEDBACK = [
+    # (text, the proposal, what the student reads)
+    ("Scleronomic constraints are time independent.", 0.5,
+     "A person will read this answer; the rubric found 1 of its 2 ideas."),
+    ("Scleronomic constraints are time-dependent and rheonomic ones are time independent.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
+     " answer negates or says of something else."),
+    ("Scleronomic ones are time independent, rheonomic ones are not time dependent.", 0.5,
+     "A person will read this answer; the rubric found 1 of its 2 ideas. It did not count 1 more that your"
+     " answer negates or says of something else."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("text", "score", "feedback"), FEEDBACK)
+def test_the_feedback_never_claims_a_negated_idea(text, score, feedback):
+    verdict = compare("", text, kind="text", rubric=(SCLERONOMIC, RHEONOMIC))
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", score, (feedback,))
+
+
+PROPOSALS = [
+    # (problem.part, answer, points proposed): a tester's answers, and right ones said otherwise
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic constraints are time-dependent and rheonomic ones are time independent.", 0),  # was 2/2
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic: the constraint equations do not contain t explicitly. Rheonomic: they contain t explicitly.",
+     2),  # was 0/2
+    ("constraint-classification.scleronomic-definition",
+     "A rheonomic constraint depends explicitly on time, while a scleronomic one doesn't depend on time.", 2),
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints are inequalities, e.g. gas in a container; non-holonomic ones can be written as"
+     " f(r,t)=0, e.g. a pendulum.", 0),  # was 4/4
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints cannot be written as f(r, t) = 0 and non-holonomic ones are not inequalities.", 0),
+    ("constraint-classification.holonomic-definition",
+     "Non-holonomic: an inequality, or a non-integrable relation such as a disk rolling without slipping."
+     " Holonomic: an equation of the form f(q, t) = 0, as for a rigid body.", 4),  # right, named after: kept
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "A cyclic coordinate is one whose velocity does not appear in the Lagrangian; then its momentum is not"
+     " conserved.", 1),  # was 3/3; its one idea: it names the momentum
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "A coordinate q_k is cyclic if L does not depend on q_k (only on q̇_k); then its conjugate momentum"
+     " p_k = ∂L/∂q̇_k is conserved.", 3),
+    ("lagrangian-vs-newtonian.advantages",
+     "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
+     " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),
+    ("lagrangian-vs-newtonian.advantages",
+     "No: Newton's method is the better one, since it uses scalar energies and generalized coordinates, the"
+     " forces of constraint never appear in it, and its equations have the same form in any coordinates.", 0),
+    ("lagrangian-vs-newtonian.advantages",
+     "Yes. Unlike Newton's method, which needs vector forces, it uses the scalar energies T and V and any"
+     " generalized coordinates, the constraint forces are eliminated, and its equations have the same form in"
+     " every coordinate system.", 4),  # right, Newton named as a contrast: kept
+    ("plane-pendulum.why-harmonic",
+     "They are not harmonic: we cannot linearize, and the restoring force is not proportional to θ.", 0),
+    ("damped-oscillator.rayleigh-meaning",
+     "It is not quadratic in the velocities and does not describe friction proportional to the velocity; its"
+     " gradient is not the friction force, and 2F is not the rate of energy dissipation.", 0),
+    ("degrees-of-freedom.define-dof",
+     "It is not the number of independent coordinates, since they need not specify the configuration"
+     " completely; it is not 3N − k.", 0),
+    ("generalized-forces.hamiltonian",
+     "H = Σ p_j q̇_j − L. H is conserved when the constraints are scleronomic, and it equals T + V when L has"
+     " no explicit time dependence.", 1),  # the conditions swapped: only the definition
+    ("generalized-forces.hamiltonian",
+     "H = Σ p_j q̇_j − L. H is not equal to T + V even when the constraints are scleronomic, and it is not"
+     " conserved when L does not depend explicitly on time.", 1),
+    ("generalized-forces.hamiltonian",
+     "H = Σ p_j q̇_j − L. It is conserved if ∂L/∂t = 0; it is the total energy T + V if the constraints are"
+     " time independent and V does not depend on the velocities.", 3),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("where", "answer", "points"), PROPOSALS, ids=[f"{row[0]}-{row[2]}" for row in PROPOSALS])
+def test_the_bank_proposes_a_sensible_score(where, answer, points):
+    problem_id, part_id = where.split(".")
+    problem = BANK[problem_id]
+    part = problem.part(part_id)
+    verdict = grade_answer(problem, part, answer)
+    assert (verdict.status, round(verdict.score * part.points, 9)) == ("undecided", points)
