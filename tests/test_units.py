@@ -125,7 +125,6 @@ def test_a_wrong_answer_in_the_wrong_units_is_told_so_first(expected, submitted,
     ("expected", "submitted", "kind"),
     [
         (L_PENDULUM, "1/2 m l^2 θ̇^2 - m g l cos θ", "lagrangian"),  # T + V: the units are right
-        (L_PENDULUM, "1/2 l^2 θ̇^2 + g l cos θ", "lagrangian"),  # per unit mass: partial credit, said as such
         ("sqrt(g/l)", "0", "expression"),  # zero has any units
         ("thetaddot = -(g/l) theta", "θ̈ = -(g/l) sin θ", "equation"),
         ("sqrt(g/l)", "sqrt(g/l)", "expression"),
@@ -459,3 +458,35 @@ def test_a_lagrangian_may_be_followed_by_its_unit(submitted, unit):
     # a unit after a sum is its last term's as read: the end of the text is read as the unit
     verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.", LEFT_OUT.format(unit))), verdict
+
+
+NORMALIZATION = (
+    "Your Lagrangian gives the right equations of motion, but it is a constant multiple of T − V; the"
+    " convention L = T − V fixes the normalization."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        # (T − V)/l: the dynamics, and a constant multiple's credit; but no energy, and it is said
+        ("½ m l θ̇² + m g cos θ",
+         ("Your answer is measured in kg·m/s², but the quantity asked for is measured in kg·m²/s²: check the"
+          " dimensions of each factor.", NORMALIZATION)),
+        # (T − V)/m and (T − V)/(m l²), per unit of mass or of inertia: so written on purpose, but still
+        # no energy (before, only the normalization was said)
+        ("1/2 l^2 θ̇^2 + g l cos θ",
+         ("Your answer is measured in m²/s², but the quantity asked for is measured in kg·m²/s²: check the"
+          " dimensions of each factor.", NORMALIZATION)),
+        ("½ θ̇² + (g/l) cos θ",
+         ("Your answer is measured in 1/s², but the quantity asked for is measured in kg·m²/s²: check the"
+          " dimensions of each factor.", NORMALIZATION)),
+        # a number's multiple is an energy: the normalization alone
+        ("m l^2 θ̇^2 + 2 m g l cos θ",
+         ("Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention"
+          " L = T − V fixes the normalization.",)),
+    ],
+)  # fmt: skip
+def test_a_lagrangians_multiple_that_is_no_energy_says_so_and_keeps_its_credit(submitted, feedback):
+    verdict = compare("1/2 m l^2 thetadot^2 + m g l cos(theta)", submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.5, feedback), verdict

@@ -513,7 +513,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
             for note in read_notes:
                 if note:
                     outcome = replace(outcome, notes=(*outcome.notes, note))
-            if spec.parsed and outcome.status == "not_equivalent" and outcome.score == 0:
+            # ½ m l θ̇² + m g cos θ, (T − V)/l: the dynamics, and a constant multiple's credit; but no energy
+            scaled = outcome.key == "normalization_scaled"
+            if spec.parsed and outcome.status == "not_equivalent" and (outcome.score == 0 or scaled):
                 outcome = _with_units(outcome, spec, expected, answer)
             if used and spec.name == "expression" and _names_terms(outcome):
                 outcome = _terms_in_given_names(outcome, spec, expected, answer, given, deadline)
