@@ -187,3 +187,20 @@ def test_the_page_runs_without_errors(server, browser):
     problems = [entry for entry in browser.get_log("browser") if entry["level"] == "SEVERE"]
     problems = [entry for entry in problems if "favicon.ico" not in entry["message"]]
     assert problems == []
+
+
+MOTION = "plane-pendulum.motion"
+
+
+def test_equations_from_the_students_own_lagrangian_on_the_page_earn_the_method_credit(server, browser):
+    # the page sends the Lagrangian typed above along with the equations: as the class grade does
+    browser.get(server.url)
+    _type(browser, "1/2 m l^2 thetadot^2 + m g l sin(theta)")  # sin for cos
+    _type(browser, "m l^2 thetaddot - m g l cos(theta) = 0", MOTION)  # what that Lagrangian implies
+    result = _check(browser, "not_equivalent", MOTION)
+    assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "✘\nnot right (partial credit: 50%)"
+    hints = [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")]
+    assert hints == ["Your equations follow correctly from your own Lagrangian, which is not right: method credit."]
+    _type(browser, "", KEY)  # no Lagrangian typed: the equations alone, wrong
+    result = _check(browser, "not_equivalent", MOTION)
+    assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "✘\nnot right"

@@ -401,14 +401,56 @@ def test_an_exception_is_500_and_the_server_keeps_running(server, monkeypatch, c
 
 
 def test_a_check_ended_for_overrunning_is_undecided_and_says_why(server, monkeypatch):
-    monkeypatch.setattr(server.checks, "check", lambda key, answer: None)  # what CheckPool says of one it ended
+    monkeypatch.setattr(
+        server.checks, "check", lambda key, answer, answers: None
+    )  # what CheckPool says of one it ended
     status, record = _post(server, "/api/check", {"part": LAGRANGIAN, "answer": "m l^2 θ̇^2"})
     assert (status, record["status"], record["symbol"]) == (200, "undecided", "?")
     assert record["hints"] == [OVERRUN]
 
 
+WRONG_L = "1/2 m l^2 θ̇^2 + m g l sin θ"  # sin for cos (not T + V: read back, its equation holds the reference's)
+FROM_WRONG_L = "m l^2 θ̈ - m g l cos θ = 0"  # what it implies
+
+
+def test_equations_from_the_students_own_lagrangian_earn_the_method_credit(server):
+    # the page sends the Lagrangian part's answer along with a derived part's: as grading the class does
+    sent = {"part": "plane-pendulum.motion", "answer": FROM_WRONG_L, "lagrangian": WRONG_L}
+    status, record = _post(server, "/api/check", sent)
+    assert (status, record["status"], record["score"]) == (200, "not_equivalent", 0.5), record
+    assert record["hints"] == [
+        "Your equations follow correctly from your own Lagrangian, which is not right: method credit."
+    ]
+    # without it, or with the right Lagrangian, the equations are judged alone
+    for lagrangian in ("", "1/2 m l^2 θ̇^2 + m g l cos θ"):
+        status, record = _post(server, "/api/check", {**sent, "lagrangian": lagrangian})
+        assert (status, record["score"]) == (200, 0.0), record
+
+
+def test_the_page_sends_a_derived_parts_lagrangian():
+    page = render_page(problem_views(BANK, REVIEW), title="t")
+    assert (
+        '<article class="part" data-part="plane-pendulum.motion" data-kind="equation"'
+        ' data-derived-from="plane-pendulum.lagrangian"'
+    ) in page
+    assert 'data-part="plane-pendulum.lagrangian" data-kind="lagrangian" data-derived-from=""' in page
+    assert "payload.lagrangian = source.value" in page
+
+
+@pytest.mark.parametrize(
+    ("lagrangian", "status", "error"),
+    [
+        (3, 400, '"lagrangian" must be a string'),
+        ("x" * 5001, 413, "the Lagrangian is 5001 characters long; at most 5000 are read"),
+    ],
+)
+def test_a_lagrangian_sent_along_is_checked_like_an_answer(server, lagrangian, status, error):
+    sent = {"part": "plane-pendulum.motion", "answer": FROM_WRONG_L, "lagrangian": lagrangian}
+    assert _post(server, "/api/check", sent) == (status, {"error": error})
+
+
 def test_every_worker_busy_is_503(server, monkeypatch):
-    def busy(key, answer):
+    def busy(key, answer, answers):
         raise PoolBusy
 
     monkeypatch.setattr(server.checks, "check", busy)

@@ -291,10 +291,12 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
 
     def _check(self) -> None:
         request = self._request()
-        self._part(request)
+        problem, part = self._part(request)
         key, answer = request["part"], request["answer"]
+        # the student's own Lagrangian, for the method credit of equations that follow from it
+        answers = {f"{problem.id}.{part.derive_from}": request["lagrangian"]} if part.derive_from else {}
         try:  # in a worker process, ended if it overruns (see grader.serve.workers)
-            result = self.server.checks.check(key, answer)
+            result = self.server.checks.check(key, answer, answers)
         except PoolBusy:
             raise _Refused(HTTPStatus.SERVICE_UNAVAILABLE, "the server is busy; check again in a moment") from None
         if result is None:
@@ -325,7 +327,8 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
     # -- reading requests ------------------------------------------------------------------
 
     def _request(self) -> dict:
-        """The JSON body as ``{"part", "answer", "student"}``, or a _Refused saying what is wrong."""
+        """The JSON body as ``{"part", "answer", "student", "lagrangian"}``, or a _Refused saying what is
+        wrong. ``lagrangian`` is the student's answer to the part a derived part follows from ("" if none)."""
         if self.headers.get("Transfer-Encoding"):
             self.close_connection = True
             raise _Refused(HTTPStatus.LENGTH_REQUIRED, "send the body with a Content-Length")
@@ -364,7 +367,15 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
         if student is not None and not isinstance(student, str):
             raise _Refused(HTTPStatus.BAD_REQUEST, '"student" must be a string')
         student = (student or "").strip()[: LIMITS.student] or None
-        return {"part": data["part"].strip(), "answer": data["answer"], "student": student}
+        lagrangian = data.get("lagrangian", "")
+        if not isinstance(lagrangian, str):
+            raise _Refused(HTTPStatus.BAD_REQUEST, '"lagrangian" must be a string')
+        if len(lagrangian) > LIMITS.answer:
+            raise _Refused(
+                HTTPStatus.REQUEST_ENTITY_TOO_LARGE,
+                f"the Lagrangian is {len(lagrangian)} characters long; at most {LIMITS.answer} are read",
+            )
+        return {"part": data["part"].strip(), "answer": data["answer"], "student": student, "lagrangian": lagrangian}
 
     def _discard(self, length: int) -> None:
         # Closing a socket with unread bytes in it resets the connection, and the client then

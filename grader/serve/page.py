@@ -57,6 +57,7 @@ class PartView:
     choices: tuple[tuple[str, tuple[Segment, ...]], ...]  # (label, text)
     multiple: bool
     placeholder: str
+    derived_from: str = ""  # problem.part of the Lagrangian these equations follow from; its answer is sent along
 
     @property
     def math(self) -> bool:
@@ -83,6 +84,7 @@ def _part_view(problem: Problem, part: Part) -> PartView:
         choices=tuple((str(label), inline(text)) for label, text in part.choices.items()),
         multiple=bool(part.options.get("multiple", False)),
         placeholder=_PLACEHOLDERS.get(part.kind, ""),
+        derived_from=f"{problem.id}.{part.derive_from}" if part.derive_from else "",
     )
 
 

@@ -1,7 +1,7 @@
 """Checks in worker processes, so that no answer can hold the server past its time limit.
 
 Contents:
-    CheckPool(bank, timeout=, workers=)   ``check(key, answer)`` from any handler thread
+    CheckPool(bank, timeout=, workers=)   ``check(key, answer, answers)`` from any handler thread
     OVERRUN                               what a check that had to be ended says to the student
 
 Why processes: a handler thread's time limit is cooperative, because the signal that
@@ -58,7 +58,7 @@ def _serve(
     connection: Connection, bank: Mapping[str, Problem], timeout: float, run: Callable, keys: tuple[str, ...]
 ) -> None:
     """A worker: prepares the parts ``keys`` names, says it is ready, then checks each
-    (key, answer) it receives until its pipe closes."""
+    (key, answer, the student's other answers) it receives until its pipe closes."""
     limit_memory()
     for key in keys:
         problem, part = find_part(key, bank)
@@ -68,11 +68,11 @@ def _serve(
     connection.send(_READY)
     while True:
         try:
-            key, answer = connection.recv()
+            key, answer, answers = connection.recv()
         except (EOFError, OSError):
             return
         try:
-            outcome = run(key, answer, bank=bank, timeout=timeout)
+            outcome = run(key, answer, bank=bank, timeout=timeout, answers=answers)
         except Exception as error:  # the handler answers 500 and logs it; this worker goes on
             outcome = RuntimeError(f"in a check worker: {type(error).__name__}: {error}")
         connection.send(outcome)
@@ -152,8 +152,9 @@ class CheckPool:
             self._all.discard(worker)
         worker.stop()
 
-    def check(self, key: str, answer: str) -> CheckResult | None:
-        """The result of checking ``answer`` to ``key``; None when the check overran and was ended.
+    def check(self, key: str, answer: str, answers: dict | None = None) -> CheckResult | None:
+        """The result of checking ``answer`` to ``key`` (with the student's ``answers`` to other parts,
+        ``problem.part`` → answer, for method credit); None when the check overran and was ended.
 
         Raises:
             PoolBusy: no worker came free within WAIT seconds.
@@ -165,7 +166,7 @@ class CheckPool:
             raise PoolBusy from None
         outcome, alive = None, False
         try:
-            worker.connection.send((key, answer))
+            worker.connection.send((key, answer, answers or {}))
             if worker.connection.poll(self.timeout + GRACE):
                 outcome, alive = worker.connection.recv(), True
         except (EOFError, OSError):  # the worker died: out of memory, or killed from outside
