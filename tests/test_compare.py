@@ -383,6 +383,20 @@ def test_an_acceleration_term_off_is_named_whatever_the_equation_is_multiplied_b
     assert verdict.feedback[-1] == sentence, verdict.feedback
 
 
+@pytest.mark.parametrize(
+    "first",
+    [
+        # m₂ for m₁ + m₂ on θ̈₁'s term and on the gravity term: two of four terms off, two right; solved
+        # for θ̈₁, the right two looked off, and one of them was named
+        EOM_DOUBLE_1.replace("(m1+m2)", "m2"),
+        EOM_DOUBLE_1.replace("(m1+m2)", "m1"),
+    ],
+)
+def test_two_of_four_terms_off_name_no_term(first):
+    verdict = compare(EOM_DOUBLE, f"{first}; {EOM_DOUBLE_2}", kind="equations", **DOUBLE)
+    assert verdict.feedback == ("Your equation for θ₁ is not right; equation 2 is right.",), verdict.feedback
+
+
 def test_feedback_shows_velocities_as_typed_never_as_internal_names():
     verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2 + m g l cos(θ̇)", kind="lagrangian", **PENDULUM)
     assert verdict.feedback == (

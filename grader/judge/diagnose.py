@@ -246,8 +246,13 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
 
 
 def coefficients_differ(
-    expected_terms: dict, submitted_terms: dict, setting: Setting, *, any_factor: bool = False
-) -> list[tuple[str, str]]:
+    expected_terms: dict,
+    submitted_terms: dict,
+    setting: Setting,
+    *,
+    any_factor: bool = False,
+    kept: dict | None = None,
+) -> list[tuple[str, str]] | None:
     """Terms that differ only in their parameters, each named once as the term the student
     wrote; [] where the answer has not the same terms in the coordinates and velocities.
 
@@ -259,15 +264,21 @@ def coefficients_differ(
 
     With ``any_factor`` (an equation, right whatever it is multiplied by), the groups are
     compared in the ratio most of them share: m₁ l₁ θ̈₁ for (m₁ + m₂) l₁ θ̈₁ is one term off,
-    not every other term off by (m₁ + m₂)/m₁ once the equation is solved for θ̈₁.
+    not every other term off by (m₁ + m₂)/m₁ once the equation is solved for θ̈₁. There, None
+    says the terms are the same but no ratio tells which are off (two of four terms off): then
+    no term may be named, as any normalization would name a right one.
 
     The parameters are compared by their values at two generic points, not by sympy's algebra
     (which cost milliseconds a wrong answer): this only names a term, the verdict is made.
+    ``kept``, a dict kept with the expected answer, keeps its terms' grouping for the next answer.
     """
-    return _differing_factors(_by_form(expected_terms), _by_form(submitted_terms), setting, any_factor)
+    kept = {} if kept is None else kept
+    if "by form" not in kept:
+        kept["by form"] = _by_form(expected_terms)
+    return _differing_factors(kept["by form"], _by_form(submitted_terms), setting, any_factor)
 
 
-def _differing_factors(ours_by_form: dict, theirs_by_form: dict, setting: Setting, any_factor: bool) -> list:
+def _differing_factors(ours_by_form: dict, theirs_by_form: dict, setting: Setting, any_factor: bool) -> list | None:
     """:func:`coefficients_differ`, from the terms as :func:`_by_form` groups them."""
     split_ours, split_theirs = _split_by_state(ours_by_form, setting), _split_by_state(theirs_by_form, setting)
     if {split[0] for split in split_ours.values()} != {split[0] for split in split_theirs.values()}:
@@ -281,16 +292,20 @@ def _differing_factors(ours_by_form: dict, theirs_by_form: dict, setting: Settin
     if any_factor:
         ratios = [tuple(t / o for t, o in zip(theirs[key][1], ours[key][1], strict=True)) for key in ours]
         shared = [r for r in ratios if all(abs(v) > _TINY for v in r)]
-        best = max(shared, key=lambda r: sum(_close(r, other) for other in shared), default=None)
-        if best is None or sum(_close(best, other) for other in shared) < 2:
-            return []  # no ratio most terms share: nothing says which terms are off
-        ratio = best
+        counts = [sum(_close(r, other) for other in shared) for r in shared]
+        best = max(counts, default=0)
+        rivals = {index for index, count in enumerate(counts) if count == best}
+        if best < 2 or any(not _close(shared[i], shared[j]) for i in rivals for j in rivals):
+            # no ratio more terms share than any other: which are off is a guess. With two terms the
+            # caller may still name one by a convention (the acceleration's is right); with more, nothing
+            return [] if len(ours) <= 2 else None
+        ratio = shared[min(rivals)]
     scaled = {key: tuple(r * v for r, v in zip(ratio, ours[key][1], strict=True)) for key in ours}
     differing = [key for key in ours if not _close(scaled[key], theirs[key][1])]
     if not 1 <= len(differing) <= 2 or any(key is sympy.S.One for key in differing):
         return []
     if any_factor and len(ours) - len(differing) < len(differing) + 1:
-        return []  # as many terms off as right: which are "off" is a guess
+        return None  # as many terms off as right: which are "off" is a guess
     written = [shape for shape, _ in theirs.values()]
     changes = []
     for key in differing:
@@ -316,13 +331,20 @@ def _close(a: tuple, b: tuple) -> bool:
 def _split_by_state(by_form: dict, setting: Setting) -> dict:
     """{form: (its part in the coordinates, velocities and given names; the rest of its factors;
     its number times its coefficient; that part as written)} for :func:`_by_form`'s grouping."""
-    varying, split = setting.varying, {}
+    varying, split, moves = setting.varying, {}, {}
+
+    def varies(factor) -> bool:  # the terms share their factors, and free_symbols walks each anew
+        if factor not in moves:
+            moves[factor] = bool(factor.free_symbols & varying)
+        return moves[factor]
+
     for form, (written, coefficient) in by_form.items():
         times, bare = form.as_coeff_Mul()
         factors = sympy.Mul.make_args(bare)
-        inside = sympy.Mul(*(f for f in factors if f.free_symbols & varying))
-        outside = [f for f in factors if not f.free_symbols & varying]
-        split[form] = (inside, outside, coefficient * times, state_part(written, setting))
+        inside = sympy.Mul(*(f for f in factors if varies(f)))
+        outside = [f for f in factors if not varies(f)]
+        shown = inside if written is form else sympy.Mul(*(f for f in sympy.Mul.make_args(written) if varies(f)))
+        split[form] = (inside, outside, coefficient * times, shown)
     return split
 
 

@@ -737,6 +737,13 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "e
     coefficient = _coefficient(g, acceleration)
     if coefficient == 0:  # none of this acceleration: another coordinate's equation
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+    # the same terms, off in their parameters: named in the ratio most share, or not at all, since
+    # solved for an acceleration whose own factor is off, the right terms would be named instead
+    scaled = _off_in_scale(expected, f, g, key)
+    if scaled:
+        return replace(term_outcome(scaled), method="accelerations")
+    if scaled is None:
+        return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
     normal_g = g / coefficient
     if normal_f is None:  # a reference of too many terms to name them
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
@@ -748,24 +755,22 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "e
         termwise=lambda: _solved(g, acceleration),
     )  # fmt: skip
     if outcome.key in ("sign", "factor", "wrong"):
-        # solved for an acceleration whose own factor is off, every other term is off by it
-        scaled = _off_in_scale(expected, f, g, key)
-        if scaled:
-            return term_outcome(scaled)
         return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
     return Outcome(outcome.status, 0.0, outcome.key, outcome.details, "accelerations", outcome.more)
 
 
-def _off_in_scale(expected: Expected, f, g, key: str) -> list:
+def _off_in_scale(expected: Expected, f, g, key: str) -> list | None:
     """The terms of ``g`` off from ``f``'s when both are compared in the ratio most of their terms
-    share (:func:`~grader.judge.diagnose.coefficients_differ`): m₁ l₁ θ̈₁ for (m₁ + m₂) l₁ θ̈₁."""
+    share (:func:`~grader.judge.diagnose.coefficients_differ`): m₁ l₁ θ̈₁ for (m₁ + m₂) l₁ θ̈₁.
+    [] where they are not the same terms; None where they are, but nothing tells which are off."""
     cache_key = ("terms", key, "as written")
     if cache_key not in expected.cache:
         expected.cache[cache_key] = terms(f)
     ours, theirs = expected.cache[cache_key], terms(g)
     if ours is None or theirs is None or len(ours) > MAX_TERMS or len(theirs) > MAX_TERMS:
         return []
-    return coefficients_differ(ours, theirs, expected.setting, any_factor=True)
+    kept = expected.cache.setdefault(("coefficients", key), {})
+    return coefficients_differ(ours, theirs, expected.setting, any_factor=True, kept=kept)
 
 
 def _leading_acceleration(f, expected: Expected):
