@@ -3680,3 +3680,64 @@ def test_a_chain_that_says_l_is_t_plus_v_of_its_value_too_is_told_once(submitted
     verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "t_plus_v")
     assert verdict.feedback == ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.",)
+
+
+L_TYPED = "1/2 m l^2 θ̇^2 + m g l cos θ"
+SPHERICAL_H_TYPED = "1/2 m l^2 (θ̇^2 + sin^2θ φ̇^2) - m g l cos θ"
+SPHERICAL_P_PHI = "m l^2 sin(theta)^2 phidot"
+
+
+def _misstated(statement: str, label: str) -> str:
+    return (
+        f"Your answer says `{statement}` on the way to its value, which is not what {label} is. Its value was"
+        " graded and is right; a person will check this answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "options", "first"),
+    [
+        # said in words or before ⇒, which the reading of the formula leaves out
+        (L_PENDULUM, f"L = T + V ⇒ L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = T + V", "L")),
+        (L_PENDULUM, f"Using L = T + V we get L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = T + V", "L")),
+        (L_PENDULUM, f"The Lagrangian is L = T + V = {L_TYPED}", "lagrangian", PENDULUM,
+         _misstated("L = T + V", "L")),
+        # other letters for the same mistakes
+        (L_PENDULUM, f"L = K + U = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = K + U", "L")),
+        (L_PENDULUM, f"L = E = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = E", "L")),
+        (L_PENDULUM, f"L = H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H", "L")),
+        # H as the wrong combination of Σ p q̇ and L, in Unicode and in TeX
+        (SPHERICAL_H, f"H = Σ p q̇ + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = L + Σ p q̇", "H")),
+        (SPHERICAL_H, f"H = L − Σ p q̇ = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = L - Σ p q̇", "H")),
+        (SPHERICAL_H, rf"H = \sum_j p_j \dot q_j + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = L + Σ p_j q̇_j", "H")),
+        (SPHERICAL_H, f"H = L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = L", "H")),
+        # a momentum by the wrong derivative
+        (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = ∂L/∂φ", "p_φ")),
+        (SPHERICAL_P_PHI, "p_φ = ∂L/∂θ̇ = m l² sin²θ φ̇", "expression", SPHERICAL,
+         _misstated("p_φ = ∂L/∂θ̇", "p_φ")),
+    ],
+)  # fmt: skip
+def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
+    verdict = compare(expected, submitted, kind=kind, **options)
+    assert (verdict.status, verdict.score, verdict.diagnosis) == ("undecided", 1.0, "statement_for_a_person"), verdict
+    assert verdict.feedback[0] == first
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "options"),
+    [
+        (L_PENDULUM, f"L = T − V ⇒ L = {L_TYPED}", "lagrangian", PENDULUM),
+        (L_PENDULUM, f"Using L = T − V we get L = {L_TYPED}", "lagrangian", PENDULUM),
+        (L_PENDULUM, f"L = K − U = {L_TYPED}", "lagrangian", PENDULUM),
+        (SPHERICAL_H, f"H = Σ p q̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
+        (SPHERICAL_H, rf"H = \sum_j p_j \dot q_j - L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
+        (SPHERICAL_H, f"H = E = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
+        (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
+        (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it
+    ],
+)
+def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, options):
+    assert compare(expected, submitted, kind=kind, **options).status == "equivalent"

@@ -199,6 +199,11 @@ def compare(
         by_lines = _judge_lines(spec, prepared, lines, left, values, verdict, parts)
         if not unknowns or by_lines.status in ("equivalent", "undecided"):
             verdict = by_lines
+    said = _said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
+    if said is not None:  # Using L = T + V, we get L = …: right as a value, not as what it says L is
+        sentence = say("statement_for_a_person", statement=said[1], label=said[0])
+        feedback = (sentence, *(line for line in verdict.feedback if line != "Correct."))
+        return replace(verdict, status="undecided", diagnosis="statement_for_a_person", feedback=feedback)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
@@ -630,17 +635,88 @@ def _replaced(item, replacement: dict):
 
 
 def _misstated(answer: ParsedAnswer, expected: Expected) -> tuple:
-    """A note where a chain says on its way that its quantity is a sum of the energies it is not:
+    """A note where the answer says on its way that its quantity is what it is not:
     ``L = T + V = ½ m l² θ̇² + m g l cos θ`` is right as a value, but not as what it says L is. So
-    does a line of working, as in ``T = …; V = …; L = T + V``."""
+    does a line of working (``T = …; V = …; L = T + V``), or a chain's definition of H or of a
+    momentum (``H = Σ p q̇ + L = …``, ``p_φ = ∂L/∂φ = …``)."""
     working = answer.value if answer.kind == "equations" else ()
     for statement in (*answer.stated, *working):
-        label, side = statement.lhs, statement.rhs
-        if not isinstance(label, sympy.Symbol) or label.name not in _ENERGY_SUMS or label.name in expected.names:
-            continue
-        if _in_energies(side, expected.names) and _energy_multiple(side, [label.name]) != 1:
-            return (("statement_for_a_person", {"statement": to_text(statement), "label": label.name}),)
+        if _wrong_definition(statement.lhs, statement.rhs, expected):
+            label = statement.lhs.name
+            return (
+                ("statement_for_a_person", {"statement": _shown_statement(statement), "label": unicode_name(label)}),
+            )
     return ()
+
+
+def _shown_statement(statement: sympy.Eq) -> str:
+    """A definition as a student wrote it: ∂L/∂φ̇ for the name the parser reads it as, Σ p q̇ for the
+    product of its sum's symbol."""
+    replacements = {}
+    for symbol in statement.rhs.free_symbols:
+        found = re.fullmatch(r"d([LT])_d(\w+?)(dot)?", symbol.name)
+        if found:
+            replacements[symbol] = sympy.Symbol(f"∂{found[1]}/∂{unicode_name(found[2], 1 if found[3] else 0)}")
+    terms = []
+    for term in sympy.Add.make_args(statement.rhs.xreplace(replacements)):
+        if any(symbol.name in _SUMS for symbol in term.free_symbols):
+            rest = sympy.Mul(*(f for f in sympy.Mul.make_args(term) if not (f.is_Symbol and f.name in _SUMS)))
+            coefficient, rest = rest.as_coeff_Mul()
+            term = coefficient * sympy.Symbol("Σ " + to_text(rest).replace("*", " "))
+        terms.append(term)
+    return to_text(sympy.Eq(statement.lhs, sympy.Add(*terms), evaluate=False))
+
+
+def _said_wrong(submitted: str, expected: Expected) -> tuple[str, str] | None:
+    """A wrong definition said in words or before ``⇒`` (``Using L = T + V, we get L = …``), which
+    the reading of the formula leaves out and :func:`_misstated` cannot see; as said, or None."""
+    if _DEFINING_LETTERS & expected.names:
+        return None  # a tension T, an energy E of the problem's own: the letters mean something else
+    for label, pattern in _SAID_WRONG:
+        found = pattern.search(submitted)
+        if found:
+            return label, re.sub(r"\s+", " ", found.group().strip()).replace("−", "-")
+    return None
+
+
+# What a chain or its working may say its quantity is, wrongly, in words or before ⇒: L = T + V, L = K + U,
+# L = V − T, L = E, L = H; H or E = T − V, or = L. A side ends where the formula does.
+_ENDS = r"(?=\s*(?:$|[=,;.⇒→⟹\n]|[A-Za-z]{2,}))"
+_SAID_WRONG = (
+    ("L", re.compile(rf"(?<![\w\\])L\s*=\s*(?:[TK]\s*\+\s*[VU]|[VU]\s*\+\s*[TK]|[VU]\s*[-−]\s*[TK]|[EH]){_ENDS}")),
+    ("H", re.compile(rf"(?<![\w\\])H\s*=\s*(?:[TK]\s*[-−]\s*[VU]|L){_ENDS}")),
+    ("E", re.compile(rf"(?<![\w\\])E\s*=\s*(?:[TK]\s*[-−]\s*[VU]|L){_ENDS}")),
+)
+_DEFINING_LETTERS = frozenset("TVUKEHL")
+_SUMS = frozenset({"Sigma", "sum"})  # Σ and TeX's \sum, as the parser names them in a chain's definition
+_KINETIC_K = sympy.Symbol("K")  # K = T, as some texts write the kinetic energy
+
+
+def _wrong_definition(label, side, expected: Expected) -> bool:
+    """Whether ``label = side``, a definition the answer states, is wrong for the quantity named:
+    L or H or E as the wrong sum of energies, or as one another where they differ (L = E, H = L);
+    H = Σ p q̇ + L; a momentum p_φ as ∂L/∂φ, or as ∂L/∂θ̇. What the problem names is not judged."""
+    if not isinstance(label, sympy.Symbol) or label.name in expected.names:
+        return False
+    name = label.name
+    if name in _ENERGY_SUMS:
+        if _KINETIC_K.name not in expected.names:
+            side = side.xreplace({_KINETIC_K: _KINETIC})
+        if _in_energies(side, expected.names):
+            return _energy_multiple(side, [name]) != 1
+        if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
+            return "L" in {name, side.name} and name != side.name  # L = E, L = H, H = L
+        lagrangian = sympy.Symbol("L")
+        if name == "H" and any(symbol.name in _SUMS for symbol in side.free_symbols) and side.has(lagrangian):
+            rest = side - side.coeff(lagrangian) * lagrangian
+            return side.coeff(lagrangian) != -1 or rest.could_extract_minus_sign()  # H = Σ p q̇ − L
+        return False
+    momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
+    derivative = re.fullmatch(r"d[LT]_d(\w+)", side.name) if side.is_Symbol else None
+    if not momentum or not derivative:
+        return False
+    wanted = momentum[1].replace("_", "") + "dot"  # p_θ₁ is ∂L/∂θ̇₁: dL_dtheta_1dot
+    return derivative[1].replace("_", "") != wanted
 
 
 def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
