@@ -429,6 +429,11 @@ def test_a_unit_said_with_in_that_measures_something_else_is_said_so(submitted):
         "−m g l sin θ, it has dimensions of energy",
         "−m g l sin θ, units of force",  # before, read past as words: Correct
         "−m g l sin θ, units of N",
+        # the kind of quantity, said in a word: its dimensions in other words (before, Correct)
+        "−m g l sin θ, it is a force",
+        "−m g l sin θ (force)",
+        "−m g l sin θ, an angle",
+        "−m g l sin θ (torque)",
     ],
 )
 def test_words_that_state_dimensions_are_for_a_person_to_read(submitted):
@@ -490,3 +495,10 @@ NORMALIZATION = (
 def test_a_lagrangians_multiple_that_is_no_energy_says_so_and_keeps_its_credit(submitted, feedback):
     verdict = compare("1/2 m l^2 thetadot^2 + m g l cos(theta)", submitted, kind="lagrangian", **PENDULUM)
     assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.5, feedback), verdict
+
+
+@pytest.mark.parametrize("submitted", ["−m g l sin θ, the generalized force", "−m g l sin θ (the torque of gravity)"])
+def test_words_that_name_the_quantity_are_read_past(submitted):
+    # not a claim of its dimensions alone: what the formula is, in words, as before
+    verdict = compare(TORQUE, submitted, **PENDULUM)
+    assert verdict.status == "equivalent", verdict

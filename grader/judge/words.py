@@ -73,6 +73,14 @@ _OTHERWISE = re.compile(
     r"replace|wrong|mistake|typo|actually|should|meant|dimension|dimensions|dimensionless|units?\s+of)\b(?!\s+to\b)",
     re.I,
 )
+# words that only say what kind of quantity the formula is ("…, it is a force", "(torque)", "an
+# angle"): a statement of its dimensions in other words, which a prompt may ask for
+_A_QUANTITY = re.compile(
+    r"^\W*(?:(?:it|this|that)\s+(?:is|has)\s+|is\s+|has\s+)?(?:an?\s+|the\s+)?(?:units?\s+of\s+(?:an?\s+)?)?"
+    r"(?:force|torque|energy|work|length|distance|mass|angle|time|speed|velocity|momentum|acceleration|"
+    r"frequency|power|pressure)s?\W*$",
+    re.I,
+)
 # a word against a bracket is a function the parser does not know, not prose: floor(θ), Re(e^(iθ))
 _APPLIED = re.compile(r"[A-Za-z]\(")
 _WORD = re.compile(r"(?<![A-Za-z0-9_\\])[A-Za-z]{2,}(?![A-Za-z0-9_])")
@@ -110,9 +118,9 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
 
 def says_otherwise(words: str) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
-    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``): a person
-    must read it before the formula earns credit."""
-    return bool(_OTHERWISE.search(words) or _DOUBT.search(words))
+    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or says what
+    kind of quantity it is (``it is a force``): a person must read it before the formula earns credit."""
+    return bool(_OTHERWISE.search(words) or _DOUBT.search(words) or _A_QUANTITY.match(words))
 
 
 def formula_then_words(text: str, names: Collection[str], coords: Collection[str]) -> Iterator[tuple[str, str]]:
