@@ -1168,6 +1168,17 @@ def _forms_for_a_person(words):
         # neither right, whichever was meant
         (EOM_PENDULUM, "equation", "θ̈ = (g/l) sin θ, which for small θ gives θ̈ = (g/l) θ", "not_equivalent", 0,
          (f"Neither your formula before `{WHICH}` nor the one after it is right.",)),
+        # ≈ between the two, the second's left side the first's (before, refused); or ⇒ and words after it
+        # (before, the small-angle form alone was read, and the full form asked for was wrong)
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) sin θ ≈ −(g/l) θ", "equivalent", 1, ("Correct.", _small_left_out("≈"))),
+        (EOM_SMALL, "equation", "θ̈ = −(g/l) sin θ ≈ −(g/l) θ", "equivalent", 1, ("Correct.", _full_left_out("≈"))),
+        (EOM_PENDULUM, "equation", r"\ddot\theta = -\frac{g}{l}\sin\theta \approx -\frac{g}{l}\theta", "equivalent",
+         1, ("Correct.", _small_left_out("\\approx"))),
+        (EOM_PENDULUM, "equation", "θ̈ + (g/l) sin θ = 0 ⇒ θ̈ + (g/l) θ = 0 for small θ", "equivalent", 1,
+         ("Correct.", _small_left_out("⇒"))),
+        (EOM_PENDULUM, "equation", "θ̈ = −(g/l) cos θ ≈ −(g/l) θ", "not_equivalent", 0,
+         ("A term is missing: a term in sin(θ).", "There is a term too many: a term in cos(θ).",
+          _small_left_out("≈"))),
     ],
 )  # fmt: skip
 def test_a_formula_then_its_small_angle_form_is_graded_by_the_one_asked(
@@ -1185,6 +1196,8 @@ def test_a_formula_then_its_small_angle_form_is_graded_by_the_one_asked(
         ("θ̈ = −(g/l) sin θ, which for small θ is maybe θ̈ = −(g/l) θ", "not_equivalent"),  # doubt
         ("θ̈ = −(g/l) sin θ, which for small θ times 2 gives θ̈ = −(g/l) θ", "not_equivalent"),  # arithmetic
         ("θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = foo(θ)", "invalid"),  # the other cannot be read
+        # ⇒ without words of small angles is a step, whose conclusion is the answer
+        ("θ̈ + (g/l) sin θ = 0 ⇒ θ̈ + (g/l) θ = 0", "not_equivalent"),
     ],
 )
 def test_words_between_two_formulas_that_are_no_small_angle_remark_are_read_as_typed(submitted, status):

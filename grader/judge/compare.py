@@ -50,6 +50,7 @@ from grader.judge.units import (
 )
 from grader.judge.verdict import Verdict
 from grader.judge.words import (
+    formula_then_approximation,
     formula_then_convention,
     formula_then_small_angle_form,
     formula_then_words,
@@ -220,7 +221,8 @@ _FULL_FORMS = frozenset({"not_small_angle"})
 
 def _small_angle_forms(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple) -> Verdict | None:
     """``θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ``: a formula, then words that say its
-    small-angle form follows, then that form (:func:`~grader.judge.words.formula_then_small_angle_form`).
+    small-angle form follows, then that form (:func:`~grader.judge.words.formula_then_small_angle_form`);
+    or the two with ≈ between, or ⇒ and words after (:func:`~grader.judge.words.formula_then_approximation`).
     Where the full form is asked, the first is the answer; where the small-angle form is, the last.
     Each is judged, and the one asked for is graded where the other is what the words say it is: the
     other form of the answer asked for (so the remark costs nothing, and is not graded), or, where the
@@ -241,7 +243,17 @@ def _small_angle_forms(spec: Kind, expected: Expected, submitted: str, timeout: 
         if "invalid" in (full.status, small.status) or {full.diagnosis, small.diagnosis} & _NOT_ONE_FORMULA:
             return None  # … is maybe θ̈ = …: words left in a formula, read as typed
         return _one_of_two_forms(full, small, _shown(words))
-    return None
+    approximated = formula_then_approximation(submitted)  # θ̈ = −(g/l) sin θ ≈ −(g/l) θ
+    if approximated is None or not all(parse_answer(f, coords=coords, known=names).ok for f in approximated[::2]):
+        return None
+    first, sign, last = approximated
+    if spec.shape != "expression" and "=" not in first:
+        return None  # θ̈ ≈ −(g/l) θ: one equation, written with ≈
+    full = _judge(spec, expected, first, timeout - (time.monotonic() - started), given)
+    small = _judge(spec, expected, last, timeout - (time.monotonic() - started), given)
+    if "invalid" in (full.status, small.status) or {full.diagnosis, small.diagnosis} & _NOT_ONE_FORMULA:
+        return None
+    return _one_of_two_forms(full, small, sign)
 
 
 # what a formula is told where words were left in it, or it is two equations: no one formula of the two forms

@@ -39,6 +39,7 @@ from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = [
+    "formula_then_approximation",
     "formula_then_convention",
     "formula_then_small_angle_form",
     "formula_then_words",
@@ -194,6 +195,46 @@ def formula_then_small_angle_form(
         words, after = text[word.start() : lead.end()].rstrip(" ,:"), text[lead.end() :].strip(" ,:")
         if after and _SMALL.search(words) and is_prose(words, names):
             yield formula, words, after
+
+
+def formula_then_approximation(text: str) -> tuple[str, str, str] | None:
+    """``θ̈ = −(g/l) sin θ ≈ −(g/l) θ`` or ``θ̈ + (g/l) sin θ = 0 ⇒ θ̈ + (g/l) θ = 0 for small θ``: (the
+    formula, the sign between, the formula it approximates to), the last with the left side of the
+    first where it has none of its own, and without the words that say the angle is small. Only one
+    ``≈`` (or ``\\approx``), or one ``⇒`` (``=>``, ``\\Rightarrow``) whose conclusion says so in words;
+    None for any other text. The formulas are not checked here."""
+    if len(text) > _LENGTH:
+        return None
+    for sign in _APPROXIMATELY:
+        if text.count(sign) == 1:
+            first, last = (part.strip(" ,;") for part in text.split(sign))
+            last = _SMALL_TAIL.sub("", last).strip(" ,;")
+            break
+    else:
+        signs = [sign for sign in _IMPLIES if text.count(sign) == 1]
+        if len(signs) != 1:
+            return None
+        sign = signs[0]
+        first, last = (part.strip(" ,;") for part in text.split(sign))
+        if not _SMALL_TAIL.search(last):
+            return None  # m l θ̈ = −m g sin θ ⇒ θ̈ = −(g/l) sin θ: a step, not an approximation
+        last = _SMALL_TAIL.sub("", last).strip(" ,;")
+    if not first or not last:
+        return None
+    if "=" in first and "=" not in last:
+        if first.count("=") != 1:
+            return None
+        last = f"{first.split('=')[0].strip()} = {last}"  # θ̈ = −(g/l) sin θ ≈ −(g/l) θ: θ̈ = −(g/l) θ
+    return first, sign, last
+
+
+_APPROXIMATELY = ("≈", "\\approx", "~=")
+_IMPLIES = ("⇒", "=>", "\\Rightarrow", "\\implies", "⟹")
+# words at the end that say the angle is small: "for small θ", "(small angles)", "when θ ≪ 1"
+_SMALL_TAIL = re.compile(
+    r"[\s,;(]*(?:for|when|if|at)?\s*(?:small|lineari[sz]ed)\b[^=≈]*$|[\s,;(]*(?:for|when)\s*\S+\s*(?:≪|<<)\s*1\)?\s*$",
+    re.I,
+)
 
 
 # the zero of potential energy a remark states: V = 0, U=0 (not V = 0.5, V = 0x, nor \\nabla V = 0)
