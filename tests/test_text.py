@@ -77,7 +77,8 @@ SUBJECTS = [
     ("Scleronomic constraints, e.g. x² + y² = l², are time independent.", FIRST),
     ("A scleronomic constraint is a fixed wire. It is time independent.", FIRST),  # the last term named
     ("A rheonomic constraint is a moving wire. It is time independent.", NEITHER),
-    ("One kind is time independent, the other time dependent.", BOTH),  # no term: the question's own
+    # no term named, where the question has two subjects: which is which is not said (before, both)
+    ("One kind is time independent, the other time dependent.", NEITHER),
     ("Unlike rheonomic constraints, scleronomic ones are time independent.", FIRST),
     ("Scleronomic constraints, unlike rheonomic ones, are time independent.", FIRST),  # set against: not named
     ("A constraint that is not scleronomic is time independent.", NEITHER),  # a denied term

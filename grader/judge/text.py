@@ -22,7 +22,8 @@ credit for a statement turned round.
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
-  no term named yet, of the question's own subject. A term does not stand for itself when it
+  no term named yet, of the question's own subject, where the question has one: where a term the
+  idea is not about is another idea's subject, of neither. A term does not stand for itself when it
   is denied ("H is not equal to T + V when …"), negated by a prefix ("non-holonomic" for
   holonomic), inside a longer term, or set against the subject ("unlike Newton's method").
 
@@ -206,8 +207,10 @@ def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int,
     return kept, [mention[0] for mention in kept]
 
 
-def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int) -> bool:
-    """Whether the term the phrasing at ``start:end`` is said of is the idea's own."""
+def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int, *, rivals: bool) -> bool:
+    """Whether the term the phrasing at ``start:end`` is said of is the idea's own. With ``rivals``
+    (a term the idea is not about is another idea's subject), a phrasing said of no term at all is
+    of neither: in "constraints can be time dependent or time independent", which is which is not said."""
     for low, high in (reading.clause(start, end), reading.sentence(start, end)):
         first, last = bisect.bisect_left(starts, low), bisect.bisect_left(starts, end)
         if last > first:  # named before it (or in it)
@@ -215,7 +218,9 @@ def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int) -> b
         if last < len(mentions) and starts[last] < high:  # named after it
             return mentions[last][2]
     earlier = bisect.bisect_left(starts, start)
-    return _own_subject(reading, mentions[earlier - 1], start) if earlier else True  # else the question's own
+    if earlier:
+        return _own_subject(reading, mentions[earlier - 1], start)
+    return not rivals  # else the question's own subject, where it has only one
 
 
 def _own_subject(reading: _Reading, mention, start: int) -> bool:
@@ -247,14 +252,19 @@ def rubric_score(text: str, rubric) -> RubricReading:
     """
     reading = _Reading(_normal(text[:MAX_TEXT_LENGTH]))
     found, missing, discounted, points = [], [], [], 0.0
+    # the subjects the question asks about: two (scleronomic and rheonomic) where one idea's rival is
+    # another's own; then a phrasing said of no term is said of neither
+    subjects = {_normal(term) for _, _, _, *binding in rubric for term in (*binding, ())[0]}
     for idea, worth, phrasings, *binding in rubric:
         about, not_about = (*binding, (), ())[:2]  # a rubric of (idea, points, phrasings) binds nothing
+        rivals = any(_normal(term) in subjects for term in not_about)
         mentions, starts = _mentions(reading, about, not_about) if about else ([], [])
         seen = counted = False
         for phrasing in phrasings:
             for start, end, negated in _occurrences(reading, _normal(phrasing)):
                 seen = True
-                if not negated and (not about or _said_of_own(reading, mentions, starts, start, end)):
+                own = not about or _said_of_own(reading, mentions, starts, start, end, rivals=rivals)
+                if not negated and own:
                     counted = True
                     break
             if counted:
