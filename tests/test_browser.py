@@ -197,6 +197,9 @@ def test_equations_from_the_students_own_lagrangian_on_the_page_earn_the_method_
     browser.get(server.url)
     _type(browser, "1/2 m l^2 thetadot^2 + m g l sin(theta)")  # sin for cos
     _type(browser, "m l^2 thetaddot - m g l cos(theta) = 0", MOTION)  # what that Lagrangian implies
+    # each preview, as it comes, makes its part taller: a click before the last moved the button away
+    _previewed(browser)
+    _previewed(browser, MOTION)
     result = _check(browser, "not_equivalent", MOTION)
     assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "✘\nnot right (partial credit: 50%)"
     hints = [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")]
