@@ -2884,6 +2884,72 @@ def test_working_with_steps_is_graded_at_its_last_value(expected, submitted, sta
         assert verdict.read_as == read_as
 
 
+def _doubted(words):
+    return f"Your answer says `{words}`, which may take back or doubt a number of it: a person will decide which" \
+        " number is your answer."  # fmt: skip
+
+
+_X = "A number is asked for here; your answer contains `x`."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "feedback"),
+    [
+        # a value stands before the quantity's name: the value is graded
+        ("2", "2 = DOF", "equivalent", "2", ("Correct.", _number(2))),
+        ("2", "2 = d.o.f.", "equivalent", "2", ("Correct.", _number(2))),
+        (PERIOD, "2.01 s = the period", "equivalent", "2.01", ("Correct.", _number("2.01 s"))),
+        (PERIOD, "2.01 s = T.", "equivalent", "2.01", ("Correct.", _number("2.01 s"))),
+        # before anything else, the first side is no answer: the last side is, read or refused (before, each right)
+        ("1", "3 - 2 = 1 or 2", "invalid", "", (_HEDGED,)),  # as 2 or 3 alone is
+        ("1", "3 - 2 = 1 x 2", "invalid", None, (_X,)),
+        (PERIOD, "2π√(1/9.81) = 2.006 x 2", "invalid", None, (_X,)),
+        ("2", "2 = or", "invalid", "", (_HEDGED,)),
+        # words that take a number back, or doubt it: a person, whatever it would earn, nothing proposed; shown
+        # is the last number (before, the first side was graded, and right)
+        ("2", "6 - 4 = 2? no, 4", "undecided", "4", (_doubted("?, no"),)),
+        ("4", "6 - 4 = 2? no, 4", "undecided", "4", (_doubted("?, no"),)),
+        ("2", "6 - 4 = 2 is wrong, it is 4", "undecided", "4", (_doubted("wrong"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s? no, 3 s", "undecided", "3", (_doubted("?, no"),)),
+        ("2", "2 = wrong", "undecided", "2", (_doubted("wrong"),)),
+        ("2", "2 = n?", "undecided", "2", (_doubted("?"),)),
+        # …in the working before the final value, or beside the number (before, graded, and right)
+        ("4", "6 - 4 = 2? No wait = 4", "undecided", "4", (_doubted("?, No, wait"),)),
+        ("2", "6 - 4 = 2 (wrong)", "undecided", "2", (_doubted("wrong"),)),
+        ("2", "maybe 2", "undecided", "2", (_doubted("maybe"),)),
+        ("2", "2, I  think", "undecided", "2", (_doubted("I think"),)),
+        ("2", "It has perhaps 2 degrees of freedom", "undecided", "2", (_doubted("perhaps"),)),
+        (PERIOD, "probably 2.01 s", "undecided", "2.01", (_doubted("probably"),)),
+    ],
+)  # fmt: skip
+def test_the_first_side_is_graded_only_before_a_name_and_a_doubted_number_goes_to_a_person(
+    expected, submitted, status, read_as, feedback
+):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+    if read_as is not None:
+        assert verdict.read_as == read_as
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "6 - 4 = " * 60 + "2? no",  # many =, past the length read for words
+        "6 - 4 = 2" + "? no" * 60 + ", 4",
+        "2 = " + "n" * 300,
+        "(" * 80 + "6 - 4" + ")" * 80 + " = 2? no, 4",
+        "2 = " + "(" * 80 + "n",
+        "9" * 40 + " = 2? no, " + "9" * 40,  # more digits than the parser reads
+        "2 = n = " * 30 + "?",
+        "6 − 4 = 2? no, 4 = 2",  # doubted working, whatever its final value
+    ],
+)
+def test_hostile_chains_with_doubts_or_names_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
 @pytest.mark.parametrize(
     "submitted",
     [

@@ -11,6 +11,10 @@ reading is tried only when the answer as typed is not a number: for a measured v
 still 6. A count is the exception: after one, brackets are more often its working than a factor,
 so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person.
 
+Words that take a number back or doubt it (``6 − 4 = 2? no, 4``, ``maybe 2``) are not read past: which
+number is the answer is then for a person to say. Nor is the first side of ``6 − 4 = 2 <anything>``
+graded where the last cannot be read: only before the quantity's name (``2.01 s = T``).
+
 A remark after the number must be words, not mathematics: in ``2 π √(l/g)`` for a period, the
 √(l/g) is part of the answer, which is a formula where a number is asked for, and is refused as one.
 """
@@ -50,6 +54,17 @@ _STEPS = re.compile(
 _SEPARATED = re.compile(r"[;\n]|\\\\")
 # a quantity's name before its value, which is no working: T, T_0, τ, ω₀
 _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
+# a quantity's name after its value, which the value may stand before (2.01 s = T, 2 = n, 2 = DOF, 2 = d.o.f.,
+# 2.01 s = the period): one name, or "the" and one word, and nothing else
+_NAME_AFTER = re.compile(r"(?:the\s+)?(?:[^\W\d_][\w₀-₉']*|(?:[A-Za-z]\.){2,})\.?", re.I)
+# words that take a number back or doubt it: 6 − 4 = 2? no, 4; 6 − 4 = 2 is wrong, it is 4; maybe 2
+_CORRECTION = re.compile(
+    r"\b(?:no|nope|not|never|wait|wrong|incorrect|false|mistakes?|mistaken|oops|sorry|actually|instead|rather|"
+    r"correction|corrected|scratch|ignore|typo|meant|should|redo|maybe|perhaps|probably|possibly|unsure|"
+    r"uncertain|I\s+think|I\s+guess|I\s+believe)\b|\?",
+    re.I,
+)
+_JOINING = frozenset({"or", "and", "but", "yes", "so"})  # a single word after =, and no name
 
 # where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, a word,
 # or an abbreviation (d.o.f.)
@@ -90,7 +105,27 @@ def read_number(
     2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s; ``uncertainty`` (a measured value may
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
     ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9.
+
+    Words that take a number back or doubt it (``6 − 4 = 2? no, 4``) send the answer to a person, with
+    a note that says so and the last number it gives: which is the answer is not for the checker to say.
     """
+    prepared, answer, notes = _read_number(
+        text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+    )
+    return _doubted(text, (prepared, answer, notes), reads)
+
+
+def _read_number(
+    text: str,
+    reads: Callable[[str], ParsedAnswer | None],
+    names: Collection[str],
+    *,
+    decimal_comma: bool,
+    unit: bool,
+    uncertainty: bool,
+    count: bool,
+) -> tuple[str, ParsedAnswer | None, tuple]:
+    """:func:`read_number`, but for the words around the number that a person must read."""
     unequal = _NOT_EQUAL.fullmatch(text) if count and len(text) <= _LENGTH else None
     if unequal:
         return _unequal(unequal, reads, names)
@@ -131,8 +166,10 @@ def read_number(
     pieces, stepped = _sides(bare)
     last = len(pieces) - 1
     # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
-    # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last
-    first = () if last != 1 or stepped else (0,)
+    # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last,
+    # nor before anything but a name, where the last side may take it back (6 − 4 = 2? no, 4) or be another
+    # number (3 − 2 = 1 or 2, 3 − 2 = 1 x 2)
+    first = (0,) if last == 1 and not stepped and _is_name(pieces[1]) else ()
     for index in dict.fromkeys((last, *first)):
         for before, typed, rest in _number_in(pieces[index], names):
             if count and _COUNT_THEN_BRACKET.fullmatch(typed):
@@ -158,6 +195,49 @@ def read_number(
             return prepared, answer, notes
     prepared, notes = _spelled(text, decimal_comma, unit)
     return prepared, None, notes
+
+
+_FOR_A_PERSON = frozenset({"number_doubted_for_a_person"})  # notes that leave the number to a person
+_LAST_NUMBERS = 6  # numbers tried from the end of an answer, for the one shown beside a doubt
+_DIGITS = re.compile(r"(?<![\w.])[0-9]+(?:\.[0-9]+)?(?![\w.])")
+
+
+def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> tuple[str, ParsedAnswer | None, tuple]:
+    """``read`` (the text to judge, its reading, notes), or where ``text`` takes a number back or doubts
+    it (``6 − 4 = 2 is wrong, it is 4``, ``6 − 4 = 2? No wait = 4``), a note that sends it to a person.
+    Words read past beside a number (a remark, the working before it) may say it is not the answer;
+    where no number could be read, working with such words is shown by its last number, for the
+    person (nothing is proposed). Where there is no working either (``2? no, 4``), the answer is
+    refused as typed, for the student to write again."""
+    prepared, answer, notes = read
+    if any(note[0] in _FOR_A_PERSON for note in notes) or len(text) > _LENGTH:
+        return read
+    said = {}  # as typed, once each
+    for found in _CORRECTION.finditer(text):
+        said.setdefault(" ".join(found[0].lower().split()), " ".join(found[0].split()))
+    if not said:
+        return read
+    if answer is None:
+        if len(_sides(text)[0]) < 2:
+            return read
+        for typed in [found[0] for found in _DIGITS.finditer(text)][::-1][:_LAST_NUMBERS]:
+            answer = reads(typed)
+            if answer is not None:
+                prepared = typed
+                break
+        else:
+            return read
+    shown = ", ".join(said.values())
+    shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
+    return prepared, answer, (("number_doubted_for_a_person", {"words": shown}),)
+
+
+def _is_name(side: str) -> bool:
+    """Whether ``side`` is a quantity's name alone (T, n, DOF, the period), not words that take the value
+    before it back (no, wrong) or more of the answer."""
+    if len(side) > _SHOWN or not _NAME_AFTER.fullmatch(side) or _CORRECTION.search(side):
+        return False
+    return side.rstrip(".").lower() not in _JOINING
 
 
 # 9 − 3 = 6 ≠ 9, where a count is asked: the count, then once a number it is not, and nothing after
