@@ -2951,6 +2951,58 @@ def test_hostile_chains_with_doubts_or_names_are_never_right(submitted):
 
 
 @pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "feedback"),
+    [
+        # working over several lines, or between ;: the last line's value, as on one line (before, the first's)
+        ("2", "6 - 2 = 4; 6 - 4 = 2", "equivalent", "2", ("Correct.", _final(2))),
+        ("4", "6 - 2 = 4; 6 - 4 = 2", "not_equivalent", "2", ("Not equivalent to the expected answer.", _final(2))),
+        ("2", "6 - 4 = 2\n6 - 2 = 4", "not_equivalent", "4", ("Not equivalent to the expected answer.", _final(4))),
+        ("2", "6 - 4 = 2\n2", "equivalent", "2", ("Correct.", _final(2))),  # before, refused: a list needs =
+        ("2", "6 - 4 = 2; so 2", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "6 - 4 = 2 \\\\ 2", "equivalent", "2", ("Correct.", _final(2))),  # TeX's row break
+        ("2", "6 - 4 = 2\n\n2 = n", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "6 − 4 → 2; 2 degrees of freedom", "equivalent", "2",
+         ("Correct.", _final(2), _remark(2, "degrees of freedom"))),
+        (PERIOD, "2π√(1/9.81) = 2.006 s\n2.006 s", "equivalent", "2.006", ("Correct.", _final("2.006 s"))),
+        (PERIOD, "2π√(1/9.81) = 2.006 s; T = 3 s", "not_equivalent", "3",
+         ("Not within the accepted tolerance.", _final("3 s"))),
+        # …and in a list, the last item that is working, not the first
+        ("2", "6 - 2 = 4, 6 - 4 = 2", "equivalent", "2", ("Correct.",)),
+        ("2", "3N = 6, 3N - k = 2", "equivalent", "2", ("Correct.",)),
+        # words that take a line back or doubt it: a person, nothing proposed (before, the first line was graded)
+        ("2", "6 - 4 = 2\nNo wait: 6 - 2 = 4", "undecided", "4", (_doubted("No, wait"),)),
+        ("2", "6 - 2 = 4\nwrong: 6 - 4 = 2", "undecided", "2", (_doubted("wrong"),)),
+    ],
+)  # fmt: skip
+def test_working_over_several_lines_is_graded_at_the_last_lines_value(expected, submitted, status, read_as, feedback):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.read_as) == (status, float(status == "equivalent"), read_as)
+    assert verdict.feedback == feedback
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "6 - 4 = 4\n" * 7 + "2",  # more lines than working has
+        "4; 2",  # numbers alone offer a choice
+        "6 - 4; 2",
+        "6 - 4 = 4; " * 3 + "2 = " * 40 + "n",
+        "1 = " * 14 + "1\n2",  # more sides than are read
+        "(" * 60 + "6 - 4" + ")" * 60 + " = 4\n2",
+        "9" * 40 + " = 4\n2",
+        "6 - 4 = 4\n" + "9" * 40,
+        "6 - 4 = 4\n2^2^2^2^2^2^2^2^2^2",
+        "6 - 4 = 4;\n;\n;2 = 4",
+        "6 - 4 = 4\n" + "2 " * 150,
+    ],
+)
+def test_hostile_lines_of_working_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
+@pytest.mark.parametrize(
     "submitted",
     [
         " → ".join(["1"] * 150),  # a long chain is read as typed, and refused

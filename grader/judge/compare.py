@@ -1324,8 +1324,9 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
 def _final_of_working(answer: ParsedAnswer) -> ParsedAnswer:
     """``3N = 3, k = 2, n = 1``: working where a number is asked for, every item a number and one of
     them worked out (3N): the value of the last name that no other item uses (n; not N, which 3N
-    uses: ``3N = 15, N = 5`` gives the value it was worked out with), else of the first item that
-    is working (3N = 15). As it was read where that is not so."""
+    uses: ``3N = 15, N = 5`` gives the value it was worked out with), else of the last item that
+    is working (3N = 15; ``3N = 6, 3N − k = 2`` gives 2, as ``6 − 2 = 4, 6 − 4 = 2`` does: the last
+    word). As it was read where that is not so."""
     if answer.kind != "equations" or not all(item.rhs.is_number and item.lhs != ANSWER for item in answer.value):
         return answer  # 1, since k = 2: a number and words, read as such (numbers.read_number)
     items = answer.value
@@ -1333,7 +1334,7 @@ def _final_of_working(answer: ParsedAnswer) -> ParsedAnswer:
         return answer  # n = 2; m = 3: no working, two values, and which is meant is for the student to say
     used = [set().union(*(other.lhs.free_symbols for other in items if other is not item)) for item in items]
     named = [item for item, others in zip(items, used, strict=True) if item.lhs.is_Symbol and item.lhs not in others]
-    final = named[-1] if named else next((item for item in items if not item.lhs.is_Symbol), None)
+    final = named[-1] if named else next((item for item in reversed(items) if not item.lhs.is_Symbol), None)
     return answer if final is None else ParsedAnswer(answer.text, final.rhs, "expression")
 
 

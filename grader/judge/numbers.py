@@ -9,7 +9,8 @@ Students write a number inside a sentence, as they would on paper: ``≈ 2.01 s`
 is what the part grades, so it is found and graded, and the student is told what was not. Each
 reading is tried only when the answer as typed is not a number: for a measured value, ``2 (3)`` is
 still 6. A count is the exception: after one, brackets are more often its working than a factor,
-so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person.
+so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person. Working over several
+lines (``6 − 2 = 4; 6 − 4 = 2``) is graded at its last line, as a chain on one line is at its last side.
 
 Words that take a number back or doubt it (``6 − 4 = 2? no, 4``, ``maybe 2``) are not read past: which
 number is the answer is then for a person to say. Nor is the first side of ``6 − 4 = 2 <anything>``
@@ -153,6 +154,10 @@ def _read_number(
         bracketed = _count_with_bracket(_sides(text)[0][-1], reads, names)
         if bracketed is not None:
             return bracketed
+    if len(text) <= _LENGTH and _SEPARATED.search(text):
+        worked = _worked_over_lines(text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+        if worked is not None:
+            return worked
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
@@ -195,6 +200,54 @@ def _read_number(
             return prepared, answer, notes
     prepared, notes = _spelled(text, decimal_comma, unit)
     return prepared, None, notes
+
+
+_LINES = 6  # lines of working, at the most
+_SIDES = 12  # sides of the lines before the last, at the most: each is read
+
+
+def _worked_over_lines(
+    text: str, reads, names, *, decimal_comma: bool, unit: bool, count: bool
+) -> tuple[str, ParsedAnswer | None, tuple] | None:
+    """``6 − 2 = 4; 6 − 4 = 2``, or the same on lines: working over several lines, each before the last
+    a chain of numbers (``6 − 2 = 4``, ``2π√(1/9.81) = 2.006 s``), is graded at the value of the last
+    line, read as any line is, as a chain on one line is (``6 − 2 = 4 → 2``): the final value, with
+    the note that the working before it is not graded. Where the lines disagree, the last is the
+    student's last word; words that take one back or doubt it send the answer to a person
+    (:func:`_doubted`). None where ``text`` is no such working: lines that name their values
+    (``n = 2; m = 3``, ``3N = 6; k = 4; n = 2``) are read as a list, and numbers alone (``2; 4``) offer
+    a choice."""
+    lines = _lines(text)
+    if not 2 <= len(lines) <= _LINES:
+        return None
+    *working, final = lines
+    sides = [_sides(line) for line in working]
+    if sum(len(pieces) for pieces, _ in sides) > _SIDES:
+        return None
+    for pieces, _ in sides:
+        if len(pieces) < 2 or any(reads(_spelled(piece, decimal_comma, unit)[0]) is None for piece in pieces):
+            return None
+    prepared, answer, notes = _read_number(
+        final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
+    )
+    if answer is None:
+        return None
+    value = next((details["value"] for _, details in notes if "value" in details), _sides(final)[0][-1])
+    notes = tuple(note for note in notes if note[0] not in ("final_value", "number_read"))
+    return prepared, answer, (("final_value", {"value": value}), *notes)
+
+
+def _lines(text: str) -> list[str]:
+    """The lines of ``text``, cut at new lines, ``;`` and TeX's ``\\\\`` outside brackets; blank ones left out."""
+    depth, cuts = 0, [0]
+    for index, character in enumerate(text):
+        depth += (character in "([{") - (character in ")]}")
+        found = _SEPARATED.match(text, index)
+        if found and depth == 0 and index >= cuts[-1]:
+            cuts += [index, found.end()]
+    cuts.append(len(text))
+    lines = [text[start:end].strip() for start, end in zip(cuts[::2], cuts[1::2], strict=True)]
+    return [line for line in lines if line]
 
 
 _FOR_A_PERSON = frozenset({"number_doubted_for_a_person"})  # notes that leave the number to a person
