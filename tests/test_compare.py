@@ -3002,6 +3002,78 @@ def test_hostile_lines_of_working_are_never_right(submitted):
     assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
 
 
+def _qualified(value, words):
+    return f"Your number `{value}` comes with `{words}`, which may make it another number, or no one number: a" \
+        " person will decide what your answer is."  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "read_as", "feedback"),
+    [
+        # words that make the number another, or no one number: a person, nothing proposed (before, each the
+        # bare number, and right)
+        ("2", "less than 2", "2", _qualified(2, "less than")),
+        ("2", "more than 2", "2", _qualified(2, "more than")),
+        ("2", "at most 2", "2", _qualified(2, "at most")),
+        ("2", "at least 2", "2", _qualified(2, "at least")),
+        ("2", "2 at most", "2", _qualified(2, "at most")),
+        ("2", "up to 2", "2", _qualified(2, "up to")),
+        ("2", "It has at most 2 degrees of freedom", "2", _qualified(2, "at most")),
+        ("2", "at most: 2", "2", _qualified(2, "at most")),  # the parser reads "at most:" as a label
+        ("2", "2 (max)", "2", _qualified(2, "max")),
+        # …or multiply it: 2 for each bob is 4, two hundred 200
+        ("2", "two hundred", "2", _qualified("two", "hundred")),
+        ("2", "2 dozen", "2", _qualified(2, "dozen")),
+        ("2", "2 thousand", "2", _qualified(2, "thousand")),
+        ("2", "2 (2 pairs)", "2", _qualified(2, "pairs")),
+        ("2", "2 for each bob", "2", _qualified(2, "for each")),
+        ("2", "2 each", "2", _qualified(2, "each")),
+        ("2", "each bob has 2", "2", _qualified(2, "each")),
+        ("2", "one each", "1", _qualified("one", "each")),  # 2, read as a product: before, wrong, read as 1
+        ("1", "one each", "1", _qualified("one", "each")),  # before, right
+        ("6", "3 for each particle", "3", _qualified(3, "for each")),
+        # a count is exact: an approximation of one is no count
+        ("2", "about 2", "2", _qualified(2, "about")),
+        ("2", "approximately 2", "2", _qualified(2, "approximately")),
+        ("2", "nearly 2", "2", _qualified(2, "nearly")),
+        ("2", "≈ 2", "2", _qualified(2, "≈")),
+        ("2", "n ≈ 2", "2", _qualified(2, "≈")),
+        ("2", "2 (roughly)", "2", _qualified(2, "roughly")),
+        ("2", "2 (approx.)", "2", _qualified(2, "approx")),
+        # a measured value is near enough within its tolerance, but not less than it, nor one for each thing
+        (PERIOD, "less than 2.01 s", "2.01", _qualified("2.01 s", "less than")),
+        (PERIOD, "2.01 s for each swing", "2.01", _qualified("2.01 s", "for each")),
+    ],
+)
+def test_words_that_make_a_number_another_send_it_to_a_person(expected, submitted, read_as, feedback):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.read_as, verdict.feedback) == (
+        "undecided",
+        0.0,
+        read_as,
+        (feedback,),
+    )
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "less than " * 30 + "2",
+        "2 " + "dozen " * 40,
+        "about (" * 30 + "2" + ")" * 30,
+        "maybe:" + " " * 300 + "2",  # longer than the words are read in, and read as typed: the label dropped
+        "at most: " + " " * 300 + "2",
+        "2 (one coordinate for each bob) " + "for each bob " * 20,
+        "≈" * 100 + " 2",
+        "2" + " = n" * 60 + " at most",
+    ],
+)
+def test_hostile_qualified_numbers_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
 @pytest.mark.parametrize(
     "submitted",
     [

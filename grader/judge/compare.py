@@ -1148,7 +1148,9 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
 
 
 # the readings of a number that leave which number is meant to a person (see grader.judge.numbers.read_number)
-_NUMBER_FOR_A_PERSON = frozenset({"count_bracket_for_a_person", "number_doubted_for_a_person"})
+_NUMBER_FOR_A_PERSON = frozenset(
+    {"count_bracket_for_a_person", "number_doubted_for_a_person", "number_qualified_for_a_person"}
+)
 
 
 def _count_unclear(spec: Kind, expected: Expected, outcome: Outcome, notes: tuple, deadline) -> tuple[Outcome, tuple]:
@@ -1157,7 +1159,7 @@ def _count_unclear(spec: Kind, expected: Expected, outcome: Outcome, notes: tupl
     count with its working (``2 (3 − 1)``), or written close as a product (``2(3 − 1)``), where it earns
     nothing so but would the other way: for a person too. In both, nothing is proposed: the reading
     that earns is not the likelier one. So too a number beside words that may take it back or doubt it
-    (``6 − 4 = 2? no, 4``). Returns the outcome and the notes left."""
+    (``6 − 4 = 2? no, 4``), or make it another (``at most 2``). Returns the outcome and the notes left."""
     unclear = next((note for note in notes if note and note[0] in _NUMBER_FOR_A_PERSON), None)
     if unclear is not None:
         return Outcome("undecided", 0.0, *unclear, method=outcome.method), ()

@@ -12,8 +12,9 @@ still 6. A count is the exception: after one, brackets are more often its workin
 so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person. Working over several
 lines (``6 − 2 = 4; 6 − 4 = 2``) is graded at its last line, as a chain on one line is at its last side.
 
-Words that take a number back or doubt it (``6 − 4 = 2? no, 4``, ``maybe 2``) are not read past: which
-number is the answer is then for a person to say. Nor is the first side of ``6 − 4 = 2 <anything>``
+Words that take a number back or doubt it (``6 − 4 = 2? no, 4``, ``maybe 2``), or may make it another
+(``at most 2``, ``2 for each bob``, ``two hundred``, and for a count, which is exact, ``about 2``), are not
+read past: which number is the answer is then for a person to say. Nor is the first side of ``6 − 4 = 2 <anything>``
 graded where the last cannot be read: only before the quantity's name (``2.01 s = T``).
 
 A remark after the number must be words, not mathematics: in ``2 π √(l/g)`` for a period, the
@@ -107,13 +108,14 @@ def read_number(
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
     ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9.
 
-    Words that take a number back or doubt it (``6 − 4 = 2? no, 4``) send the answer to a person, with
-    a note that says so and the last number it gives: which is the answer is not for the checker to say.
+    Words that take a number back or doubt it (``6 − 4 = 2? no, 4``), or may make it another (``at most
+    2``), send the answer to a person, with a note that says so: which is the answer is not for the checker
+    to say.
     """
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
     )
-    return _doubted(text, (prepared, answer, notes), reads)
+    return _qualified(text, _doubted(text, (prepared, answer, notes), reads), count)
 
 
 def _read_number(
@@ -250,7 +252,8 @@ def _lines(text: str) -> list[str]:
     return [line for line in lines if line]
 
 
-_FOR_A_PERSON = frozenset({"number_doubted_for_a_person"})  # notes that leave the number to a person
+# the notes that leave which number is meant to a person
+_FOR_A_PERSON = frozenset({"number_doubted_for_a_person", "number_qualified_for_a_person"})
 _LAST_NUMBERS = 6  # numbers tried from the end of an answer, for the one shown beside a doubt
 _DIGITS = re.compile(r"(?<![\w.])[0-9]+(?:\.[0-9]+)?(?![\w.])")
 
@@ -263,15 +266,13 @@ def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> 
     person (nothing is proposed). Where there is no working either (``2? no, 4``), the answer is
     refused as typed, for the student to write again."""
     prepared, answer, notes = read
-    if any(note[0] in _FOR_A_PERSON for note in notes) or len(text) > _LENGTH:
+    if any(note[0] in _FOR_A_PERSON for note in notes):
         return read
-    said = {}  # as typed, once each
-    for found in _CORRECTION.finditer(text):
-        said.setdefault(" ".join(found[0].lower().split()), " ".join(found[0].split()))
+    said = _said(_CORRECTION, text)
     if not said:
         return read
     if answer is None:
-        if len(_sides(text)[0]) < 2:
+        if len(text) > _LENGTH or len(_sides(text)[0]) < 2:
             return read
         for typed in [found[0] for found in _DIGITS.finditer(text)][::-1][:_LAST_NUMBERS]:
             answer = reads(typed)
@@ -280,9 +281,51 @@ def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> 
                 break
         else:
             return read
+    return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
+
+
+# words that make a number another, or no one number: less than 2, at most 2, 2 or more, 2 for each bob (4),
+# 2 dozen, two hundred, 2 pairs
+_QUALIFYING = re.compile(
+    r"\b(?:less|fewer|more|greater|larger|smaller|bigger|higher|lower)\s+than\b|\bat\s+(?:most|least)\b"
+    r"|\bup\s+to\b|\bor\s+(?:more|less|fewer|so)\b|\b(?:(?:for|on)\s+)?(?:each|every)\b"
+    r"|\b(?:per|apiece|minimum|maximum|max)\b"
+    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs?)\b",
+    re.I,
+)
+# and beside a count, which is exact, words of an approximation: about 2, ≈ 2, 2 (roughly)
+_APPROXIMATING = re.compile(
+    r"\b(?:about|around|roughly|approximately|approx|nearly|almost|circa|ca|ish)\b|[≈≃~]"
+    r"|\\(?:approx|simeq|sim)(?![A-Za-z])",
+    re.I,
+)
+
+
+def _qualified(text: str, read: tuple[str, ParsedAnswer | None, tuple], count: bool) -> tuple:
+    """``read`` (the text to judge, its reading, notes), or where words beside its number may make it
+    another (``less than 2``, ``2 for each bob``, ``two hundred``, and for a count ``about 2``), a note
+    that sends it to a person: graded as the bare number, such an answer could pass where it says
+    something else. "One coordinate for each bob", after a count, says what each counts, and is read
+    past (see :func:`_is_remark`)."""
+    prepared, answer, notes = read
+    if answer is None or any(note[0] in _FOR_A_PERSON for note in notes):
+        return read
+    words = _PER_EACH.sub(" ", text)
+    said = _said(_QUALIFYING, words) or (_said(_APPROXIMATING, words) if count else "")
+    if not said:
+        return read
+    sides = [side for side in _sides(prepared)[0] if side] or [prepared.strip()]  # n ≈ 2: the 2
+    value = next((details["value"] for _, details in notes if "value" in details), sides[-1])
+    return prepared, answer, (("number_qualified_for_a_person", {"value": value, "words": said}),)
+
+
+def _said(words: re.Pattern, text: str) -> str:
+    """What ``words`` finds in ``text``, as typed, each once, for a note: ``?, no``."""
+    said: dict[str, str] = {}
+    for found in words.finditer(text):
+        said.setdefault(" ".join(found[0].lower().split()), " ".join(found[0].split()))
     shown = ", ".join(said.values())
-    shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
-    return prepared, answer, (("number_doubted_for_a_person", {"words": shown}),)
+    return shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
 
 
 def _is_name(side: str) -> bool:
