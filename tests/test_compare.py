@@ -3002,6 +3002,46 @@ def test_hostile_lines_of_working_are_never_right(submitted):
     assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "feedback"),
+    [
+        # a number the count is not, in brackets or after a comma: a remark, as ≠ 4 is (before, refused as 8·not)
+        ("2", "2 (not 4)", "equivalent", "2", ("Correct.", _remark(2, "(not 4)"))),
+        ("4", "2 (not 4)", "not_equivalent", "2", ("Not equivalent to the expected answer.", _remark(2, "(not 4)"))),
+        ("2", "2 (not four)", "equivalent", "2", ("Correct.", _remark(2, "(not four)"))),
+        ("2", "2, not 4", "equivalent", "2", ("Correct.", _remark(2, "not 4"))),
+        ("2", "n = 2, not 4.", "equivalent", "2", ("Correct.", _remark(2, "not 4"))),
+        ("2", "6 - 4 = 2 (not 4)", "equivalent", "2", ("Correct.", _final(2), _remark(2, "(not 4)"))),
+        # …not beside a doubt; where it rules out the count itself, refused (see the table of hostile ones)
+        ("2", "maybe 2 (not 4)", "undecided", "2", (_doubted("maybe"),)),
+    ],
+)  # fmt: skip
+def test_a_number_a_count_is_not_in_brackets_is_a_remark(expected, submitted, status, read_as, feedback):
+    verdict = compare(expected, submitted, kind="integer")
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+    if read_as is not None:
+        assert verdict.read_as == read_as
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "2 (not 2)",
+        "4 (not 2)",
+        "(not 2)",
+        ", not 2",
+        "2 (not 4",
+        "2" + " (not 4)" * 40,
+        "2 (" * 40 + "not 4" + ")" * 40,
+        "9" * 40 + ", not 2",  # more digits than the parser reads
+        "4" + ", not 2" * 30,
+    ],
+)
+def test_hostile_numbers_ruled_out_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
 def _qualified(value, words):
     return f"Your number `{value}` comes with `{words}`, which may make it another number, or no one number: a" \
         " person will decide what your answer is."  # fmt: skip

@@ -106,7 +106,8 @@ def read_number(
     ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the part asks for a quantity in a unit) reads
     2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s; ``uncertainty`` (a measured value may
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
-    ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9.
+    ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9, as
+    is ``2 (not 4)``.
 
     Words that take a number back or doubt it (``6 − 4 = 2? no, 4``), or may make it another (``at most
     2``), send the answer to a person, with a note that says so: which is the answer is not for the checker
@@ -115,7 +116,9 @@ def read_number(
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
     )
-    return _qualified(text, _doubted(text, (prepared, answer, notes), reads), count)
+    ruled_out = _ruled_out(text) if count else None
+    said = ruled_out["value"] if ruled_out else text  # 2 (not 4): its "not" rules 4 out, and doubts no number
+    return _qualified(said, _doubted(said, (prepared, answer, notes), reads), count)
 
 
 def _read_number(
@@ -132,6 +135,9 @@ def _read_number(
     unequal = _NOT_EQUAL.fullmatch(text) if count and len(text) <= _LENGTH else None
     if unequal:
         return _unequal(unequal, reads, names)
+    ruled_out = _ruled_out(text) if count else None
+    if ruled_out:
+        return _unequal(ruled_out, reads, names, rest=ruled_out["rest"].lstrip(", "))  # as other remarks are
     uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
     if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s, 2.006(1) s: the value is graded, its uncertainty is not
         if uncertain["cvalue"]:
@@ -345,17 +351,33 @@ _NOT_EQUAL = re.compile(
 )
 
 
-def _unequal(found: re.Match, reads, names) -> tuple[str, ParsedAnswer | None, tuple]:
-    """``9 − 3 = 6 ≠ 9``: the count before ``≠``, read as any count is, with a note that the number it
-    rules out was not graded. As typed (refused, for its sign) where that count is the number it rules
-    out, or is none."""
+# 2 (not 4), n = 2, not 4, where a count is asked: the count, then a number it is not, as ≠ 4 says it
+_RULED_OUT = re.compile(
+    rf"(?P<value>.+?)\s*(?P<rest>(?P<open>\(\s*|,\s*)not\s+(?P<other>[0-9]+|(?:{'|'.join(_WORDS)})\b)\s*"
+    r"(?P<close>\)?))\s*\.?\s*",
+    re.I | re.S,
+)
+
+
+def _ruled_out(text: str) -> re.Match | None:
+    """``2 (not 4)``, ``2, not 4``: the count and the number it rules out, in a bracket or after a comma."""
+    found = _RULED_OUT.fullmatch(text) if len(text) <= _LENGTH else None
+    if found is None or found["open"].startswith("(") != bool(found["close"]):
+        return None
+    return found
+
+
+def _unequal(found: re.Match, reads, names, rest: str | None = None) -> tuple[str, ParsedAnswer | None, tuple]:
+    """``9 − 3 = 6 ≠ 9``, ``2 (not 4)``: the count before ``≠`` (or the bracket), read as any count is,
+    with a note that the number it rules out (``rest``, as typed; else ``≠ 9``) was not graded. As typed
+    (refused, for its sign or its "not") where that count is the number it rules out, or is none."""
     prepared, answer, notes = read_number(found["value"], reads, names, count=True)
     other = int(NUMBER_WORDS.get(found["other"].lower(), found["other"]))
     value = _value_of(answer)
     if value is None or value == other:
         return found[0], None, ()  # 6 ≠ 6 says no count
     typed = next((details["value"] for _, details in notes if "value" in details), _sides(found["value"])[0][-1])
-    rest = f"{found['sign']} {found['other']}"
+    rest = rest or f"{found['sign']} {found['other']}"
     rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
     return prepared, answer, (*notes, ("remark_ignored", {"value": typed, "rest": rest}))
 
