@@ -3097,6 +3097,20 @@ def test_words_that_make_a_number_another_send_it_to_a_person(expected, submitte
 
 
 @pytest.mark.parametrize(
+    ("expected", "submitted"),
+    [
+        # words that say what was counted, not how many: read past, as remarks are
+        ("15", "15 (no constraints)"),  # "no" before a word is no taking back
+        ("2", "2 (minimum number of coordinates)"),  # what a count of degrees of freedom is, not "at least"
+        ("2", "2 (a pair of angles)"),  # a pair is two, not pairs of something
+    ],
+)
+def test_words_that_say_what_was_counted_are_a_remark_not_a_qualifier(expected, submitted):
+    verdict = compare(expected, submitted, kind="integer")
+    assert verdict.feedback == ("Correct.", _remark(expected, submitted[len(expected) :].strip()))
+
+
+@pytest.mark.parametrize(
     "submitted",
     [
         "less than " * 30 + "2",

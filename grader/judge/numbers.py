@@ -59,9 +59,11 @@ _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
 # a quantity's name after its value, which the value may stand before (2.01 s = T, 2 = n, 2 = DOF, 2 = d.o.f.,
 # 2.01 s = the period): one name, or "the" and one word, and nothing else
 _NAME_AFTER = re.compile(r"(?:the\s+)?(?:[^\W\d_][\w₀-₉']*|(?:[A-Za-z]\.){2,})\.?", re.I)
-# words that take a number back or doubt it: 6 − 4 = 2? no, 4; 6 − 4 = 2 is wrong, it is 4; maybe 2
+# words that take a number back or doubt it: 6 − 4 = 2? no, 4; 6 − 4 = 2 is wrong, it is 4; maybe 2. Not the
+# "no" of 15 (no constraints), before a word, which says what was counted
 _CORRECTION = re.compile(
-    r"\b(?:no|nope|not|never|wait|wrong|incorrect|false|mistakes?|mistaken|oops|sorry|actually|instead|rather|"
+    r"\bno\b(?!\s+(?!(?:wait|sorry|actually|the|that|this|it's)\b)[^\W\d_]{3,})"
+    r"|\b(?:nope|not|never|wait|wrong|incorrect|false|mistakes?|mistaken|oops|sorry|actually|instead|rather|"
     r"correction|corrected|scratch|ignore|typo|meant|should|redo|maybe|perhaps|probably|possibly|unsure|"
     r"uncertain|I\s+think|I\s+guess|I\s+believe)\b|\?",
     re.I,
@@ -290,13 +292,14 @@ def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> 
     return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
 
 
-# words that make a number another, or no one number: less than 2, at most 2, 2 or more, 2 for each bob (4),
-# 2 dozen, two hundred, 2 pairs
+# words that make a number another, or no one number: less than 2, at most 2, 2 or more, max 2, 2 for each bob
+# (4), 2 dozen, two hundred, 2 pairs. Minimum and maximum only against the number: 2 (the minimum number of
+# coordinates) says what a count of degrees of freedom is
 _QUALIFYING = re.compile(
     r"\b(?:less|fewer|more|greater|larger|smaller|bigger|higher|lower)\s+than\b|\bat\s+(?:most|least)\b"
-    r"|\bup\s+to\b|\bor\s+(?:more|less|fewer|so)\b|\b(?:(?:for|on)\s+)?(?:each|every)\b"
-    r"|\b(?:per|apiece|minimum|maximum|max)\b"
-    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs?)\b",
+    r"|\bup\s+to\b|\bor\s+(?:more|less|fewer|so)\b|\b(?:(?:for|on)\s+)?(?:each|every)\b|\b(?:per|apiece)\b"
+    r"|\b(?:max|maximum|min|minimum)\b\.?(?=\s*[0-9])|(?<=[0-9])\s*[(,]?\s*(?:max|maximum|minimum)\b(?=\s*\)?\s*[.,;]?\s*$)"
+    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs)\b",
     re.I,
 )
 # and beside a count, which is exact, words of an approximation: about 2, ≈ 2, 2 (roughly)
@@ -329,7 +332,8 @@ def _said(words: re.Pattern, text: str) -> str:
     """What ``words`` finds in ``text``, as typed, each once, for a note: ``?, no``."""
     said: dict[str, str] = {}
     for found in words.finditer(text):
-        said.setdefault(" ".join(found[0].lower().split()), " ".join(found[0].split()))
+        typed = " ".join(found[0].strip(" (,").split())  # 2 (max): max
+        said.setdefault(typed.lower(), typed)
     shown = ", ".join(said.values())
     return shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
 
