@@ -2966,6 +2966,10 @@ def test_hostile_chains_with_doubts_or_names_are_never_right(submitted):
         (PERIOD, "2π√(1/9.81) = 2.006 s\n2.006 s", "equivalent", "2.006", ("Correct.", _final("2.006 s"))),
         (PERIOD, "2π√(1/9.81) = 2.006 s; T = 3 s", "not_equivalent", "3",
          ("Not within the accepted tolerance.", _final("3 s"))),
+        # one line and an empty one after it: the line (before, read as an equation where a number is asked)
+        ("2", "6 - 4 = 2;", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "6-4=2\n\n", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "2 (not 4);", "equivalent", "2", ("Correct.", _remark(2, "(not 4)"))),
         # …and in a list, the last item that is working, not the first
         ("2", "6 - 2 = 4, 6 - 4 = 2", "equivalent", "2", ("Correct.",)),
         ("2", "3N = 6, 3N - k = 2", "equivalent", "2", ("Correct.",)),

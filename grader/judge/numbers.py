@@ -118,8 +118,10 @@ def read_number(
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
     )
-    ruled_out = _ruled_out(text) if count else None
-    said = ruled_out["value"] if ruled_out else text  # 2 (not 4): its "not" rules 4 out, and doubts no number
+    lines = _lines(text) if len(text) <= _LENGTH and _SEPARATED.search(text) else [text]
+    said = lines[0] if len(lines) == 1 else text
+    ruled_out = _ruled_out(said) if count else None
+    said = ruled_out["value"] if ruled_out else said  # 2 (not 4): its "not" rules 4 out, and doubts no number
     return _qualified(said, _doubted(said, (prepared, answer, notes), reads), count)
 
 
@@ -165,6 +167,11 @@ def _read_number(
         if bracketed is not None:
             return bracketed
     if len(text) <= _LENGTH and _SEPARATED.search(text):
+        lines = _lines(text)
+        if len(lines) == 1 and lines[0] != text:  # 6 − 4 = 2; with nothing after: one line, as typed
+            return _read_number(
+                lines[0], reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+            )
         worked = _worked_over_lines(text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
         if worked is not None:
             return worked
