@@ -14,8 +14,8 @@ lines (``6 − 2 = 4; 6 − 4 = 2``) is graded at its last line, as a chain on o
 
 Words that take a number back or doubt it (``6 − 4 = 2? no, 4``, ``maybe 2``), or may make it another
 (``at most 2``, ``2 for each bob``, ``two hundred``, and for a count, which is exact, ``about 2``), are not
-read past: which number is the answer is then for a person to say. Nor is the first side of ``6 − 4 = 2 <anything>``
-graded where the last cannot be read: only before the quantity's name (``2.01 s = T``).
+read past: which number is the answer is then for a person to say. Nor is the first side of ``6 − 4 = 2
+…`` graded where the last cannot be read: only before the quantity's name (``2.01 s = T``).
 
 A remark after the number must be words, not mathematics: in ``2 π √(l/g)`` for a period, the
 √(l/g) is part of the answer, which is a formula where a number is asked for, and is refused as one.
@@ -246,7 +246,7 @@ def _worked_over_lines(
             return None
     prepared, answer, notes = _read_number(
         final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
-    )
+    )  # an uncertainty in the text was read past before (see _UNCERTAINTY_INSIDE)
     if answer is None:
         return None
     value = next((details["value"] for _, details in notes if "value" in details), _sides(final)[0][-1])
@@ -305,7 +305,8 @@ def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> 
 _QUALIFYING = re.compile(
     r"\b(?:less|fewer|more|greater|larger|smaller|bigger|higher|lower)\s+than\b|\bat\s+(?:most|least)\b"
     r"|\bup\s+to\b|\bor\s+(?:more|less|fewer|so)\b|\b(?:(?:for|on)\s+)?(?:each|every)\b|\b(?:per|apiece)\b"
-    r"|\b(?:max|maximum|min|minimum)\b\.?(?=\s*[0-9])|(?<=[0-9])\s*[(,]?\s*(?:max|maximum|minimum)\b(?=\s*\)?\s*[.,;]?\s*$)"
+    r"|\b(?:max|maximum|min|minimum)\b\.?(?=\s*[0-9])"
+    r"|(?<=[0-9])\s*[(,]?\s*(?:max|maximum|minimum)\b(?=\s*\)?\s*[.,;]?\s*$)"
     r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs)\b",
     re.I,
 )
