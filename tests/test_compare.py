@@ -2966,6 +2966,13 @@ def test_hostile_chains_with_doubts_or_names_are_never_right(submitted):
         (PERIOD, "2π√(1/9.81) = 2.006 s\n2.006 s", "equivalent", "2.006", ("Correct.", _final("2.006 s"))),
         (PERIOD, "2π√(1/9.81) = 2.006 s; T = 3 s", "not_equivalent", "3",
          ("Not within the accepted tolerance.", _final("3 s"))),
+        # where the lines disagree, words beside the last may say it is not the only answer: a person
+        ("4", "6 - 4 = 2\nalso 4", "undecided", "4", (_doubted("also"),)),
+        ("4", "6 - 4 = 2\n4 as well", "undecided", "4", (_doubted("as well"),)),
+        ("4", "6 - 4 = 2\nalso 6 - 2 = 4", "undecided", "4", (_doubted("also"),)),
+        ("2", "6 - 2 = 4\nThe answer is 2", "undecided", "2", (_doubted("The answer is"),)),
+        ("2", "6 - 4 = 2\nThe answer is 2", "equivalent", "2", ("Correct.", _final(2), _sentence(2))),  # they agree
+        ("4", "6 - 4 = 2\nn = 4", "equivalent", "4", ("Correct.", _final(4))),  # a name of one letter, no words
         # one line and an empty one after it: the line (before, read as an equation where a number is asked)
         ("2", "6 - 4 = 2;", "equivalent", "2", ("Correct.", _final(2))),
         ("2", "6-4=2\n\n", "equivalent", "2", ("Correct.", _final(2))),
@@ -2974,7 +2981,7 @@ def test_hostile_chains_with_doubts_or_names_are_never_right(submitted):
         ("2", "6 - 2 = 4, 6 - 4 = 2", "equivalent", "2", ("Correct.",)),
         ("2", "3N = 6, 3N - k = 2", "equivalent", "2", ("Correct.",)),
         # words that take a line back or doubt it: a person, nothing proposed (before, the first line was graded)
-        ("2", "6 - 4 = 2\nNo wait: 6 - 2 = 4", "undecided", "4", (_doubted("No, wait"),)),
+        ("2", "6 - 4 = 2\nNo wait: 6 - 2 = 4", "undecided", "4", (_doubted("No wait"),)),
         ("2", "6 - 2 = 4\nwrong: 6 - 4 = 2", "undecided", "2", (_doubted("wrong"),)),
     ],
 )  # fmt: skip

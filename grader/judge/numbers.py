@@ -230,7 +230,8 @@ def _worked_over_lines(
     a chain of numbers (``6 − 2 = 4``, ``2π√(1/9.81) = 2.006 s``), is graded at the value of the last
     line, read as any line is, as a chain on one line is (``6 − 2 = 4 → 2``): the final value, with
     the note that the working before it is not graded. Where the lines disagree, the last is the
-    student's last word; words that take one back or doubt it send the answer to a person
+    student's last word; but words beside it may say it is not (``6 − 4 = 2`` then ``also 4``, ``4 as
+    well``), and send the answer to a person, as words that take a line back or doubt it do
     (:func:`_doubted`). None where ``text`` is no such working: lines that name their values
     (``n = 2; m = 3``, ``3N = 6; k = 4; n = 2``) are read as a list, and numbers alone (``2; 4``) offer
     a choice."""
@@ -238,20 +239,37 @@ def _worked_over_lines(
     if not 2 <= len(lines) <= _LINES:
         return None
     *working, final = lines
-    sides = [_sides(line) for line in working]
-    if sum(len(pieces) for pieces, _ in sides) > _SIDES:
+    sides = [_sides(line)[0] for line in working]
+    if sum(len(pieces) for pieces in sides) > _SIDES:
         return None
-    for pieces, _ in sides:
-        if len(pieces) < 2 or any(reads(_spelled(piece, decimal_comma, unit)[0]) is None for piece in pieces):
+    values = []  # each line's last
+    for pieces in sides:
+        read = [reads(_spelled(piece, decimal_comma, unit)[0]) for piece in pieces] if len(pieces) > 1 else [None]
+        if None in read:
             return None
+        values.append(_last_side(read[-1]))
     prepared, answer, notes = _read_number(
         final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
     )  # an uncertainty in the text was read past before (see _UNCERTAINTY_INSIDE)
     if answer is None:
         return None
+    said = [word for word in _WORD.findall(final) if word.lower() not in (*IMPLYING_WORDS, *NUMBER_WORDS)]
+    if said and any(value != _last_side(answer) for value in values):
+        words = " ".join(said)  # as a phrase: as well, The answer is
+        words = words if len(words) <= _SHOWN else words[: _SHOWN - 1] + "…"
+        return prepared, answer, (("number_doubted_for_a_person", {"words": words}),)
     value = next((details["value"] for _, details in notes if "value" in details), _sides(final)[0][-1])
     notes = tuple(note for note in notes if note[0] not in ("final_value", "number_read"))
     return prepared, answer, (("final_value", {"value": value}), *notes)
+
+
+# a word beside a line's number, not a name of one letter (n = 4, T = 3 s)
+_WORD = re.compile(r"(?<![\w\\])[^\W\d_]{2,}(?!\w)")
+
+
+def _last_side(answer: ParsedAnswer):
+    """The value a number read says: its last side (``n = 2``: 2)."""
+    return answer.value.rhs if answer.kind == "equation" else answer.value
 
 
 def _lines(text: str) -> list[str]:
