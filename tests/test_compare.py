@@ -2920,6 +2920,15 @@ _X = "A number is asked for here; your answer contains `x`."
         ("2", "2, I  think", "undecided", "2", (_doubted("I think"),)),
         ("2", "It has perhaps 2 degrees of freedom", "undecided", "2", (_doubted("perhaps"),)),
         (PERIOD, "probably 2.01 s", "undecided", "2.01", (_doubted("probably"),)),
+        # …or words beside a final value that the working before it does not come to: a second answer, maybe
+        ("4", "6 - 4 = 2, so also 4", "undecided", "4", (_doubted("also"),)),  # before, right
+        ("4", "6 - 4 = 2 = 4 as well", "undecided", "4", (_doubted("as well"),)),
+        ("2", "6 − 2 = 4 → 2 degrees of freedom", "undecided", "2", (_doubted("degrees of freedom"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s → also 3 s", "undecided", "3", (_doubted("also"),)),
+        # …where it does, or a measured value rounds it, the value is graded
+        ("2", "6 − 4 = 2 → 2 degrees of freedom", "equivalent", "2", ("Correct.", _remark(2, "degrees of freedom"))),
+        (PERIOD, "2π√(1/9.81) = 2.006 s (rounded)", "equivalent", "2.006",
+         ("Correct.", _remark("2.006 s", "(rounded)"))),
     ],
 )  # fmt: skip
 def test_the_first_side_is_graded_only_before_a_name_and_a_doubted_number_goes_to_a_person(
@@ -2971,6 +2980,9 @@ def test_hostile_chains_with_doubts_or_names_are_never_right(submitted):
         ("4", "6 - 4 = 2\n4 as well", "undecided", "4", (_doubted("as well"),)),
         ("4", "6 - 4 = 2\nalso 6 - 2 = 4", "undecided", "4", (_doubted("also"),)),
         ("2", "6 - 2 = 4\nThe answer is 2", "undecided", "2", (_doubted("The answer is"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s\nalso 3 s", "undecided", "3", (_doubted("also"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s\nThe period is 2.01 s", "equivalent", "2.01",
+         ("Correct.", _final("2.01 s"), _sentence("2.01 s"))),  # rounded, not another value
         ("2", "6 - 4 = 2\nThe answer is 2", "equivalent", "2", ("Correct.", _final(2), _sentence(2))),  # they agree
         ("4", "6 - 4 = 2\nn = 4", "equivalent", "4", ("Correct.", _final(4))),  # a name of one letter, no words
         # one line and an empty one after it: the line (before, read as an equation where a number is asked)

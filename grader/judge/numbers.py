@@ -202,6 +202,10 @@ def _read_number(
             if answer is None or (rest and not _is_remark(rest, names, words or typed)):
                 continue
             typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
+            said = _words_beside(f"{before} {rest}") if last and index == last else ""
+            if said and _other_values(pieces[:last], answer, reads, decimal_comma, unit, count):
+                # 6 − 4 = 2, so also 4: words beside a value the working does not come to may offer a second
+                return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
             if before:
                 notes += (("number_in_sentence", {"value": typed}),)
             elif rest:
@@ -253,11 +257,9 @@ def _worked_over_lines(
     )  # an uncertainty in the text was read past before (see _UNCERTAINTY_INSIDE)
     if answer is None:
         return None
-    said = [word for word in _WORD.findall(final) if word.lower() not in (*IMPLYING_WORDS, *NUMBER_WORDS)]
-    if said and any(value != _last_side(answer) for value in values):
-        words = " ".join(said)  # as a phrase: as well, The answer is
-        words = words if len(words) <= _SHOWN else words[: _SHOWN - 1] + "…"
-        return prepared, answer, (("number_doubted_for_a_person", {"words": words}),)
+    said = _words_beside(final)
+    if said and not all(_agree(value, _last_side(answer), count) for value in values):
+        return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
     value = next((details["value"] for _, details in notes if "value" in details), _sides(final)[0][-1])
     notes = tuple(note for note in notes if note[0] not in ("final_value", "number_read"))
     return prepared, answer, (("final_value", {"value": value}), *notes)
@@ -265,6 +267,42 @@ def _worked_over_lines(
 
 # a word beside a line's number, not a name of one letter (n = 4, T = 3 s)
 _WORD = re.compile(r"(?<![\w\\])[^\W\d_]{2,}(?!\w)")
+
+
+def _words_beside(text: str) -> str:
+    """The words of ``text``, as a phrase (``as well``, ``The answer is``): not a name of one letter,
+    a step (so, hence) or a number in words."""
+    said = " ".join(word for word in _WORD.findall(text) if word.lower() not in (*IMPLYING_WORDS, *NUMBER_WORDS))
+    return said if len(said) <= _SHOWN else said[: _SHOWN - 1] + "…"
+
+
+def _other_values(pieces: list[str], answer: ParsedAnswer, reads, decimal_comma: bool, unit: bool, count: bool) -> bool:
+    """Whether a side of working (``pieces``) that reads as a number is not the value ``answer`` says;
+    and where there are too many sides to read, whether one may be."""
+    if len(pieces) > _SIDES:
+        return True
+    final = _last_side(answer)
+    values = [reads(_spelled(piece, decimal_comma, unit)[0]) for piece in pieces if piece]
+    return not all(_agree(_last_side(value), final, count) for value in values if value is not None)
+
+
+_ROUNDED = 0.05  # a measured value rounded (2π√(1/9.81) = 2.006 s, then 2.0 s) is no other value
+
+
+def _agree(value, other, count: bool) -> bool:
+    """Whether two values of working say the same: a count's the same number; a measured value's the
+    same to within its rounding."""
+    if value == other:
+        return True
+    if count:
+        return False
+    try:
+        ratio = value / other
+        # in its unit or not (2π√(1/9.81) = 2.006 s): reads reads no symbol but a unit
+        ratio = complex(ratio.subs({symbol: 1 for symbol in ratio.free_symbols}).evalf(15))
+    except (TypeError, ValueError, ArithmeticError):
+        return False  # a value with no number, or 0: not said to agree
+    return abs(ratio - 1) <= _ROUNDED
 
 
 def _last_side(answer: ParsedAnswer):
