@@ -2911,6 +2911,273 @@ def test_working_with_steps_is_graded_at_its_last_value(expected, submitted, sta
         assert verdict.read_as == read_as
 
 
+def _doubted(words):
+    return f"Your answer says `{words}`, which may take back or doubt a number of it: a person will decide which" \
+        " number is your answer."  # fmt: skip
+
+
+_X = "A number is asked for here; your answer contains `x`."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "feedback"),
+    [
+        # a value stands before the quantity's name: the value is graded
+        ("2", "2 = DOF", "equivalent", "2", ("Correct.", _number(2))),
+        ("2", "2 = d.o.f.", "equivalent", "2", ("Correct.", _number(2))),
+        (PERIOD, "2.01 s = the period", "equivalent", "2.01", ("Correct.", _number("2.01 s"))),
+        (PERIOD, "2.01 s = T.", "equivalent", "2.01", ("Correct.", _number("2.01 s"))),
+        # before anything else, the first side is no answer: the last side is, read or refused (before, each right)
+        ("1", "3 - 2 = 1 or 2", "invalid", "", (_HEDGED,)),  # as 2 or 3 alone is
+        ("1", "3 - 2 = 1 x 2", "invalid", None, (_X,)),
+        (PERIOD, "2π√(1/9.81) = 2.006 x 2", "invalid", None, (_X,)),
+        ("2", "2 = or", "invalid", "", (_HEDGED,)),
+        # words that take a number back, or doubt it: a person, whatever it would earn, nothing proposed; shown
+        # is the last number (before, the first side was graded, and right)
+        ("2", "6 - 4 = 2? no, 4", "undecided", "4", (_doubted("?, no"),)),
+        ("4", "6 - 4 = 2? no, 4", "undecided", "4", (_doubted("?, no"),)),
+        ("2", "6 - 4 = 2 is wrong, it is 4", "undecided", "4", (_doubted("wrong"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s? no, 3 s", "undecided", "3", (_doubted("?, no"),)),
+        ("2", "2 = wrong", "undecided", "2", (_doubted("wrong"),)),
+        ("2", "2 = n?", "undecided", "2", (_doubted("?"),)),
+        # …in the working before the final value, or beside the number (before, graded, and right)
+        ("4", "6 - 4 = 2? No wait = 4", "undecided", "4", (_doubted("?, No, wait"),)),
+        ("2", "6 - 4 = 2 (wrong)", "undecided", "2", (_doubted("wrong"),)),
+        ("2", "maybe 2", "undecided", "2", (_doubted("maybe"),)),
+        ("2", "2, I  think", "undecided", "2", (_doubted("I think"),)),
+        ("2", "It has perhaps 2 degrees of freedom", "undecided", "2", (_doubted("perhaps"),)),
+        (PERIOD, "probably 2.01 s", "undecided", "2.01", (_doubted("probably"),)),
+        # …or words beside a final value that the working before it does not come to: a second answer, maybe
+        ("4", "6 - 4 = 2, so also 4", "undecided", "4", (_doubted("also"),)),  # before, right
+        ("4", "6 - 4 = 2 = 4 as well", "undecided", "4", (_doubted("as well"),)),
+        ("2", "6 − 2 = 4 → 2 degrees of freedom", "undecided", "2", (_doubted("degrees of freedom"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s → also 3 s", "undecided", "3", (_doubted("also"),)),
+        # …where it does, or a measured value rounds it, the value is graded
+        ("2", "6 − 4 = 2 → 2 degrees of freedom", "equivalent", "2", ("Correct.", _remark(2, "degrees of freedom"))),
+        (PERIOD, "2π√(1/9.81) = 2.006 s (rounded)", "equivalent", "2.006",
+         ("Correct.", _remark("2.006 s", "(rounded)"))),
+    ],
+)  # fmt: skip
+def test_the_first_side_is_graded_only_before_a_name_and_a_doubted_number_goes_to_a_person(
+    expected, submitted, status, read_as, feedback
+):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+    if read_as is not None:
+        assert verdict.read_as == read_as
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "6 - 4 = " * 60 + "2? no",  # many =, past the length read for words
+        "6 - 4 = 2" + "? no" * 60 + ", 4",
+        "2 = " + "n" * 300,
+        "(" * 80 + "6 - 4" + ")" * 80 + " = 2? no, 4",
+        "2 = " + "(" * 80 + "n",
+        "9" * 40 + " = 2? no, " + "9" * 40,  # more digits than the parser reads
+        "2 = n = " * 30 + "?",
+        "6 − 4 = 2? no, 4 = 2",  # doubted working, whatever its final value
+    ],
+)
+def test_hostile_chains_with_doubts_or_names_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "feedback"),
+    [
+        # working over several lines, or between ;: the last line's value, as on one line (before, the first's)
+        ("2", "6 - 2 = 4; 6 - 4 = 2", "equivalent", "2", ("Correct.", _final(2))),
+        ("4", "6 - 2 = 4; 6 - 4 = 2", "not_equivalent", "2", ("Not equivalent to the expected answer.", _final(2))),
+        ("2", "6 - 4 = 2\n6 - 2 = 4", "not_equivalent", "4", ("Not equivalent to the expected answer.", _final(4))),
+        ("2", "6 - 4 = 2\n2", "equivalent", "2", ("Correct.", _final(2))),  # before, refused: a list needs =
+        ("2", "6 - 4 = 2; so 2", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "6 - 4 = 2 \\\\ 2", "equivalent", "2", ("Correct.", _final(2))),  # TeX's row break
+        ("2", "6 - 4 = 2\n\n2 = n", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "6 − 4 → 2; 2 degrees of freedom", "equivalent", "2",
+         ("Correct.", _final(2), _remark(2, "degrees of freedom"))),
+        (PERIOD, "2π√(1/9.81) = 2.006 s\n2.006 s", "equivalent", "2.006", ("Correct.", _final("2.006 s"))),
+        (PERIOD, "2π√(1/9.81) = 2.006 s; T = 3 s", "not_equivalent", "3",
+         ("Not within the accepted tolerance.", _final("3 s"))),
+        # where the lines disagree, words beside the last may say it is not the only answer: a person
+        ("4", "6 - 4 = 2\nalso 4", "undecided", "4", (_doubted("also"),)),
+        ("4", "6 - 4 = 2\n4 as well", "undecided", "4", (_doubted("as well"),)),
+        ("4", "6 - 4 = 2\nalso 6 - 2 = 4", "undecided", "4", (_doubted("also"),)),
+        ("2", "6 - 2 = 4\nThe answer is 2", "undecided", "2", (_doubted("The answer is"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s\nalso 3 s", "undecided", "3", (_doubted("also"),)),
+        (PERIOD, "2π√(1/9.81) = 2.006 s\nThe period is 2.01 s", "equivalent", "2.01",
+         ("Correct.", _final("2.01 s"), _sentence("2.01 s"))),  # rounded, not another value
+        ("2", "6 - 4 = 2\nThe answer is 2", "equivalent", "2", ("Correct.", _final(2), _sentence(2))),  # they agree
+        ("4", "6 - 4 = 2\nn = 4", "equivalent", "4", ("Correct.", _final(4))),  # a name of one letter, no words
+        # one line and an empty one after it: the line (before, read as an equation where a number is asked)
+        ("2", "6 - 4 = 2;", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "6-4=2\n\n", "equivalent", "2", ("Correct.", _final(2))),
+        ("2", "2 (not 4);", "equivalent", "2", ("Correct.", _remark(2, "(not 4)"))),
+        # …and in a list, the last item that is working, not the first
+        ("2", "6 - 2 = 4, 6 - 4 = 2", "equivalent", "2", ("Correct.",)),
+        ("2", "3N = 6, 3N - k = 2", "equivalent", "2", ("Correct.",)),
+        # words that take a line back or doubt it: a person, nothing proposed (before, the first line was graded)
+        ("2", "6 - 4 = 2\nNo wait: 6 - 2 = 4", "undecided", "4", (_doubted("No wait"),)),
+        ("2", "6 - 2 = 4\nwrong: 6 - 4 = 2", "undecided", "2", (_doubted("wrong"),)),
+    ],
+)  # fmt: skip
+def test_working_over_several_lines_is_graded_at_the_last_lines_value(expected, submitted, status, read_as, feedback):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.read_as) == (status, float(status == "equivalent"), read_as)
+    assert verdict.feedback == feedback
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "6 - 4 = 4\n" * 7 + "2",  # more lines than working has
+        "4; 2",  # numbers alone offer a choice
+        "6 - 4; 2",
+        "6 - 4 = 4; " * 3 + "2 = " * 40 + "n",
+        "1 = " * 14 + "1\n2",  # more sides than are read
+        "(" * 60 + "6 - 4" + ")" * 60 + " = 4\n2",
+        "9" * 40 + " = 4\n2",
+        "6 - 4 = 4\n" + "9" * 40,
+        "6 - 4 = 4\n2^2^2^2^2^2^2^2^2^2",
+        "6 - 4 = 4;\n;\n;2 = 4",
+        "6 - 4 = 4\n" + "2 " * 150,
+    ],
+)
+def test_hostile_lines_of_working_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "read_as", "feedback"),
+    [
+        # a number the count is not, in brackets or after a comma: a remark, as ≠ 4 is (before, refused as 8·not)
+        ("2", "2 (not 4)", "equivalent", "2", ("Correct.", _remark(2, "(not 4)"))),
+        ("4", "2 (not 4)", "not_equivalent", "2", ("Not equivalent to the expected answer.", _remark(2, "(not 4)"))),
+        ("2", "2 (not four)", "equivalent", "2", ("Correct.", _remark(2, "(not four)"))),
+        ("2", "2, not 4", "equivalent", "2", ("Correct.", _remark(2, "not 4"))),
+        ("2", "n = 2, not 4.", "equivalent", "2", ("Correct.", _remark(2, "not 4"))),
+        ("2", "6 - 4 = 2 (not 4)", "equivalent", "2", ("Correct.", _final(2), _remark(2, "(not 4)"))),
+        # …not beside a doubt; where it rules out the count itself, refused (see the table of hostile ones)
+        ("2", "maybe 2 (not 4)", "undecided", "2", (_doubted("maybe"),)),
+    ],
+)  # fmt: skip
+def test_a_number_a_count_is_not_in_brackets_is_a_remark(expected, submitted, status, read_as, feedback):
+    verdict = compare(expected, submitted, kind="integer")
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+    if read_as is not None:
+        assert verdict.read_as == read_as
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "2 (not 2)",
+        "4 (not 2)",
+        "(not 2)",
+        ", not 2",
+        "2 (not 4",
+        "2" + " (not 4)" * 40,
+        "2 (" * 40 + "not 4" + ")" * 40,
+        "9" * 40 + ", not 2",  # more digits than the parser reads
+        "4" + ", not 2" * 30,
+    ],
+)
+def test_hostile_numbers_ruled_out_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
+def _qualified(value, words):
+    return f"Your number `{value}` comes with `{words}`, which may make it another number, or no one number: a" \
+        " person will decide what your answer is."  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "read_as", "feedback"),
+    [
+        # words that make the number another, or no one number: a person, nothing proposed (before, each the
+        # bare number, and right)
+        ("2", "less than 2", "2", _qualified(2, "less than")),
+        ("2", "more than 2", "2", _qualified(2, "more than")),
+        ("2", "at most 2", "2", _qualified(2, "at most")),
+        ("2", "at least 2", "2", _qualified(2, "at least")),
+        ("2", "2 at most", "2", _qualified(2, "at most")),
+        ("2", "up to 2", "2", _qualified(2, "up to")),
+        ("2", "It has at most 2 degrees of freedom", "2", _qualified(2, "at most")),
+        ("2", "at most: 2", "2", _qualified(2, "at most")),  # the parser reads "at most:" as a label
+        ("2", "2 (max)", "2", _qualified(2, "max")),
+        # …or multiply it: 2 for each bob is 4, two hundred 200
+        ("2", "two hundred", "2", _qualified("two", "hundred")),
+        ("2", "2 dozen", "2", _qualified(2, "dozen")),
+        ("2", "2 thousand", "2", _qualified(2, "thousand")),
+        ("2", "2 (2 pairs)", "2", _qualified(2, "pairs")),
+        ("2", "2 for each bob", "2", _qualified(2, "for each")),
+        ("2", "2 each", "2", _qualified(2, "each")),
+        ("2", "each bob has 2", "2", _qualified(2, "each")),
+        ("2", "one each", "1", _qualified("one", "each")),  # 2, read as a product: before, wrong, read as 1
+        ("1", "one each", "1", _qualified("one", "each")),  # before, right
+        ("6", "3 for each particle", "3", _qualified(3, "for each")),
+        # a count is exact: an approximation of one is no count
+        ("2", "about 2", "2", _qualified(2, "about")),
+        ("2", "approximately 2", "2", _qualified(2, "approximately")),
+        ("2", "nearly 2", "2", _qualified(2, "nearly")),
+        ("2", "≈ 2", "2", _qualified(2, "≈")),
+        ("2", "n ≈ 2", "2", _qualified(2, "≈")),
+        ("2", "2 (roughly)", "2", _qualified(2, "roughly")),
+        ("2", "2 (approx.)", "2", _qualified(2, "approx")),
+        # a measured value is near enough within its tolerance, but not less than it, nor one for each thing
+        (PERIOD, "less than 2.01 s", "2.01", _qualified("2.01 s", "less than")),
+        (PERIOD, "2.01 s for each swing", "2.01", _qualified("2.01 s", "for each")),
+    ],
+)
+def test_words_that_make_a_number_another_send_it_to_a_person(expected, submitted, read_as, feedback):
+    options = PERIOD_PART if expected == PERIOD else {"kind": "integer"}
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.read_as, verdict.feedback) == (
+        "undecided",
+        0.0,
+        read_as,
+        (feedback,),
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted"),
+    [
+        # words that say what was counted, not how many: read past, as remarks are
+        ("15", "15 (no constraints)"),  # "no" before a word is no taking back
+        ("2", "2 (minimum number of coordinates)"),  # what a count of degrees of freedom is, not "at least"
+        ("2", "2 (a pair of angles)"),  # a pair is two, not pairs of something
+    ],
+)
+def test_words_that_say_what_was_counted_are_a_remark_not_a_qualifier(expected, submitted):
+    verdict = compare(expected, submitted, kind="integer")
+    assert verdict.feedback == ("Correct.", _remark(expected, submitted[len(expected) :].strip()))
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "less than " * 30 + "2",
+        "2 " + "dozen " * 40,
+        "about (" * 30 + "2" + ")" * 30,
+        "maybe:" + " " * 300 + "2",  # longer than the words are read in, and read as typed: the label dropped
+        "at most: " + " " * 300 + "2",
+        "2 (one coordinate for each bob) " + "for each bob " * 20,
+        "≈" * 100 + " 2",
+        "2" + " = n" * 60 + " at most",
+    ],
+)
+def test_hostile_qualified_numbers_are_never_right(submitted):
+    verdict = compare("2", submitted, kind="integer")
+    assert verdict.status in ("invalid", "undecided", "not_equivalent") and verdict.score == 0, verdict
+
+
 @pytest.mark.parametrize(
     "submitted",
     [

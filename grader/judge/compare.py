@@ -1235,13 +1235,20 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
     return outcome, tuple(note for note in notes if note not in unsure)
 
 
+# the readings of a number that leave which number is meant to a person (see grader.judge.numbers.read_number)
+_NUMBER_FOR_A_PERSON = frozenset(
+    {"count_bracket_for_a_person", "number_doubted_for_a_person", "number_qualified_for_a_person"}
+)
+
+
 def _count_unclear(spec: Kind, expected: Expected, outcome: Outcome, notes: tuple, deadline) -> tuple[Outcome, tuple]:
     """A count whose bracket leaves unclear which number it is (``1 (2)``, see
     :func:`~grader.judge.numbers.read_number`): for a person, whatever it would earn. One read as the
     count with its working (``2 (3 − 1)``), or written close as a product (``2(3 − 1)``), where it earns
     nothing so but would the other way: for a person too. In both, nothing is proposed: the reading
-    that earns is not the likelier one. Returns the outcome and the notes left."""
-    unclear = next((note for note in notes if note and note[0] == "count_bracket_for_a_person"), None)
+    that earns is not the likelier one. So too a number beside words that may take it back or doubt it
+    (``6 − 4 = 2? no, 4``), or make it another (``at most 2``). Returns the outcome and the notes left."""
+    unclear = next((note for note in notes if note and note[0] in _NUMBER_FOR_A_PERSON), None)
     if unclear is not None:
         return Outcome("undecided", 0.0, *unclear, method=outcome.method), ()
     other = next((note for note in notes if note and note[0] == "other_reading"), None)
@@ -1407,8 +1414,9 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
 def _final_of_working(answer: ParsedAnswer) -> ParsedAnswer:
     """``3N = 3, k = 2, n = 1``: working where a number is asked for, every item a number and one of
     them worked out (3N): the value of the last name that no other item uses (n; not N, which 3N
-    uses: ``3N = 15, N = 5`` gives the value it was worked out with), else of the first item that
-    is working (3N = 15). As it was read where that is not so."""
+    uses: ``3N = 15, N = 5`` gives the value it was worked out with), else of the last item that
+    is working (3N = 15; ``3N = 6, 3N − k = 2`` gives 2, as ``6 − 2 = 4, 6 − 4 = 2`` does: the last
+    word). As it was read where that is not so."""
     if answer.kind != "equations" or not all(item.rhs.is_number and item.lhs != ANSWER for item in answer.value):
         return answer  # 1, since k = 2: a number and words, read as such (numbers.read_number)
     items = answer.value
@@ -1416,7 +1424,7 @@ def _final_of_working(answer: ParsedAnswer) -> ParsedAnswer:
         return answer  # n = 2; m = 3: no working, two values, and which is meant is for the student to say
     used = [set().union(*(other.lhs.free_symbols for other in items if other is not item)) for item in items]
     named = [item for item, others in zip(items, used, strict=True) if item.lhs.is_Symbol and item.lhs not in others]
-    final = named[-1] if named else next((item for item in items if not item.lhs.is_Symbol), None)
+    final = named[-1] if named else next((item for item in reversed(items) if not item.lhs.is_Symbol), None)
     return answer if final is None else ParsedAnswer(answer.text, final.rhs, "expression")
 
 

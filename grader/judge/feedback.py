@@ -81,6 +81,10 @@ FEEDBACK: dict[str, str] = {
     "number_word": "Read `{typed}` as {number}.",
     "count_bracket_for_a_person": "Your count `{value}` is followed by `{rest}`, which does not come to {value}:"
     " a person will decide which number is your answer.",
+    "number_doubted_for_a_person": "Your answer says `{words}`, which may take back or doubt a number of it: a"
+    " person will decide which number is your answer.",
+    "number_qualified_for_a_person": "Your number `{value}` comes with `{words}`, which may make it another number,"
+    " or no one number: a person will decide what your answer is.",
     "count_or_product_for_a_person": "Your answer `{typed}` may be a count with its working in brackets, or the"
     " product of the two, and these are different numbers: a person will check which you meant.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",

@@ -9,7 +9,13 @@ Students write a number inside a sentence, as they would on paper: ``≈ 2.01 s`
 is what the part grades, so it is found and graded, and the student is told what was not. Each
 reading is tried only when the answer as typed is not a number: for a measured value, ``2 (3)`` is
 still 6. A count is the exception: after one, brackets are more often its working than a factor,
-so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person.
+so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person. Working over several
+lines (``6 − 2 = 4; 6 − 4 = 2``) is graded at its last line, as a chain on one line is at its last side.
+
+Words that take a number back or doubt it (``6 − 4 = 2? no, 4``, ``maybe 2``), or may make it another
+(``at most 2``, ``2 for each bob``, ``two hundred``, and for a count, which is exact, ``about 2``), are not
+read past: which number is the answer is then for a person to say. Nor is the first side of ``6 − 4 = 2
+…`` graded where the last cannot be read: only before the quantity's name (``2.01 s = T``).
 
 A remark after the number must be words, not mathematics: in ``2 π √(l/g)`` for a period, the
 √(l/g) is part of the answer, which is a formula where a number is asked for, and is refused as one.
@@ -50,6 +56,19 @@ _STEPS = re.compile(
 _SEPARATED = re.compile(r"[;\n]|\\\\")
 # a quantity's name before its value, which is no working: T, T_0, τ, ω₀
 _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
+# a quantity's name after its value, which the value may stand before (2.01 s = T, 2 = n, 2 = DOF, 2 = d.o.f.,
+# 2.01 s = the period): one name, or "the" and one word, and nothing else
+_NAME_AFTER = re.compile(r"(?:the\s+)?(?:[^\W\d_][\w₀-₉']*|(?:[A-Za-z]\.){2,})\.?", re.I)
+# words that take a number back or doubt it: 6 − 4 = 2? no, 4; 6 − 4 = 2 is wrong, it is 4; maybe 2. Not the
+# "no" of 15 (no constraints), before a word, which says what was counted
+_CORRECTION = re.compile(
+    r"\bno\b(?!\s+(?!(?:wait|sorry|actually|the|that|this|it's)\b)[^\W\d_]{3,})"
+    r"|\b(?:nope|not|never|wait|wrong|incorrect|false|mistakes?|mistaken|oops|sorry|actually|instead|rather|"
+    r"correction|corrected|scratch|ignore|typo|meant|should|redo|maybe|perhaps|probably|possibly|unsure|"
+    r"uncertain|I\s+think|I\s+guess|I\s+believe)\b|\?",
+    re.I,
+)
+_JOINING = frozenset({"or", "and", "but", "yes", "so"})  # a single word after =, and no name
 
 # where a remark may begin after a number: a bracket or a mark of punctuation, a spaced dash, a word,
 # or an abbreviation (d.o.f.)
@@ -89,11 +108,40 @@ def read_number(
     ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the part asks for a quantity in a unit) reads
     2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s; ``uncertainty`` (a measured value may
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
-    ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9.
+    ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9, as
+    is ``2 (not 4)``.
+
+    Words that take a number back or doubt it (``6 − 4 = 2? no, 4``), or may make it another (``at most
+    2``), send the answer to a person, with a note that says so: which is the answer is not for the checker
+    to say.
     """
+    prepared, answer, notes = _read_number(
+        text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+    )
+    lines = _lines(text) if len(text) <= _LENGTH and _SEPARATED.search(text) else [text]
+    said = lines[0] if len(lines) == 1 else text
+    ruled_out = _ruled_out(said) if count else None
+    said = ruled_out["value"] if ruled_out else said  # 2 (not 4): its "not" rules 4 out, and doubts no number
+    return _qualified(said, _doubted(said, (prepared, answer, notes), reads), count)
+
+
+def _read_number(
+    text: str,
+    reads: Callable[[str], ParsedAnswer | None],
+    names: Collection[str],
+    *,
+    decimal_comma: bool,
+    unit: bool,
+    uncertainty: bool,
+    count: bool,
+) -> tuple[str, ParsedAnswer | None, tuple]:
+    """:func:`read_number`, but for the words around the number that a person must read."""
     unequal = _NOT_EQUAL.fullmatch(text) if count and len(text) <= _LENGTH else None
     if unequal:
         return _unequal(unequal, reads, names)
+    ruled_out = _ruled_out(text) if count else None
+    if ruled_out:
+        return _unequal(ruled_out, reads, names, rest=ruled_out["rest"].lstrip(", "))  # as other remarks are
     uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
     if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s, 2.006(1) s: the value is graded, its uncertainty is not
         if uncertain["cvalue"]:
@@ -118,6 +166,15 @@ def read_number(
         bracketed = _count_with_bracket(_sides(text)[0][-1], reads, names)
         if bracketed is not None:
             return bracketed
+    if len(text) <= _LENGTH and _SEPARATED.search(text):
+        lines = _lines(text)
+        if len(lines) == 1 and lines[0] != text:  # 6 − 4 = 2; with nothing after: one line, as typed
+            return _read_number(
+                lines[0], reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+            )
+        worked = _worked_over_lines(text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+        if worked is not None:
+            return worked
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
@@ -131,8 +188,10 @@ def read_number(
     pieces, stepped = _sides(bare)
     last = len(pieces) - 1
     # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
-    # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last
-    first = () if last != 1 or stepped else (0,)
+    # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last,
+    # nor before anything but a name, where the last side may take it back (6 − 4 = 2? no, 4) or be another
+    # number (3 − 2 = 1 or 2, 3 − 2 = 1 x 2)
+    first = (0,) if last == 1 and not stepped and _is_name(pieces[1]) else ()
     for index in dict.fromkeys((last, *first)):
         for before, typed, rest in _number_in(pieces[index], names):
             if count and _COUNT_THEN_BRACKET.fullmatch(typed):
@@ -143,6 +202,10 @@ def read_number(
             if answer is None or (rest and not _is_remark(rest, names, words or typed)):
                 continue
             typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
+            said = _words_beside(f"{before} {rest}") if last and index == last else ""
+            if said and _other_values(pieces[:last], answer, reads, decimal_comma, unit, count):
+                # 6 − 4 = 2, so also 4: words beside a value the working does not come to may offer a second
+                return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
             if before:
                 notes += (("number_in_sentence", {"value": typed}),)
             elif rest:
@@ -160,6 +223,193 @@ def read_number(
     return prepared, None, notes
 
 
+_LINES = 6  # lines of working, at the most
+_SIDES = 12  # sides of the lines before the last, at the most: each is read
+
+
+def _worked_over_lines(
+    text: str, reads, names, *, decimal_comma: bool, unit: bool, count: bool
+) -> tuple[str, ParsedAnswer | None, tuple] | None:
+    """``6 − 2 = 4; 6 − 4 = 2``, or the same on lines: working over several lines, each before the last
+    a chain of numbers (``6 − 2 = 4``, ``2π√(1/9.81) = 2.006 s``), is graded at the value of the last
+    line, read as any line is, as a chain on one line is (``6 − 2 = 4 → 2``): the final value, with
+    the note that the working before it is not graded. Where the lines disagree, the last is the
+    student's last word; but words beside it may say it is not (``6 − 4 = 2`` then ``also 4``, ``4 as
+    well``), and send the answer to a person, as words that take a line back or doubt it do
+    (:func:`_doubted`). None where ``text`` is no such working: lines that name their values
+    (``n = 2; m = 3``, ``3N = 6; k = 4; n = 2``) are read as a list, and numbers alone (``2; 4``) offer
+    a choice."""
+    lines = _lines(text)
+    if not 2 <= len(lines) <= _LINES:
+        return None
+    *working, final = lines
+    sides = [_sides(line)[0] for line in working]
+    if sum(len(pieces) for pieces in sides) > _SIDES:
+        return None
+    values = []  # each line's last
+    for pieces in sides:
+        read = [reads(_spelled(piece, decimal_comma, unit)[0]) for piece in pieces] if len(pieces) > 1 else [None]
+        if None in read:
+            return None
+        values.append(_last_side(read[-1]))
+    prepared, answer, notes = _read_number(
+        final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
+    )  # an uncertainty in the text was read past before (see _UNCERTAINTY_INSIDE)
+    if answer is None:
+        return None
+    said = _words_beside(final)
+    if said and not all(_agree(value, _last_side(answer), count) for value in values):
+        return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
+    value = next((details["value"] for _, details in notes if "value" in details), _sides(final)[0][-1])
+    notes = tuple(note for note in notes if note[0] not in ("final_value", "number_read"))
+    return prepared, answer, (("final_value", {"value": value}), *notes)
+
+
+# a word beside a line's number, not a name of one letter (n = 4, T = 3 s)
+_WORD = re.compile(r"(?<![\w\\])[^\W\d_]{2,}(?!\w)")
+
+
+def _words_beside(text: str) -> str:
+    """The words of ``text``, as a phrase (``as well``, ``The answer is``): not a name of one letter,
+    a step (so, hence) or a number in words."""
+    said = " ".join(word for word in _WORD.findall(text) if word.lower() not in (*IMPLYING_WORDS, *NUMBER_WORDS))
+    return said if len(said) <= _SHOWN else said[: _SHOWN - 1] + "…"
+
+
+def _other_values(pieces: list[str], answer: ParsedAnswer, reads, decimal_comma: bool, unit: bool, count: bool) -> bool:
+    """Whether a side of working (``pieces``) that reads as a number is not the value ``answer`` says;
+    and where there are too many sides to read, whether one may be."""
+    if len(pieces) > _SIDES:
+        return True
+    final = _last_side(answer)
+    values = [reads(_spelled(piece, decimal_comma, unit)[0]) for piece in pieces if piece]
+    return not all(_agree(_last_side(value), final, count) for value in values if value is not None)
+
+
+_ROUNDED = 0.05  # a measured value rounded (2π√(1/9.81) = 2.006 s, then 2.0 s) is no other value
+
+
+def _agree(value, other, count: bool) -> bool:
+    """Whether two values of working say the same: a count's the same number; a measured value's the
+    same to within its rounding."""
+    if value == other:
+        return True
+    if count:
+        return False
+    try:
+        ratio = value / other
+        # in its unit or not (2π√(1/9.81) = 2.006 s): reads reads no symbol but a unit
+        ratio = complex(ratio.subs({symbol: 1 for symbol in ratio.free_symbols}).evalf(15))
+    except (TypeError, ValueError, ArithmeticError):
+        return False  # a value with no number, or 0: not said to agree
+    return abs(ratio - 1) <= _ROUNDED
+
+
+def _last_side(answer: ParsedAnswer):
+    """The value a number read says: its last side (``n = 2``: 2)."""
+    return answer.value.rhs if answer.kind == "equation" else answer.value
+
+
+def _lines(text: str) -> list[str]:
+    """The lines of ``text``, cut at new lines, ``;`` and TeX's ``\\\\`` outside brackets; blank ones left out."""
+    depth, cuts = 0, [0]
+    for index, character in enumerate(text):
+        depth += (character in "([{") - (character in ")]}")
+        found = _SEPARATED.match(text, index)
+        if found and depth == 0 and index >= cuts[-1]:
+            cuts += [index, found.end()]
+    cuts.append(len(text))
+    lines = [text[start:end].strip() for start, end in zip(cuts[::2], cuts[1::2], strict=True)]
+    return [line for line in lines if line]
+
+
+# the notes that leave which number is meant to a person
+_FOR_A_PERSON = frozenset({"number_doubted_for_a_person", "number_qualified_for_a_person"})
+_LAST_NUMBERS = 6  # numbers tried from the end of an answer, for the one shown beside a doubt
+_DIGITS = re.compile(r"(?<![\w.])[0-9]+(?:\.[0-9]+)?(?![\w.])")
+
+
+def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> tuple[str, ParsedAnswer | None, tuple]:
+    """``read`` (the text to judge, its reading, notes), or where ``text`` takes a number back or doubts
+    it (``6 − 4 = 2 is wrong, it is 4``, ``6 − 4 = 2? No wait = 4``), a note that sends it to a person.
+    Words read past beside a number (a remark, the working before it) may say it is not the answer;
+    where no number could be read, working with such words is shown by its last number, for the
+    person (nothing is proposed). Where there is no working either (``2? no, 4``), the answer is
+    refused as typed, for the student to write again."""
+    prepared, answer, notes = read
+    if any(note[0] in _FOR_A_PERSON for note in notes):
+        return read
+    said = _said(_CORRECTION, text)
+    if not said:
+        return read
+    if answer is None:
+        if len(text) > _LENGTH or len(_sides(text)[0]) < 2:
+            return read
+        for typed in [found[0] for found in _DIGITS.finditer(text)][::-1][:_LAST_NUMBERS]:
+            answer = reads(typed)
+            if answer is not None:
+                prepared = typed
+                break
+        else:
+            return read
+    return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
+
+
+# words that make a number another, or no one number: less than 2, at most 2, 2 or more, max 2, 2 for each bob
+# (4), 2 dozen, two hundred, 2 pairs. Minimum and maximum only against the number: 2 (the minimum number of
+# coordinates) says what a count of degrees of freedom is
+_QUALIFYING = re.compile(
+    r"\b(?:less|fewer|more|greater|larger|smaller|bigger|higher|lower)\s+than\b|\bat\s+(?:most|least)\b"
+    r"|\bup\s+to\b|\bor\s+(?:more|less|fewer|so)\b|\b(?:(?:for|on)\s+)?(?:each|every)\b|\b(?:per|apiece)\b"
+    r"|\b(?:max|maximum|min|minimum)\b\.?(?=\s*[0-9])"
+    r"|(?<=[0-9])\s*[(,]?\s*(?:max|maximum|minimum)\b(?=\s*\)?\s*[.,;]?\s*$)"
+    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs)\b",
+    re.I,
+)
+# and beside a count, which is exact, words of an approximation: about 2, ≈ 2, 2 (roughly)
+_APPROXIMATING = re.compile(
+    r"\b(?:about|around|roughly|approximately|approx|nearly|almost|circa|ca|ish)\b|[≈≃~]"
+    r"|\\(?:approx|simeq|sim)(?![A-Za-z])",
+    re.I,
+)
+
+
+def _qualified(text: str, read: tuple[str, ParsedAnswer | None, tuple], count: bool) -> tuple:
+    """``read`` (the text to judge, its reading, notes), or where words beside its number may make it
+    another (``less than 2``, ``2 for each bob``, ``two hundred``, and for a count ``about 2``), a note
+    that sends it to a person: graded as the bare number, such an answer could pass where it says
+    something else. "One coordinate for each bob", after a count, says what each counts, and is read
+    past (see :func:`_is_remark`)."""
+    prepared, answer, notes = read
+    if answer is None or any(note[0] in _FOR_A_PERSON for note in notes):
+        return read
+    words = _PER_EACH.sub(" ", text)
+    said = _said(_QUALIFYING, words) or (_said(_APPROXIMATING, words) if count else "")
+    if not said:
+        return read
+    sides = [side for side in _sides(prepared)[0] if side] or [prepared.strip()]  # n ≈ 2: the 2
+    value = next((details["value"] for _, details in notes if "value" in details), sides[-1])
+    return prepared, answer, (("number_qualified_for_a_person", {"value": value, "words": said}),)
+
+
+def _said(words: re.Pattern, text: str) -> str:
+    """What ``words`` finds in ``text``, as typed, each once, for a note: ``?, no``."""
+    said: dict[str, str] = {}
+    for found in words.finditer(text):
+        typed = " ".join(found[0].strip(" (,").split())  # 2 (max): max
+        said.setdefault(typed.lower(), typed)
+    shown = ", ".join(said.values())
+    return shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
+
+
+def _is_name(side: str) -> bool:
+    """Whether ``side`` is a quantity's name alone (T, n, DOF, the period), not words that take the value
+    before it back (no, wrong) or more of the answer."""
+    if len(side) > _SHOWN or not _NAME_AFTER.fullmatch(side) or _CORRECTION.search(side):
+        return False
+    return side.rstrip(".").lower() not in _JOINING
+
+
 # 9 − 3 = 6 ≠ 9, where a count is asked: the count, then once a number it is not, and nothing after
 _UNEQUAL_SIGN = r"≠|!=|=/=|/=|\\neq?(?![A-Za-z])"
 _NOT_EQUAL = re.compile(
@@ -169,17 +419,33 @@ _NOT_EQUAL = re.compile(
 )
 
 
-def _unequal(found: re.Match, reads, names) -> tuple[str, ParsedAnswer | None, tuple]:
-    """``9 − 3 = 6 ≠ 9``: the count before ``≠``, read as any count is, with a note that the number it
-    rules out was not graded. As typed (refused, for its sign) where that count is the number it rules
-    out, or is none."""
+# 2 (not 4), n = 2, not 4, where a count is asked: the count, then a number it is not, as ≠ 4 says it
+_RULED_OUT = re.compile(
+    rf"(?P<value>.+?)\s*(?P<rest>(?P<open>\(\s*|,\s*)not\s+(?P<other>[0-9]+|(?:{'|'.join(_WORDS)})\b)\s*"
+    r"(?P<close>\)?))\s*\.?\s*",
+    re.I | re.S,
+)
+
+
+def _ruled_out(text: str) -> re.Match | None:
+    """``2 (not 4)``, ``2, not 4``: the count and the number it rules out, in a bracket or after a comma."""
+    found = _RULED_OUT.fullmatch(text) if len(text) <= _LENGTH else None
+    if found is None or found["open"].startswith("(") != bool(found["close"]):
+        return None
+    return found
+
+
+def _unequal(found: re.Match, reads, names, rest: str | None = None) -> tuple[str, ParsedAnswer | None, tuple]:
+    """``9 − 3 = 6 ≠ 9``, ``2 (not 4)``: the count before ``≠`` (or the bracket), read as any count is,
+    with a note that the number it rules out (``rest``, as typed; else ``≠ 9``) was not graded. As typed
+    (refused, for its sign or its "not") where that count is the number it rules out, or is none."""
     prepared, answer, notes = read_number(found["value"], reads, names, count=True)
     other = int(NUMBER_WORDS.get(found["other"].lower(), found["other"]))
     value = _value_of(answer)
     if value is None or value == other:
         return found[0], None, ()  # 6 ≠ 6 says no count
     typed = next((details["value"] for _, details in notes if "value" in details), _sides(found["value"])[0][-1])
-    rest = f"{found['sign']} {found['other']}"
+    rest = rest or f"{found['sign']} {found['other']}"
     rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
     return prepared, answer, (*notes, ("remark_ignored", {"value": typed, "rest": rest}))
 
