@@ -275,12 +275,18 @@ def coefficients_differ(
     kept = {} if kept is None else kept
     if "by form" not in kept:
         kept["by form"] = _by_form(expected_terms)
-    return _differing_factors(kept["by form"], _by_form(submitted_terms), setting, any_factor)
+    return _differing_factors(kept["by form"], _by_form(submitted_terms), setting, any_factor, kept)
 
 
-def _differing_factors(ours_by_form: dict, theirs_by_form: dict, setting: Setting, any_factor: bool) -> list | None:
-    """:func:`coefficients_differ`, from the terms as :func:`_by_form` groups them."""
-    split_ours, split_theirs = _split_by_state(ours_by_form, setting), _split_by_state(theirs_by_form, setting)
+def _differing_factors(
+    ours_by_form: dict, theirs_by_form: dict, setting: Setting, any_factor: bool, kept: dict | None = None
+) -> list | None:
+    """:func:`coefficients_differ`, from the terms as :func:`_by_form` groups them (the expected
+    side's split kept in ``kept``, where given)."""
+    if kept is not None and "split" not in kept:
+        kept["split"] = _split_by_state(ours_by_form, setting)
+    split_ours = kept["split"] if kept is not None else _split_by_state(ours_by_form, setting)
+    split_theirs = _split_by_state(theirs_by_form, setting)
     if {split[0] for split in split_ours.values()} != {split[0] for split in split_theirs.values()}:
         return []  # a term in the coordinates and velocities is missing or too many: said as such
     ours, theirs = _by_state(split_ours), _by_state(split_theirs)
