@@ -235,25 +235,33 @@ def _small_angle_forms(spec: Kind, expected: Expected, submitted: str, timeout: 
     started = time.monotonic()
     names = sorted(expected.names | {symbol.name for symbol, _ in given})
     coords = expected.setting.coords
+
+    def readable(*formulas: str) -> bool:
+        return all(parse_answer(formula, coords=coords, known=names).ok for formula in formulas)
+
     for first, words, last in formula_then_small_angle_form(submitted, names, coords):
-        if not all(parse_answer(formula, coords=coords, known=names).ok for formula in (first, last)):
-            continue
-        full = _judge(spec, expected, first, timeout - (time.monotonic() - started), given)
-        small = _judge(spec, expected, last, timeout - (time.monotonic() - started), given)
-        if "invalid" in (full.status, small.status) or {full.diagnosis, small.diagnosis} & _NOT_ONE_FORMULA:
-            return None  # … is maybe θ̈ = …: words left in a formula, read as typed
-        return _one_of_two_forms(full, small, _shown(words))
+        if readable(first, last):
+            return _two_forms_judged(
+                spec, expected, (first, last), _shown(words), timeout - (time.monotonic() - started), given
+            )
     approximated = formula_then_approximation(submitted)  # θ̈ = −(g/l) sin θ ≈ −(g/l) θ
-    if approximated is None or not all(parse_answer(f, coords=coords, known=names).ok for f in approximated[::2]):
+    if approximated is None or not readable(approximated[0], approximated[2]):
         return None
     first, sign, last = approximated
     if spec.shape != "expression" and "=" not in first:
         return None  # θ̈ ≈ −(g/l) θ: one equation, written with ≈
-    full = _judge(spec, expected, first, timeout - (time.monotonic() - started), given)
-    small = _judge(spec, expected, last, timeout - (time.monotonic() - started), given)
+    return _two_forms_judged(spec, expected, (first, last), sign, timeout - (time.monotonic() - started), given)
+
+
+def _two_forms_judged(spec: Kind, expected: Expected, forms: tuple, words: str, timeout: float, given: tuple):
+    """The verdict on a formula and its small-angle form (``forms``), each judged, after ``words``
+    (:func:`_one_of_two_forms`); None where one cannot be read or holds words left in a formula
+    (… is maybe θ̈ = …), to be read as typed."""
+    started = time.monotonic()
+    full, small = (_judge(spec, expected, form, timeout - (time.monotonic() - started), given) for form in forms)
     if "invalid" in (full.status, small.status) or {full.diagnosis, small.diagnosis} & _NOT_ONE_FORMULA:
         return None
-    return _one_of_two_forms(full, small, sign)
+    return _one_of_two_forms(full, small, words)
 
 
 # what a formula is told where words were left in it, or it is two equations: no one formula of the two forms
