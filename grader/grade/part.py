@@ -10,6 +10,7 @@ Contents:
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Mapping
 from functools import lru_cache
 
 from grader.bank import Part, Problem
@@ -101,7 +102,13 @@ def _matches(verdict: Verdict) -> bool:
 
 
 def with_method_credit(
-    problem: Problem, part: Part, verdict: Verdict, submitted: str, answers: dict, *, timeout: float = DEFAULT_TIMEOUT
+    problem: Problem,
+    part: Part,
+    verdict: Verdict,
+    submitted: str,
+    answers: Mapping,
+    *,
+    timeout: float = DEFAULT_TIMEOUT,
 ) -> Verdict:
     """``verdict`` on ``submitted`` (an answer to a part derived from the Lagrangian part), with the
     part's method credit where it is wrong but what the student's own Lagrangian, among ``answers``

@@ -139,8 +139,7 @@ def check(
         return CheckResult(key, "invalid", 0.0, ("Your answer is empty.",))
     verdict = grade_answer(problem, part, str(answer), timeout=timeout)
     if answers:
-        others = {name: str(text) for name, text in answers.items()}
-        verdict = with_method_credit(problem, part, verdict, str(answer), others, timeout=timeout)
+        verdict = with_method_credit(problem, part, verdict, str(answer), answers, timeout=timeout)
     mathml = verdict.answer.read_as_mathml if verdict.answer is not None and verdict.answer.ok else ""
     return CheckResult(key, verdict.status, verdict.score, verdict.feedback, verdict.read_as, mathml)
 
