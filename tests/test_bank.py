@@ -165,6 +165,16 @@ def test_a_listed_mistake_gives_its_feedback_and_score():
     assert verdict.diagnosis == "mistake"
 
 
+def test_a_listed_mistake_is_matched_by_a_final_value_whose_working_does_not_hold():
+    problem = load_bank(BANK)["degrees-of-freedom"]
+    part = problem.part("double-pendulum")
+    mistake = next(mistake for mistake in part.mistakes if str(mistake.answer) == "3")
+    verdict = grade_answer(problem, part, "6 - 4 = 3")
+    assert (verdict.status, verdict.diagnosis, verdict.score) == ("not_equivalent", "mistake", mistake.score)
+    note = "Graded your final value, `3`; your working, `6 - 4 = 3`, does not hold."
+    assert verdict.feedback == (mistake.feedback, note)
+
+
 def test_a_listed_mistake_keeps_how_the_answer_was_read():
     # the option's words matched option a, a listed mistake: its hint, and what "Holonomic" was read as
     problem = load_bank(BANK)["constraint-classification"]

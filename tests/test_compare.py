@@ -2809,6 +2809,10 @@ def _final(value):
     return f"Graded your final value, `{value}`; the working before it is not graded."
 
 
+def _false(value, working):
+    return f"Graded your final value, `{value}`; your working, `{working}`, does not hold."
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "options", "status", "read_as", "notes"),
     [
@@ -2849,7 +2853,7 @@ def _final(value):
         ("2", "6 - 4 = 2", {}, "equivalent", "2", (_final(2),)),
         ("2", "6 - 3 = 3", {}, "not_equivalent", "3", (_final(3),)),
         (PERIOD, "T ≈ 2π√(l/g) ≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", (_final("2.01 s"),)),
-        (PERIOD, "2π√(1/9.81) = 3 s", PERIOD_PART, "not_equivalent", "3", (_final("3 s"),)),
+        (PERIOD, "2π√(1/9.81) = 3 s", PERIOD_PART, "not_equivalent", "3", (_false("3 s", "2π√(1/9.81) = 3 s"),)),
         (PERIOD, "2.01 s = T", PERIOD_PART, "equivalent", "2.01", (_number("2.01 s"),)),
         # the quantity's name before its value is no working
         (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"), _number("2,01 s"))),
@@ -2867,6 +2871,44 @@ def _final(value):
 def test_the_number_is_found_in_what_a_student_wrote_around_it(expected, submitted, options, status, read_as, notes):
     verdict = compare(expected, submitted, **{"kind": "integer", **options})
     assert (verdict.status, verdict.read_as, verdict.notes) == (status, read_as, notes)
+
+
+def _false_for_a_person(value, working):
+    return (
+        f"Your final value, `{value}`, was graded and is right, but your working, `{working}`, does not hold:"
+        " a person will check this answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status", "score", "feedback"),
+    [
+        # sides joined by = that are not equal: a slip, or a value not worked out; right, it is for a person
+        ("2", "4 - 1 = 2", {}, "undecided", 1.0, (_false_for_a_person(2, "4 - 1 = 2"),)),
+        ("2", "3 − 2 = 1 × 2", {}, "undecided", 1.0, (_false_for_a_person("1 × 2", "3 − 2 = 1 × 2"),)),
+        ("2", "n = 3N - k = 6 - 3 = 2", {}, "undecided", 1.0,
+         (_false_for_a_person(2, "n = 3N - k = 6 - 3 = 2"),)),  # a side in names is not checked, nor wrong
+        ("2", "6 - 2 = 5; 6 - 4 = 2", {}, "undecided", 1.0, (_false_for_a_person(2, "6 - 2 = 5"),)),
+        ("2", "6 - 2 = 4\n6 - 3 = 2", {}, "undecided", 1.0, (_false_for_a_person(2, "6 - 3 = 2"),)),
+        (PERIOD, "2π√(1/9.81) = 1.5 s = 2.006 s", PERIOD_PART, "undecided", 1.0,
+         (_false_for_a_person("2.006 s", "2π√(1/9.81) = 1.5 s = 2.006 s"),)),
+        # wrong, it is graded so, and told
+        ("2", "6 - 4 = 3", {}, "not_equivalent", 0.0,
+         ("Not equivalent to the expected answer.", _false(3, "6 - 4 = 3"))),
+        # working that holds: graded at its final value, as before
+        ("2", "6 - 4 = 2 = 2", {}, "equivalent", 1.0, ("Correct.", _final(2))),
+        ("2", "6 - 2 = 4 → 2", {}, "equivalent", 1.0, ("Correct.", _final(2))),  # a step says no equality
+        ("2", "6 - 2 = 4; 6 - 4 = 2", {}, "equivalent", 1.0, ("Correct.", _final(2))),
+        (PERIOD, "2π√(1/9.81) = 2.0 s", PERIOD_PART, "equivalent", 1.0, ("Correct.", _final("2.0 s"))),  # rounded
+        (PERIOD, "2.006 s = 2006 ms", PERIOD_PART, "equivalent", 1.0,
+         ("Correct.", _final("2006 ms"), "Read as 2.006 s.")),  # in another unit
+    ],
+)  # fmt: skip
+def test_working_that_does_not_hold_goes_to_a_person_where_the_final_value_is_right(
+    expected, submitted, options, status, score, feedback
+):
+    verdict = compare(expected, submitted.replace("\\n", "\n"), **{"kind": "integer", **options})
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback)
 
 
 @pytest.mark.parametrize(

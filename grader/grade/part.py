@@ -95,10 +95,15 @@ def grade_answer(problem: Problem, part: Part, submitted: str, *, timeout: float
     return verdict
 
 
+# what sends an answer to a person only when its value is right; the verdict's notes say it already
+_VALUE_RIGHT_BUT = frozenset({"label_for_a_person", "working_false_for_a_person"})
+
+
 def _matches(verdict: Verdict) -> bool:
     """Whether the answer is a mistake's, by value: a label naming another quantity (``f = …`` where ω is
-    asked) is said in the verdict's notes already, and goes to a person only when the value is right."""
-    return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis == "label_for_a_person")
+    asked), or working that does not come to the value (``6 − 4 = 3``), is said in the verdict's notes
+    already, and goes to a person only when the value is right."""
+    return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis in _VALUE_RIGHT_BUT)
 
 
 def with_method_credit(

@@ -1218,6 +1218,7 @@ _FOR_A_PERSON = {
     "unit_for_a_person": "unit_left_out",
     "label_for_a_person": "label_other",
     "statement_for_a_person": "statement_wrong",
+    "working_false_for_a_person": "working_false",
 }
 
 

@@ -74,6 +74,9 @@ FEEDBACK: dict[str, str] = {
     "statement_wrong": "Your answer says `{statement}` on the way to its value, which is not what {label} is.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
+    "working_false_for_a_person": "Your final value, `{value}`, was graded and is right, but your working,"
+    " `{working}`, does not hold: a person will check this answer.",
+    "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
     "uncertainty_left_out": "Read without its uncertainty, `{error}`: the value is what is graded.",

@@ -26,6 +26,9 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Collection
 
+import sympy
+
+from grader.judge.units import in_units
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.names import IMPLYING_WORDS
@@ -185,13 +188,13 @@ def _read_number(
     if re.search(_UNEQUAL_SIGN, text):
         return prepared, None, notes  # 6 ≠ 9 = 3·3: the chain's last side is what the answer is not
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
-    pieces, stepped = _sides(bare)
+    pieces, after_step = _sides(bare)
     last = len(pieces) - 1
     # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
     # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last,
     # nor before anything but a name, where the last side may take it back (6 − 4 = 2? no, 4) or be another
     # number (3 − 2 = 1 or 2, 3 − 2 = 1 x 2)
-    first = (0,) if last == 1 and not stepped and _is_name(pieces[1]) else ()
+    first = (0,) if last == 1 and not after_step and _is_name(pieces[1]) else ()
     for index in dict.fromkeys((last, *first)):
         for before, typed, rest in _number_in(pieces[index], names):
             if count and _COUNT_THEN_BRACKET.fullmatch(typed):
@@ -203,15 +206,19 @@ def _read_number(
                 continue
             typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
             said = _words_beside(f"{before} {rest}") if last and index == last else ""
-            if said and _other_values(pieces[:last], answer, reads, decimal_comma, unit, count):
+            numbers = (reads, decimal_comma, unit, count)
+            if said and _other_values(pieces[:last], answer, *numbers):
                 # 6 − 4 = 2, so also 4: words beside a value the working does not come to may offer a second
                 return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
             if before:
                 notes += (("number_in_sentence", {"value": typed}),)
             elif rest:
                 rest = rest.lstrip(",:;–—- ")
-                shown = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
-                notes += (("remark_ignored", {"value": typed, "rest": shown}),)
+                notes += (("remark_ignored", {"value": typed, "rest": _shown(rest)}),)
+            elif last == index and len(pieces) <= _SIDES and _other_values(pieces[after_step:last], answer, *numbers):
+                # 4 − 1 = 2: working that does not come to the value graded, a slip or a value not worked out
+                working = " = ".join(pieces[after_step:])
+                notes += (("working_false_for_a_person", {"value": typed, "working": _shown(working)}),)
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
             elif last:
@@ -243,15 +250,17 @@ def _worked_over_lines(
     if not 2 <= len(lines) <= _LINES:
         return None
     *working, final = lines
-    sides = [_sides(line)[0] for line in working]
-    if sum(len(pieces) for pieces in sides) > _SIDES:
+    sides = [_sides(line) for line in working]
+    if sum(len(pieces) for pieces, _ in sides) > _SIDES:
         return None
-    values = []  # each line's last
-    for pieces in sides:
+    values, false = [], None  # each line's last; the first line whose sides do not come to it
+    for line, (pieces, after_step) in zip(working, sides, strict=True):
         read = [reads(_spelled(piece, decimal_comma, unit)[0]) for piece in pieces] if len(pieces) > 1 else [None]
         if None in read:
             return None
         values.append(_last_side(read[-1]))
+        if false is None and not all(_agree(_last_side(side), values[-1], count) for side in read[after_step:-1]):
+            false = line
     prepared, answer, notes = _read_number(
         final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
     )  # an uncertainty in the text was read past before (see _UNCERTAINTY_INSIDE)
@@ -260,8 +269,12 @@ def _worked_over_lines(
     said = _words_beside(final)
     if said and not all(_agree(value, _last_side(answer), count) for value in values):
         return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
+    if any(note[0] == "working_false_for_a_person" for note in notes):
+        return prepared, answer, notes
     value = next((details["value"] for _, details in notes if "value" in details), _sides(final)[0][-1])
     notes = tuple(note for note in notes if note[0] not in ("final_value", "number_read"))
+    if false is not None:
+        return prepared, answer, (("working_false_for_a_person", {"value": value, "working": _shown(false)}), *notes)
     return prepared, answer, (("final_value", {"value": value}), *notes)
 
 
@@ -272,8 +285,8 @@ _WORD = re.compile(r"(?<![\w\\])[^\W\d_]{2,}(?!\w)")
 def _words_beside(text: str) -> str:
     """The words of ``text``, as a phrase (``as well``, ``The answer is``): not a name of one letter,
     a step (so, hence) or a number in words."""
-    said = " ".join(word for word in _WORD.findall(text) if word.lower() not in (*IMPLYING_WORDS, *NUMBER_WORDS))
-    return said if len(said) <= _SHOWN else said[: _SHOWN - 1] + "…"
+    said = (word for word in _WORD.findall(text) if word.lower() not in (*IMPLYING_WORDS, *NUMBER_WORDS))
+    return _shown(" ".join(said))
 
 
 def _other_values(pieces: list[str], answer: ParsedAnswer, reads, decimal_comma: bool, unit: bool, count: bool) -> bool:
@@ -296,6 +309,9 @@ def _agree(value, other, count: bool) -> bool:
         return True
     if count:
         return False
+    measured = in_units(value), in_units(other)
+    if None not in measured and measured[0][2] == measured[1][2]:  # 2.006 s = 2006 ms: in SI units
+        value, other = (number * sympy.Rational(size) for number, size, _ in measured)
     try:
         ratio = value / other
         # in its unit or not (2π√(1/9.81) = 2.006 s): reads reads no symbol but a unit
@@ -398,8 +414,12 @@ def _said(words: re.Pattern, text: str) -> str:
     for found in words.finditer(text):
         typed = " ".join(found[0].strip(" (,").split())  # 2 (max): max
         said.setdefault(typed.lower(), typed)
-    shown = ", ".join(said.values())
-    return shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
+    return _shown(", ".join(said.values()))
+
+
+def _shown(text: str) -> str:
+    """``text`` as a note repeats it: cut short where it is long."""
+    return text if len(text) <= _SHOWN else text[: _SHOWN - 1] + "…"
 
 
 def _is_name(side: str) -> bool:
@@ -458,20 +478,21 @@ def _value_of(answer: ParsedAnswer | None):
     return value if value.is_number else None
 
 
-def _sides(text: str) -> tuple[list[str], bool]:
+def _sides(text: str) -> tuple[list[str], int]:
     """The sides of a chain of working (``6 − 4 = 2 → 4``: 6 − 4, 2 and 4), split where an equals sign
-    or a step stands outside brackets (``2 (so two angles)`` is one side); and whether a step did."""
+    or a step stands outside brackets (``2 (so two angles)`` is one side); and the index of the first
+    side after the last step (0 where no step stands): the sides from it on claim to be equal."""
     marks = [(found, False) for found in _EQUALS.finditer(text)] + [(found, True) for found in _STEPS.finditer(text)]
     marks.sort(key=lambda mark: mark[0].start())
     depth = [0] * (len(text) + 1)
     for index, character in enumerate(text):
         depth[index + 1] = depth[index] + (character in "([{") - (character in ")]}")
-    pieces, start, stepped = [], 0, False
+    pieces, start, after_step = [], 0, 0
     for found, step in marks:
         if found.start() >= start and depth[found.start()] == 0:
             pieces.append(text[start : found.start()].strip())
-            start, stepped = found.end(), stepped or step
-    return [*pieces, text[start:].strip()], stepped
+            start, after_step = found.end(), len(pieces) if step else after_step
+    return [*pieces, text[start:].strip()], after_step
 
 
 # a count, then brackets and nothing after them: 2 (6 − 4), 1 (2), 15 (5 particles), two (2)
