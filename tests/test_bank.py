@@ -8,12 +8,15 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
 from grader import KINDS
 from grader.bank import DIMENSIONS, PART_KINDS, load_assignment, load_bank
 from grader.grade import grade_answer, validate_bank
+from grader.grade import part as grading
+from grader.judge import Verdict, deadline
 from grader.judge.units import DIMENSIONS as UNITS
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -173,6 +176,37 @@ def test_a_listed_mistake_is_matched_by_a_final_value_whose_working_does_not_hol
     assert (verdict.status, verdict.diagnosis, verdict.score) == ("not_equivalent", "mistake", mistake.score)
     note = "Graded your final value, `3`; your working, `6 - 4 = 3`, does not hold."
     assert verdict.feedback == (mistake.feedback, note)
+
+
+@pytest.mark.parametrize(
+    ("problem", "part", "answers", "spent"),
+    [
+        ("rotating-hoop", "hamiltonian", None, 1.0),  # five mistakes listed
+        ("plane-pendulum", "motion", {"plane-pendulum.lagrangian": "m g l cos θ"}, 1.0),  # and method credit
+        ("rotating-hoop", "hamiltonian", None, 0.6),
+    ],
+)
+def test_the_time_limit_bounds_the_verdict_its_mistakes_and_method_credit_together(
+    monkeypatch, problem, part, answers, spent
+):
+    # a hostile answer that makes every check run out of time costs one time limit, not one per mistake
+    now, given = [0.0], []
+
+    def slow(expected, submitted, *, timeout, **options):  # each check takes a share of the time it is given
+        given.append(timeout)
+        now[0] += spent * timeout
+        return Verdict("not_equivalent", 0.0, ("Not equivalent to the expected answer.",))
+
+    monkeypatch.setattr(deadline, "time", SimpleNamespace(monotonic=lambda: now[0]))
+    monkeypatch.setattr(grading, "compare", slow)
+    problem = load_bank(BANK)[problem]
+    verdict = grade_answer(problem, problem.part(part), "(m + R)^99 (g + R)^99", timeout=2.0, answers=answers)
+    assert verdict.status == "not_equivalent" and now[0] <= 2.0
+    if spent == 1.0:  # all of it: once the verdict has taken it, nothing more is tried
+        assert given == [2.0]
+    else:  # every mistake is tried, in the time the checks before it left
+        left = [2.0 * (1 - spent) ** n for n in range(1 + len(problem.part(part).mistakes))]
+        assert given == pytest.approx(left)
 
 
 def test_a_listed_mistake_keeps_how_the_answer_was_read():

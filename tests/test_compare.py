@@ -7,6 +7,8 @@ the API, the options, the exact feedback sentences, and hostile answers.
 from __future__ import annotations
 
 import dataclasses
+import importlib
+from types import SimpleNamespace
 
 import pytest
 from hypothesis import given, settings
@@ -3461,6 +3463,33 @@ def test_reading_the_answer_counts_against_the_time_limit():
     verdict = compare("sqrt(g/l)", slow, timeout=0.2, **PENDULUM)
     assert (verdict.status, verdict.method) == ("undecided", "timeout")
     assert verdict.answer is None  # stopped while reading, not after
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        "θ̈ = −(g/l) sin θ ≈ −(g/l) θ",  # read again as its two forms
+        "θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ",
+    ],
+)
+def test_second_readings_of_an_answer_share_its_time_limit(monkeypatch, submitted):
+    # each reading takes all the time it is given: once the first has, the others have none
+    compare_module = importlib.import_module("grader.judge.compare")  # the module, not the function it exports
+    now, given = [0.0], []
+    judge = compare_module._judge
+
+    def slow(spec, expected, text, timeout, *rest):
+        given.append(timeout)
+        verdict = judge(spec, expected, text, timeout, *rest)
+        now[0] += max(timeout, 0.0)
+        return verdict
+
+    monkeypatch.setattr(compare_module, "time", SimpleNamespace(monotonic=lambda: now[0]))
+    monkeypatch.setattr(compare_module, "_judge", slow)
+    expected = "thetaddot = -(g/l) sin(theta)"
+    verdict = compare(expected, submitted, kind="equation", timeout=2.0, **PENDULUM)
+    assert given[0] == 2.0 and all(timeout <= 0 for timeout in given[1:]) and len(given) > 1
+    assert now[0] <= 2.0 and verdict.status in ("undecided", "not_equivalent", "invalid")
 
 
 def test_verdicts_are_deterministic():

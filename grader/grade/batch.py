@@ -22,7 +22,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 from grader.bank import Assignment, Part, Problem
-from grader.grade.part import grade_answer, with_method_credit
+from grader.grade.part import grade_answer
 from grader.grade.results import PartGrade, SubmissionGrade
 from grader.grade.submissions import Submission
 from grader.judge import DEFAULT_TIMEOUT
@@ -89,8 +89,7 @@ def _grade_part(problem: Problem, part: Part, points: float, answer: str, answer
     base = {"problem": problem.id, "part": part.id, "max_score": points, "answer": answer, "kind": part.kind}
     if not answer.strip():
         return PartGrade(**base, status="blank", auto_score=0.0, feedback=("No answer.",), method="blank")
-    verdict = grade_answer(problem, part, answer, timeout=timeout)
-    verdict = with_method_credit(problem, part, verdict, answer, answers, timeout=timeout)
+    verdict = grade_answer(problem, part, answer, timeout=timeout, answers=answers)
     score, feedback, method = verdict.score, verdict.feedback, verdict.method
     mathml = ""
     if verdict.answer is not None and verdict.answer.ok:

@@ -2,9 +2,9 @@
 
 Contents:
     expected_answer(problem, part)                  the reference text (derived for derive_from)
-    grade_answer(problem, part, submitted, timeout) the Verdict a student gets
-    with_method_credit(problem, part, verdict, …)   that Verdict, with credit for equations that
-                                                    follow from the student's own wrong Lagrangian
+    grade_answer(problem, part, submitted, …)       the Verdict a student gets, with the part's
+                                                    mistakes, and credit for equations that follow
+                                                    from the student's own wrong Lagrangian
 """
 
 from __future__ import annotations
@@ -16,10 +16,10 @@ from functools import lru_cache
 from grader.bank import Part, Problem
 from grader.errors import AuthorError
 from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
-from grader.judge.deadline import CheckTimeout, time_limit
+from grader.judge.deadline import CheckTimeout, Deadline, time_limit
 from grader.judge.lagrangian import equations_of_motion
 
-__all__ = ["expected_answer", "grade_answer", "part_options", "setting_of", "with_method_credit"]
+__all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
 
 CARRIED = "Your equations follow correctly from your own Lagrangian, which is not right: method credit."
 
@@ -74,25 +74,42 @@ def part_options(part: Part) -> dict:
     return options
 
 
-def grade_answer(problem: Problem, part: Part, submitted: str, *, timeout: float = DEFAULT_TIMEOUT) -> Verdict:
+def grade_answer(
+    problem: Problem,
+    part: Part,
+    submitted: str,
+    *,
+    timeout: float = DEFAULT_TIMEOUT,
+    answers: Mapping[str, str] | None = None,
+) -> Verdict:
     """The verdict on ``submitted``: compared with the reference; when wrong, matched against the
-    part's anticipated mistakes, whose feedback and score replace the generic ones.
+    part's anticipated mistakes, whose feedback and score replace the generic ones; and, given the
+    student's other ``answers`` (``problem.part`` → answer), with the part's method credit where it
+    is wrong but what the student's own Lagrangian implies: an error carried forward is not counted
+    twice. Grading a class and a student's check of their answers give the same credit.
+
+    ``timeout`` bounds all of it: each mistake and the method credit are tried in the time the
+    verdict left, so a hostile answer costs one time limit, not one for every mistake listed.
 
     Raises:
         AuthorError: when the part's reference answer or options are wrong (``grader validate`` finds these).
     """
-    arguments = {"kind": part.kind, **setting_of(problem), "timeout": timeout, **part_options(part)}
-    verdict = compare(expected_answer(problem, part), submitted, **arguments)
-    if verdict.status != "not_equivalent" or not part.mistakes:
+    deadline = Deadline(timeout)
+    arguments = {"kind": part.kind, **setting_of(problem), **part_options(part)}
+    verdict = compare(expected_answer(problem, part), submitted, **arguments, timeout=timeout)
+    if verdict.status != "not_equivalent":
         return verdict
     for mistake in part.mistakes:
-        if _matches(compare(mistake.answer, submitted, **arguments)):
+        if deadline.remaining() <= 0:
+            break  # wrong whichever mistake it is: only the generic feedback is said
+        if _matches(compare(mistake.answer, submitted, **arguments, timeout=deadline.remaining())):
             # the mistake's hint replaces the diagnosis; how the answer was read is still said
             feedback = (mistake.feedback, *verdict.notes)
-            return dataclasses.replace(
+            verdict = dataclasses.replace(
                 verdict, score=mistake.score, feedback=feedback, diagnosis="mistake", method="mistake"
             )
-    return verdict
+            break
+    return _with_method_credit(problem, part, verdict, submitted, answers or {}, deadline)
 
 
 # what sends an answer to a person only when its value is right; the verdict's notes say it already
@@ -106,43 +123,35 @@ def _matches(verdict: Verdict) -> bool:
     return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis in _VALUE_RIGHT_BUT)
 
 
-def with_method_credit(
-    problem: Problem,
-    part: Part,
-    verdict: Verdict,
-    submitted: str,
-    answers: Mapping,
-    *,
-    timeout: float = DEFAULT_TIMEOUT,
+def _with_method_credit(
+    problem: Problem, part: Part, verdict: Verdict, submitted: str, answers: Mapping, deadline: Deadline
 ) -> Verdict:
-    """``verdict`` on ``submitted`` (an answer to a part derived from the Lagrangian part), with the
-    part's method credit where it is wrong but what the student's own Lagrangian, among ``answers``
-    (``problem.part`` → answer), implies: an error carried forward is not counted twice. Grading a
-    class and a student's check of their answers give the same credit."""
-    if not part.derive_from or verdict.status != "not_equivalent":
+    """``verdict``, with the part's method credit where the part is derived from the Lagrangian part and
+    ``submitted`` is what the student's own Lagrangian, among ``answers``, implies."""
+    lagrangian = answers.get(f"{problem.id}.{part.derive_from}", "") if part.derive_from else ""
+    if verdict.status != "not_equivalent" or not str(lagrangian).strip() or deadline.remaining() <= 0:
         return verdict
-    carried = _carried_forward(problem, part, submitted, answers.get(f"{problem.id}.{part.derive_from}", ""), timeout)
+    carried = _carried_forward(problem, part, submitted, str(lagrangian), deadline)
     if carried is None or carried <= verdict.score:
         return verdict
     return dataclasses.replace(verdict, score=carried, feedback=(CARRIED,), method="error carried forward")
 
 
-def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str, timeout: float) -> float | None:
+def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str, deadline: Deadline) -> float | None:
     """The method credit when ``answer`` is what the student's own Lagrangian implies.
 
     The Lagrangian is read as its own part reads it: ``L = …``, ``L = T − V = …``, ``T = …; V = …;
     L = T − V`` and ``½ m v² − …, where v = l θ̇`` are all a Lagrangian (before, only an expression
     alone was, and a labelled one lost its equations their credit)."""
-    if not str(lagrangian).strip():
-        return None
     setting = setting_of(problem)
-    read = grade_answer(problem, problem.part(part.derive_from), str(lagrangian), timeout=timeout).answer
-    if read is None or not read.ok or read.kind != "expression":
+    source = problem.part(part.derive_from)
+    read = grade_answer(problem, source, lagrangian, timeout=deadline.remaining()).answer
+    if read is None or not read.ok or read.kind != "expression" or deadline.remaining() <= 0:
         return None
     try:
-        with time_limit(timeout):
+        with time_limit(deadline.remaining()):
             implied = equations_of_motion(read.read_as_text, **setting)
-            verdict = compare(implied, answer, kind=part.kind, **setting, timeout=timeout)
+            verdict = compare(implied, answer, kind=part.kind, **setting, timeout=max(deadline.remaining(), 1e-3))
     except (AuthorError, CheckTimeout, ArithmeticError, ValueError, TypeError, RecursionError):
         return None  # the student's Lagrangian is not one we can derive from: no carried credit
     return part.method_credit if verdict.equivalent else None

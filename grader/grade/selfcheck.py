@@ -21,7 +21,7 @@ from pathlib import Path
 
 from grader.bank import Problem, default_bank_path, load_bank
 from grader.errors import GraderError
-from grader.grade.part import grade_answer, with_method_credit
+from grader.grade.part import grade_answer
 from grader.judge import DEFAULT_TIMEOUT
 
 __all__ = ["CheckResult", "check", "check_many", "find_part"]
@@ -137,9 +137,7 @@ def check(
     problem, part = find_part(key, bank)
     if not str(answer).strip():
         return CheckResult(key, "invalid", 0.0, ("Your answer is empty.",))
-    verdict = grade_answer(problem, part, str(answer), timeout=timeout)
-    if answers:
-        verdict = with_method_credit(problem, part, verdict, str(answer), answers, timeout=timeout)
+    verdict = grade_answer(problem, part, str(answer), timeout=timeout, answers=answers)
     mathml = verdict.answer.read_as_mathml if verdict.answer is not None and verdict.answer.ok else ""
     return CheckResult(key, verdict.status, verdict.score, verdict.feedback, verdict.read_as, mathml)
 

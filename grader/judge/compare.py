@@ -177,7 +177,8 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
-    forms = _small_angle_forms(spec, prepared, submitted, timeout, values) if verdict.status != "equivalent" else None
+    left = timeout - (time.monotonic() - started)
+    forms = _small_angle_forms(spec, prepared, submitted, left, values) if verdict.status != "equivalent" else None
     if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
         return forms
     chain = _chained(submitted) if verdict.status == "invalid" and spec.parsed and spec.shape else None
@@ -470,6 +471,8 @@ def _hashable(value):
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
+    if timeout <= 0:  # a second reading of the answer, with no time left for it: nobody may say
+        return _verdict(Outcome("undecided", 0.0, "undecided", method="timeout"), None)
     answer, conserved, used, typed, read_in, read_notes, shown = None, False, (), None, None, (), None
     with_constant, constant = None, None
     try:
