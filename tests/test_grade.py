@@ -364,6 +364,33 @@ def test_equations_that_determine_no_acceleration_earn_no_method_credit(tmp_path
     assert graded.auto_score == 0 and graded.method != "error carried forward"
 
 
+@pytest.mark.parametrize(
+    ("problem", "lagrangian", "motion", "credit"),
+    [
+        # no energy: its equations are no physics
+        ("atwood-machine", "xdot^2", "xddot = 0", False),
+        ("spherical-pendulum", "thetadot^2 + phidot^2", "thetaddot = 0; phiddot = 0", False),
+        # a coordinate left out (the potential forgotten): no force, equations easier than those asked
+        ("atwood-machine", "1/2 (m1 + m2) xdot^2", "(m1 + m2) xddot = 0", False),
+        ("plane-pendulum", "1/2 m l^2 thetadot^2 + m g l", "thetaddot = 0", False),
+        ("rotating-hoop", "1/2 m R^2 thetadot^2 + m g R", "thetaddot = 0", False),
+        # a wrong sign or a wrong term: the work after it is as hard, and earns the credit
+        ("atwood-machine", "1/2 (m1 + m2) xdot^2 - (m1 - m2) g x", "(m1 + m2) xddot = -(m1 - m2) g", True),
+        ("rotating-hoop", "1/2 m R^2 thetadot^2 + m g R cos θ", "R θ̈ = -g sin θ", True),  # ω forgotten, not θ
+    ],
+)
+def test_method_credit_needs_a_lagrangian_that_makes_the_equations_no_easier(
+    tmp_path, problem, lagrangian, motion, credit
+):
+    path = tmp_path / "a.yaml"
+    path.write_text(f"schema_version: 1\nid: a\ntitle: A\nproblems:\n  - problem: {problem}\n")
+    answers = {f"{problem}.lagrangian": lagrangian, f"{problem}.motion": motion}
+    grade = grade_submission(Submission(Student("s"), answers), load_assignment(path, BANK), BANK)
+    graded = next(p for p in grade.parts if p.part == "motion")
+    assert (graded.method == "error carried forward") == credit, graded
+    assert (graded.auto_score > 0) == credit, graded
+
+
 def test_an_answer_given_word_for_word_is_graded_once_a_run(tmp_path, monkeypatch):
     assignment = _pendulum_only(tmp_path)
     right, wrong = PENDULUM_L, "1/2 m l^2 thetadot^2 - m g l cos(theta)"

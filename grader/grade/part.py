@@ -18,6 +18,8 @@ from grader.errors import AuthorError
 from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
 from grader.judge.deadline import CheckTimeout, Deadline, time_limit
 from grader.judge.lagrangian import equations_of_motion
+from grader.judge.setting import Setting
+from grader.parse import parse_answer
 
 __all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
 
@@ -145,9 +147,12 @@ def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str,
     alone was, and a labelled one lost its equations their credit)."""
     setting = setting_of(problem)
     source = problem.part(part.derive_from)
-    read = grade_answer(problem, source, lagrangian, timeout=deadline.remaining()).answer
+    graded = grade_answer(problem, source, lagrangian, timeout=deadline.remaining())
+    read = graded.answer
     if read is None or not read.ok or read.kind != "expression" or deadline.remaining() <= 0:
         return None
+    if graded.diagnosis in _NOT_AN_ENERGY or not _as_full(read.value, expected_answer(problem, source), setting):
+        return None  # ẋ², or ½ (m₁ + m₂) ẋ² with no potential: equations easier than those asked earn nothing
     try:
         with time_limit(deadline.remaining()):
             implied = equations_of_motion(read.read_as_text, **setting)
@@ -155,3 +160,20 @@ def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str,
     except (AuthorError, CheckTimeout, ArithmeticError, ValueError, TypeError, RecursionError):
         return None  # the student's Lagrangian is not one we can derive from: no carried credit
     return part.method_credit if verdict.equivalent else None
+
+
+# what the Lagrangian part says of a Lagrangian that is no energy: its equations are no physics
+_NOT_AN_ENERGY = frozenset({"units_differ", "units_mixed", "units_argument", "units_power"})
+
+
+def _as_full(lagrangian, reference: str, setting: dict) -> bool:
+    """Whether a student's Lagrangian depends on every coordinate and velocity the reference does.
+    One that leaves a coordinate out (its potential forgotten) gives equations with no force in that
+    coordinate, easier than those asked: an error carried forward earns credit where the work after it
+    is as hard as it would have been, as markers of written work give it."""
+    plain = Setting.build(setting["coords"], setting["known"], setting["domains"])
+    state = set(plain.state.values())
+    expected = parse_answer(reference, coords=setting["coords"], known=setting["known"])
+    if not expected.ok:
+        return True  # checked by grader validate; no reason here to withhold the credit
+    return plain.plain(expected.value).free_symbols & state <= plain.plain(lagrangian).free_symbols
