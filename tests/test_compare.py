@@ -3801,6 +3801,25 @@ def test_a_wrong_lagrangian_is_told_its_mistake_and_not_its_harmless_total_deriv
     assert verdict.feedback == (sentence,)
 
 
+@pytest.mark.parametrize(
+    ("expected", "kind", "submitted", "sentence"),
+    [
+        # the kinetic energy in brackets, twice too large: one term of the student's, named by its velocities
+        (L_SPHERICAL, "lagrangian", "m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)",
+         "A term differs: the velocity-dependent term in θ̇ and φ̇ has the wrong factor."),
+        (SPHERICAL_H, "expression", "m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)",
+         "A term differs: the velocity-dependent term in θ̇ and φ̇ has the wrong factor."),
+        # written apart, only the one that is wrong is named, by its velocity
+        (L_SPHERICAL, "lagrangian", "m l^2 thetadot^2 + 1/2 m l^2 sin(theta)^2 phidot^2 + m g l cos(theta)",
+         "A term differs: the velocity-dependent term in θ̇² has the wrong factor."),
+    ],
+)  # fmt: skip
+def test_a_term_of_the_students_that_sums_several_velocities_is_named_by_them(expected, kind, submitted, sentence):
+    # named "the term in sin(θ)", a student would mend the φ̇² term and leave the θ̇² term twice too large
+    verdict = compare(expected, submitted, kind=kind, **SPHERICAL)
+    assert verdict.feedback == (sentence,)
+
+
 P_PHI = "m l^2 sin(theta)^2 phidot"
 
 

@@ -546,7 +546,9 @@ def describe_term(
             within = _velocities(term, accelerations, setting)
         return f"{article} term with an acceleration{within}"
     if symbols & velocities:
-        if own and not within:  # the student's own term: which velocities, as ½ m l² α̇² beside ½ m l² β̇²
+        if own and _summed(term, velocities):  # m l² (θ̇² + sin²θ φ̇²): by its velocities, not by one sin(θ) of it
+            within = " in " + " and ".join(sorted(to_text(setting.as_typed(v)) for v in symbols & velocities))
+        elif own and not within:  # the student's own term: which velocities, as ½ m l² α̇² beside ½ m l² β̇²
             within = _velocities(term, velocities, setting)
         return f"{article} velocity-dependent term{within}"
     if trig:
@@ -577,6 +579,15 @@ def in_sentence(text: str, times: str = " ") -> str:
 
 _POWER = re.compile(r"\^(-?[0-9]+)(?![0-9.])")  # not x^2.5
 _PRODUCT = re.compile(r"(?<=(.))\*(?!\*)")
+
+
+def _summed(term, velocities: set) -> bool:
+    """Whether a term is a product with a sum of terms in different velocities: a student's kinetic
+    energy kept in brackets, ``m l² (θ̇² + sin²θ φ̇²)``."""
+    sums = [factor for factor in sympy.Mul.make_args(term) if factor.is_Add]
+    return any(
+        len({frozenset(part.free_symbols & velocities) for part in added.args} - {frozenset()}) > 1 for added in sums
+    )
 
 
 def _velocities(term, velocities: set, setting: Setting) -> str:
