@@ -716,27 +716,37 @@ def _wrong_definition(label, side, expected: Expected) -> bool:
     """Whether ``label = side``, a definition the answer states, is wrong for the quantity named:
     L or H or E as the wrong sum of energies, or as one another where they differ (L = E, H = L);
     H = Σ p q̇ + L; a momentum p_φ as ∂L/∂φ, or as ∂L/∂θ̇. What the problem names is not judged."""
+    return _definition_judged(label, side, expected) is False
+
+
+def _definition_judged(label, side, expected: Expected) -> bool | None:
+    """Whether ``label = side`` is right for the quantity named (see :func:`_wrong_definition`); None
+    where it is no definition of one we know, as ``H = Σ p q̇ − L + V`` or ``L = T − V·not`` are not,
+    or the problem names the quantity."""
     if not isinstance(label, sympy.Symbol) or label.name in expected.names:
-        return False
+        return None
     name = label.name
     if name in _ENERGY_SUMS:
         if _KINETIC_K.name not in expected.names:
             side = side.xreplace({_KINETIC_K: _KINETIC})
         if _in_energies(side, expected.names):
-            return _energy_multiple(side, [name]) != 1
+            return _energy_multiple(side, [name]) == 1
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
-            return "L" in {name, side.name} and name != side.name  # L = E, L = H, H = L
+            return not ("L" in {name, side.name} and name != side.name)  # L = E, L = H, H = L
         lagrangian = sympy.Symbol("L")
         if name == "H" and any(symbol.name in _SUMS for symbol in side.free_symbols) and side.has(lagrangian):
             rest = side - side.coeff(lagrangian) * lagrangian
-            return side.coeff(lagrangian) != -1 or rest.could_extract_minus_sign()  # H = Σ p q̇ − L
-        return False
+            if side.coeff(lagrangian) != -1 or rest.could_extract_minus_sign():
+                return False  # H = Σ p q̇ + L, H = L − Σ p q̇
+            coefficient, term = rest.as_coeff_Mul()
+            return True if coefficient == 1 and term.is_Mul and not term.has(lagrangian) else None  # H = Σ p q̇ − L
+        return None
     momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
     derivative = re.fullmatch(r"d[LT]_d(\w+)", side.name) if side.is_Symbol else None
     if not momentum or not derivative:
-        return False
+        return None
     wanted = momentum[1].replace("_", "") + "dot"  # p_θ₁ is ∂L/∂θ̇₁: dL_dtheta_1dot
-    return derivative[1].replace("_", "") != wanted
+    return derivative[1].replace("_", "") == wanted
 
 
 def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
