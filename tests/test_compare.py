@@ -1347,6 +1347,15 @@ def _before(words):
         # words before and a remark after: before, the remark was left out and the words kept, undefined
         (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)", "lagrangian",
          "equivalent", (_before("The Lagrangian is"), _words("(taking V = 0 at the pivot)"))),
+        # a method in words, then a comma: before, the words were a list's first item, with no `=`
+        (EOM_PENDULUM, "From the Euler–Lagrange equation, m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_before("From the Euler–Lagrange equation,"),)),
+        (EOM_PENDULUM, "Using the Euler-Lagrange equations, m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_before("Using the Euler-Lagrange equations,"),)),  # the name's hyphen is no minus sign
+        (EOM_PENDULUM, "By Lagrange's equation, θ̈ = −(g/l) sin θ", "equation", "equivalent",
+         (_before("By Lagrange's equation,"),)),
+        (EOM_PENDULUM, "From the Euler–Lagrange equation, m l² θ̈ − m g l sin θ = 0", "equation", "not_equivalent",
+         (_before("From the Euler–Lagrange equation,"),)),
         # the Euler–Lagrange operator set to zero, then the equation it gives: before, `:` was refused
         (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
          (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0:"),)),

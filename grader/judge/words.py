@@ -117,6 +117,7 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     about the sign, maybe minus``) may say "or", "not" and arithmetic in words: they are for a
     person to read (:func:`says_otherwise`), beside a formula; not beside a number, where they
     may offer another."""
+    words = _EULER_LAGRANGE.sub("EulerLagrange", words)  # a name's hyphen, not a minus sign
     if not words or _MATH_SIGNS & set(words) or _NUMBER.search(words):
         return False
     if not (doubt and _DOUBT.search(words)) and (_MATH_WORDS.search(words) or _HEDGE.search(words)):
@@ -178,14 +179,20 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
         words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
         if formula and is_prose(words, names, doubt=True):
             yield words, formula
+    if first[0].lower() in _METHOD:  # From the Euler–Lagrange equation, m l² θ̈ + … = 0
+        said, end = _words_from(text, first.start(), names, coords)
+        if text[end:].lstrip().startswith(","):
+            words, formula = text[: text.index(",", end) + 1].strip(), text[text.index(",", end) + 1 :].strip()
+            if formula and is_prose(" ".join(said), names, doubt=True):
+                yield words, formula
 
 
+# words that begin a sentence naming how the formula after its comma was found. Not a condition ("If θ is
+# small, …", "For small angles, …"): what that sets is not the formula's, and is read as typed.
+_METHOD = frozenset({"from", "using", "applying", "by"})
 # words that begin a sentence stating what the quantity is before its value: "Since L = T − V, L = …",
-# "The Lagrangian L = T − V is …", "With L = T − V: L = …". Not a condition ("If L = …", "For small θ,
-# …"): what that sets is not the formula's, and is read as typed.
-_STATING = frozenset(
-    {"since", "as", "because", "using", "with", "given", "here", "from", "by", "applying", "the", "our", "this"}
-)
+# "The Lagrangian L = T − V is …", "With L = T − V: L = …". Again not a condition ("If L = …").
+_STATING = _METHOD | {"since", "as", "because", "with", "given", "here", "the", "our", "this"}
 # words that hand over from a definition to the value: "…, we have L = …", "…, so L = …"; the words
 # between are these alone (not "…, the Hamiltonian is …", which may say the value is another quantity's)
 _HANDS_OVER_TO_VALUE = _HANDING_OVER | IMPLYING_WORDS | {"then"}
