@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 from sympy.core.cache import clear_cache
 
 from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare, parse_answer
+from grader.judge import words
 from grader.judge.expected import prepare
 from grader.judge.lagrangian import equations_of_motion
 
@@ -1345,6 +1346,23 @@ def _before(words):
         ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),
         (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² − m g l cos θ", "lagrangian", "not_equivalent",
          (_before("The Lagrangian is"),)),  # the formula judged, the mistake named
+        # words before and a remark after: before, the remark was left out and the words kept, undefined
+        (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)", "lagrangian",
+         "equivalent", (_before("The Lagrangian is"), _words("(taking V = 0 at the pivot)"))),
+        # a method in words, then a comma: before, the words were a list's first item, with no `=`
+        (EOM_PENDULUM, "From the Euler–Lagrange equation, m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_before("From the Euler–Lagrange equation,"),)),
+        (EOM_PENDULUM, "Using the Euler-Lagrange equations, m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_before("Using the Euler-Lagrange equations,"),)),  # the name's hyphen is no minus sign
+        (EOM_PENDULUM, "By Lagrange's equation, θ̈ = −(g/l) sin θ", "equation", "equivalent",
+         (_before("By Lagrange's equation,"),)),
+        (EOM_PENDULUM, "From the Euler–Lagrange equation, m l² θ̈ − m g l sin θ = 0", "equation", "not_equivalent",
+         (_before("From the Euler–Lagrange equation,"),)),
+        # the Euler–Lagrange operator set to zero, then the equation it gives: before, `:` was refused
+        (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0:"),)),
+        (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get θ̈ = −(g/l) θ", "equation", "not_equivalent",
+         (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get"),)),
     ],
 )  # fmt: skip
 def test_words_before_a_formula_are_read_past_and_said_so(expected, submitted, kind, status, notes):
@@ -4088,6 +4106,17 @@ def _misstated(statement: str, label: str) -> str:
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = ∂L/∂φ", "p_φ")),
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂θ̇ = m l² sin²θ φ̇", "expression", SPHERICAL,
          _misstated("p_φ = ∂L/∂θ̇", "p_φ")),
+        # said in a sentence before the value: before, `Since`, T and V were told undefined, and wrong
+        (L_PENDULUM, f"Since L = T + V, L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = T + V", "L")),
+        (L_PENDULUM, f"The Lagrangian L = K + U is {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = K + U", "L")),
+        (L_PENDULUM, f"With L = V − T: L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = -T + V", "L")),
+        (L_PENDULUM, f"Using L = E, we have L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = E", "L")),
+        (SPHERICAL_H, f"As H = Σ p q̇ + L, H = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = L + Σ p q̇", "H")),
+        (SPHERICAL_P_PHI, "Since p_φ = ∂L/∂φ, p_φ = m l² sin²θ φ̇", "expression", SPHERICAL,
+         _misstated("p_φ = ∂L/∂φ", "p_φ")),
+        ("m l^2 thetadot", "Since p_θ = ∂L/∂θ, p_θ = m l² θ̇", "expression", {**PENDULUM, "name": "p_theta"},
+         _misstated("p_θ = ∂L/∂θ", "p_θ")),
     ],
 )  # fmt: skip
 def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
@@ -4111,3 +4140,99 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
 )
 def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, options):
     assert compare(expected, submitted, kind=kind, **options).status == "equivalent"
+
+
+def _chain(words: str, definition: str) -> str:
+    return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
+
+
+P_THETA = {**PENDULUM, "name": "p_theta"}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "options", "status", "feedback"),
+    [
+        # before, each was wrong: `Since`, `Using`, T and V undefined, or `:` refused
+        (L_PENDULUM, f"Since L = T − V, L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Since", "L = T − V"))),
+        (L_PENDULUM, f"The Lagrangian L = T − V is {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("The Lagrangian … is", "L = T − V"))),
+        (L_PENDULUM, f"With L = T − V: L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("With", "L = T − V"))),
+        (L_PENDULUM, f"Using L = T − V, L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Using", "L = T − V"))),
+        (L_PENDULUM, f"Since L = T − V, we have L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Since … we have", "L = T − V"))),
+        (L_PENDULUM, f"Given L = K − U we get {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Given … we get", "L = K − U"))),
+        (L_PENDULUM, f"Since L = T − V, L(θ, θ̇) = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Since", "L(θ, θ̇) = T − V"))),  # named as the prompt names it
+        (L_PENDULUM, f"Since L = T − V, L = {L_TYPED} (taking V = 0 at the pivot)", "lagrangian", PENDULUM,
+         "equivalent", ("Correct.", _chain("Since", "L = T − V"), _words("(taking V = 0 at the pivot)"))),
+        (SPHERICAL_H, f"Since H = Σ p q̇ − L, H = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, "equivalent",
+         ("Correct.", _chain("Since", "H = Σ p q̇ − L"))),
+        (SPHERICAL_H, rf"The Hamiltonian H = \sum_j p_j \dot q_j - L is {SPHERICAL_H_TYPED}", "expression",
+         SPHERICAL, "equivalent", ("Correct.", _chain("The Hamiltonian … is", r"H = \sum_j p_j \dot q_j - L"))),
+        (SPHERICAL_P_PHI, "Since p_φ = ∂L/∂φ̇, p_φ = m l² sin²θ φ̇", "expression", SPHERICAL, "equivalent",
+         ("Correct.", _chain("Since", "p_φ = ∂L/∂φ̇"))),
+        ("m l^2 thetadot", "Since p_θ = ∂L/∂θ̇, p_θ = m l² θ̇", "expression", P_THETA, "equivalent",
+         ("Correct.", _chain("Since", "p_θ = ∂L/∂θ̇"))),
+        # a wrong value after a right definition: the value's own feedback, never `Since` undefined
+        (L_PENDULUM, "Since L = T − V, L = 1/2 m l^2 θ̇^2 − m g l cos θ", "lagrangian", PENDULUM, "not_equivalent",
+         ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _chain("Since", "L = T − V"))),
+        (L_PENDULUM, "The Lagrangian L = T − V is 1/2 m l θ̇^2 + m g l cos θ", "lagrangian", PENDULUM,
+         "not_equivalent", ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.",
+                            _chain("The Lagrangian … is", "L = T − V"))),
+        (SPHERICAL_P_PHI, "Since p_φ = ∂L/∂φ̇, p_φ = m l² φ̇", "expression", SPHERICAL, "not_equivalent",
+         ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+          " on θ.",
+          _chain("Since", "p_φ = ∂L/∂φ̇"))),
+        (L_PENDULUM, "Since L = T − V, L = 1/2 m v^2 + m g l cos θ", "lagrangian", PENDULUM, "not_equivalent",
+         ("Your answer uses `v`, which this problem does not define (it uses g, l, m, θ). Write your answer in"
+          " those, or say what it stands for: …, where v = ….",)),  # the value's own name, not `Since`
+    ],
+)  # fmt: skip
+def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
+    expected, submitted, kind, options, status, feedback
+):
+    verdict = compare(expected, submitted, kind=kind, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "found", "status", "first"),
+    [
+        # words that change the meaning, or a condition: nothing found, read as typed
+        (L_PENDULUM, f"L is not T + V, L = {L_TYPED}", False, "not_equivalent",
+         "Your answer uses `T`, `V`, `is` and `not`, which this problem does not define (it uses g, l, m, θ)."),
+        (L_PENDULUM, f"If L = T − V, L = {L_TYPED}", False, "not_equivalent",
+         "Your answer uses `If`, `T` and `V`, which this problem does not define (it uses g, l, m, θ)."),
+        (L_PENDULUM, f"Since L = T − V (not T + V), L = {L_TYPED}", False, "not_equivalent",
+         "Your answer uses `Since`, `T`, `V` and `not`, which this problem does not define (it uses g, l, m, θ)."),
+        (L_PENDULUM, f"Since L = T − V, not L = {L_TYPED}", False, "not_equivalent",
+         "Your answer uses `L`, `Since`, `T`, `V` and `not`, which this problem does not define (it uses g, l, m,"
+         " θ)."),
+        (L_PENDULUM, f"Since L = T − V, the Hamiltonian is {L_TYPED}", False, "invalid",  # another quantity named
+         "A comma is not understood here."),
+        (L_PENDULUM, f"Since L = T − V, H = {L_TYPED}", False, "not_equivalent",  # another quantity's value
+         "Your answer uses `H`, `L`, `Since`, `T` and `V`, which this problem does not define (it uses g, l, m, θ)."),
+        ("thetaddot = -(g/l) theta", "If θ is small, θ̈ = −(g/l) θ", False, "invalid",  # a condition: as before
+         "The first item of your answer has no `=`."),
+        (EOM_PENDULUM, "Applying ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", False, "invalid",  # not Lagrange's equation
+         "`:` is not something an answer can contain."),
+        (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) + ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", False, "invalid",
+         "`:` is not something an answer can contain."),
+        # found, but not read so: a definition we cannot judge, or two values for L (which is the answer?)
+        (L_PENDULUM, f"Since L = 1/2 m l^2 θ̇^2 + m g l cos θ, L = {L_TYPED}", True, "not_equivalent",
+         "Your answer uses `Since`, which this problem does not define (it uses g, l, m, θ)."),
+        (L_PENDULUM, f"Since L = T − V, L = {L_TYPED}, L = 1/2 m l^2 θ̇^2 − m g l cos θ", True, "not_equivalent",
+         "Your answer uses `Since`, `T` and `V`, which this problem does not define (it uses g, l, m, θ)."),
+    ],
+)  # fmt: skip
+def test_a_sentence_that_may_change_the_definition_leaves_it_as_typed(expected, submitted, found, status, first):
+    names, coords = ["g", "l", "m", "t", "theta"], ["theta"]
+    assert bool(list(words.definition_then_formula(submitted, names, coords))) is found
+    kind = "lagrangian" if expected == L_PENDULUM else "equation"
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert verdict.status == status, verdict
+    assert verdict.feedback[0].startswith(first), verdict

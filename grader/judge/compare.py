@@ -50,6 +50,7 @@ from grader.judge.units import (
 )
 from grader.judge.verdict import Verdict
 from grader.judge.words import (
+    definition_then_formula,
     formula_then_approximation,
     formula_then_convention,
     formula_then_small_angle_form,
@@ -719,27 +720,37 @@ def _wrong_definition(label, side, expected: Expected) -> bool:
     """Whether ``label = side``, a definition the answer states, is wrong for the quantity named:
     L or H or E as the wrong sum of energies, or as one another where they differ (L = E, H = L);
     H = Σ p q̇ + L; a momentum p_φ as ∂L/∂φ, or as ∂L/∂θ̇. What the problem names is not judged."""
+    return _definition_judged(label, side, expected) is False
+
+
+def _definition_judged(label, side, expected: Expected) -> bool | None:
+    """Whether ``label = side`` is right for the quantity named (see :func:`_wrong_definition`); None
+    where it is no definition of one we know, as ``H = Σ p q̇ − L + V`` or ``L = T − V·not`` are not,
+    or the problem names the quantity."""
     if not isinstance(label, sympy.Symbol) or label.name in expected.names:
-        return False
+        return None
     name = label.name
     if name in _ENERGY_SUMS:
         if _KINETIC_K.name not in expected.names:
             side = side.xreplace({_KINETIC_K: _KINETIC})
         if _in_energies(side, expected.names):
-            return _energy_multiple(side, [name]) != 1
+            return _energy_multiple(side, [name]) == 1
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
-            return "L" in {name, side.name} and name != side.name  # L = E, L = H, H = L
+            return not ("L" in {name, side.name} and name != side.name)  # L = E, L = H, H = L
         lagrangian = sympy.Symbol("L")
         if name == "H" and any(symbol.name in _SUMS for symbol in side.free_symbols) and side.has(lagrangian):
             rest = side - side.coeff(lagrangian) * lagrangian
-            return side.coeff(lagrangian) != -1 or rest.could_extract_minus_sign()  # H = Σ p q̇ − L
-        return False
+            if side.coeff(lagrangian) != -1 or rest.could_extract_minus_sign():
+                return False  # H = Σ p q̇ + L, H = L − Σ p q̇
+            coefficient, term = rest.as_coeff_Mul()
+            return True if coefficient == 1 and term.is_Mul and not term.has(lagrangian) else None  # H = Σ p q̇ − L
+        return None
     momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
     derivative = re.fullmatch(r"d[LT]_d(\w+)", side.name) if side.is_Symbol else None
     if not momentum or not derivative:
-        return False
+        return None
     wanted = momentum[1].replace("_", "") + "dot"  # p_θ₁ is ∂L/∂θ̇₁: dL_dtheta_1dot
-    return derivative[1].replace("_", "") != wanted
+    return derivative[1].replace("_", "") == wanted
 
 
 def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
@@ -1344,8 +1355,9 @@ def _without_words(
 ) -> tuple[ParsedAnswer, tuple]:
     """``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ (conserved)``, ``The angular frequency is
     √(g/l)``: the formula, read without the words after or before it, where the answer as typed
-    cannot be read or uses names the problem does not have; and the notes that say so. Otherwise
-    the answer as it was read, and no note."""
+    cannot be read or uses names the problem does not have; and the notes that say so. So too
+    ``Since L = T − V, L = …``, read as the chain ``L = T − V = …`` it states. Otherwise the answer
+    as it was read, and no note."""
     if answer.ok and not _undefined(answer, names):
         zero = _ZERO_THEN_WORDS.search(submitted)
         if zero is None:
@@ -1362,9 +1374,11 @@ def _without_words(
         return (kept if kept.ok and _undefined(kept, names) else answer), ()
     coords = expected.setting.coords
     submitted = text_as_words(submitted, names, coords)  # … = 0 \text{(damped)}: TeX's text is words too
-    read = _formula_before_words(submitted, expected, names, deadline)
-    if read is not None:
-        return read
+    # the formula before words, where it leaves a name undefined (Since L = T − V, L = … (taking V = 0 at
+    # the pivot)), is said as read only where no reading of words before it leaves none
+    without = _formula_before_words(submitted, expected, names, deadline)
+    if without is not None and not _undefined(without[0], names):
+        return without
     for words, formula in words_then_formula(submitted, names, coords):
         before = (_words_note("words_before_left_out", words), {"words": _shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
@@ -1373,7 +1387,40 @@ def _without_words(
         after = _formula_before_words(formula, expected, names, deadline)
         if after is not None and not _undefined(after[0], names):
             return after[0], (before, *after[1])
-    return answer, ()
+    for words, definition, chain in definition_then_formula(submitted, names, coords):
+        read, after = parse_answer(chain, coords=coords, known=names, deadline=deadline), ()
+        if _unknown_in_chain(read, names):  # …, L = ½ m l² θ̇² + … (taking V = 0 at the pivot)
+            remark = _formula_before_words(chain, expected, names, deadline)
+            if remark is not None and not _unknown_in_chain(remark[0], names):
+                read, after = remark
+        if definition is None and read.ok and read.kind == "equation":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …
+            return read, ((_words_note("words_before_left_out", words), {"words": _shown(words)}), *after)
+        if definition is not None and _states_one_definition(read, expected):
+            chained = {"words": _shown(words), "chain": f"{definition} = …"}
+            return read, ((_words_note("definition_in_words", words), chained), *after)
+    return without if without is not None else (answer, ())
+
+
+def _unknown_in_chain(read: ParsedAnswer | Refusal, names: list) -> bool:
+    """Whether a chain could not be read, or uses names neither the problem's nor the one it gives a value."""
+    if not read.ok:
+        return True
+    labels = {statement.lhs for statement in read.stated}
+    return any(symbol not in labels and symbol.name not in names for symbol in read.symbols)
+
+
+def _states_one_definition(read: ParsedAnswer | Refusal, expected: Expected) -> bool:
+    """Whether ``Since L = T − V, L = …``, read as the chain ``L = T − V = …`` it states
+    (:func:`~grader.judge.words.definition_then_formula`), is that chain: the parser read a definition
+    on its way, one whose rightness is known (:func:`_definition_judged`: a right one is read past, a
+    wrong one goes to a person, as a chain's does), and no other item gives the quantity a value
+    (``…, L = …, L = …``: which is the answer?)."""
+    if not read.ok or not read.stated or read.kind == "expression":
+        return False
+    if any(_definition_judged(statement.lhs, statement.rhs, expected) is None for statement in read.stated):
+        return False
+    items = read.value if read.kind == "equations" else (read.value,)
+    return sum(item.lhs == read.stated[-1].lhs for item in items) == 1
 
 
 # a zero, then a word or a bracket that opens one: … = 0 (inverted), … = 0 or not

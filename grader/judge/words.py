@@ -4,6 +4,8 @@ Contents:
     is_prose(words, names)                     whether words are about the answer, not more of it
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
+    definition_then_formula(text, names, coords)
+                                               ``Since L = T − V, L = …``: the words, the definition, the chain
     formula_then_convention(text, names)       ``L = … (taking V = 0 at the pivot)``: the formula and its remark
     formula_then_small_angle_form(text, names, coords)
                                                ``θ̈ = … sin θ, which for small θ gives θ̈ = … θ``: both formulas
@@ -24,6 +26,14 @@ at the pivot)``: words, and ``V = 0`` (or ``U = 0``) in a name the problem does 
 the formula was worked out, not what it is, and changes no grade; it is read past as words are. Any
 other ``=`` in a remark may be more of the answer: it is read as typed.
 
+A sentence may state what the quantity is on the way to its value: ``Since L = T − V, L = ½ m l² θ̇²
++ …``, ``The Lagrangian L = T − V is …``, ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + … = 0``. That is
+the chain ``L = T − V = …`` the parser reads (or the Euler–Lagrange operator before the equation it gives),
+written with words: :func:`definition_then_formula` finds it, and ``compare`` judges the definition as the
+chain's. Only words that begin such a sentence (``Since``, ``Using``, ``The``…) and hand over to the value
+(``,``, ``:``, ``we have``, ``is``) are read past; a condition (``If``), ``not`` or a word in the definition
+leaves the answer as typed.
+
 Words between two formulas may say the second is the first's small-angle form: ``θ̈ = −(g/l) sin θ,
 which for small θ gives θ̈ = −(g/l) θ``. Which of the two is the answer depends on what was asked;
 :func:`formula_then_small_angle_form` only finds them, and ``compare`` decides.
@@ -39,6 +49,7 @@ from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = [
+    "definition_then_formula",
     "formula_then_approximation",
     "formula_then_convention",
     "formula_then_small_angle_form",
@@ -87,10 +98,11 @@ _APPLIED = re.compile(r"[A-Za-z]\(")
 _WORD = re.compile(r"(?<![A-Za-z0-9_\\])[A-Za-z]{2,}(?![A-Za-z0-9_])")
 _OPENS = " ,;:([–—-"  # what may stand between a formula and the words about it
 # where a sentence hands over to its formula: "The Lagrangian is …", "… we get …", "Equation of motion: …"
-_LEADS_TO = re.compile(
-    r"\b(?:is|are|was|becomes|become|gives|give|yields|yield|reads|read|get|gets|obtain|obtains|find|finds|have)\b|:",
-    re.I,
+_HANDING_OVER = frozenset(
+    {"is", "are", "was", "becomes", "become", "gives", "give", "yields", "yield", "reads", "read", "get", "gets"}
+    | {"obtain", "obtains", "find", "finds", "have"}
 )
+_LEADS_TO = re.compile(rf"\b(?:{'|'.join(sorted(_HANDING_OVER))})\b|:", re.I)
 _LENGTH = 400  # characters: longer answers are read as typed
 # TeX's commands whose braces may hold words, and the spaces set before them: \,\text{for small angles}
 _TEXT_COMMAND = re.compile(r"\\(?:text|textrm|mathrm|operatorname|mbox)(?![A-Za-z])")
@@ -105,6 +117,7 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     about the sign, maybe minus``) may say "or", "not" and arithmetic in words: they are for a
     person to read (:func:`says_otherwise`), beside a formula; not beside a number, where they
     may offer another."""
+    words = _EULER_LAGRANGE.sub("EulerLagrange", words)  # a name's hyphen, not a minus sign
     if not words or _MATH_SIGNS & set(words) or _NUMBER.search(words):
         return False
     if not (doubt and _DOUBT.search(words)) and (_MATH_WORDS.search(words) or _HEDGE.search(words)):
@@ -166,6 +179,151 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
         words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
         if formula and is_prose(words, names, doubt=True):
             yield words, formula
+    if first[0].lower() in _METHOD:  # From the Euler–Lagrange equation, m l² θ̈ + … = 0
+        said, end = _words_from(text, first.start(), names, coords)
+        if text[end:].lstrip().startswith(","):
+            words, formula = text[: text.index(",", end) + 1].strip(), text[text.index(",", end) + 1 :].strip()
+            if formula and is_prose(" ".join(said), names, doubt=True):
+                yield words, formula
+
+
+# words that begin a sentence naming how the formula after its comma was found. Not a condition ("If θ is
+# small, …", "For small angles, …"): what that sets is not the formula's, and is read as typed.
+_METHOD = frozenset({"from", "using", "applying", "by"})
+# words that begin a sentence stating what the quantity is before its value: "Since L = T − V, L = …",
+# "The Lagrangian L = T − V is …", "With L = T − V: L = …". Again not a condition ("If L = …").
+_STATING = _METHOD | {"since", "as", "because", "with", "given", "here", "the", "our", "this"}
+# words that hand over from a definition to the value: "…, we have L = …", "…, so L = …"; the words
+# between are these alone (not "…, the Hamiltonian is …", which may say the value is another quantity's)
+_HANDS_OVER_TO_VALUE = _HANDING_OVER | IMPLYING_WORDS | {"then"}
+_BETWEEN = _HANDS_OVER_TO_VALUE | {"we", "this", "which", "it", "and", "one"}
+# a word of prose as a sentence has it: Lagrange's, and Euler–Lagrange with any dash (not T−V: capitals after)
+_PROSE_WORD = re.compile(r"(?<![\w\\])(?:Euler\s?[-–‐‑]\s?Lagrange|[A-Za-z]{2,}(?:['’]s)?)(?![\w'’])")
+_EULER_LAGRANGE = re.compile(r"\bEuler\s?[-–‐‑]\s?Lagrange\b")
+
+
+def definition_then_formula(
+    text: str, names: Collection[str], coords: Collection[str]
+) -> Iterator[tuple[str, str | None, str]]:
+    """``Since L = T − V, L = ½ m l² θ̇² + …``: the ways to read ``text`` as (the words, the definition
+    as typed, the chain it states with the value: ``L = T − V = ½ m l² θ̇² + …``, as the parser reads
+    it). The sentence begins with a word that states (``Since``, ``Using``, ``With``, ``The``…), and
+    perhaps more words (``the Lagrangian``), then the definition: a name, ``=`` and a side without
+    words; then ``,``, ``;`` or ``:``, or words that end in one that hands over (``we have``, ``is``,
+    ``so``), or the chain's next ``=``; then the value, after the name again unless words or a colon
+    hand over to it. The Euler–Lagrange operator ``= 0`` (``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: …``) is
+    read past as the parser reads it before the equation it gives: (all before the equation, None, the
+    equation). The words must be prose (:func:`is_prose`). Neither the definition nor the value is
+    checked here."""
+    first = _PROSE_WORD.match(text, len(text) - len(text.lstrip()))
+    if len(text) > _LENGTH or first is None or first[0].lower() not in _STATING:
+        return  # as nearly every answer: no sentence that states
+    lead, start = _words_from(text, 0, names, coords)
+    if not lead:
+        return
+    equals = _stop(text, start, names, coords)
+    if equals is None or text[equals] != "=":
+        return
+    left = text[start:equals].strip()
+    stop = _stop(text, equals + 1, names, coords)
+    side = text[equals + 1 : stop].strip() if stop is not None else ""
+    if not side or any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
+        return  # L = T − V (not T + V): words in the definition may make it another
+    if text[stop] == "=":  # Since L = T − V = …: the chain as typed
+        between, after, handed = [], stop + 1, True
+    else:
+        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
+            return  # …, not L = …: words that do not hand over to the value
+        handed = bool(between) or text[stop] == ":"
+    if not is_prose(" ".join((*lead, *between)), names, doubt=True):
+        return
+    said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=")) if part)
+    said = re.sub(r"\s+", " ", said)
+    value = text[after:].strip()
+    value_equals = _first_equals(value)
+    if _is_euler_lagrange(left, names, coords):
+        if side == "0" and value_equals is not None and text[stop] != "=":
+            yield re.sub(r"\s+", " ", text[:after].strip()), None, value  # the operator, read past as the parser does
+        return
+    name = _name(left, names, coords)
+    if name is None or not value:
+        return
+    if text[stop] != "=" and value_equals is not None:  # …, L = ½ m l² θ̇² + …: the value, named again
+        if _name(value[:value_equals], names, coords) != name:
+            return  # Since L = T − V, H = …: another quantity's value
+        value, handed = value[value_equals + 1 :].strip(), True
+        left = text[after:].strip()[:value_equals].strip()  # L(θ, θ̇), as the value is named
+    if handed and value:
+        yield said, f"{left} = {side}", f"{left} = {side} = {value}"
+
+
+def _words_from(
+    text: str, start: int, names: Collection[str], coords: Collection[str], *, handing: bool = False
+) -> tuple[list[str], int]:
+    """The words of prose from ``start``, one after another with only spaces between, none of them
+    the problem's names (:func:`_is_word`; with ``handing``, ``so`` or ``hence`` too), and where they end."""
+    words, end = [], start
+    for found in _PROSE_WORD.finditer(text, start):
+        if text[end : found.start()].strip():
+            break
+        word = _EULER_LAGRANGE.sub("EulerLagrange", re.sub(r"['’]s$", "", found[0]))
+        if not (_is_word(word, names, coords) or (handing and word.lower() in IMPLYING_WORDS)):
+            break
+        words.append(found[0])
+        end = found.end()
+    return words, end
+
+
+def _stop(text: str, start: int, names: Collection[str], coords: Collection[str]) -> int | None:
+    """Where a side that starts at ``start`` ends: at its first ``,``, ``;``, ``:`` or ``=`` outside
+    brackets, or a word of prose there; None where it runs to the end."""
+    words = {found.start() for found in _WORD.finditer(text, start) if _is_word(found[0], names, coords)}
+    words |= {found.start() for found in _WORD.finditer(text, start) if found[0].lower() in IMPLYING_WORDS}
+    depth = 0
+    for i in range(start, len(text)):
+        character = text[i]
+        depth += (character in "([{") - (character in ")]}")
+        if depth or (i and text[i - 1] == "\\"):
+            continue  # inside brackets, or TeX's \, and \: (spaces)
+        if character in ",;:" or _EQUALS.match(text, i) or i in words:
+            return i
+    return None
+
+
+# `=` that is not part of =>, ==, <=, >= or :=
+_EQUALS = re.compile(r"(?<![=<>:!])=(?![=>])")
+
+
+def _first_equals(text: str) -> int | None:
+    """Where the first ``=`` of ``text`` outside brackets is; None where there is none."""
+    depth = 0
+    for i, character in enumerate(text):
+        depth += (character in "([{") - (character in ")]}")
+        if not depth and _EQUALS.match(text, i):
+            return i
+    return None
+
+
+def _name(text: str, names: Collection[str], coords: Collection[str]) -> str | None:
+    """The name ``text`` reads as, where it is one the problem does not define (``L``, ``p_φ``, and
+    ``L(θ, θ̇)`` as the prompts write it); else None."""
+    read = parse_answer(_ARGUMENTS.sub("", text), coords=coords, known=names)
+    if not read.ok or read.kind != "expression" or not read.value.is_Symbol or read.value.name in names:
+        return None
+    return read.value.name
+
+
+_ARGUMENTS = re.compile(r"\s*\([^()]*\)\s*$")  # L(θ, θ̇): what a quantity is a function of
+
+
+def _is_euler_lagrange(text: str, names: Collection[str], coords: Collection[str]) -> bool:
+    """Whether ``text`` is the Euler–Lagrange operator, ``d/dt(∂L/∂θ̇) − ∂L/∂θ``, as the parser reads it
+    before an equation (and reads past); not ``∂L/∂θ``, the name of one derivative."""
+    if "∂" not in text and "\\partial" not in text:
+        return False
+    read = parse_answer(f"{text} = 0", coords=coords, known=names)
+    return read.ok and read.kind == "expression" and read.value == 0
 
 
 # words that say what follows is a small-angle form: "which for small θ gives", "linearized:"
