@@ -109,6 +109,31 @@ def test_a_term_inside_a_longer_or_negated_one_is_not_named(text, found):
     assert rubric_score(text, [HOLONOMIC, NON_HOLONOMIC]).found == found
 
 
+# what does not appear in L is the coordinate, named as a word or as a bare letter, never its velocity
+COORDINATE = ("the coordinate does not appear in L", 1.0, ("not appear", "independent of", "∂l/∂q = 0"),
+              ("coordinate", "q", "q_k"), ("velocit", "q̇", "qdot", "q'"))  # fmt: skip
+
+LETTER_TERMS = [
+    # (text, what becomes of the idea): a one-letter term is a name of its own
+    ("If q does not appear in L, its generalized momentum ∂L/∂q̇ is conserved.", FOUND),  # was q̇, named after
+    ("L may depend on q̇, but if q does not appear in L, its momentum is conserved.", FOUND),
+    ("When ∂L/∂q = 0, i.e. q does not appear in L, p = ∂L/∂q̇ is conserved.", FOUND),
+    ("The velocity appears in L, the quantity q does not appear.", FOUND),
+    ("The velocity is in L, but its square does not appear.", NEGATED),  # no q in "square"
+    ("The velocity q̇ is in L; the frequency does not appear in it.", NEGATED),
+    ("If q̇ does not appear in L, its momentum is conserved.", NEGATED),  # a velocity, not q
+    ("If q' does not appear in L, q is cyclic.", NEGATED),
+    ("Its velocity does not appear in L; q is cyclic.", NEGATED),
+    ("The velocity is in L, but e.g. the angle does not appear.", NEGATED),  # "e.g." names no e
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), LETTER_TERMS)
+def test_a_one_letter_term_is_a_name_of_its_own(text, outcome):
+    reading = rubric_score(text, [COORDINATE])
+    assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
 def test_an_unbound_rubric_reads_as_before():
     # a rubric of (idea, points, phrasings), with no terms, is found anywhere it is not negated
     rubric = [("small angle", 1.0, ("sin θ ≈ θ",)), ("proportional", 1.0, ("proportional to",))]
@@ -184,6 +209,8 @@ PROPOSALS = [
     ("lagrangian-vs-newtonian.cyclic-definition",
      "A coordinate q_k is cyclic if L does not depend on q_k (only on q̇_k); then its conjugate momentum"
      " p_k = ∂L/∂q̇_k is conserved.", 3),
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, its generalized momentum ∂L/∂q̇ is conserved.", 3),  # was 2/3: a bare q
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),

@@ -25,7 +25,9 @@ credit for a statement turned round.
   no term named yet, of the question's own subject, where the question has one: where a term the
   idea is not about is another idea's subject, of neither. A term does not stand for itself when it
   is denied ("H is not equal to T + V when …"), negated by a prefix ("non-holonomic" for
-  holonomic), inside a longer term, or set against the subject ("unlike Newton's method").
+  holonomic), inside a longer term, or set against the subject ("unlike Newton's method"). A
+  one-letter term is a name of its own: ``q`` is named in "if q does not appear", not in "square"
+  or "q̇".
 
 Clauses end at . ; : , ! ? and at words that begin another (and, but, while, whereas, so,
 then, since, because, if, when, which, that …), but not at "or": "does not use energies or
@@ -67,6 +69,8 @@ _NEGATING_PREFIX = re.compile(r"(?<![^\W\d_])(?:(?:non|un|in|im|ir)-?|non )$")
 _CONTRAST = re.compile(
     r"\b(?:unlike|than|instead of|as opposed to|compared (?:with|to)|in contrast (?:with|to))(?: the| a| an)? $"
 )
+# a one-letter term standing alone: not inside a word, not "e.g.", not marked as a velocity (q̇, q̈, q')
+_LETTER_NAME = r"(?<![^\W\d_]){}(?![^\W\d_]|[\u0300-\u036f]|\.[^\W\d_]|'(?!s\b))"
 # an aside in brackets negates nothing outside it: "the momentum (p_k, not q̇_k) is conserved"
 _ASIDE = re.compile(r"\([^()]*\)|\[[^\[\]]*\]")
 _SENTENCE_END = re.compile(r"[;!?]|\.(?=\s|$)")
@@ -191,11 +195,9 @@ def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int,
     text, found = reading.text, []
     for terms, own in ((about, True), (not_about, False)):
         for term in {_normal(term) for term in terms}:
-            start = text.find(term)
-            while start >= 0:
+            for start in _term_starts(text, term):
                 negated = term[:1].isalpha() and bool(_NEGATING_PREFIX.search(text, max(0, start - 4), start))
                 found.append((start, start + len(term), own and not negated))
-                start = text.find(term, start + 1)
     found.sort(key=lambda mention: (mention[0], -mention[1]))
     kept, reach = [], -1
     for mention in found:
@@ -205,6 +207,21 @@ def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int,
         if not _CONTRAST.search(text, max(0, mention[0] - 24), mention[0]):
             kept.append(mention)
     return kept, [mention[0] for mention in kept]
+
+
+def _term_starts(text: str, term: str):
+    """Where a term is named. A one-letter term is a name of its own: `q` in "if q does not appear",
+    not in "quantity", "e.g.", the velocity "q̇" or "q'"."""
+    if len(term) == 1 and term.isalpha():
+        return (match.start() for match in re.finditer(_LETTER_NAME.format(re.escape(term)), text))
+    return _find_all(text, term)
+
+
+def _find_all(text: str, piece: str):
+    start = text.find(piece)
+    while start >= 0:
+        yield start
+        start = text.find(piece, start + 1)
 
 
 def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int, *, rivals: bool) -> bool:
