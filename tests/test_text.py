@@ -58,6 +58,39 @@ def test_a_negated_phrasing_earns_nothing(text, phrasing, outcome):
     assert (bool(reading.found), bool(reading.discounted)) == outcome
 
 
+TAKEN_BACK = [
+    # (text, what becomes of "conserved"): a statement taken back after it, or denied before its "that"
+    ("Its momentum is conserved — not true in general.", NEGATED),
+    ("Its momentum is conserved, which is false.", NEGATED),
+    ("Its momentum is conserved, but that's not true.", NEGATED),
+    ("Its momentum is conserved (false).", NEGATED),
+    ("Its momentum is conserved - wrong.", NEGATED),
+    ("Its momentum is conserved. That is wrong.", NEGATED),  # the next sentence
+    ("Its momentum is conserved. Not true.", NEGATED),
+    ("Is its momentum conserved? No.", NEGATED),  # a question, answered
+    ("Is its momentum conserved? Not always.", NEGATED),
+    ("It is not true that its momentum is conserved.", NEGATED),
+    ("It is false that its momentum is conserved.", NEGATED),
+    ("I don't think that the momentum is conserved.", NEGATED),
+    ("It is a misconception that the momentum is conserved.", NEGATED),
+    # what takes back something else, or nothing
+    ("Is its momentum conserved? Yes.", FOUND),
+    ("Its momentum is conserved, not its energy.", FOUND),
+    ("Its momentum is conserved, which is true.", FOUND),
+    ("Its momentum is conserved. Its energy has the wrong sign.", FOUND),
+    ("Its momentum is conserved. That is why q is cyclic.", FOUND),
+    ("It is not only true that the momentum is conserved.", FOUND),
+    ("L does not depend on q, so that its momentum is conserved.", FOUND),
+    ("Note that the momentum is conserved.", FOUND),
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), TAKEN_BACK)
+def test_a_statement_taken_back_earns_nothing(text, outcome):
+    reading = rubric_score(text, [CONSERVED])
+    assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
 # the two ideas of "define scleronomic and rheonomic", each tied to the term it describes
 SCLERONOMIC = ("scleronomic: no explicit t", 1.0, ("time independent", "time-independent", "not … explicitly"),
                ("scleronom",), ("rheonom",))  # fmt: skip
@@ -211,6 +244,12 @@ PROPOSALS = [
      " p_k = ∂L/∂q̇_k is conserved.", 3),
     ("lagrangian-vs-newtonian.cyclic-definition",
      "If q does not appear in L, its generalized momentum ∂L/∂q̇ is conserved.", 3),  # was 2/3: a bare q
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, its momentum is conserved, which is false.", 0),  # was 3/3
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints can be written as f(r, t) = 0? No. Non-holonomic ones are inequalities.", 1),  # was 2/4
+    ("constraint-classification.scleronomic-definition",
+     "It is not true that scleronomic constraints are time independent.", 0),  # was 1/2
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),

@@ -19,6 +19,10 @@ credit for a statement turned round.
   nor, without) among the six words before it in its clause or in its ``…``, or a negating
   prefix on its first word (non-, un, in, im, ir: ``conserved`` in "non-conserved",
   ``dependent`` in "independent"). A negation among the phrasing's own words is its meaning.
+* Nor where it is taken back: later in its sentence ("…, which is false", "— not true in
+  general", "(wrong)"), by the next sentence ("That is not true."), by the answer to its question
+  ("… conserved? No."), or by a denial before its "that" ("it is not true that …", "I do not
+  think that …").
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
@@ -79,6 +83,15 @@ _CLAUSE_END = re.compile(
     r"[,:]|\b(?:and|but|while|whereas|so|then|hence|thus|therefore|since|because|if|when|whenever|"
     r"although|though|unlike|which|that|whose|where)\b"
 )
+# what says a statement is not so, after it ("…, which is false", "That is not true.") or before
+# its "that" ("it is not true that …", "I do not think that …", "a misconception that …")
+_FALSE = r"(?:not (?:true|correct|right|valid|the case|so)|false|wrong|incorrect|untrue)\b"
+_FALSITY_REMARK = re.compile(
+    rf"\W*(?:(?:this|it|that|which|the (?:statement|claim))\W+)?(?:(?:is|was|are|s|would be) )?{_FALSE}"
+)
+_DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*{_FALSE}")
+_NO = re.compile(r"\W*(?:no|nope|not|never|false|wrong|incorrect)\b")
+_DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake)\b")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
 _ABBREVIATION = re.compile(r"(?:(?<![^\W\d_])(?:e\.g|i\.e|eg|ie|cf|vs|resp|approx)|\.)$")
 
@@ -166,7 +179,7 @@ def _occurrences(reading: _Reading, phrasing: str):
     while start >= 0:
         end = start + len(first)
         low, high = reading.clause(start, end)
-        negated = _negated_before(text, low, start, first)
+        negated = _negated_before(reading, low, start, first)
         for piece in pieces[1:]:
             found = text.find(piece, end, high)
             if found < 0:
@@ -174,17 +187,46 @@ def _occurrences(reading: _Reading, phrasing: str):
             negated = negated or bool(_NEGATION.search(text, end, found))
             end = found + len(piece)
         else:
-            yield start, end, negated
+            yield start, end, negated or _taken_back(reading, end)
         start = text.find(first, start + 1)
 
 
-def _negated_before(text: str, low: int, start: int, phrasing: str) -> bool:
+def _negated_before(reading: _Reading, low: int, start: int, phrasing: str) -> bool:
     """Whether a negation among the words just before ``start`` in its clause, or a negating prefix
-    glued to the phrasing, turns it into its opposite."""
+    glued to the phrasing, turns it into its opposite; or its clause is what a denial before it
+    says is not so ("it is not true that …")."""
+    text = reading.text
     if phrasing[:1].isalpha() and _NEGATING_PREFIX.search(text, max(0, start - 4), start):
         return True
     before = _ASIDE.sub(" ", text[max(low, start - _REACH_CHARACTERS) : start])
-    return bool(_NEGATION.search(" ".join(before.split()[-NEGATION_REACH:])))
+    if _NEGATION.search(" ".join(before.split()[-NEGATION_REACH:])):
+        return True
+    if text[max(0, low - 4) : low] != "that":
+        return False
+    denial, _ = reading.clause(low - 4, low - 4)
+    return bool(_DENIAL.search(" ".join(text[denial : low - 4].split()[-3:])))
+
+
+def _taken_back(reading: _Reading, end: int) -> bool:
+    """Whether what was said up to ``end`` is taken back after it: by a remark later in its
+    sentence ("which is false", "— not true in general"), by the next sentence ("That is wrong."),
+    or, in a question, by the answer ("… is conserved? No.")."""
+    text = reading.text
+    _, high = reading.sentence(end, end)
+    if _DASHED_FALSITY.search(text, end, high):
+        return True
+    index = bisect.bisect_left(reading.clause_ends, end)
+    for boundary_start, boundary_end in reading.clauses[index:]:
+        if boundary_start >= high:
+            break
+        if _FALSITY_REMARK.match(text, boundary_end, reading.clause(boundary_end, boundary_end)[1]):
+            return True
+    if high >= len(text):
+        return False
+    following = reading.sentence(high + 1, high + 1)[1]
+    if text[high] == "?" and _NO.match(text, high + 1, following):
+        return True
+    return bool(_FALSITY_REMARK.match(text, high + 1, following))
 
 
 def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int, bool]], list[int]]:
@@ -246,7 +288,7 @@ def _own_subject(reading: _Reading, mention, start: int) -> bool:
     if not mention[2] or mention[0] >= start:  # a term inside the phrasing is its own words
         return mention[2]
     low, _ = reading.clause(mention[0], mention[1])
-    return not _negated_before(reading.text, low, mention[0], "")
+    return not _negated_before(reading, low, mention[0], "")
 
 
 def rubric_score(text: str, rubric) -> RubricReading:
