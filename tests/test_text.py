@@ -134,6 +134,9 @@ TERMS_INSIDE_TERMS = [
     # "holonomic" inside "nonholonomic", which the rubric does not list, is not holonomic
     ("Nonholonomic constraints can be written as f(r, t) = 0.", ()),
     ("Non holonomic constraints can be written as f(r, t) = 0.", ()),
+    ("Holonomic and non-holonomic constraints are f(r, t) = 0 and inequalities, respectively.", (HOLONOMIC[0],
+                                                                                              NON_HOLONOMIC[0])),
+    ("Holonomic and non-holonomic constraints are inequalities and f(r, t) = 0, respectively.", ()),
 ]  # fmt: skip
 
 
@@ -165,6 +168,24 @@ LETTER_TERMS = [
 def test_a_one_letter_term_is_a_name_of_its_own(text, outcome):
     reading = rubric_score(text, [COORDINATE])
     assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
+RESPECTIVELY = [
+    # (text, the ideas found): "A and B are X and Y, respectively" says X of A and Y of B
+    ("Scleronomic and rheonomic constraints are time independent and time dependent, respectively.", BOTH),
+    ("Scleronomic and rheonomic constraints are time dependent and time independent, respectively.", NEITHER),
+    ("Rheonomic and scleronomic constraints are time dependent and time independent, respectively.", BOTH),
+    ("Scleronomic and rheonomic constraints are, respectively, time independent and time dependent.", BOTH),
+    ("Scleronomic constraints and rheonomic ones are time independent and time dependent resp.", BOTH),
+    ("Time-independent and time-dependent constraints are called scleronomic and rheonomic, respectively.", BOTH),
+    ("Time-dependent and time-independent constraints are called scleronomic and rheonomic, respectively.", NEITHER),
+    ("Scleronomic and rheonomic constraints are time independent, respectively.", NEITHER),  # no order to follow
+]
+
+
+@pytest.mark.parametrize(("text", "found"), RESPECTIVELY)
+def test_respectively_pairs_the_terms_and_descriptions_in_order(text, found):
+    assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
 
 
 def test_an_unbound_rubric_reads_as_before():
@@ -250,6 +271,10 @@ PROPOSALS = [
      "Holonomic constraints can be written as f(r, t) = 0? No. Non-holonomic ones are inequalities.", 1),  # was 2/4
     ("constraint-classification.scleronomic-definition",
      "It is not true that scleronomic constraints are time independent.", 0),  # was 1/2
+    ("constraint-classification.holonomic-definition",
+     "Holonomic and non-holonomic constraints are, respectively, inequalities and equations f(q, t) = 0.", 0),  # was 1
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic and rheonomic constraints are time dependent and time independent, respectively.", 0),  # was 1
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),

@@ -31,7 +31,9 @@ credit for a statement turned round.
   is denied ("H is not equal to T + V when …"), negated by a prefix ("non-holonomic" for
   holonomic), inside a longer term, or set against the subject ("unlike Newton's method"). A
   one-letter term is a name of its own: ``q`` is named in "if q does not appear", not in "square"
-  or "q̇".
+  or "q̇". In a sentence with "respectively", a list of terms pairs with the descriptions in order:
+  in "A and B are X and Y, respectively" X is said of A and Y of B, and where the clauses are too
+  few to follow the order, of neither.
 
 Clauses end at . ; : , ! ? and at words that begin another (and, but, while, whereas, so,
 then, since, because, if, when, which, that …), but not at "or": "does not use energies or
@@ -92,6 +94,10 @@ _FALSITY_REMARK = re.compile(
 _DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*{_FALSE}")
 _NO = re.compile(r"\W*(?:no|nope|not|never|false|wrong|incorrect)\b")
 _DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake)\b")
+# "A and B are X and Y, respectively": the word, and what parts the terms of such a list (the rest
+# of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
+_RESPECTIVELY = re.compile(r"\brespectively\b|\bresp\b\.?")
+_LIST_GAP = re.compile(r"[^\W\d_]*(?:\s+[^\W\d_]+)?\s*(?:,\s*(?:and\s+|or\s+)?|\s(?:and|or)\s+)(?:the\s+)?")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
 _ABBREVIATION = re.compile(r"(?:(?<![^\W\d_])(?:e\.g|i\.e|eg|ie|cf|vs|resp|approx)|\.)$")
 
@@ -270,6 +276,9 @@ def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int, *, r
     """Whether the term the phrasing at ``start:end`` is said of is the idea's own. With ``rivals``
     (a term the idea is not about is another idea's subject), a phrasing said of no term at all is
     of neither: in "constraints can be time dependent or time independent", which is which is not said."""
+    respective = _respective(reading, mentions, starts, start, end)
+    if respective is not None:
+        return respective
     for low, high in (reading.clause(start, end), reading.sentence(start, end)):
         first, last = bisect.bisect_left(starts, low), bisect.bisect_left(starts, end)
         if last > first:  # named before it (or in it)
@@ -280,6 +289,40 @@ def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int, *, r
     if earlier:
         return _own_subject(reading, mentions[earlier - 1], start)
     return not rivals  # else the question's own subject, where it has only one
+
+
+def _respective(reading: _Reading, mentions, starts, start: int, end: int) -> bool | None:
+    """In a sentence with "respectively", whether the phrasing is said of the idea's own term by
+    the order of the list, the n-th description of the n-th term ("A and B are X and Y,
+    respectively"); None where no list of terms is named there."""
+    text = reading.text
+    low, high = reading.sentence(start, end)
+    if not _RESPECTIVELY.search(text, low, high):
+        return None
+    named = mentions[bisect.bisect_left(starts, low) : bisect.bisect_left(starts, high)]
+    terms = named[:1]
+    for mention in named[1:]:
+        if not _LIST_GAP.fullmatch(text, terms[-1][1], mention[0]):
+            break
+        terms.append(mention)
+    if len(terms) < 2 or terms[0][0] <= start < terms[-1][1]:
+        return None
+    after = start >= terms[-1][1]  # the descriptions follow the terms, or come before them
+    region = (terms[-1][1], high) if after else (low, terms[0][0])
+    cuts = [span for span in reading.clauses if region[0] <= span[0] and span[1] <= region[1]]
+    edges = [region[0], *(edge for span in cuts for edge in span), region[1]]
+    pieces = [
+        (edges[index], edges[index + 1])
+        for index in range(0, len(edges), 2)
+        if _RESPECTIVELY.sub("", text[edges[index] : edges[index + 1]]).strip(" ,.;:!?")
+    ]
+    if len(pieces) < len(terms):
+        return False  # the order cannot be followed, so which is which is not said
+    pieces = pieces[-len(terms) :] if after else pieces[: len(terms)]
+    for (piece_start, piece_end), term in zip(pieces, terms, strict=True):
+        if piece_start <= start < piece_end:
+            return term[2]
+    return False
 
 
 def _own_subject(reading: _Reading, mention, start: int) -> bool:
