@@ -188,6 +188,28 @@ def test_respectively_pairs_the_terms_and_descriptions_in_order(text, found):
     assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
 
 
+HEDGES = [
+    # (text, the ideas found): a statement doubted, asked or offered with its rival is not claimed
+    ("Scleronomic constraints are time dependent or time independent.", NEITHER),
+    ("Scleronomic constraints are either time-independent or time-dependent.", NEITHER),
+    ("Scleronomic constraints are maybe time independent; rheonomic ones are time dependent.", SECOND),
+    ("Perhaps scleronomic constraints are time independent; rheonomic ones are time dependent.", SECOND),
+    ("Scleronomic constraints are time independent, I'm not sure. Rheonomic ones are time dependent.", SECOND),
+    ("Scleronomic constraints are time independent, I guess. Rheonomic ones are time dependent.", SECOND),
+    ("Scleronomic constraints are time independent? Rheonomic ones are time dependent.", SECOND),
+    ("Are scleronomic constraints time independent? Yes. Rheonomic ones are time dependent.", BOTH),
+    ("Why are scleronomic constraints time independent? Their equations hold t fixed.", FIRST),
+    # an "or" between terms, each with its own description, is no hedge
+    ("Constraints are scleronomic (time independent) or rheonomic (time dependent).", BOTH),
+    ("I think scleronomic constraints are time independent and rheonomic ones time dependent.", BOTH),
+]
+
+
+@pytest.mark.parametrize(("text", "found"), HEDGES)
+def test_a_hedged_statement_earns_nothing(text, found):
+    assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
+
+
 def test_an_unbound_rubric_reads_as_before():
     # a rubric of (idea, points, phrasings), with no terms, is found anywhere it is not negated
     rubric = [("small angle", 1.0, ("sin θ ≈ θ",)), ("proportional", 1.0, ("proportional to",))]
@@ -227,10 +249,13 @@ FEEDBACK = [
      "A person will read this answer; the rubric found 1 of its 2 ideas."),
     ("Scleronomic constraints are time-dependent and rheonomic ones are time independent.", 0.0,
      "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
-     " answer negates or says of something else."),
+     " answer negates, doubts or says of something else."),
     ("Scleronomic ones are time independent, rheonomic ones are not time dependent.", 0.5,
      "A person will read this answer; the rubric found 1 of its 2 ideas. It did not count 1 more that your"
-     " answer negates or says of something else."),
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic constraints are maybe time independent.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 1 more that your"
+     " answer negates, doubts or says of something else."),
 ]  # fmt: skip
 
 
@@ -275,6 +300,10 @@ PROPOSALS = [
      "Holonomic and non-holonomic constraints are, respectively, inequalities and equations f(q, t) = 0.", 0),  # was 1
     ("constraint-classification.scleronomic-definition",
      "Scleronomic and rheonomic constraints are time dependent and time independent, respectively.", 0),  # was 1
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic constraints are time dependent or time independent.", 0),  # was 1/2
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints are either equations f(r, t) = 0 or inequalities, I'm not sure.", 0),  # was 1/4
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),

@@ -20,9 +20,12 @@ credit for a statement turned round.
   prefix on its first word (non-, un, in, im, ir: ``conserved`` in "non-conserved",
   ``dependent`` in "independent"). A negation among the phrasing's own words is its meaning.
 * Nor where it is taken back: later in its sentence ("…, which is false", "— not true in
-  general", "(wrong)"), by the next sentence ("That is not true."), by the answer to its question
-  ("… conserved? No."), or by a denial before its "that" ("it is not true that …", "I do not
-  think that …").
+  general", "(wrong)"), by the next sentence ("That is not true."), or by a denial before its
+  "that" ("it is not true that …", "I do not think that …").
+* Nor where it is doubted: after maybe, perhaps, possibly, probably or "I guess" as a negation
+  would stand, before "I'm not sure" in its sentence, in a question not answered yes ("…
+  conserved? No."; a why or how question takes its statement for granted), or offered with "or"
+  beside a phrasing of the rival idea, no term named between ("time dependent or time independent").
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
@@ -87,17 +90,21 @@ _CLAUSE_END = re.compile(
 )
 # what says a statement is not so, after it ("…, which is false", "That is not true.") or before
 # its "that" ("it is not true that …", "I do not think that …", "a misconception that …")
-_FALSE = r"(?:not (?:true|correct|right|valid|the case|so)|false|wrong|incorrect|untrue)\b"
+_FALSE = r"(?:not (?:true|correct|right|valid|the case|so|sure|certain)|false|wrong|incorrect|untrue|unsure|guess)\b"
 _FALSITY_REMARK = re.compile(
-    rf"\W*(?:(?:this|it|that|which|the (?:statement|claim))\W+)?(?:(?:is|was|are|s|would be) )?{_FALSE}"
+    rf"\W*(?:(?:this|it|that|which|i|the (?:statement|claim))\W+)?(?:(?:is|was|are|s|am|m|would be) )?{_FALSE}"
 )
+# a doubt before a statement, as a negation would stand: "maybe time independent"
+_DOUBT = re.compile(r"\b(?:maybe|perhaps|possibly|probably|i guess)\b")
 _DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*{_FALSE}")
-_NO = re.compile(r"\W*(?:no|nope|not|never|false|wrong|incorrect)\b")
+_WHY = re.compile(r"\W*(?:why|how)\b")
+_YES = re.compile(r"\W*(?:yes|yeah|yep|indeed|correct|true)\b")
 _DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake)\b")
 # "A and B are X and Y, respectively": the word, and what parts the terms of such a list (the rest
 # of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
 _RESPECTIVELY = re.compile(r"\brespectively\b|\bresp\b\.?")
 _LIST_GAP = re.compile(r"[^\W\d_]*(?:\s+[^\W\d_]+)?\s*(?:,\s*(?:and\s+|or\s+)?|\s(?:and|or)\s+)(?:the\s+)?")
+_OR = re.compile(r"\bor\b")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
 _ABBREVIATION = re.compile(r"(?:(?<![^\W\d_])(?:e\.g|i\.e|eg|ie|cf|vs|resp|approx)|\.)$")
 
@@ -116,7 +123,7 @@ class RubricReading:
         points: the points proposed, those of the ideas found.
         found: the ideas found, in the rubric's order.
         missing: the ideas not found, in the rubric's order (``discounted`` among them).
-        discounted: the ideas whose phrasings the text holds, but only negated or said of
+        discounted: the ideas whose phrasings the text holds, but only negated, doubted or said of
             another term than the idea's: a person should read these first.
     """
 
@@ -205,7 +212,8 @@ def _negated_before(reading: _Reading, low: int, start: int, phrasing: str) -> b
     if phrasing[:1].isalpha() and _NEGATING_PREFIX.search(text, max(0, start - 4), start):
         return True
     before = _ASIDE.sub(" ", text[max(low, start - _REACH_CHARACTERS) : start])
-    if _NEGATION.search(" ".join(before.split()[-NEGATION_REACH:])):
+    window = " ".join(before.split()[-NEGATION_REACH:])
+    if _NEGATION.search(window) or _DOUBT.search(window):
         return True
     if text[max(0, low - 4) : low] != "that":
         return False
@@ -215,8 +223,8 @@ def _negated_before(reading: _Reading, low: int, start: int, phrasing: str) -> b
 
 def _taken_back(reading: _Reading, end: int) -> bool:
     """Whether what was said up to ``end`` is taken back after it: by a remark later in its
-    sentence ("which is false", "— not true in general"), by the next sentence ("That is wrong."),
-    or, in a question, by the answer ("… is conserved? No.")."""
+    sentence ("which is false", "— not true in general", "I'm not sure"), by the next sentence
+    ("That is wrong."), or in a question not answered yes ("… is conserved? No.")."""
     text = reading.text
     _, high = reading.sentence(end, end)
     if _DASHED_FALSITY.search(text, end, high):
@@ -230,8 +238,8 @@ def _taken_back(reading: _Reading, end: int) -> bool:
     if high >= len(text):
         return False
     following = reading.sentence(high + 1, high + 1)[1]
-    if text[high] == "?" and _NO.match(text, high + 1, following):
-        return True
+    if text[high] == "?":  # "why is it conserved?" takes for granted what it asks about
+        return not _YES.match(text, high + 1, following) and not _WHY.match(text, reading.sentence(end, end)[0])
     return bool(_FALSITY_REMARK.match(text, high + 1, following))
 
 
@@ -334,6 +342,28 @@ def _own_subject(reading: _Reading, mention, start: int) -> bool:
     return not _negated_before(reading, low, mention[0], "")
 
 
+def _found(reading: _Reading, phrasings):
+    """Each place one of ``phrasings`` is found, as ``_occurrences`` gives it."""
+    for phrasing in phrasings:
+        yield from _occurrences(reading, _normal(phrasing))
+
+
+def _hedged(reading: _Reading, starts, start: int, end: int, alternatives) -> bool:
+    """Whether a rival idea's phrasing is offered beside this one with "or", no term named between
+    them, in its clause: "scleronomic constraints are time dependent or time independent"."""
+    clause = reading.clause(start, end)
+    for other_start, other_end, _ in alternatives:
+        low, high = (end, other_start) if other_start >= end else (other_end, start)
+        if (
+            low <= high
+            and reading.clause(other_start, other_end) == clause
+            and _OR.search(reading.text, low, high)
+            and bisect.bisect_left(starts, low) == bisect.bisect_left(starts, high)
+        ):
+            return True
+    return False
+
+
 def rubric_score(text: str, rubric) -> RubricReading:
     """What ``rubric`` makes of ``text``: the points proposed, the ideas found and missed.
 
@@ -354,21 +384,35 @@ def rubric_score(text: str, rubric) -> RubricReading:
     """
     reading = _Reading(_normal(text[:MAX_TEXT_LENGTH]))
     found, missing, discounted, points = [], [], [], 0.0
+    ideas = [(idea, worth, phrasings, *(*binding, (), ())[:2]) for idea, worth, phrasings, *binding in rubric]
     # the subjects the question asks about: two (scleronomic and rheonomic) where one idea's rival is
     # another's own; then a phrasing said of no term is said of neither
-    subjects = {_normal(term) for _, _, _, *binding in rubric for term in (*binding, ())[0]}
-    for idea, worth, phrasings, *binding in rubric:
-        about, not_about = (*binding, (), ())[:2]  # a rubric of (idea, points, phrasings) binds nothing
-        rivals = any(_normal(term) in subjects for term in not_about)
+    subjects = {_normal(term) for *_, about, _ in ideas for term in about}
+    places: dict[int, list] = {}  # a rival idea's phrasings found, once asked for
+
+    def found_places(index: int):
+        if index not in places:
+            places[index] = list(_found(reading, ideas[index][2]))
+        return places[index]
+
+    for index, (idea, worth, _, about, not_about) in enumerate(ideas):
+        rival_terms = {_normal(term) for term in not_about} & subjects
+        rival_ideas = [
+            other
+            for other, (*_, other_about, _) in enumerate(ideas)
+            if other != index and rival_terms & {_normal(term) for term in other_about}
+        ]
         mentions, starts = _mentions(reading, about, not_about) if about else ([], [])
         seen = counted = False
-        for phrasing in phrasings:
-            for start, end, negated in _occurrences(reading, _normal(phrasing)):
-                seen = True
-                own = not about or _said_of_own(reading, mentions, starts, start, end, rivals=rivals)
-                if not negated and own:
-                    counted = True
-                    break
+        for start, end, negated in _found(reading, ideas[index][2]):
+            seen = True
+            counted = (
+                not negated
+                and (not about or _said_of_own(reading, mentions, starts, start, end, rivals=bool(rival_terms)))
+                # what a rival idea says of the same subject, offered as an alternative: "time
+                # dependent or time independent"
+                and not any(_hedged(reading, starts, start, end, found_places(other)) for other in rival_ideas)
+            )
             if counted:
                 break
         if counted:
