@@ -170,6 +170,34 @@ def test_a_one_letter_term_is_a_name_of_its_own(text, outcome):
     assert (bool(reading.found), bool(reading.discounted)) == outcome
 
 
+# what is conserved is the momentum, neither the coordinate nor its velocity
+MOMENTUM = ("its momentum is conserved", 1.0, ("conserved", "constant of the motion"), ("momentum", "p", "p_k"),
+            ("energy", "coordinate", "q", "q_k", "velocit", "q̇"))  # fmt: skip
+
+BELONGING = [
+    # (text, what becomes of the momentum's idea): a term after "of" or "conjugate to" names what
+    # the term before it belongs to, and a phrasing before a term describes it
+    ("The momentum conjugate to a cyclic coordinate is conserved.", FOUND),
+    ("The momentum of q is conserved.", FOUND),
+    ("The momentum p_k associated with the cyclic coordinate q_k is a constant of the motion.", FOUND),
+    ("A cyclic coordinate has a conserved generalized momentum.", FOUND),
+    ("A cyclic coordinate has a conserved energy.", NEGATED),
+    ("A cyclic coordinate is conserved.", NEGATED),
+    ("The velocity of the coordinate is conserved.", NEGATED),
+    ("The energy of the coordinate is conserved.", NEGATED),
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), BELONGING)
+def test_a_phrasing_is_said_of_the_term_a_complement_belongs_to(text, outcome):
+    reading = rubric_score(text, [COORDINATE, MOMENTUM])
+    assert (MOMENTUM[0] in reading.found, MOMENTUM[0] in reading.discounted) == outcome
+
+
+def test_the_velocity_of_the_coordinate_is_not_the_coordinate():
+    assert rubric_score("The velocity of q does not appear in L.", [COORDINATE]).discounted == (COORDINATE[0],)
+
+
 RESPECTIVELY = [
     # (text, the ideas found): "A and B are X and Y, respectively" says X of A and Y of B
     ("Scleronomic and rheonomic constraints are time independent and time dependent, respectively.", BOTH),
@@ -304,6 +332,11 @@ PROPOSALS = [
      "Scleronomic constraints are time dependent or time independent.", 0),  # was 1/2
     ("constraint-classification.holonomic-definition",
      "Holonomic constraints are either equations f(r, t) = 0 or inequalities, I'm not sure.", 0),  # was 1/4
+    ("lagrangian-vs-newtonian.cyclic-definition", "A cyclic coordinate is conserved.", 0),  # was 1/3
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, its velocity is constant.", 1),  # was 2/3
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, the momentum conjugate to q is a constant of the motion.", 3),
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),

@@ -30,13 +30,15 @@ credit for a statement turned round.
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
   no term named yet, of the question's own subject, where the question has one: where a term the
-  idea is not about is another idea's subject, of neither. A term does not stand for itself when it
-  is denied ("H is not equal to T + V when …"), negated by a prefix ("non-holonomic" for
-  holonomic), inside a longer term, or set against the subject ("unlike Newton's method"). A
-  one-letter term is a name of its own: ``q`` is named in "if q does not appear", not in "square"
-  or "q̇". In a sentence with "respectively", a list of terms pairs with the descriptions in order:
-  in "A and B are X and Y, respectively" X is said of A and Y of B, and where the clauses are too
-  few to follow the order, of neither.
+  idea is not about is another idea's subject, of neither. A phrasing just before a term
+  describes it ("a conserved momentum"). With "respectively", a list of terms pairs with its
+  descriptions in order ("A and B are X and Y, respectively"), or where they are too few to
+  follow, with neither.
+* A term does not stand for itself when it is denied ("H is not equal to T + V when …"),
+  negated by a prefix ("non-holonomic" for holonomic), inside a longer term, set against the
+  subject ("unlike Newton's method"), or after "of", "conjugate to" or "associated with" another
+  term, whose owner it names ("the momentum conjugate to a cyclic coordinate q"). A one-letter
+  term is a name of its own: ``q`` is named in "if q does not appear", not in "square" or "q̇".
 
 Clauses end at . ; : , ! ? and at words that begin another (and, but, while, whereas, so,
 then, since, because, if, when, which, that …), but not at "or": "does not use energies or
@@ -104,6 +106,14 @@ _DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue
 # of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
 _RESPECTIVELY = re.compile(r"\brespectively\b|\bresp\b\.?")
 _LIST_GAP = re.compile(r"[^\W\d_]*(?:\s+[^\W\d_]+)?\s*(?:,\s*(?:and\s+|or\s+)?|\s(?:and|or)\s+)(?:the\s+)?")
+# between a term and another that names what it belongs to, which is not what is spoken of
+_COMPLEMENT = re.compile(
+    r"[^\W\d_]*(?:_\w{1,3})?\)?\s+(?:of|conjugate to|associated with|corresponding to|belonging to)\s+"
+    r"(?:(?:the|a|an|its|their|each|every|this|that|cyclic|ignorable|generalized|generalised)\s+)*"
+)
+_APPOSITION = re.compile(r"[^\W\d_]*\s+")
+# between a phrasing and the term it stands before as an adjective: "a conserved (generalized) momentum"
+_ATTRIBUTE = re.compile(r"\s+(?:(?:generalized|generalised|canonical|conjugate|angular|linear)\s+)?")
 _OR = re.compile(r"\bor\b")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
 _ABBREVIATION = re.compile(r"(?:(?<![^\W\d_])(?:e\.g|i\.e|eg|ie|cf|vs|resp|approx)|\.)$")
@@ -255,13 +265,21 @@ def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int,
                 negated = term[:1].isalpha() and bool(_NEGATING_PREFIX.search(text, max(0, start - 4), start))
                 found.append((start, start + len(term), own and not negated))
     found.sort(key=lambda mention: (mention[0], -mention[1]))
-    kept, reach = [], -1
+    kept, reach, complement = [], -1, None
     for mention in found:
         if mention[1] <= reach:
             continue  # inside a longer term, which is what is named there
         reach = max(reach, mention[1])
-        if not _CONTRAST.search(text, max(0, mention[0] - 24), mention[0]):
-            kept.append(mention)
+        if _CONTRAST.search(text, max(0, mention[0] - 24), mention[0]):
+            continue
+        # what the term before belongs to, and its name: "the momentum conjugate to a cyclic coordinate q"
+        if kept and (
+            _COMPLEMENT.fullmatch(text, kept[-1][1], mention[0])
+            or (complement is not None and _APPOSITION.fullmatch(text, complement, mention[0]))
+        ):
+            complement = mention[1]
+            continue
+        kept.append(mention)
     return kept, [mention[0] for mention in kept]
 
 
@@ -287,6 +305,9 @@ def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int, *, r
     respective = _respective(reading, mentions, starts, start, end)
     if respective is not None:
         return respective
+    after = bisect.bisect_left(starts, end)
+    if after < len(mentions) and _ATTRIBUTE.fullmatch(reading.text, end, starts[after]):
+        return mentions[after][2]  # it describes the term it stands before: "a conserved momentum"
     for low, high in (reading.clause(start, end), reading.sentence(start, end)):
         first, last = bisect.bisect_left(starts, low), bisect.bisect_left(starts, end)
         if last > first:  # named before it (or in it)
