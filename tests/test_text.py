@@ -337,6 +337,24 @@ PROPOSALS = [
      "If q does not appear in L, its velocity is constant.", 1),  # was 2/3
     ("lagrangian-vs-newtonian.cyclic-definition",
      "If q does not appear in L, the momentum conjugate to q is a constant of the motion.", 3),
+    # rubrics whose phrasings named a topic, not the claim ("explicit time", "motor", "angular
+    # momentum", "proportional to", "air resistance"), or bound no subject
+    ("rotating-hoop.energy", "L depends explicitly on time, so H is not conserved.", 0),  # was 1/3
+    ("rotating-hoop.energy", "E is conserved: the motor does no work.", 0),  # was 1/3
+    ("rotating-hoop.energy", "E is conserved because the work done by the normal force is zero.", 0),  # was 1/3
+    ("rotating-hoop.energy", "H is conserved because L does not depend explicitly on time.", 1),  # was 0/3
+    ("spherical-pendulum.conservation", "The angular momentum is not conserved, because gravity exerts a torque.",
+     0),  # was 1/3
+    ("plane-pendulum.why-harmonic", "Because the restoring force is proportional to sin θ, which is not linear in θ.",
+     0),  # was 1/2
+    ("plane-pendulum.why-harmonic", "The force is proportional to the mass.", 0),  # was 1/2
+    ("double-pendulum.kinetic-general", "For rheonomic constraints T is a homogeneous quadratic form.", 0),  # was 1.5
+    ("double-pendulum-alpha-beta.assumptions", "We assume air resistance and friction at the pivots.", 0),  # was 1/2
+    ("generalized-forces.hamiltonian", "H = sum of p_i qdot_i - L; H = E if scleronomic; conserved if ∂L/∂t = 0.",
+     3),  # was 2/3: E named by its letter
+    ("constraint-classification.holonomic-definition",
+     "Holonomic and nonholonomic constraints are expressible as equations between coordinates and not"
+     " expressible, respectively.", 2),  # was 1/4
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),
