@@ -82,6 +82,9 @@ TAKEN_BACK = [
     ("It is not only true that the momentum is conserved.", FOUND),
     ("L does not depend on q, so that its momentum is conserved.", FOUND),
     ("Note that the momentum is conserved.", FOUND),
+    ("H is conserved, but it is not true that H = E.", FOUND),  # the denial is of what follows it
+    ("Its momentum is conserved, but that is not true for the energy.", FOUND),
+    ("Its momentum is conserved. That is not true for E.", FOUND),
 ]
 
 
@@ -236,6 +239,21 @@ HEDGES = [
 @pytest.mark.parametrize(("text", "found"), HEDGES)
 def test_a_hedged_statement_earns_nothing(text, found):
     assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
+
+
+# H is the energy when the constraints are scleronomic, and conserved when L has no explicit t
+ENERGY = ("H = E when scleronomic", 1.0, ("scleronomic",), ("e", "energy"), ("conserved",))
+
+ENERGY_LETTER = [
+    ("H = E when the constraints are scleronomic.", FOUND),
+    ("H is conserved, i.e. when the constraints are scleronomic.", NEGATED),  # no E in "i.e."
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), ENERGY_LETTER)
+def test_a_letter_of_an_abbreviation_is_no_name(text, outcome):
+    reading = rubric_score(text, [ENERGY])
+    assert (bool(reading.found), bool(reading.discounted)) == outcome
 
 
 def test_an_unbound_rubric_reads_as_before():

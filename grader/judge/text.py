@@ -80,8 +80,8 @@ _NEGATING_PREFIX = re.compile(r"(?<![^\W\d_])(?:(?:non|un|in|im|ir)-?|non )$")
 _CONTRAST = re.compile(
     r"\b(?:unlike|than|instead of|as opposed to|compared (?:with|to)|in contrast (?:with|to))(?: the| a| an)? $"
 )
-# a one-letter term standing alone: not inside a word, not "e.g.", not marked as a velocity (q̇, q̈, q')
-_LETTER_NAME = r"(?<![^\W\d_]){}(?![^\W\d_]|[\u0300-\u036f]|\.[^\W\d_]|'(?!s\b))"
+# a one-letter term standing alone: not inside a word, not "e.g." or "i.e.", not a velocity (q̇, q̈, q')
+_LETTER_NAME = r"(?<![^\W\d_]|\.){}(?![^\W\d_]|[\u0300-\u036f]|\.[^\W\d_]|'(?!s\b))"
 # an aside in brackets negates nothing outside it: "the momentum (p_k, not q̇_k) is conserved"
 _ASIDE = re.compile(r"\([^()]*\)|\[[^\[\]]*\]")
 _SENTENCE_END = re.compile(r"[;!?]|\.(?=\s|$)")
@@ -92,7 +92,11 @@ _CLAUSE_END = re.compile(
 )
 # what says a statement is not so, after it ("…, which is false", "That is not true.") or before
 # its "that" ("it is not true that …", "I do not think that …", "a misconception that …")
-_FALSE = r"(?:not (?:true|correct|right|valid|the case|so|sure|certain)|false|wrong|incorrect|untrue|unsure|guess)\b"
+# ... and what ends it: not "not true for the energy", which takes back nothing said before it
+_FALSE = (
+    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain)|false|wrong|incorrect|untrue|unsure|guess)"
+    r"(?:\s+(?:in general|at all|here|either|though))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
+)
 _FALSITY_REMARK = re.compile(
     rf"\W*(?:(?:this|it|that|which|i|the (?:statement|claim))\W+)?(?:(?:is|was|are|s|am|m|would be) )?{_FALSE}"
 )
@@ -243,7 +247,7 @@ def _taken_back(reading: _Reading, end: int) -> bool:
     for boundary_start, boundary_end in reading.clauses[index:]:
         if boundary_start >= high:
             break
-        if _FALSITY_REMARK.match(text, boundary_end, reading.clause(boundary_end, boundary_end)[1]):
+        if _FALSITY_REMARK.match(text, boundary_end, high):
             return True
     if high >= len(text):
         return False
