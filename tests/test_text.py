@@ -214,6 +214,25 @@ RESPECTIVELY = [
 ]
 
 
+LISTS = [
+    # (text, the ideas found): what is said of a list that holds both terms is said of neither alone
+    ("Scleronomic and rheonomic constraints are both time dependent.", NEITHER),
+    ("Rheonomic and scleronomic constraints are time independent.", NEITHER),
+    ("Rheonomic constraints and scleronomic ones are time independent.", NEITHER),
+    ("Scleronomic ones are time independent, and rheonomic and other constraints are time dependent.", BOTH),
+]
+
+
+@pytest.mark.parametrize(("text", "found"), LISTS)
+def test_a_phrasing_said_of_a_list_with_a_rival_is_said_of_neither(text, found):
+    assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
+
+
+def test_terms_joined_by_and_in_two_clauses_are_no_list():
+    text = "If L depends on the velocity q̇ and q does not appear in L, q is cyclic."
+    assert rubric_score(text, [COORDINATE]).found == (COORDINATE[0],)
+
+
 @pytest.mark.parametrize(("text", "found"), RESPECTIVELY)
 def test_respectively_pairs_the_terms_and_descriptions_in_order(text, found):
     assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
@@ -363,6 +382,8 @@ PROPOSALS = [
     ("rotating-hoop.energy", "H is conserved because L does not depend explicitly on time.", 1),  # was 0/3
     ("spherical-pendulum.conservation", "The angular momentum is not conserved, because gravity exerts a torque.",
      0),  # was 1/3
+    ("spherical-pendulum.conservation",
+     "φ is cyclic, so p_φ = m l² sin²θ φ̇ is conserved (the vertical angular momentum).", 1),
     ("plane-pendulum.why-harmonic", "Because the restoring force is proportional to sin θ, which is not linear in θ.",
      0),  # was 1/2
     ("plane-pendulum.why-harmonic", "The force is proportional to the mass.", 0),  # was 1/2
@@ -373,6 +394,9 @@ PROPOSALS = [
     ("constraint-classification.holonomic-definition",
      "Holonomic and nonholonomic constraints are expressible as equations between coordinates and not"
      " expressible, respectively.", 2),  # was 1/4
+    ("lagrangian-vs-newtonian.advantages",
+     "Newton's and Lagrange's methods both use scalar energies, generalized coordinates, eliminate constraint"
+     " forces, and have the same form.", 0),  # was 4/4
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),

@@ -36,9 +36,11 @@ credit for a statement turned round.
   follow, with neither.
 * A term does not stand for itself when it is denied ("H is not equal to T + V when …"),
   negated by a prefix ("non-holonomic" for holonomic), inside a longer term, set against the
-  subject ("unlike Newton's method"), or after "of", "conjugate to" or "associated with" another
-  term, whose owner it names ("the momentum conjugate to a cyclic coordinate q"). A one-letter
-  term is a name of its own: ``q`` is named in "if q does not appear", not in "square" or "q̇".
+  subject ("unlike Newton's method"), listed with a rival ("Newton's and Lagrange's methods
+  both …", "A and B constraints are …"), or after "of", "conjugate to" or "associated with"
+  another term, whose owner it names ("the momentum conjugate to a cyclic coordinate q"). A
+  one-letter term is a name of its own: ``q`` is named in "if q does not appear", not in
+  "square" or "q̇".
 
 Clauses end at . ; : , ! ? and at words that begin another (and, but, while, whereas, so,
 then, since, because, if, when, which, that …), but not at "or": "does not use energies or
@@ -109,7 +111,7 @@ _DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue
 # "A and B are X and Y, respectively": the word, and what parts the terms of such a list (the rest
 # of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
 _RESPECTIVELY = re.compile(r"\brespectively\b|\bresp\b\.?")
-_LIST_GAP = re.compile(r"[^\W\d_]*(?:\s+[^\W\d_]+)?\s*(?:,\s*(?:and\s+|or\s+)?|\s(?:and|or)\s+)(?:the\s+)?")
+_LIST_GAP = re.compile(r"[^\W\d_]*(?:'s)?(?:\s+[^\W\d_]+)?\s*(?:,\s*(?:and\s+|or\s+)?|\s(?:and|or)\s+)(?:the\s+)?")
 # between a term and another that names what it belongs to, which is not what is spoken of
 _COMPLEMENT = re.compile(
     r"[^\W\d_]*(?:_\w{1,3})?\)?\s+(?:of|conjugate to|associated with|corresponding to|belonging to)\s+"
@@ -119,6 +121,8 @@ _APPOSITION = re.compile(r"[^\W\d_]*\s+")
 # between a phrasing and the term it stands before as an adjective: "a conserved (generalized) momentum"
 _ATTRIBUTE = re.compile(r"\s+(?:(?:generalized|generalised|canonical|conjugate|angular|linear)\s+)?")
 _OR = re.compile(r"\bor\b")
+# what follows a list of terms of which a phrasing is said together: "A and B constraints", "A and B both"
+_LIST_TAIL = re.compile(r"[^\W\d_]*(?:'s)?\s+(?:(?:constraints|methods|ones|formulations|approaches)\b|both\b)")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
 _ABBREVIATION = re.compile(r"(?:(?<![^\W\d_])(?:e\.g|i\.e|eg|ie|cf|vs|resp|approx)|\.)$")
 
@@ -315,12 +319,12 @@ def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int, *, r
     for low, high in (reading.clause(start, end), reading.sentence(start, end)):
         first, last = bisect.bisect_left(starts, low), bisect.bisect_left(starts, end)
         if last > first:  # named before it (or in it)
-            return _own_subject(reading, mentions[last - 1], start)
+            return _own_subject(reading, mentions, last - 1, start)
         if last < len(mentions) and starts[last] < high:  # named after it
             return mentions[last][2]
     earlier = bisect.bisect_left(starts, start)
     if earlier:
-        return _own_subject(reading, mentions[earlier - 1], start)
+        return _own_subject(reading, mentions, earlier - 1, start)
     return not rivals  # else the question's own subject, where it has only one
 
 
@@ -358,11 +362,19 @@ def _respective(reading: _Reading, mentions, starts, start: int, end: int) -> bo
     return False
 
 
-def _own_subject(reading: _Reading, mention, start: int) -> bool:
-    """Whether a term named before a phrasing is the idea's own and not denied: in "H is not
-    equal to T + V when the constraints are scleronomic", scleronomic is said of a denied T + V."""
+def _own_subject(reading: _Reading, mentions, index: int, start: int) -> bool:
+    """Whether the term ``mentions[index]``, named before a phrasing, is the idea's own and not
+    denied: in "H is not equal to T + V when the constraints are scleronomic", scleronomic is said
+    of a denied T + V; nor one of a list that holds a rival ("Newton's and Lagrange's methods both
+    use energies" says nothing of Lagrange's alone)."""
+    mention = mentions[index]
     if not mention[2] or mention[0] >= start:  # a term inside the phrasing is its own words
         return mention[2]
+    if _LIST_TAIL.match(reading.text, mention[1]):
+        while index and _LIST_GAP.fullmatch(reading.text, mentions[index - 1][1], mentions[index][0]):
+            index -= 1
+            if not mentions[index][2]:
+                return False
     low, _ = reading.clause(mention[0], mention[1])
     return not _negated_before(reading, low, mention[0], "")
 
