@@ -92,9 +92,9 @@ _CLAUSE_END = re.compile(
     r"[,:]|\b(?:and|but|while|whereas|so|then|hence|thus|therefore|since|because|if|when|whenever|"
     r"although|though|unlike|which|that|whose|where)\b"
 )
-# what says a statement is not so, after it ("…, which is false", "That is not true.") or before
-# its "that" ("it is not true that …", "I do not think that …", "a misconception that …")
-# ... and what ends it: not "not true for the energy", which takes back nothing said before it
+# what says a statement is not so (or doubts it) after it, "…, which is false", "That is not
+# true.", "I'm not sure", ending its clause or giving a reason: "not true for the energy" takes
+# back nothing said before it
 _FALSE = (
     r"(?:not (?:true|correct|right|valid|the case|so|sure|certain)|false|wrong|incorrect|untrue|unsure|guess)"
     r"(?:\s+(?:in general|at all|here|either|though))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
@@ -105,8 +105,10 @@ _FALSITY_REMARK = re.compile(
 # a doubt before a statement, as a negation would stand: "maybe time independent"
 _DOUBT = re.compile(r"\b(?:maybe|perhaps|possibly|probably|i guess)\b")
 _DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*{_FALSE}")
+# a question states nothing unless answered yes; one asking why or how takes its statement for granted
 _WHY = re.compile(r"\W*(?:why|how)\b")
 _YES = re.compile(r"\W*(?:yes|yeah|yep|indeed|correct|true)\b")
+# a denial before "that" ("it is not true that …", "I do not think that …", "a misconception that …")
 _DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake)\b")
 # "A and B are X and Y, respectively": the word, and what parts the terms of such a list (the rest
 # of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
@@ -117,7 +119,7 @@ _COMPLEMENT = re.compile(
     r"[^\W\d_]*(?:_\w{1,3})?\)?\s+(?:of|conjugate to|associated with|corresponding to|belonging to)\s+"
     r"(?:(?:the|a|an|its|their|each|every|this|that|cyclic|ignorable|generalized|generalised)\s+)*"
 )
-_APPOSITION = re.compile(r"[^\W\d_]*\s+")
+_APPOSITION = re.compile(r"[^\W\d_]*\s+")  # and the name right after it: "a cyclic coordinate q"
 # between a phrasing and the term it stands before as an adjective: "a conserved (generalized) momentum"
 _ATTRIBUTE = re.compile(r"\s+(?:(?:generalized|generalised|canonical|conjugate|angular|linear)\s+)?")
 _OR = re.compile(r"\bor\b")
@@ -265,7 +267,8 @@ def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int,
     """Where the idea's terms are named as what is spoken of: (start, end, whether it is the idea's
     own), in order, and their starts. A term inside a longer one is not named there ("holonomic" in "non-holonomic");
     a term with a negating prefix glued to it names something else; a term set against another
-    ("unlike Newton's") is not what is spoken of."""
+    ("unlike Newton's") is not what is spoken of, nor one that names what the term before it
+    belongs to ("the momentum conjugate to a cyclic coordinate q")."""
     text, found = reading.text, []
     for terms, own in ((about, True), (not_about, False)):
         for term in {_normal(term) for term in terms}:
@@ -280,7 +283,6 @@ def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int,
         reach = max(reach, mention[1])
         if _CONTRAST.search(text, max(0, mention[0] - 24), mention[0]):
             continue
-        # what the term before belongs to, and its name: "the momentum conjugate to a cyclic coordinate q"
         if kept and (
             _COMPLEMENT.fullmatch(text, kept[-1][1], mention[0])
             or (complement is not None and _APPOSITION.fullmatch(text, complement, mention[0]))
