@@ -318,6 +318,12 @@ FEEDBACK = [
     ("Scleronomic ones are time independent, rheonomic ones are not time dependent.", 0.5,
      "A person will read this answer; the rubric found 1 of its 2 ideas. It did not count 1 more that your"
      " answer negates, doubts or says of something else."),
+    ("Scleronomic constraints are time independent, which is false.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 1 more that your"
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic and rheonomic constraints are time dependent and time independent, respectively.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
+     " answer negates, doubts or says of something else."),
     ("Scleronomic constraints are maybe time independent.", 0.0,
      "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 1 more that your"
      " answer negates, doubts or says of something else."),
