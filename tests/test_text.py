@@ -58,6 +58,42 @@ def test_a_negated_phrasing_earns_nothing(text, phrasing, outcome):
     assert (bool(reading.found), bool(reading.discounted)) == outcome
 
 
+TAKEN_BACK = [
+    # (text, what becomes of "conserved"): a statement taken back after it, or denied before its "that"
+    ("Its momentum is conserved — not true in general.", NEGATED),
+    ("Its momentum is conserved, which is false.", NEGATED),
+    ("Its momentum is conserved, but that's not true.", NEGATED),
+    ("Its momentum is conserved (false).", NEGATED),
+    ("Its momentum is conserved - wrong.", NEGATED),
+    ("Its momentum is conserved. That is wrong.", NEGATED),  # the next sentence
+    ("Its momentum is conserved. Not true.", NEGATED),
+    ("Is its momentum conserved? No.", NEGATED),  # a question, answered
+    ("Is its momentum conserved? Not always.", NEGATED),
+    ("It is not true that its momentum is conserved.", NEGATED),
+    ("It is false that its momentum is conserved.", NEGATED),
+    ("I don't think that the momentum is conserved.", NEGATED),
+    ("It is a misconception that the momentum is conserved.", NEGATED),
+    # what takes back something else, or nothing
+    ("Is its momentum conserved? Yes.", FOUND),
+    ("Its momentum is conserved, not its energy.", FOUND),
+    ("Its momentum is conserved, which is true.", FOUND),
+    ("Its momentum is conserved. Its energy has the wrong sign.", FOUND),
+    ("Its momentum is conserved. That is why q is cyclic.", FOUND),
+    ("It is not only true that the momentum is conserved.", FOUND),
+    ("L does not depend on q, so that its momentum is conserved.", FOUND),
+    ("Note that the momentum is conserved.", FOUND),
+    ("H is conserved, but it is not true that H = E.", FOUND),  # the denial is of what follows it
+    ("Its momentum is conserved, but that is not true for the energy.", FOUND),
+    ("Its momentum is conserved. That is not true for E.", FOUND),
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), TAKEN_BACK)
+def test_a_statement_taken_back_earns_nothing(text, outcome):
+    reading = rubric_score(text, [CONSERVED])
+    assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
 # the two ideas of "define scleronomic and rheonomic", each tied to the term it describes
 SCLERONOMIC = ("scleronomic: no explicit t", 1.0, ("time independent", "time-independent", "not … explicitly"),
                ("scleronom",), ("rheonom",))  # fmt: skip
@@ -101,12 +137,142 @@ TERMS_INSIDE_TERMS = [
     # "holonomic" inside "nonholonomic", which the rubric does not list, is not holonomic
     ("Nonholonomic constraints can be written as f(r, t) = 0.", ()),
     ("Non holonomic constraints can be written as f(r, t) = 0.", ()),
+    ("Holonomic and non-holonomic constraints are f(r, t) = 0 and inequalities, respectively.", (HOLONOMIC[0],
+                                                                                              NON_HOLONOMIC[0])),
+    ("Holonomic and non-holonomic constraints are inequalities and f(r, t) = 0, respectively.", ()),
 ]  # fmt: skip
 
 
 @pytest.mark.parametrize(("text", "found"), TERMS_INSIDE_TERMS)
 def test_a_term_inside_a_longer_or_negated_one_is_not_named(text, found):
     assert rubric_score(text, [HOLONOMIC, NON_HOLONOMIC]).found == found
+
+
+# what does not appear in L is the coordinate, named as a word or as a bare letter, never its velocity
+COORDINATE = ("the coordinate does not appear in L", 1.0, ("not appear", "independent of", "∂l/∂q = 0"),
+              ("coordinate", "q", "q_k"), ("velocit", "q̇", "qdot", "q'"))  # fmt: skip
+
+LETTER_TERMS = [
+    # (text, what becomes of the idea): a one-letter term is a name of its own
+    ("If q does not appear in L, its generalized momentum ∂L/∂q̇ is conserved.", FOUND),  # was q̇, named after
+    ("L may depend on q̇, but if q does not appear in L, its momentum is conserved.", FOUND),
+    ("When ∂L/∂q = 0, i.e. q does not appear in L, p = ∂L/∂q̇ is conserved.", FOUND),
+    ("The velocity appears in L, the quantity q does not appear.", FOUND),
+    ("The velocity is in L, but its square does not appear.", NEGATED),  # no q in "square"
+    ("The velocity q̇ is in L; the frequency does not appear in it.", NEGATED),
+    ("If q̇ does not appear in L, its momentum is conserved.", NEGATED),  # a velocity, not q
+    ("If q' does not appear in L, q is cyclic.", NEGATED),
+    ("Its velocity does not appear in L; q is cyclic.", NEGATED),
+    ("The velocity is in L, but e.g. the angle does not appear.", NEGATED),  # "e.g." names no e
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), LETTER_TERMS)
+def test_a_one_letter_term_is_a_name_of_its_own(text, outcome):
+    reading = rubric_score(text, [COORDINATE])
+    assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
+# what is conserved is the momentum, neither the coordinate nor its velocity
+MOMENTUM = ("its momentum is conserved", 1.0, ("conserved", "constant of the motion"), ("momentum", "p", "p_k"),
+            ("energy", "coordinate", "q", "q_k", "velocit", "q̇"))  # fmt: skip
+
+BELONGING = [
+    # (text, what becomes of the momentum's idea): a term after "of" or "conjugate to" names what
+    # the term before it belongs to, and a phrasing before a term describes it
+    ("The momentum conjugate to a cyclic coordinate is conserved.", FOUND),
+    ("The momentum of q is conserved.", FOUND),
+    ("The momentum p_k associated with the cyclic coordinate q_k is a constant of the motion.", FOUND),
+    ("A cyclic coordinate has a conserved generalized momentum.", FOUND),
+    ("A cyclic coordinate has a conserved energy.", NEGATED),
+    ("A cyclic coordinate is conserved.", NEGATED),
+    ("The velocity of the coordinate is conserved.", NEGATED),
+    ("The energy of the coordinate is conserved.", NEGATED),
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), BELONGING)
+def test_a_phrasing_is_said_of_the_term_a_complement_belongs_to(text, outcome):
+    reading = rubric_score(text, [COORDINATE, MOMENTUM])
+    assert (MOMENTUM[0] in reading.found, MOMENTUM[0] in reading.discounted) == outcome
+
+
+def test_the_velocity_of_the_coordinate_is_not_the_coordinate():
+    assert rubric_score("The velocity of q does not appear in L.", [COORDINATE]).discounted == (COORDINATE[0],)
+
+
+RESPECTIVELY = [
+    # (text, the ideas found): "A and B are X and Y, respectively" says X of A and Y of B
+    ("Scleronomic and rheonomic constraints are time independent and time dependent, respectively.", BOTH),
+    ("Scleronomic and rheonomic constraints are time dependent and time independent, respectively.", NEITHER),
+    ("Rheonomic and scleronomic constraints are time dependent and time independent, respectively.", BOTH),
+    ("Scleronomic and rheonomic constraints are, respectively, time independent and time dependent.", BOTH),
+    ("Scleronomic constraints and rheonomic ones are time independent and time dependent resp.", BOTH),
+    ("Time-independent and time-dependent constraints are called scleronomic and rheonomic, respectively.", BOTH),
+    ("Time-dependent and time-independent constraints are called scleronomic and rheonomic, respectively.", NEITHER),
+    ("Scleronomic and rheonomic constraints are time independent, respectively.", NEITHER),  # no order to follow
+]
+
+
+LISTS = [
+    # (text, the ideas found): what is said of a list that holds both terms is said of neither alone
+    ("Scleronomic and rheonomic constraints are both time dependent.", NEITHER),
+    ("Rheonomic and scleronomic constraints are time independent.", NEITHER),
+    ("Rheonomic constraints and scleronomic ones are time independent.", NEITHER),
+    ("Scleronomic ones are time independent, and rheonomic and other constraints are time dependent.", BOTH),
+]
+
+
+@pytest.mark.parametrize(("text", "found"), LISTS)
+def test_a_phrasing_said_of_a_list_with_a_rival_is_said_of_neither(text, found):
+    assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
+
+
+def test_terms_joined_by_and_in_two_clauses_are_no_list():
+    text = "If L depends on the velocity q̇ and q does not appear in L, q is cyclic."
+    assert rubric_score(text, [COORDINATE]).found == (COORDINATE[0],)
+
+
+@pytest.mark.parametrize(("text", "found"), RESPECTIVELY)
+def test_respectively_pairs_the_terms_and_descriptions_in_order(text, found):
+    assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
+
+
+HEDGES = [
+    # (text, the ideas found): a statement doubted, asked or offered with its rival is not claimed
+    ("Scleronomic constraints are time dependent or time independent.", NEITHER),
+    ("Scleronomic constraints are either time-independent or time-dependent.", NEITHER),
+    ("Scleronomic constraints are maybe time independent; rheonomic ones are time dependent.", SECOND),
+    ("Perhaps scleronomic constraints are time independent; rheonomic ones are time dependent.", SECOND),
+    ("Scleronomic constraints are time independent, I'm not sure. Rheonomic ones are time dependent.", SECOND),
+    ("Scleronomic constraints are time independent, I guess. Rheonomic ones are time dependent.", SECOND),
+    ("Scleronomic constraints are time independent? Rheonomic ones are time dependent.", SECOND),
+    ("Are scleronomic constraints time independent? Yes. Rheonomic ones are time dependent.", BOTH),
+    ("Why are scleronomic constraints time independent? Their equations hold t fixed.", FIRST),
+    # an "or" between terms, each with its own description, is no hedge
+    ("Constraints are scleronomic (time independent) or rheonomic (time dependent).", BOTH),
+    ("I think scleronomic constraints are time independent and rheonomic ones time dependent.", BOTH),
+]
+
+
+@pytest.mark.parametrize(("text", "found"), HEDGES)
+def test_a_hedged_statement_earns_nothing(text, found):
+    assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
+
+
+# H is the energy when the constraints are scleronomic, and conserved when L has no explicit t
+ENERGY = ("H = E when scleronomic", 1.0, ("scleronomic",), ("e", "energy"), ("conserved",))
+
+ENERGY_LETTER = [
+    ("H = E when the constraints are scleronomic.", FOUND),
+    ("H is conserved, i.e. when the constraints are scleronomic.", NEGATED),  # no E in "i.e."
+]
+
+
+@pytest.mark.parametrize(("text", "outcome"), ENERGY_LETTER)
+def test_a_letter_of_an_abbreviation_is_no_name(text, outcome):
+    reading = rubric_score(text, [ENERGY])
+    assert (bool(reading.found), bool(reading.discounted)) == outcome
 
 
 def test_an_unbound_rubric_reads_as_before():
@@ -148,10 +314,19 @@ FEEDBACK = [
      "A person will read this answer; the rubric found 1 of its 2 ideas."),
     ("Scleronomic constraints are time-dependent and rheonomic ones are time independent.", 0.0,
      "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
-     " answer negates or says of something else."),
+     " answer negates, doubts or says of something else."),
     ("Scleronomic ones are time independent, rheonomic ones are not time dependent.", 0.5,
      "A person will read this answer; the rubric found 1 of its 2 ideas. It did not count 1 more that your"
-     " answer negates or says of something else."),
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic constraints are time independent, which is false.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 1 more that your"
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic and rheonomic constraints are time dependent and time independent, respectively.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic constraints are maybe time independent.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 1 more that your"
+     " answer negates, doubts or says of something else."),
 ]  # fmt: skip
 
 
@@ -184,6 +359,50 @@ PROPOSALS = [
     ("lagrangian-vs-newtonian.cyclic-definition",
      "A coordinate q_k is cyclic if L does not depend on q_k (only on q̇_k); then its conjugate momentum"
      " p_k = ∂L/∂q̇_k is conserved.", 3),
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, its generalized momentum ∂L/∂q̇ is conserved.", 3),  # was 2/3: a bare q
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, its momentum is conserved, which is false.", 0),  # was 3/3
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints can be written as f(r, t) = 0? No. Non-holonomic ones are inequalities.", 1),  # was 2/4
+    ("constraint-classification.scleronomic-definition",
+     "It is not true that scleronomic constraints are time independent.", 0),  # was 1/2
+    ("constraint-classification.holonomic-definition",
+     "Holonomic and non-holonomic constraints are, respectively, inequalities and equations f(q, t) = 0.", 0),  # was 1
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic and rheonomic constraints are time dependent and time independent, respectively.", 0),  # was 1
+    ("constraint-classification.scleronomic-definition",
+     "Scleronomic constraints are time dependent or time independent.", 0),  # was 1/2
+    ("constraint-classification.holonomic-definition",
+     "Holonomic constraints are either equations f(r, t) = 0 or inequalities, I'm not sure.", 0),  # was 1/4
+    ("lagrangian-vs-newtonian.cyclic-definition", "A cyclic coordinate is conserved.", 0),  # was 1/3
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, its velocity is constant.", 1),  # was 2/3
+    ("lagrangian-vs-newtonian.cyclic-definition",
+     "If q does not appear in L, the momentum conjugate to q is a constant of the motion.", 3),
+    # rubrics whose phrasings named a topic, not the claim ("explicit time", "motor", "angular
+    # momentum", "proportional to", "air resistance"), or bound no subject
+    ("rotating-hoop.energy", "L depends explicitly on time, so H is not conserved.", 0),  # was 1/3
+    ("rotating-hoop.energy", "E is conserved: the motor does no work.", 0),  # was 1/3
+    ("rotating-hoop.energy", "E is conserved because the work done by the normal force is zero.", 0),  # was 1/3
+    ("rotating-hoop.energy", "H is conserved because L does not depend explicitly on time.", 1),  # was 0/3
+    ("spherical-pendulum.conservation", "The angular momentum is not conserved, because gravity exerts a torque.",
+     0),  # was 1/3
+    ("spherical-pendulum.conservation",
+     "φ is cyclic, so p_φ = m l² sin²θ φ̇ is conserved (the vertical angular momentum).", 1),
+    ("plane-pendulum.why-harmonic", "Because the restoring force is proportional to sin θ, which is not linear in θ.",
+     0),  # was 1/2
+    ("plane-pendulum.why-harmonic", "The force is proportional to the mass.", 0),  # was 1/2
+    ("double-pendulum.kinetic-general", "For rheonomic constraints T is a homogeneous quadratic form.", 0),  # was 1.5
+    ("double-pendulum-alpha-beta.assumptions", "We assume air resistance and friction at the pivots.", 0),  # was 1/2
+    ("generalized-forces.hamiltonian", "H = sum of p_i qdot_i - L; H = E if scleronomic; conserved if ∂L/∂t = 0.",
+     3),  # was 2/3: E named by its letter
+    ("constraint-classification.holonomic-definition",
+     "Holonomic and nonholonomic constraints are expressible as equations between coordinates and not"
+     " expressible, respectively.", 2),  # was 1/4
+    ("lagrangian-vs-newtonian.advantages",
+     "Newton's and Lagrange's methods both use scalar energies, generalized coordinates, eliminate constraint"
+     " forces, and have the same form.", 0),  # was 4/4
     ("lagrangian-vs-newtonian.advantages",
      "No. The Lagrangian formulation does not use scalar energies or generalized coordinates, the constraint"
      " forces are not eliminated, and its equations do not have the same form in every coordinate system.", 0),

@@ -195,7 +195,7 @@ FEEDBACK: dict[str, str] = {
     "choice_read": "Read as the option you wrote out: {labels}.",
     "text_review": "A person will read this answer; the rubric found {found} of its {total} ideas.",
     "text_review_discounted": "A person will read this answer; the rubric found {found} of its {total} ideas. It did"
-    " not count {discounted} more that your answer negates or says of something else.",
+    " not count {discounted} more that your answer negates, doubts or says of something else.",
     "mistake": "{feedback}",
 }
 

@@ -19,13 +19,28 @@ credit for a statement turned round.
   nor, without) among the six words before it in its clause or in its ``…``, or a negating
   prefix on its first word (non-, un, in, im, ir: ``conserved`` in "non-conserved",
   ``dependent`` in "independent"). A negation among the phrasing's own words is its meaning.
+* Nor where it is taken back: later in its sentence ("…, which is false", "— not true in
+  general", "(wrong)"), by the next sentence ("That is not true."), or by a denial before its
+  "that" ("it is not true that …", "I do not think that …").
+* Nor where it is doubted: after maybe, perhaps, possibly, probably or "I guess" as a negation
+  would stand, before "I'm not sure" in its sentence, in a question not answered yes ("…
+  conserved? No."; a why or how question takes its statement for granted), or offered with "or"
+  beside a phrasing of the rival idea, no term named between ("time dependent or time independent").
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
   no term named yet, of the question's own subject, where the question has one: where a term the
-  idea is not about is another idea's subject, of neither. A term does not stand for itself when it
-  is denied ("H is not equal to T + V when …"), negated by a prefix ("non-holonomic" for
-  holonomic), inside a longer term, or set against the subject ("unlike Newton's method").
+  idea is not about is another idea's subject, of neither. A phrasing just before a term
+  describes it ("a conserved momentum"). With "respectively", a list of terms pairs with its
+  descriptions in order ("A and B are X and Y, respectively"), or where they are too few to
+  follow, with neither.
+* A term does not stand for itself when it is denied ("H is not equal to T + V when …"),
+  negated by a prefix ("non-holonomic" for holonomic), inside a longer term, set against the
+  subject ("unlike Newton's method"), listed with a rival ("Newton's and Lagrange's methods
+  both …", "A and B constraints are …"), or after "of", "conjugate to" or "associated with"
+  another term, whose owner it names ("the momentum conjugate to a cyclic coordinate q"). A
+  one-letter term is a name of its own: ``q`` is named in "if q does not appear", not in
+  "square" or "q̇".
 
 Clauses end at . ; : , ! ? and at words that begin another (and, but, while, whereas, so,
 then, since, because, if, when, which, that …), but not at "or": "does not use energies or
@@ -67,6 +82,8 @@ _NEGATING_PREFIX = re.compile(r"(?<![^\W\d_])(?:(?:non|un|in|im|ir)-?|non )$")
 _CONTRAST = re.compile(
     r"\b(?:unlike|than|instead of|as opposed to|compared (?:with|to)|in contrast (?:with|to))(?: the| a| an)? $"
 )
+# a one-letter term standing alone: not inside a word, not "e.g." or "i.e.", not a velocity (q̇, q̈, q')
+_LETTER_NAME = r"(?<![^\W\d_]|\.){}(?![^\W\d_]|[\u0300-\u036f]|\.[^\W\d_]|'(?!s\b))"
 # an aside in brackets negates nothing outside it: "the momentum (p_k, not q̇_k) is conserved"
 _ASIDE = re.compile(r"\([^()]*\)|\[[^\[\]]*\]")
 _SENTENCE_END = re.compile(r"[;!?]|\.(?=\s|$)")
@@ -75,6 +92,39 @@ _CLAUSE_END = re.compile(
     r"[,:]|\b(?:and|but|while|whereas|so|then|hence|thus|therefore|since|because|if|when|whenever|"
     r"although|though|unlike|which|that|whose|where)\b"
 )
+# what says a statement is not so (or doubts it) after it, "…, which is false", "That is not
+# true.", "I'm not sure", ending its clause or giving a reason: "not true for the energy" takes
+# back nothing said before it
+_FALSE = (
+    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain)|false|wrong|incorrect|untrue|unsure|guess)"
+    r"(?:\s+(?:in general|at all|here|either|though))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
+)
+_FALSITY_REMARK = re.compile(
+    rf"\W*(?:(?:this|it|that|which|i|the (?:statement|claim))\W+)?(?:(?:is|was|are|s|am|m|would be) )?{_FALSE}"
+)
+# a doubt before a statement, as a negation would stand: "maybe time independent"
+_DOUBT = re.compile(r"\b(?:maybe|perhaps|possibly|probably|i guess)\b")
+_DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*{_FALSE}")
+# a question states nothing unless answered yes; one asking why or how takes its statement for granted
+_WHY = re.compile(r"\W*(?:why|how)\b")
+_YES = re.compile(r"\W*(?:yes|yeah|yep|indeed|correct|true)\b")
+# a denial before "that" ("it is not true that …", "I do not think that …", "a misconception that …")
+_DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake)\b")
+# "A and B are X and Y, respectively": the word, and what parts the terms of such a list (the rest
+# of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
+_RESPECTIVELY = re.compile(r"\brespectively\b|\bresp\b\.?")
+_LIST_GAP = re.compile(r"[^\W\d_]*(?:'s)?(?:\s+[^\W\d_]+)?\s*(?:,\s*(?:and\s+|or\s+)?|\s(?:and|or)\s+)(?:the\s+)?")
+# between a term and another that names what it belongs to, which is not what is spoken of
+_COMPLEMENT = re.compile(
+    r"[^\W\d_]*(?:_\w{1,3})?\)?\s+(?:of|conjugate to|associated with|corresponding to|belonging to)\s+"
+    r"(?:(?:the|a|an|its|their|each|every|this|that|cyclic|ignorable|generalized|generalised)\s+)*"
+)
+_APPOSITION = re.compile(r"[^\W\d_]*\s+")  # and the name right after it: "a cyclic coordinate q"
+# between a phrasing and the term it stands before as an adjective: "a conserved (generalized) momentum"
+_ATTRIBUTE = re.compile(r"\s+(?:(?:generalized|generalised|canonical|conjugate|angular|linear)\s+)?")
+_OR = re.compile(r"\bor\b")
+# what follows a list of terms of which a phrasing is said together: "A and B constraints", "A and B both"
+_LIST_TAIL = re.compile(r"[^\W\d_]*(?:'s)?\s+(?:(?:constraints|methods|ones|formulations|approaches)\b|both\b)")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
 _ABBREVIATION = re.compile(r"(?:(?<![^\W\d_])(?:e\.g|i\.e|eg|ie|cf|vs|resp|approx)|\.)$")
 
@@ -93,7 +143,7 @@ class RubricReading:
         points: the points proposed, those of the ideas found.
         found: the ideas found, in the rubric's order.
         missing: the ideas not found, in the rubric's order (``discounted`` among them).
-        discounted: the ideas whose phrasings the text holds, but only negated or said of
+        discounted: the ideas whose phrasings the text holds, but only negated, doubted or said of
             another term than the idea's: a person should read these first.
     """
 
@@ -162,7 +212,7 @@ def _occurrences(reading: _Reading, phrasing: str):
     while start >= 0:
         end = start + len(first)
         low, high = reading.clause(start, end)
-        negated = _negated_before(text, low, start, first)
+        negated = _negated_before(reading, low, start, first)
         for piece in pieces[1:]:
             found = text.find(piece, end, high)
             if found < 0:
@@ -170,66 +220,187 @@ def _occurrences(reading: _Reading, phrasing: str):
             negated = negated or bool(_NEGATION.search(text, end, found))
             end = found + len(piece)
         else:
-            yield start, end, negated
+            yield start, end, negated or _taken_back(reading, end)
         start = text.find(first, start + 1)
 
 
-def _negated_before(text: str, low: int, start: int, phrasing: str) -> bool:
+def _negated_before(reading: _Reading, low: int, start: int, phrasing: str) -> bool:
     """Whether a negation among the words just before ``start`` in its clause, or a negating prefix
-    glued to the phrasing, turns it into its opposite."""
+    glued to the phrasing, turns it into its opposite; or its clause is what a denial before it
+    says is not so ("it is not true that …")."""
+    text = reading.text
     if phrasing[:1].isalpha() and _NEGATING_PREFIX.search(text, max(0, start - 4), start):
         return True
     before = _ASIDE.sub(" ", text[max(low, start - _REACH_CHARACTERS) : start])
-    return bool(_NEGATION.search(" ".join(before.split()[-NEGATION_REACH:])))
+    window = " ".join(before.split()[-NEGATION_REACH:])
+    if _NEGATION.search(window) or _DOUBT.search(window):
+        return True
+    if text[max(0, low - 4) : low] != "that":
+        return False
+    denial, _ = reading.clause(low - 4, low - 4)
+    return bool(_DENIAL.search(" ".join(text[denial : low - 4].split()[-3:])))
+
+
+def _taken_back(reading: _Reading, end: int) -> bool:
+    """Whether what was said up to ``end`` is taken back after it: by a remark later in its
+    sentence ("which is false", "— not true in general", "I'm not sure"), by the next sentence
+    ("That is wrong."), or in a question not answered yes ("… is conserved? No.")."""
+    text = reading.text
+    _, high = reading.sentence(end, end)
+    if _DASHED_FALSITY.search(text, end, high):
+        return True
+    index = bisect.bisect_left(reading.clause_ends, end)
+    for boundary_start, boundary_end in reading.clauses[index:]:
+        if boundary_start >= high:
+            break
+        if _FALSITY_REMARK.match(text, boundary_end, high):
+            return True
+    if high >= len(text):
+        return False
+    following = reading.sentence(high + 1, high + 1)[1]
+    if text[high] == "?":  # "why is it conserved?" takes for granted what it asks about
+        return not _YES.match(text, high + 1, following) and not _WHY.match(text, reading.sentence(end, end)[0])
+    return bool(_FALSITY_REMARK.match(text, high + 1, following))
 
 
 def _mentions(reading: _Reading, about, not_about) -> tuple[list[tuple[int, int, bool]], list[int]]:
     """Where the idea's terms are named as what is spoken of: (start, end, whether it is the idea's
     own), in order, and their starts. A term inside a longer one is not named there ("holonomic" in "non-holonomic");
     a term with a negating prefix glued to it names something else; a term set against another
-    ("unlike Newton's") is not what is spoken of."""
+    ("unlike Newton's") is not what is spoken of, nor one that names what the term before it
+    belongs to ("the momentum conjugate to a cyclic coordinate q")."""
     text, found = reading.text, []
     for terms, own in ((about, True), (not_about, False)):
         for term in {_normal(term) for term in terms}:
-            start = text.find(term)
-            while start >= 0:
+            for start in _term_starts(text, term):
                 negated = term[:1].isalpha() and bool(_NEGATING_PREFIX.search(text, max(0, start - 4), start))
                 found.append((start, start + len(term), own and not negated))
-                start = text.find(term, start + 1)
     found.sort(key=lambda mention: (mention[0], -mention[1]))
-    kept, reach = [], -1
+    kept, reach, complement = [], -1, None
     for mention in found:
         if mention[1] <= reach:
             continue  # inside a longer term, which is what is named there
         reach = max(reach, mention[1])
-        if not _CONTRAST.search(text, max(0, mention[0] - 24), mention[0]):
-            kept.append(mention)
+        if _CONTRAST.search(text, max(0, mention[0] - 24), mention[0]):
+            continue
+        if kept and (
+            _COMPLEMENT.fullmatch(text, kept[-1][1], mention[0])
+            or (complement is not None and _APPOSITION.fullmatch(text, complement, mention[0]))
+        ):
+            complement = mention[1]
+            continue
+        kept.append(mention)
     return kept, [mention[0] for mention in kept]
+
+
+def _term_starts(text: str, term: str):
+    """Where a term is named. A one-letter term is a name of its own: `q` in "if q does not appear",
+    not in "quantity", "e.g.", the velocity "q̇" or "q'"."""
+    if len(term) == 1 and term.isalpha():
+        return (match.start() for match in re.finditer(_LETTER_NAME.format(re.escape(term)), text))
+    return _find_all(text, term)
+
+
+def _find_all(text: str, piece: str):
+    start = text.find(piece)
+    while start >= 0:
+        yield start
+        start = text.find(piece, start + 1)
 
 
 def _said_of_own(reading: _Reading, mentions, starts, start: int, end: int, *, rivals: bool) -> bool:
     """Whether the term the phrasing at ``start:end`` is said of is the idea's own. With ``rivals``
     (a term the idea is not about is another idea's subject), a phrasing said of no term at all is
     of neither: in "constraints can be time dependent or time independent", which is which is not said."""
+    respective = _respective(reading, mentions, starts, start, end)
+    if respective is not None:
+        return respective
+    after = bisect.bisect_left(starts, end)
+    if after < len(mentions) and _ATTRIBUTE.fullmatch(reading.text, end, starts[after]):
+        return mentions[after][2]  # it describes the term it stands before: "a conserved momentum"
     for low, high in (reading.clause(start, end), reading.sentence(start, end)):
         first, last = bisect.bisect_left(starts, low), bisect.bisect_left(starts, end)
         if last > first:  # named before it (or in it)
-            return _own_subject(reading, mentions[last - 1], start)
+            return _own_subject(reading, mentions, last - 1, start)
         if last < len(mentions) and starts[last] < high:  # named after it
             return mentions[last][2]
     earlier = bisect.bisect_left(starts, start)
     if earlier:
-        return _own_subject(reading, mentions[earlier - 1], start)
+        return _own_subject(reading, mentions, earlier - 1, start)
     return not rivals  # else the question's own subject, where it has only one
 
 
-def _own_subject(reading: _Reading, mention, start: int) -> bool:
-    """Whether a term named before a phrasing is the idea's own and not denied: in "H is not
-    equal to T + V when the constraints are scleronomic", scleronomic is said of a denied T + V."""
+def _respective(reading: _Reading, mentions, starts, start: int, end: int) -> bool | None:
+    """In a sentence with "respectively", whether the phrasing is said of the idea's own term by
+    the order of the list, the n-th description of the n-th term ("A and B are X and Y,
+    respectively"); None where no list of terms is named there."""
+    text = reading.text
+    low, high = reading.sentence(start, end)
+    if not _RESPECTIVELY.search(text, low, high):
+        return None
+    named = mentions[bisect.bisect_left(starts, low) : bisect.bisect_left(starts, high)]
+    terms = named[:1]
+    for mention in named[1:]:
+        if not _LIST_GAP.fullmatch(text, terms[-1][1], mention[0]):
+            break
+        terms.append(mention)
+    if len(terms) < 2 or terms[0][0] <= start < terms[-1][1]:
+        return None
+    after = start >= terms[-1][1]  # the descriptions follow the terms, or come before them
+    region = (terms[-1][1], high) if after else (low, terms[0][0])
+    cuts = [span for span in reading.clauses if region[0] <= span[0] and span[1] <= region[1]]
+    edges = [region[0], *(edge for span in cuts for edge in span), region[1]]
+    pieces = [
+        (edges[index], edges[index + 1])
+        for index in range(0, len(edges), 2)
+        if _RESPECTIVELY.sub("", text[edges[index] : edges[index + 1]]).strip(" ,.;:!?")
+    ]
+    if len(pieces) < len(terms):
+        return False  # the order cannot be followed, so which is which is not said
+    pieces = pieces[-len(terms) :] if after else pieces[: len(terms)]
+    for (piece_start, piece_end), term in zip(pieces, terms, strict=True):
+        if piece_start <= start < piece_end:
+            return term[2]
+    return False
+
+
+def _own_subject(reading: _Reading, mentions, index: int, start: int) -> bool:
+    """Whether the term ``mentions[index]``, named before a phrasing, is the idea's own and not
+    denied: in "H is not equal to T + V when the constraints are scleronomic", scleronomic is said
+    of a denied T + V; nor one of a list that holds a rival ("Newton's and Lagrange's methods both
+    use energies" says nothing of Lagrange's alone)."""
+    mention = mentions[index]
     if not mention[2] or mention[0] >= start:  # a term inside the phrasing is its own words
         return mention[2]
+    if _LIST_TAIL.match(reading.text, mention[1]):
+        while index and _LIST_GAP.fullmatch(reading.text, mentions[index - 1][1], mentions[index][0]):
+            index -= 1
+            if not mentions[index][2]:
+                return False
     low, _ = reading.clause(mention[0], mention[1])
-    return not _negated_before(reading.text, low, mention[0], "")
+    return not _negated_before(reading, low, mention[0], "")
+
+
+def _found(reading: _Reading, phrasings):
+    """Each place one of ``phrasings`` is found, as ``_occurrences`` gives it."""
+    for phrasing in phrasings:
+        yield from _occurrences(reading, _normal(phrasing))
+
+
+def _hedged(reading: _Reading, starts, start: int, end: int, alternatives) -> bool:
+    """Whether a rival idea's phrasing is offered beside this one with "or", no term named between
+    them, in its clause: "scleronomic constraints are time dependent or time independent"."""
+    clause = reading.clause(start, end)
+    for other_start, other_end, _ in alternatives:
+        low, high = (end, other_start) if other_start >= end else (other_end, start)
+        if (
+            low <= high
+            and reading.clause(other_start, other_end) == clause
+            and _OR.search(reading.text, low, high)
+            and bisect.bisect_left(starts, low) == bisect.bisect_left(starts, high)
+        ):
+            return True
+    return False
 
 
 def rubric_score(text: str, rubric) -> RubricReading:
@@ -252,21 +423,35 @@ def rubric_score(text: str, rubric) -> RubricReading:
     """
     reading = _Reading(_normal(text[:MAX_TEXT_LENGTH]))
     found, missing, discounted, points = [], [], [], 0.0
+    ideas = [(idea, worth, phrasings, *(*binding, (), ())[:2]) for idea, worth, phrasings, *binding in rubric]
     # the subjects the question asks about: two (scleronomic and rheonomic) where one idea's rival is
     # another's own; then a phrasing said of no term is said of neither
-    subjects = {_normal(term) for _, _, _, *binding in rubric for term in (*binding, ())[0]}
-    for idea, worth, phrasings, *binding in rubric:
-        about, not_about = (*binding, (), ())[:2]  # a rubric of (idea, points, phrasings) binds nothing
-        rivals = any(_normal(term) in subjects for term in not_about)
+    subjects = {_normal(term) for *_, about, _ in ideas for term in about}
+    places: dict[int, list] = {}  # a rival idea's phrasings found, once asked for
+
+    def found_places(index: int):
+        if index not in places:
+            places[index] = list(_found(reading, ideas[index][2]))
+        return places[index]
+
+    for index, (idea, worth, _, about, not_about) in enumerate(ideas):
+        rival_terms = {_normal(term) for term in not_about} & subjects
+        rival_ideas = [
+            other
+            for other, (*_, other_about, _) in enumerate(ideas)
+            if other != index and rival_terms & {_normal(term) for term in other_about}
+        ]
         mentions, starts = _mentions(reading, about, not_about) if about else ([], [])
         seen = counted = False
-        for phrasing in phrasings:
-            for start, end, negated in _occurrences(reading, _normal(phrasing)):
-                seen = True
-                own = not about or _said_of_own(reading, mentions, starts, start, end, rivals=rivals)
-                if not negated and own:
-                    counted = True
-                    break
+        for start, end, negated in _found(reading, ideas[index][2]):
+            seen = True
+            counted = (
+                not negated
+                and (not about or _said_of_own(reading, mentions, starts, start, end, rivals=bool(rival_terms)))
+                # what a rival idea says of the same subject, offered as an alternative: "time
+                # dependent or time independent"
+                and not any(_hedged(reading, starts, start, end, found_places(other)) for other in rival_ideas)
+            )
             if counted:
                 break
         if counted:
