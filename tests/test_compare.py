@@ -3877,6 +3877,30 @@ def test_a_value_may_come_before_its_name(submitted, status):
     assert "not define" not in " ".join(verdict.feedback), verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status", "score", "feedback"),
+    [
+        # a claim beside the value, true of p_φ (φ is cyclic) but not asked, and false of others: for a person
+        ("p_φ = m l² sin²θ φ̇ = constant", "undecided", 1.0, ("Your answer ends `= constant`, which says the quantity"
+         " is conserved: that is not asked here. Its formula was graded and is right; a person will check this"
+         " answer.",)),
+        ("m l^2 sin(theta)^2 phidot = const", "undecided", 1.0, ("Your answer ends `= const`, which says the quantity"
+         " is conserved: that is not asked here. Its formula was graded and is right; a person will check this"
+         " answer.",)),
+        ("p_φ = m l² sin²θ φ̇ = C", "undecided", 1.0, ("Your answer ends `= C`, which says the quantity is conserved:"
+         " that is not asked here. Its formula was graded and is right; a person will check this answer.",)),
+        # wrong either way: graded, and told how it was read
+        ("m l^2 sin(theta) phidot = const", "not_equivalent", 0.0, ("Your answer depends on l, m and φ̇ as the right"
+         " answer does, but on θ in another way: check how your answer depends on θ.", "Read without `= const`,"
+         " which says the quantity is conserved: its formula was graded.")),
+    ],
+)  # fmt: skip
+def test_a_value_said_to_be_constant_is_no_value_labelled_constant(submitted, status, score, feedback):
+    # before: "Your answer is labelled constant, but the quantity asked for is p_φ", which it is not
+    verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback)
+
+
 def test_a_wrong_value_under_another_name_is_told_the_label_too():
     verdict = compare(P_PHI, "p_theta = m l² θ̇", name="p_phi", **SPHERICAL)
     assert verdict.status == "not_equivalent", verdict

@@ -509,6 +509,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
                 typed, (answer, used) = answer, _with_given(answer, given)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
+                answer, said = _said_constant(answer, spec, expected)
+                read_notes += said
                 answer = _name_on_the_left(answer, spec, expected)
                 named, answer = answer, _unwrap_named(answer, spec, expected)
                 label = _another_name(named, answer, expected)
@@ -1040,6 +1042,21 @@ def _rate_of_conserved(item: sympy.Eq, expected: Expected) -> sympy.Eq | None:
     return None
 
 
+def _said_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple]:
+    """``p_φ = m l² sin²θ φ̇ = const`` where an expression is asked: the formula, and a note that the
+    answer also says it is conserved, which may be true (p_φ, of a cyclic φ) or not (V), and is not
+    what the part asks: a person reads it. Not the name of the quantity asked for, as ``… = C`` would be
+    taken for (see :func:`_name_on_the_left`)."""
+    value = answer.value
+    if spec.shape != "expression" or not isinstance(value, sympy.Eq) or not value.rhs.is_Symbol:
+        return answer, ()
+    name = value.rhs.name
+    if name in expected.names or not is_arbitrary_constant(name) or not value.lhs.free_symbols:
+        return answer, ()
+    note = ("constant_said_for_a_person", {"said": f"= {unicode_name(name)}"})
+    return ParsedAnswer(answer.text, value.lhs, "expression"), (note,)
+
+
 def _name_on_the_left(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``m l² sin²θ φ̇ = p_φ``: a quantity's value, then its name, read as ``p_φ = m l² sin²θ φ̇``
     where an expression is asked. The right side is a name the problem does not define, alone,
@@ -1233,6 +1250,7 @@ _FOR_A_PERSON = {
     "label_for_a_person": "label_other",
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
+    "constant_said_for_a_person": "constant_said",
 }
 
 
