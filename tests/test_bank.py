@@ -209,6 +209,16 @@ def test_the_time_limit_bounds_the_verdict_its_mistakes_and_method_credit_togeth
         assert given == pytest.approx(left)
 
 
+def test_a_listed_mistake_is_matched_by_a_value_with_words_beside_it():
+    # the words are for a person where the value is right; where it is a mistake's, its hint is said
+    problem = load_bank(BANK)["generalized-forces"]
+    part = problem.part("q-theta")
+    verdict = grade_answer(problem, part, "−m g sin θ, which is a force")
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "mistake")
+    note = "Read without the words `, which is a force`: the formula is what is graded."
+    assert verdict.feedback == (part.mistakes[0].feedback, note)
+
+
 def test_a_listed_mistake_keeps_how_the_answer_was_read():
     # the option's words matched option a, a listed mistake: its hint, and what "Holonomic" was read as
     problem = load_bank(BANK)["constraint-classification"]

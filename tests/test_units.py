@@ -437,6 +437,11 @@ def test_a_unit_after_a_formula_that_measures_something_else_is_said_so(submitte
         "−m g l sin θ (force)",
         "−m g l sin θ, an angle",
         "−m g l sin θ (torque)",
+        "−m g l sin θ, which is a force",  # before, read past as Correct
+        # in signs and symbols too: before, refused for a comma or a colon
+        "−m g l sin θ; its dimensions are those of energy (torque), N·m",
+        "Q_θ = −m g l sin θ. Dimensions: [M L² T⁻²]",
+        "−m g l sin θ, units: N m",
     ],
 )
 def test_words_that_state_dimensions_are_for_a_person_to_read(submitted):

@@ -16,6 +16,7 @@ from functools import lru_cache
 from grader.bank import Part, Problem
 from grader.errors import AuthorError
 from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
+from grader.judge.compare import READINGS_FOR_A_PERSON
 from grader.judge.deadline import CheckTimeout, Deadline, time_limit
 from grader.judge.lagrangian import equations_of_motion
 from grader.judge.setting import Setting
@@ -114,15 +115,12 @@ def grade_answer(
     return _with_method_credit(problem, part, verdict, submitted, answers or {}, deadline)
 
 
-# what sends an answer to a person only when its value is right; the verdict's notes say it already
-_VALUE_RIGHT_BUT = frozenset({"label_for_a_person", "working_false_for_a_person"})
-
-
 def _matches(verdict: Verdict) -> bool:
-    """Whether the answer is a mistake's, by value: a label naming another quantity (``f = …`` where ω is
-    asked), or working that does not come to the value (``6 − 4 = 3``), is said in the verdict's notes
-    already, and goes to a person only when the value is right."""
-    return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis in _VALUE_RIGHT_BUT)
+    """Whether the answer is a mistake's, by value: what goes to a person only when the value is right,
+    a label naming another quantity (``f = …`` where ω is asked), working that does not come to the
+    value (``6 − 4 = 3``), words beside it (``…, which is a force``), is said in the verdict's notes
+    already."""
+    return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis in READINGS_FOR_A_PERSON)
 
 
 def _with_method_credit(

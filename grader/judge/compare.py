@@ -73,7 +73,7 @@ from grader.parse import (
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
-__all__ = ["DEFAULT_TIMEOUT", "KINDS", "Kind", "compare"]
+__all__ = ["DEFAULT_TIMEOUT", "KINDS", "READINGS_FOR_A_PERSON", "Kind", "compare"]
 
 DEFAULT_TIMEOUT = 2.0
 
@@ -1252,6 +1252,10 @@ _FOR_A_PERSON = {
     "working_false_for_a_person": "working_false",
     "constant_said_for_a_person": "constant_said",
 }
+
+
+# the diagnoses of a value that is right as read, where how it was read is for a person to confirm
+READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON)
 
 
 def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:

@@ -88,10 +88,15 @@ _OTHERWISE = re.compile(
 # words that only say what kind of quantity the formula is ("…, it is a force", "(torque)", "an
 # angle"): a statement of its dimensions in other words, which a prompt may ask for
 _A_QUANTITY = re.compile(
-    r"^\W*(?:(?:it|this|that)\s+(?:is|has)\s+|is\s+|has\s+)?(?:an?\s+|the\s+)?(?:units?\s+of\s+(?:an?\s+)?)?"
+    r"^\W*(?:(?:it|this|that|which)\s+(?:is|has)\s+|is\s+|has\s+)?(?:an?\s+|the\s+)?(?:units?\s+of\s+(?:an?\s+)?)?"
     r"(?:force|torque|energy|work|length|distance|mass|angle|time|speed|velocity|momentum|acceleration|"
     r"frequency|power|pressure)s?\W*$",
     re.I,
+)
+# words that state the formula's dimensions or units ("its dimensions are those of energy, N·m", "Dimensions:
+# [M L² T⁻²]", "units: N m"), in symbols and signs as often as in words: a person reads them, whatever they hold
+_DIMENSIONS_SAID = re.compile(
+    r"^\W*(?:(?:its|the|which|it|this)\s+(?:has\s+|have\s+|is\s+in\s+)?(?:the\s+)?)?(?:dimensions?|units?)\b", re.I
 )
 # a word against a bracket is a function the parser does not know, not prose: floor(θ), Re(e^(iθ))
 _APPLIED = re.compile(r"[A-Za-z]\(")
@@ -134,7 +139,11 @@ def says_otherwise(words: str) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
     (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or says what
     kind of quantity it is (``it is a force``): a person must read it before the formula earns credit."""
-    return bool(_OTHERWISE.search(words) or _DOUBT.search(words) or _A_QUANTITY.match(words))
+    return bool(_OTHERWISE.search(words) or _DOUBT.search(words) or _A_QUANTITY.match(words) or _dimensions(words))
+
+
+def _dimensions(words: str) -> bool:
+    return bool(_DIMENSIONS_SAID.match(words))
 
 
 def formula_then_words(text: str, names: Collection[str], coords: Collection[str]) -> Iterator[tuple[str, str]]:
@@ -154,7 +163,8 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     line = text.rfind("\n", 0, cut)
     for start in dict.fromkeys((cut, mark if mark > line else -1)):
         formula, rest = text[:start].rstrip(), text[start:].strip()
-        if start > 0 and formula and is_prose(rest.lstrip(_OPENS), names, doubt=True):
+        remark = rest.lstrip(_OPENS)
+        if start > 0 and formula and (is_prose(remark, names, doubt=True) or _dimensions(remark)):
             yield formula, rest
 
 
