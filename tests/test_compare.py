@@ -1033,6 +1033,9 @@ def _for_a_person(words):
          (_words("for small oscillations"),)),
         ("sqrt(g/l)", r"\omega = \sqrt{g/l} \quad \mbox{for oscillations of a small amplitude, about the bottom}",
          "expression", "equivalent", (_words("for oscillations of a small amplitude, about the bottom"),)),
+        # the quantity asked, named (another goes to a person)
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ, the Lagrangian", "lagrangian", "equivalent",
+         (_words(", the Lagrangian"),)),
         # words of arithmetic, or its signs: refused as typed
         ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),
@@ -1344,6 +1347,9 @@ def _before(words):
         ("sqrt(g/l)", "The angular frequency is √(g/l)", "expression", "equivalent",
          (_before("The angular frequency is"),)),
         ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),
+        # a method's name before an equation names no quantity the part asks for
+        (EOM_PENDULUM, "From energy conservation, θ̈ + (g/l) sin θ = 0", "equation", "equivalent",
+         (_before("From energy conservation,"),)),
         (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² − m g l cos θ", "lagrangian", "not_equivalent",
          (_before("The Lagrangian is"),)),  # the formula judged, the mistake named
         # words before and a remark after: before, the remark was left out and the words kept, undefined
@@ -1385,6 +1391,42 @@ def test_words_before_a_formula_that_may_be_part_of_it_are_not_read_past(submitt
     verdict = compare("sqrt(g/l)", submitted, **PENDULUM)
     assert verdict.status != "equivalent"
     assert not verdict.notes
+
+
+L_RIGHT = "L = ½ m l² θ̇² + m g l cos θ"
+EOM_RIGHT = "m l^2 thetaddot + m g l sin(theta) = 0"
+FROM_EULER_LAGRANGE = "From the Euler-Lagrange equation,"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "feedback"),
+    [
+        # words that say the formula is false, or a slip: before, each of these was Correct
+        (L_PENDULUM, f"{L_RIGHT}, which is false", (_for_a_person(", which is false"),)),
+        (L_PENDULUM, f"{L_RIGHT} (false)", (_for_a_person("(false)"),)),
+        (L_PENDULUM, f"{L_RIGHT}, which is incorrect", (_for_a_person(", which is incorrect"),)),
+        (L_PENDULUM, f"{L_RIGHT}, which is invalid", (_for_a_person(", which is invalid"),)),
+        (L_PENDULUM, f"{L_RIGHT} (sign error)", (_for_a_person("(sign error)"),)),
+        (L_PENDULUM, f"{L_RIGHT}, but the sign is off", (_for_a_person(", but the sign is off"),)),
+        (L_PENDULUM, f"{L_RIGHT} (I copied this)", (_for_a_person("(I copied this)"),)),
+        # words that say it is another quantity than the one asked
+        (L_PENDULUM, f"{L_RIGHT}, which is the Hamiltonian", (_for_a_person(", which is the Hamiltonian"),)),
+        (L_PENDULUM, f"{L_RIGHT}, i.e. the Hamiltonian", (_for_a_person(", i.e. the Hamiltonian"),)),
+        (L_PENDULUM, f"{L_RIGHT}, which is the total energy", (_for_a_person(", which is the total energy"),)),
+        (L_PENDULUM, "The Hamiltonian is ½ m l² θ̇² + m g l cos θ", (_for_a_person("The Hamiltonian is"),)),
+        (L_PENDULUM, "The energy is ½ m l² θ̇² + m g l cos θ", (_for_a_person("The energy is"),)),
+        # after a sentence that leads to the formula, and after a zero side, as anywhere
+        (EOM_PENDULUM, f"{EOM_RIGHT}, which is false", (_for_a_person(", which is false"),)),
+        (EOM_PENDULUM, f"{FROM_EULER_LAGRANGE} {EOM_RIGHT}, which is false",
+         (_for_a_person(", which is false"), _before(FROM_EULER_LAGRANGE))),
+        (EOM_PENDULUM, f"{FROM_EULER_LAGRANGE} {EOM_RIGHT} is wrong",  # before, `0 · is · wrong` was 0
+         (_for_a_person("is wrong"), _before(FROM_EULER_LAGRANGE))),
+    ],
+)  # fmt: skip
+def test_words_that_disown_a_formula_or_name_another_quantity_send_it_to_a_person(expected, submitted, feedback):
+    kind = "lagrangian" if expected == L_PENDULUM else "equation"
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict
 
 
 H_PENDULUM = "1/2 m l^2 thetadot^2 - m g l cos(theta)"

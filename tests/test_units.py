@@ -499,8 +499,20 @@ def test_a_lagrangians_multiple_that_is_no_energy_says_so_and_keeps_its_credit(s
     assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.5, feedback), verdict
 
 
-@pytest.mark.parametrize("submitted", ["−m g l sin θ, the generalized force", "−m g l sin θ (the torque of gravity)"])
-def test_words_that_name_the_quantity_are_read_past(submitted):
-    # not a claim of its dimensions alone: what the formula is, in words, as before
+@pytest.mark.parametrize(
+    ("submitted", "words"),
+    [
+        ("−m g l sin θ, the generalized force", ", the generalized force"),
+        ("−m g l sin θ (the torque of gravity)", "(the torque of gravity)"),
+    ],
+)
+def test_words_that_name_a_quantity_after_a_formula_are_for_a_person_to_read(submitted, words):
+    # what the formula is, in words: right here, but the checker cannot tell them from "the Hamiltonian"
+    # beside a Lagrangian, nor "a force" beside a torque where the prompt asks for its dimensions (before,
+    # read past as Correct)
     verdict = compare(TORQUE, submitted, **PENDULUM)
-    assert verdict.status == "equivalent", verdict
+    feedback = (
+        f"Your answer says `{words}` beside the formula. The formula was graded on its own; a person will read"
+        " the words against it.",
+    )
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict

@@ -55,6 +55,7 @@ from grader.judge.words import (
     formula_then_convention,
     formula_then_small_angle_form,
     formula_then_words,
+    quantities_named,
     says_otherwise,
     text_as_words,
     words_then_formula,
@@ -1402,13 +1403,16 @@ def _without_words(
     if without is not None and not _undefined(without[0], names):
         return without
     for words, formula in words_then_formula(submitted, names, coords):
-        before = (_words_note("words_before_left_out", words), {"words": _shown(words)})
+        before = (_words_note("words_before_left_out", words, expected), {"words": _shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
-        if read.ok and not _undefined(read, names):
+        zero = _ZERO_THEN_WORDS.search(formula)  # … = 0 is wrong: 0 times the words is 0, as at the top
+        if read.ok and not _undefined(read, names) and zero is None:
             return read, (before,)
         after = _formula_before_words(formula, expected, names, deadline)
         if after is not None and not _undefined(after[0], names):
             return after[0], (before, *after[1])
+        if read.ok and not _undefined(read, names):
+            return read, (before,)
     for words, definition, chain in definition_then_formula(submitted, names, coords):
         read, after = parse_answer(chain, coords=coords, known=names, deadline=deadline), ()
         if _unknown_in_chain(read, names):  # …, L = ½ m l² θ̇² + … (taking V = 0 at the pivot)
@@ -1416,10 +1420,10 @@ def _without_words(
             if remark is not None and not _unknown_in_chain(remark[0], names):
                 read, after = remark
         if definition is None and read.ok and read.kind == "equation":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …
-            return read, ((_words_note("words_before_left_out", words), {"words": _shown(words)}), *after)
+            return read, ((_words_note("words_before_left_out", words, expected), {"words": _shown(words)}), *after)
         if definition is not None and _states_one_definition(read, expected):
             chained = {"words": _shown(words), "chain": f"{definition} = …"}
-            return read, ((_words_note("definition_in_words", words), chained), *after)
+            return read, ((_words_note("definition_in_words", words, expected), chained), *after)
     return without if without is not None else (answer, ())
 
 
@@ -1454,19 +1458,29 @@ def _formula_before_words(text: str, expected: Expected, names: list, deadline) 
     for formula, words in formula_then_words(text, names, expected.setting.coords):
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
-            return read, ((_words_note("words_left_out", words), {"words": _shown(words)}),)
+            return read, ((_words_note("words_left_out", words, expected), {"words": _shown(words)}),)
     convention = formula_then_convention(text, names)  # … (taking V = 0 at the pivot): the zero, stated
     if convention is not None:
         formula, remark = convention
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:
-            return read, ((_words_note("words_left_out", remark), {"words": _shown(remark)}),)
+            return read, ((_words_note("words_left_out", remark, expected), {"words": _shown(remark)}),)
     return None
 
 
-def _words_note(key: str, words: str) -> str:
-    """The note on words read past: for a person to read first where they may say otherwise."""
-    return "words_for_a_person" if says_otherwise(words) else key
+def _words_note(key: str, words: str, expected: Expected) -> str:
+    """The note on words read past: for a person to read first where they may say otherwise
+    (:func:`~grader.judge.words.says_otherwise`), or name a quantity other than the one the part names
+    (the option ``name``; L where a Lagrangian is asked). After the formula, any quantity named says what
+    it is (``…, which is the Hamiltonian``); before it, a sentence names what follows (``The Lagrangian
+    is …``), and only the Lagrangian, the Hamiltonian or the energy, where the part names its own, is
+    held against it (``The Hamiltonian is …`` where L is asked)."""
+    if says_otherwise(words):
+        return "words_for_a_person"
+    named, asked = quantities_named(words), set(expected.option("name") or ())
+    if key != "words_left_out":
+        named = named & _ENERGY_SUMS.keys() if asked else set()
+    return "words_for_a_person" if named - asked else key
 
 
 def _shown(words: str) -> str:

@@ -2,6 +2,8 @@
 
 Contents:
     is_prose(words, names)                     whether words are about the answer, not more of it
+    says_otherwise(words)                      whether they may say the formula is other than written
+    quantities_named(words)                    the quantities they name: ``the Hamiltonian`` is H
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
     definition_then_formula(text, names, coords)
@@ -17,9 +19,10 @@ reads the words. So it is with a sentence that leads to the formula: ``The angul
 √(g/l)``. The checker does the same, and says which words it did not grade, but only
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have. Words that may say
-the formula is other than written (``… upward``, ``… inverted``), or doubt it (``… (not sure about
-the sign)``), are read past too, but :func:`says_otherwise` marks them for a person to read before
-a right formula earns its credit.
+the formula is other than written (``… upward``, ``… inverted``), doubt it (``… (not sure about
+the sign)``) or judge it (``…, which is false``), are read past too, but :func:`says_otherwise` marks
+them for a person to read before a right formula earns its credit; so are words that name a quantity
+(:func:`quantities_named`: ``…, which is the Hamiltonian``) other than the one the part asks for.
 
 A remark in brackets after a formula may state where the potential energy is zero, ``(taking V = 0
 at the pivot)``: words, and ``V = 0`` (or ``U = 0``) in a name the problem does not have. It says how
@@ -55,6 +58,7 @@ __all__ = [
     "formula_then_small_angle_form",
     "formula_then_words",
     "is_prose",
+    "quantities_named",
     "says_otherwise",
     "text_as_words",
     "words_then_formula",
@@ -85,6 +89,19 @@ _OTHERWISE = re.compile(
     r"replace|wrong|mistake|typo|actually|should|meant|dimension|dimensions|dimensionless|units?\s+of)\b(?!\s+to\b)",
     re.I,
 )
+# words that judge the formula beside them, or say it is a slip ("…, which is false", "(sign error)", "but the
+# sign is off", "(I copied this)"): a formula its student disowns is read by a person, whatever it is
+_JUDGED = re.compile(
+    r"\b(?:false|untrue|incorrect|invalid|error|errors|erroneous|off|bogus|nonsense|copied|sign|signs)\b", re.I
+)
+# words that name a quantity of mechanics, which say what the formula beside them is ("…, which is the
+# Hamiltonian", "(the total energy)", "the torque of gravity"): the Lagrangian and the Hamiltonian by the names
+# a part may ask for (the option ``name``), any other by its word
+_QUANTITY = re.compile(
+    r"\b(?:lagrangian|hamiltonian|routhian|energ(?:y|ies)|force|torque|momentum|momenta|work|action|impulse)s?\b",
+    re.I,
+)
+_QUANTITY_NAMES = {"lagrangian": "L", "hamiltonian": "H", "energy": "E"}
 # words that only say what kind of quantity the formula is ("…, it is a force", "(torque)", "an
 # angle"): a statement of its dimensions in other words, which a prompt may ask for
 _A_QUANTITY = re.compile(
@@ -137,9 +154,28 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
 
 def says_otherwise(words: str) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
-    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or says what
-    kind of quantity it is (``it is a force``): a person must read it before the formula earns credit."""
-    return bool(_OTHERWISE.search(words) or _DOUBT.search(words) or _A_QUANTITY.match(words) or _dimensions(words))
+    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or judges it
+    (``which is false``, ``sign error``), or says what kind of quantity it is (``it is a force``): a
+    person must read it before the formula earns credit."""
+    return bool(
+        _OTHERWISE.search(words)
+        or _DOUBT.search(words)
+        or _JUDGED.search(words)
+        or _A_QUANTITY.match(words)
+        or _dimensions(words)
+    )
+
+
+def quantities_named(words: str) -> frozenset[str]:
+    """The quantities ``words`` name: ``L``, ``H`` or ``E`` for the Lagrangian, the Hamiltonian or the
+    energy, any other by its word in lower case (``torque``).
+
+    >>> sorted(quantities_named(", which is the total energy, not a force"))
+    ['E', 'force']
+    """
+    found = (word.lower() for word in _QUANTITY.findall(words))
+    found = ("energy" if word.startswith("energ") else word.removesuffix("s") for word in found)
+    return frozenset(_QUANTITY_NAMES.get(word, word) for word in found)
 
 
 def _dimensions(words: str) -> bool:
