@@ -17,6 +17,7 @@ from sympy.core.cache import clear_cache
 
 from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare, parse_answer
 from grader.judge import words
+from grader.judge.euler_lagrange import euler_lagrange
 from grader.judge.expected import prepare
 from grader.judge.lagrangian import equations_of_motion
 
@@ -1369,6 +1370,11 @@ def _before(words):
          (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0:"),)),
         (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get θ̈ = −(g/l) θ", "equation", "not_equivalent",
          (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get"),)),
+        # q for any coordinate; and a wrong equation is wrong, whatever the operator before it
+        (EOM_PENDULUM, "Using d/dt(∂L/∂q̇) − ∂L/∂q = 0 we get m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_before("Using d/dt(∂L/∂q̇) − ∂L/∂q = 0 we get"),)),
+        (EOM_PENDULUM, "Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get m l² θ̈ − m g l sin θ = 0", "equation",
+         "not_equivalent", (_before("Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get"),)),
     ],
 )  # fmt: skip
 def test_words_before_a_formula_are_read_past_and_said_so(expected, submitted, kind, status, notes):
@@ -1391,6 +1397,78 @@ def test_words_before_a_formula_that_may_be_part_of_it_are_not_read_past(submitt
     verdict = compare("sqrt(g/l)", submitted, **PENDULUM)
     assert verdict.status != "equivalent"
     assert not verdict.notes
+
+
+EOM_TYPED = "m l² θ̈ + m g l sin θ = 0"
+
+
+def _operator(operator):
+    return (
+        f"Your answer says `{operator} = 0` on the way to its equation, which is not Lagrange's equation. The"
+        " equation was graded and is right; a person will check this answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # another operator than Lagrange's, read past: before, Correct
+        (f"Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂V/∂θ̇) − ∂V/∂θ"), _before("Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get"))),
+        (f"Using d/dt(∂H/∂θ̇) − ∂H/∂θ = 0 we get {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂H/∂θ̇) − ∂H/∂θ"), _before("Using d/dt(∂H/∂θ̇) − ∂H/∂θ = 0 we get"))),
+        (f"Using d/dt(∂T/∂θ̇) − ∂T/∂θ = 0 we get {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂T/∂θ̇) − ∂T/∂θ"), _before("Using d/dt(∂T/∂θ̇) − ∂T/∂θ = 0 we get"))),
+        (f"Applying d/dt(∂L/∂θ) − ∂L/∂θ̇ = 0: {EOM_TYPED}", "undecided",  # θ and θ̇ swapped
+         (_operator("d/dt(∂L/∂θ) − ∂L/∂θ̇"), _before("Applying d/dt(∂L/∂θ) − ∂L/∂θ̇ = 0:"))),
+        # a plus between the terms: before, refused for its colon, or for ∂ outside a name
+        (f"Applying d/dt(∂L/∂θ̇) + ∂L/∂θ = 0: {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂L/∂θ̇) + ∂L/∂θ"), _before("Applying d/dt(∂L/∂θ̇) + ∂L/∂θ = 0:"))),
+        (f"d/dt(∂L/∂θ̇) + ∂L/∂θ = {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂L/∂θ̇) + ∂L/∂θ"), _before("d/dt(∂L/∂θ̇) + ∂L/∂θ ="))),
+        # as the parser reads it before the equation it comes to: before, Correct
+        (f"d/dt(∂L/∂θ) − ∂L/∂θ̇ = {EOM_TYPED}", "undecided", (_operator("d/dt(∂L/∂θ) − ∂L/∂θ̇"),)),
+        # the true operator in other spellings and orders: before, refused for their colon or comma
+        ("Applying d/dt(dL/dthetadot) - dL/dtheta = 0: m l^2 thetaddot + m g l sin(theta) = 0", "equivalent",
+         ("Correct.", _before("Applying d/dt(dL/dthetadot) - dL/dtheta = 0:"))),
+        (f"Applying ∂L/∂θ − d/dt(∂L/∂θ̇) = 0: {EOM_TYPED}", "equivalent",
+         ("Correct.", _before("Applying ∂L/∂θ − d/dt(∂L/∂θ̇) = 0:"))),
+        (f"d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, {EOM_TYPED}", "equivalent",
+         ("Correct.", _before("d/dt(∂L/∂θ̇) − ∂L/∂θ = 0,"))),
+        # a method in words that hands over, or with a unit's name in it: before, refused
+        ("From the Euler-Lagrange equation, it follows that m l^2 thetaddot + m g l sin(theta) = 0", "equivalent",
+         ("Correct.", _before("From the Euler-Lagrange equation, it follows that"))),
+        ("From Newton's second law, m l θ̈ = −m g sin θ", "equivalent",
+         ("Correct.", _before("From Newton's second law,"))),
+    ],
+)  # fmt: skip
+def test_lagranges_equation_before_an_equation_is_read_past_only_when_it_is_the_true_one(submitted, status, feedback):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, 1.0, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("operator", "coords", "judged"),
+    [
+        ("d/dt(∂L/∂θ̇) − ∂L/∂θ", ["theta"], True),
+        ("-d/dt(∂L/∂θ̇) + ∂L/∂θ", ["theta"], True),  # either sign
+        (r"\frac{d}{dt}\left(\frac{\partial L}{\partial\dot\theta}\right) - \frac{\partial L}{\partial\theta}",
+         ["theta"], True),
+        ("d/dt(dL/dθ̇) − dL/dθ", ["theta"], True),
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ", ["x"], True),  # Rayleigh's dissipation function
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ", ["x"], False),
+        ("d/dt(∂L/∂φ̇) − ∂L/∂φ", ["theta"], False),  # not a coordinate of the problem
+        ("d/dt(∂L/∂θ̇) − ∂L/∂θ̇", ["theta"], False),
+        ("d/dt(∂L/∂θ̇) − ∂V/∂θ", ["theta"], False),
+        # not of Lagrange's shape: a momentum, a conserved momentum's rate, a product
+        ("∂L/∂θ̇", ["theta"], None),
+        ("d/dt(∂L/∂φ̇)", ["phi"], None),
+        ("d/dt(∂L/∂θ̇) ∂L/∂θ", ["theta"], None),
+        ("m l² θ̈", ["theta"], None),
+    ],
+)  # fmt: skip
+def test_the_euler_lagrange_operator_is_told_from_another_of_its_shape(operator, coords, judged):
+    assert euler_lagrange(operator, coords) is judged
 
 
 L_RIGHT = "L = ½ m l² θ̇² + m g l cos θ"
@@ -4285,8 +4363,6 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
         ("thetaddot = -(g/l) theta", "If θ is small, θ̈ = −(g/l) θ", False, "invalid",  # a condition: as before
          "The first item of your answer has no `=`."),
         (EOM_PENDULUM, "Applying ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", False, "invalid",  # not Lagrange's equation
-         "`:` is not something an answer can contain."),
-        (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) + ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", False, "invalid",
          "`:` is not something an answer can contain."),
         # found, but not read so: a definition we cannot judge, or two values for L (which is the answer?)
         (L_PENDULUM, f"Since L = 1/2 m l^2 θ̇^2 + m g l cos θ, L = {L_TYPED}", True, "not_equivalent",

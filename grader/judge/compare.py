@@ -27,6 +27,7 @@ from sympy.core.function import AppliedUndef
 from grader.errors import AuthorError
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
+from grader.judge.euler_lagrange import euler_lagrange
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression
 from grader.judge.feedback import say
@@ -51,6 +52,7 @@ from grader.judge.units import (
 from grader.judge.verdict import Verdict
 from grader.judge.words import (
     definition_then_formula,
+    euler_lagrange_then_formula,
     formula_then_approximation,
     formula_then_convention,
     formula_then_small_angle_form,
@@ -208,6 +210,11 @@ def compare(
         sentence = say("statement_for_a_person", statement=said[1], label=said[0])
         feedback = (sentence, *(line for line in verdict.feedback if line != "Correct."))
         return replace(verdict, status="undecided", diagnosis="statement_for_a_person", feedback=feedback)
+    operator = _operator_said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
+    if operator is not None:  # Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …: right, but not from Lagrange's equation
+        sentence = say("operator_for_a_person", statement=operator)
+        feedback = (sentence, *(line for line in verdict.feedback if line != "Correct."))
+        return replace(verdict, status="undecided", diagnosis="operator_for_a_person", feedback=feedback)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
@@ -703,6 +710,18 @@ def _said_wrong(submitted: str, expected: Expected) -> tuple[str, str] | None:
         found = pattern.search(submitted)
         if found:
             return label, re.sub(r"\s+", " ", found.group().strip()).replace("−", "-")
+    return None
+
+
+def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
+    """The Euler–Lagrange operator an answer applies on its way to the equation it gives, in words
+    (``Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …``) or as the parser reads it before the equation
+    (``d/dt(∂L/∂θ) − ∂L/∂θ̇ = … = 0``), where it is not the true one; as typed, or None."""
+    coords = expected.setting.coords
+    for _, operator, _ in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
+        if euler_lagrange(operator, coords, expected.names) is False:
+            return re.sub(r"\s+", " ", operator) + " = 0"
+        return None
     return None
 
 
@@ -1255,8 +1274,9 @@ _FOR_A_PERSON = {
 }
 
 
-# the diagnoses of a value that is right as read, where how it was read is for a person to confirm
-READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON)
+# the diagnoses of a value that is right as read, where how it was read is for a person to confirm (a wrong
+# Euler–Lagrange operator before it too, which compare finds once the value is judged)
+READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {"operator_for_a_person"}
 
 
 def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
@@ -1413,18 +1433,28 @@ def _without_words(
             return after[0], (before, *after[1])
         if read.ok and not _undefined(read, names):
             return read, (before,)
-    for words, definition, chain in definition_then_formula(submitted, names, coords):
-        read, after = parse_answer(chain, coords=coords, known=names, deadline=deadline), ()
-        if _unknown_in_chain(read, names):  # …, L = ½ m l² θ̇² + … (taking V = 0 at the pivot)
-            remark = _formula_before_words(chain, expected, names, deadline)
-            if remark is not None and not _unknown_in_chain(remark[0], names):
-                read, after = remark
-        if definition is None and read.ok and read.kind == "equation":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …
+    for words, _, equation in euler_lagrange_then_formula(submitted, names, coords):
+        # Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …, the operator read past (compare judges it)
+        read, after = _read_with_remark(equation, expected, names, deadline)
+        if read.ok and read.kind == "equation":
             return read, ((_words_note("words_before_left_out", words, expected), {"words": _shown(words)}), *after)
-        if definition is not None and _states_one_definition(read, expected):
+    for words, definition, chain in definition_then_formula(submitted, names, coords):
+        read, after = _read_with_remark(chain, expected, names, deadline)
+        if _states_one_definition(read, expected):
             chained = {"words": _shown(words), "chain": f"{definition} = …"}
             return read, ((_words_note("definition_in_words", words, expected), chained), *after)
     return without if without is not None else (answer, ())
+
+
+def _read_with_remark(text: str, expected: Expected, names: list, deadline) -> tuple[ParsedAnswer | Refusal, tuple]:
+    """``text`` read, or without a remark after it where as typed it cannot be read or leaves a name
+    unknown (``…, L = ½ m l² θ̇² + … (taking V = 0 at the pivot)``); and the notes on the remark."""
+    read = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
+    if _unknown_in_chain(read, names):
+        remark = _formula_before_words(text, expected, names, deadline)
+        if remark is not None and not _unknown_in_chain(remark[0], names):
+            return remark
+    return read, ()
 
 
 def _unknown_in_chain(read: ParsedAnswer | Refusal, names: list) -> bool:
