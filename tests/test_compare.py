@@ -4217,6 +4217,9 @@ def test_a_chain_that_says_l_is_t_plus_v_of_its_value_too_is_told_once(submitted
 L_TYPED = "1/2 m l^2 θ̇^2 + m g l cos θ"
 SPHERICAL_H_TYPED = "1/2 m l^2 (θ̇^2 + sin^2θ φ̇^2) - m g l cos θ"
 SPHERICAL_P_PHI = "m l^2 sin(theta)^2 phidot"
+# on a rotating hoop T = T₂ + T₀, so H = T₂ − T₀ + V, not the energy T + V; the part says so
+HOOP_NOT_ENERGY = {"coords": ["theta"], "known": ["m", "R", "g", "omega"], "name": "H", "h_is_energy": False}
+HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
 
 
 def _misstated(statement: str, label: str) -> str:
@@ -4278,6 +4281,8 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
         (SPHERICAL_H, f"H = Σ p q̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (SPHERICAL_H, rf"H = \sum_j p_j \dot q_j - L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (SPHERICAL_H, f"H = E = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
+        (SPHERICAL_H, f"H = T + V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),  # the energy, where it is
+        (HOOP_H, f"H = Σ p q̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY),  # where it is not too
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
         (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it
     ],
@@ -4288,6 +4293,27 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
 
 def _chain(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        # before, each of these was Correct
+        (f"H = T + V = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"),)),
+        (f"H = E = {HOOP_H_TYPED}", (_misstated("H = E", "H"),)),
+        (f"Since H = T + V, H = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"), _chain("Since", "H = T + V"))),
+        (f"The Hamiltonian H = T + V is {HOOP_H_TYPED}",
+         (_misstated("H = T + V", "H"), _chain("The Hamiltonian … is", "H = T + V"))),
+        (f"H = T + V ⇒ H = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"),)),
+        # the energies as the label: not H's here
+        (f"T + V = {HOOP_H_TYPED}",
+         ("Your answer is labelled T + V, but the quantity asked for is H. Read as H, it is right; a person will"
+          " check which you meant.",)),
+    ],
+)  # fmt: skip
+def test_where_the_part_says_h_is_not_the_energy_h_said_to_be_t_plus_v_goes_to_a_person(submitted, feedback):
+    verdict = compare(HOOP_H, submitted, **HOOP_NOT_ENERGY)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict
 
 
 P_THETA = {**PENDULUM, "name": "p_theta"}

@@ -103,7 +103,12 @@ class Kind:
 KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
-        Kind("expression", check_expression, {"up_to_constant": False, "name": None}, shape="expression"),
+        Kind(
+            "expression",
+            check_expression,
+            {"up_to_constant": False, "name": None, "h_is_energy": True},
+            shape="expression",
+        ),
         Kind("equation", check_equation, shape="equation"),
         Kind("equations", check_equations, shape="equations"),
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
@@ -135,7 +140,7 @@ def compare(
             positive), ``dimensions`` (``{"l": "length", "g": "acceleration"}``: a wrong
             answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
-            (seconds, default 2), and the kind's own options (``up_to_constant``,
+            (seconds, default 2), and the kind's own options (``up_to_constant``, ``h_is_energy``,
             ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs…).
 
     Returns:
@@ -706,7 +711,8 @@ def _said_wrong(submitted: str, expected: Expected) -> tuple[str, str] | None:
     the reading of the formula leaves out and :func:`_misstated` cannot see; as said, or None."""
     if _DEFINING_LETTERS & expected.names:
         return None  # a tension T, an energy E of the problem's own: the letters mean something else
-    for label, pattern in _SAID_WRONG:
+    patterns = _SAID_WRONG if _energy_sums(expected) is _ENERGY_SUMS else (*_SAID_WRONG, *_SAID_NOT_ENERGY)
+    for label, pattern in patterns:
         found = pattern.search(submitted)
         if found:
             return label, re.sub(r"\s+", " ", found.group().strip()).replace("−", "-")
@@ -733,6 +739,11 @@ _SAID_WRONG = (
     ("H", re.compile(rf"(?<![\w\\])H\s*=\s*(?:[TK]\s*[-−]\s*[VU]|L){_ENDS}")),
     ("E", re.compile(rf"(?<![\w\\])E\s*=\s*(?:[TK]\s*[-−]\s*[VU]|L){_ENDS}")),
 )
+# where H is not the energy (the option h_is_energy: a rotating hoop), H = T + V and H = E say it is
+_SAID_NOT_ENERGY = (
+    ("H", re.compile(rf"(?<![\w\\])H\s*=\s*(?:[TK]\s*\+\s*[VU]|[VU]\s*\+\s*[TK]|E){_ENDS}")),
+    ("E", re.compile(rf"(?<![\w\\])E\s*=\s*H{_ENDS}")),
+)
 _DEFINING_LETTERS = frozenset("TVUKEHL")
 _SUMS = frozenset({"Sigma", "sum"})  # Σ and TeX's \sum, as the parser names them in a chain's definition
 _KINETIC_K = sympy.Symbol("K")  # K = T, as some texts write the kinetic energy
@@ -751,14 +762,15 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
     or the problem names the quantity."""
     if not isinstance(label, sympy.Symbol) or label.name in expected.names:
         return None
-    name = label.name
+    name, sums = label.name, _energy_sums(expected)
     if name in _ENERGY_SUMS:
         if _KINETIC_K.name not in expected.names:
             side = side.xreplace({_KINETIC_K: _KINETIC})
         if _in_energies(side, expected.names):
-            return _energy_multiple(side, [name]) == 1
+            return _energy_multiple(side, [name], sums) == 1  # where H is not the energy, no sum of T and V is H
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
-            return not ("L" in {name, side.name} and name != side.name)  # L = E, L = H, H = L
+            # L = E, L = H, H = L are wrong; H = E is right where H is the energy
+            return name == side.name or (name in sums and sums[name] == sums.get(side.name))
         lagrangian = sympy.Symbol("L")
         if name == "H" and any(symbol.name in _SUMS for symbol in side.free_symbols) and side.has(lagrangian):
             rest = side - side.coeff(lagrangian) * lagrangian
@@ -797,7 +809,7 @@ def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tup
     if not stated or len(stated) == len(items):
         return answer, ()
     rest = tuple(item for item in items if item not in stated)
-    right = [item for item in stated if _energy_multiple(item.rhs, [item.lhs.name]) == 1]
+    right = [item for item in stated if _energy_multiple(item.rhs, [item.lhs.name], _energy_sums(expected)) == 1]
     notes = (("definition_left_out", {"line": to_text(right[0])}),) if right else ()
     if len(rest) == 1:
         return ParsedAnswer(answer.text, rest[0], "equation"), notes
@@ -1110,7 +1122,7 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     if scaled is not None:  # 2L = m l² θ̇² + …, ω² = g/l: the name's value
         return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
     energies = _in_energies(value.lhs, expected.names)
-    multiple = _energy_multiple(value.lhs, expected.option("name")) if energies else None
+    multiple = _energy_multiple(value.lhs, expected.option("name"), _energy_sums(expected)) if energies else None
     if multiple is not None:  # V − T = −L, 2(T − V) = 2L: L's value
         return ParsedAnswer(answer.text, value.rhs / multiple, "expression")
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
@@ -1129,7 +1141,8 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     if not names or unwrapped is named or not isinstance(named.value, sympy.Eq) or named.value.lhs == ANSWER:
         return None
     side = named.value.lhs
-    if _in_energies(side, expected.names) and _energy_multiple(side, names) is None:  # T + V = … where L is asked
+    if _in_energies(side, expected.names) and _energy_multiple(side, names, _energy_sums(expected)) is None:
+        # T + V = … where L is asked, or where H is and is not the energy
         return ("label_for_a_person", {"label": to_text(side), "name": expected.setting.describe(names[:1])})
     lhs = _label_of(side)
     if not isinstance(lhs, sympy.Symbol | AppliedUndef):
@@ -1150,6 +1163,13 @@ _MOMENTUM_DEFINED = re.compile(r"dL_d(\w+?)_?dot")  # the name ∂L/∂φ̇ is r
 _KINETIC, _POTENTIAL, _POTENTIAL_U = sympy.symbols("T V U")
 _ENERGIES = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
 _ENERGY_SUMS = {"L": _KINETIC - _POTENTIAL, "H": _KINETIC + _POTENTIAL, "E": _KINETIC + _POTENTIAL}
+# where the part says H is not the energy (the option h_is_energy: H = T₂ − T₀ + V on a rotating hoop)
+_NOT_ENERGY_SUMS = {name: value for name, value in _ENERGY_SUMS.items() if name != "H"}
+
+
+def _energy_sums(expected: Expected) -> Mapping:
+    """The sums of the energies that name a quantity here: H is T + V unless the part says it is not."""
+    return _ENERGY_SUMS if expected.option("h_is_energy", True) else _NOT_ENERGY_SUMS
 
 
 def _in_energies(side, defined: set[str]) -> bool:
@@ -1159,12 +1179,12 @@ def _in_energies(side, defined: set[str]) -> bool:
     return not side.is_Symbol and bool(names) and names <= _ENERGIES and not {name.name for name in names} & defined
 
 
-def _energy_multiple(side, names) -> sympy.Expr | None:
-    """The number c where a side in the energies is c times the sum one of ``names`` is
+def _energy_multiple(side, names, sums: Mapping = _ENERGY_SUMS) -> sympy.Expr | None:
+    """The number c where a side in the energies is c times the sum one of ``names`` is, of ``sums``
     (``V − T`` is −1 times L's); None where it is none of them (``T + V`` where L is asked)."""
     side = side.xreplace({_POTENTIAL_U: _POTENTIAL})
     for name in names or ():
-        ratio = sympy.cancel(side / _ENERGY_SUMS[name]) if name in _ENERGY_SUMS else None
+        ratio = sympy.cancel(side / sums[name]) if name in sums else None
         if ratio is not None and ratio.is_number and ratio != 0:
             return ratio
     return None
