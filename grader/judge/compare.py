@@ -60,6 +60,7 @@ from grader.judge.words import (
     quantities_named,
     says_otherwise,
     text_as_words,
+    words_in,
     words_then_formula,
 )
 from grader.parse import (
@@ -106,7 +107,7 @@ KINDS: dict[str, Kind] = {
         Kind(
             "expression",
             check_expression,
-            {"up_to_constant": False, "name": None, "h_is_energy": True},
+            {"up_to_constant": False, "name": None, "h_is_energy": True, "asks_more": False},
             shape="expression",
         ),
         Kind("equation", check_equation, shape="equation"),
@@ -140,7 +141,7 @@ def compare(
             positive), ``dimensions`` (``{"l": "length", "g": "acceleration"}``: a wrong
             answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
-            (seconds, default 2), and the kind's own options (``up_to_constant``, ``h_is_energy``,
+            (seconds, default 2), and the kind's own options (``up_to_constant``, ``h_is_energy``, ``asks_more``,
             ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs…).
 
     Returns:
@@ -501,6 +502,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 unread = not answer.ok or read_notes or _undefined(answer, names)
                 unit_said = not answer.ok or (_IN_UNIT.search(submitted) and unread)
                 split = _unit_tail(submitted, spec, expected) if formula and unit_said else None
+                if split is None and formula and answer.ok and "[" in submitted:
+                    split = _unit_in_label(submitted, spec, expected)  # Q_θ [N] = …: the label's unit
                 if split is not None:  # −m g r sin θ, N·m: the comma sets a unit apart, and is no list
                     answer, unit, found = split
                     early, note = _unit_said(unit, found, spec, expected)
@@ -1376,7 +1379,11 @@ def _read(
             # only where it splits a glued name: xdot, where x = l sin θ, is the rate of x as read
             if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
                 answer = again
-        return _without_words(answer, submitted, expected, names, deadline)
+        answer, notes = _without_words(answer, submitted, expected, names, deadline)
+        said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
+        if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
+            notes = (("words_for_a_person", {"words": _shown(said)}),)
+        return answer, notes
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
     measured = spec.name == "number"  # a count has no decimal comma, nor an uncertainty
@@ -1519,14 +1526,15 @@ def _formula_before_words(text: str, expected: Expected, names: list, deadline) 
 
 
 def _words_note(key: str, words: str, expected: Expected) -> str:
-    """The note on words read past: for a person to read first where they may say otherwise
+    """The note on words read past: for a person to read first where the part asks for more than the
+    formula (the option ``asks_more``: its dimensions, say), where they may say otherwise
     (:func:`~grader.judge.words.says_otherwise`), or name a quantity other than the one the part names
     (the option ``name``; L where a Lagrangian is asked). After the formula, any quantity named says what
     it is (``…, which is the Hamiltonian``); before it, a sentence names what follows (``The Lagrangian
     is …``), and only the Lagrangian, the Hamiltonian or the energy, where the part names its own, is
     held against it (``The Hamiltonian is …`` where L is asked)."""
-    if says_otherwise(words):
-        return "words_for_a_person"
+    if says_otherwise(words) or expected.option("asks_more"):
+        return "words_for_a_person"  # where the prompt asks for more than the formula, words may be the more
     named, asked = quantities_named(words), set(expected.option("name") or ())
     if key != "words_left_out":
         named = named & _ENERGY_SUMS.keys() if asked else set()
@@ -1672,6 +1680,34 @@ def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outc
         return Outcome("not_equivalent", 0.0, "formula_unit_differs", {"theirs": si(found[2])}, method="units"), None
     key = "unit_left_out" if _same_counts(unit, expected) else "unit_for_a_person"
     return None, (key, {"unit": in_sentence(to_text(unit), times="·")})  # N·m, kg·m²/s²
+
+
+def _unit_in_label(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, sympy.Expr, tuple] | None:
+    """``Q_θ [N] = −m g r sin θ``, ``L [J] = …``: the formula, and the unit its label is said to be in, in
+    square brackets, as :func:`_unit_tail` returns them (a unit only, every word a unit's name, in SI
+    units); None for any other text. As read, the unit was a factor of the label, and left out with it."""
+    found = _LABEL_UNIT.match(text) if len(text) <= _UNIT_TAIL_LENGTH else None
+    if found is None or not _UNIT_TEXT.fullmatch(found["unit"]):
+        return None
+    if not all(word in SI_UNITS for word in _UNIT_WORD.findall(found["unit"])):
+        return None
+    unit = parse_answer(found["unit"])
+    if not unit.ok or unit.kind != "expression" or not unit.symbols:
+        return None
+    size = in_units(unit.value)
+    if size is None or size[:2] != (1, 1):
+        return None
+    formula = parse_answer(
+        f"{found['label']} = {found['rest']}", coords=expected.setting.coords, known=sorted(expected.names)
+    )
+    formula = _unwrap_named(formula, spec, expected) if formula.ok else formula
+    if not formula.ok or formula.kind != "expression" or _undefined_symbols(formula, expected):
+        return None
+    return formula, unit.value, size
+
+
+# a label, its unit in square brackets, and the formula: Q_θ [N m] = …
+_LABEL_UNIT = re.compile(r"\s*(?P<label>[^\s\[\]=]+)\s*\[(?P<unit>[^\[\]=]+)\]\s*=(?![=>])(?P<rest>.+)", re.S)
 
 
 def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, sympy.Expr, tuple] | None:

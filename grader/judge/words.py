@@ -14,6 +14,7 @@ Contents:
     formula_then_small_angle_form(text, names, coords)
                                                ``θ̈ = … sin θ, which for small θ gives θ̈ = … θ``: both formulas
     text_as_words(text, names, coords)         ``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: TeX's text, as words
+    words_in(text, names, coords)              the words of prose anywhere in the text
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
 conserved``, ``a = g (m₁ − m₂)/(m₁ + m₂), with m₁ going down``. A person grades the formula and
@@ -66,6 +67,7 @@ __all__ = [
     "quantities_named",
     "says_otherwise",
     "text_as_words",
+    "words_in",
     "words_then_formula",
 ]
 
@@ -554,6 +556,20 @@ def _without_tex_spaces(text: str) -> str:
         if space is None:
             return text
         text = text[: -len(space)]
+
+
+def words_in(text: str, names: Collection[str], coords: Collection[str]) -> str:
+    """The words of prose anywhere in ``text``, from the first to the last, as typed; ``""`` where there
+    are none. A word is as :func:`_is_word` has it: ``Dimension of force`` of ``Dimension of force: Q_θ = …``,
+    but not ``So``, ``sin`` or a unit's name.
+
+    >>> words_in("Dimension of force: Q_θ = −m g r sin θ", ["g", "m", "r", "theta"], ["r", "theta"])
+    'Dimension of force'
+    """
+    if len(text) > _LENGTH:
+        return ""
+    found = [word for word in _WORD.finditer(text) if _is_word(word[0], names, coords)]
+    return text[found[0].start() : found[-1].end()] if found else ""
 
 
 def _is_word(word: str, names: Collection[str], coords: Collection[str]) -> bool:
