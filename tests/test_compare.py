@@ -4369,6 +4369,30 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+L_TEX = r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "score", "feedback"),
+    [
+        # TeX's inline mathematics in the sentence: before, `Since` was S·i·n·c·e, and T and V undefined
+        (f"Since $L = T - V$, $L = {L_TEX}$", "equivalent", 1.0, ("Correct.", _chain("Since", "L = T - V"))),
+        (f"Since $L = T - V$, L = {L_TYPED}", "equivalent", 1.0, ("Correct.", _chain("Since", "L = T - V"))),
+        (f"Since L = T - V, $L = {L_TEX}$", "equivalent", 1.0, ("Correct.", _chain("Since", "L = T - V"))),
+        (f"Since $L = T - V$, $L = {L_TEX.replace('+', '-')}$", "not_equivalent", 0.0,
+         ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _chain("Since", "L = T - V"))),
+        # a wrong definition, in \(…\): before, `\(` was refused
+        (rf"Since \(L = T + V\), \(L = {L_TEX}\)", "undecided", 1.0,
+         (_misstated("L = T + V", "L"), _chain("Since", "L = T + V"))),
+    ],
+)  # fmt: skip
+def test_a_sentence_with_its_mathematics_set_apart_in_tex_is_read_as_without_the_signs(
+    submitted, status, score, feedback
+):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "found", "status", "first"),
     [

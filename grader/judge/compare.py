@@ -59,6 +59,7 @@ from grader.judge.words import (
     formula_then_words,
     quantities_named,
     says_otherwise,
+    tex_math_as_words,
     text_as_words,
     words_in,
     words_then_formula,
@@ -1444,6 +1445,7 @@ def _without_words(
         return (kept if kept.ok and _undefined(kept, names) else answer), ()
     coords = expected.setting.coords
     submitted = text_as_words(submitted, names, coords)  # … = 0 \text{(damped)}: TeX's text is words too
+    submitted = tex_math_as_words(submitted)  # Since $L = T − V$, $L = …$: the sentence, without its $s
     # the formula before words, where it leaves a name undefined (Since L = T − V, L = … (taking V = 0 at
     # the pivot)), is said as read only where no reading of words before it leaves none
     without = _formula_before_words(submitted, expected, names, deadline)

@@ -14,6 +14,7 @@ Contents:
     formula_then_small_angle_form(text, names, coords)
                                                ``θ̈ = … sin θ, which for small θ gives θ̈ = … θ``: both formulas
     text_as_words(text, names, coords)         ``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: TeX's text, as words
+    tex_math_as_words(text)                    ``Since $L = T − V$, $L = …$`` as the sentence without its ``$``s
     words_in(text, names, coords)              the words of prose anywhere in the text
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
@@ -66,6 +67,7 @@ __all__ = [
     "is_prose",
     "quantities_named",
     "says_otherwise",
+    "tex_math_as_words",
     "text_as_words",
     "words_in",
     "words_then_formula",
@@ -546,6 +548,29 @@ def text_as_words(text: str, names: Collection[str], coords: Collection[str]) ->
         words = group[group.index("{") + 1 : -1]
         text = f"{_without_tex_spaces(text[: read.start])} {words} {text[read.end :]}"
     return text
+
+
+def tex_math_as_words(text: str) -> str:
+    """``Since $L = T − V$, $L = \\frac12 m l^2 \\dot\\theta^2 + …$`` as ``Since L = T − V, L = \\frac12 …``:
+    TeX's inline mathematics (``$…$``, ``$$…$$``, ``\\(…\\)``) in a sentence, without the signs that set it
+    apart from the words, so the sentence reads as one typed without them. The text as typed where it
+    holds no such mathematics, a ``$`` left unpaired, or no word outside the mathematics.
+
+    >>> tex_math_as_words("Since $L = T - V$, $L = m$")
+    'Since L = T - V, L = m'
+    """
+    if len(text) > _LENGTH or ("$" not in text and "\\(" not in text):
+        return text  # as nearly every answer: no mathematics set apart
+    outside = _TEX_MATH.sub(" ", text)
+    if "$" in outside or "\\(" in outside or "\\)" in outside:
+        return text  # a sign left unpaired: not read apart
+    if not _PROSE_WORD.search(outside):
+        return text  # mathematics alone, which the parser reads
+    return _TEX_MATH.sub(lambda found: found[1] if found[1] is not None else found[2], text)
+
+
+# TeX's inline mathematics set apart from words: $…$, $$…$$ or \(…\)
+_TEX_MATH = re.compile(r"\$\$?([^$]+?)\$\$?|\\\((.+?)\\\)", re.S)
 
 
 def _without_tex_spaces(text: str) -> str:
