@@ -3882,23 +3882,38 @@ def test_a_value_may_come_before_its_name(submitted, status):
     [
         # a claim beside the value, true of p_φ (φ is cyclic) but not asked, and false of others: for a person
         ("p_φ = m l² sin²θ φ̇ = constant", "undecided", 1.0, ("Your answer ends `= constant`, which says the quantity"
-         " is conserved: that is not asked here. Its formula was graded and is right; a person will check this"
+         " is constant: that is not asked here. Its formula was graded and is right; a person will check this"
          " answer.",)),
         ("m l^2 sin(theta)^2 phidot = const", "undecided", 1.0, ("Your answer ends `= const`, which says the quantity"
-         " is conserved: that is not asked here. Its formula was graded and is right; a person will check this"
+         " is constant: that is not asked here. Its formula was graded and is right; a person will check this"
          " answer.",)),
-        ("p_φ = m l² sin²θ φ̇ = C", "undecided", 1.0, ("Your answer ends `= C`, which says the quantity is conserved:"
+        ("p_φ = m l² sin²θ φ̇ = C", "undecided", 1.0, ("Your answer ends `= C`, which says the quantity is constant:"
          " that is not asked here. Its formula was graded and is right; a person will check this answer.",)),
         # wrong either way: graded, and told how it was read
         ("m l^2 sin(theta) phidot = const", "not_equivalent", 0.0, ("Your answer depends on l, m and φ̇ as the right"
          " answer does, but on θ in another way: check how your answer depends on θ.", "Read without `= const`,"
-         " which says the quantity is conserved: its formula was graded.")),
+         " which says the quantity is constant: its formula was graded.")),
     ],
 )  # fmt: skip
 def test_a_value_said_to_be_constant_is_no_value_labelled_constant(submitted, status, score, feedback):
     # before: "Your answer is labelled constant, but the quantity asked for is p_φ", which it is not
     verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)
     assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "score"),
+    [
+        # the name, its value, and "= const" after it: before, ẍ itself was graded as the value, wrong
+        ("ẍ = (m1 - m2) g/(m1 + m2) = const", "undecided", 1.0),
+        ("xddot = (m1 - m2) g / (m1 + m2) = constant", "undecided", 1.0),
+        ("ẍ = (m1 + m2) g/(m1 - m2) = const", "not_equivalent", 0.0),
+    ],
+)
+def test_a_chain_that_ends_in_a_constant_says_its_value_is_constant(submitted, status, score):
+    verdict = compare(ATWOOD_A, submitted, coords=["x"], known=["m1", "m2", "g"])
+    assert (verdict.status, verdict.score) == (status, score), verdict
+    assert any("which says the quantity is constant" in line for line in verdict.feedback), verdict
 
 
 def test_a_wrong_value_under_another_name_is_told_the_label_too():

@@ -395,7 +395,13 @@ def _sides(text: str) -> list[str] | None:
     label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
     if not re.fullmatch(r"\s*[^\W\d][\w\s(),'̇]*", label) or not 2 <= len(sides) <= _MAX_LINES:
         return None
-    return [f"{label.strip()} = {side.strip()}" for side in sides] if all(side.strip() for side in sides) else None
+    sides = [side.strip() for side in sides]
+    if not all(sides):
+        return None
+    lines = [f"{label.strip()} = {side}" for side in sides]
+    if is_arbitrary_constant(canonical_name(sides[-1])):  # ẍ = … = const: the value before it is said constant
+        lines[-1] = f"{sides[-2]} = {sides[-1]}"
+    return lines
 
 
 def _judge_lines(

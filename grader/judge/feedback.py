@@ -69,9 +69,9 @@ FEEDBACK: dict[str, str] = {
     " will check which you meant.",
     "label_for_a_person": "Your answer is labelled {label}, but the quantity asked for is {name}. Read as {name},"
     " it is right; a person will check which you meant.",
-    "constant_said_for_a_person": "Your answer ends `{said}`, which says the quantity is conserved: that is not"
+    "constant_said_for_a_person": "Your answer ends `{said}`, which says the quantity is constant: that is not"
     " asked here. Its formula was graded and is right; a person will check this answer.",
-    "constant_said": "Read without `{said}`, which says the quantity is conserved: its formula was graded.",
+    "constant_said": "Read without `{said}`, which says the quantity is constant: its formula was graded.",
     "label_other": "Your answer is labelled {label}, but the quantity asked for is {name}.",
     "statement_for_a_person": "Your answer says `{statement}` on the way to its value, which is not what {label}"
     " is. Its value was graded and is right; a person will check this answer.",
