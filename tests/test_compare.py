@@ -2922,6 +2922,20 @@ def _false_for_a_person(value, working):
         (PERIOD, "2π√(1/9.81) = 2.0 s", PERIOD_PART, "equivalent", 1.0, ("Correct.", _final("2.0 s"))),  # rounded
         (PERIOD, "2.006 s = 2006 ms", PERIOD_PART, "equivalent", 1.0,
          ("Correct.", _final("2006 ms"), "Read as 2.006 s.")),  # in another unit
+        (PERIOD, "2π√(1/9.81) = 2.006 s = 2006 ms", PERIOD_PART, "equivalent", 1.0,
+         ("Correct.", _final("2006 ms"), "Read as 2.006 s.")),  # a side with no unit: in SI units, or in ms
+        (PERIOD, "2π√(1/9.81) = 2006 ms", PERIOD_PART, "equivalent", 1.0,
+         ("Correct.", _final("2006 ms"), "Read as 2.006 s.")),
+        # two statements joined by a comma: the run back to the side that is no number
+        (PERIOD, "ω = √(9.81) = 3.13, T = 2π/3.13 = 2.006 s", PERIOD_PART, "equivalent", 1.0,
+         ("Correct.", _final("2.006 s"))),
+        # units of different dimensions are never equal; nor are the sides of a run that a step follows
+        (PERIOD, "2π√(1/9.81) = 2.006 kg = 2.006 s", PERIOD_PART, "undecided", 1.0,
+         (_false_for_a_person("2.006 s", "2π√(1/9.81) = 2.006 kg = 2.006 s"),)),
+        ("15", "3·5 = 16 → 15", {}, "undecided", 1.0, (_false_for_a_person(15, "3·5 = 16"),)),
+        ("15", "3·5 = 16, so 15", {}, "undecided", 1.0, (_false_for_a_person(15, "3·5 = 16"),)),
+        ("3", "4 - 1 = 2 d.o.f.", {}, "not_equivalent", 0.0,
+         ("Not equivalent to the expected answer.", _false(2, "4 - 1 = 2 d.o.f."))),  # a remark after it too
     ],
 )  # fmt: skip
 def test_working_that_does_not_hold_goes_to_a_person_where_the_final_value_is_right(
