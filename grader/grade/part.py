@@ -145,7 +145,9 @@ def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str,
     alone was, and a labelled one lost its equations their credit)."""
     setting = setting_of(problem)
     source = problem.part(part.derive_from)
-    graded = grade_answer(problem, source, lagrangian, timeout=deadline.remaining())
+    # judged against the reference alone: a listed mistake's hint would hide what the verdict says of its units
+    arguments = {"kind": source.kind, **setting, **part_options(source)}
+    graded = compare(expected_answer(problem, source), lagrangian, **arguments, timeout=deadline.remaining())
     read = graded.answer
     if read is None or not read.ok or read.kind != "expression" or deadline.remaining() <= 0:
         return None
