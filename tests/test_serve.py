@@ -194,6 +194,7 @@ CHOICE = "constraint-classification.rigid-body-holonomic"
         ("z", "z"),
         ("b (non-holonomic)", "b) non-holonomic"),  # read as the checker reads it, not word by word
         ("non-holonomic", "b) non-holonomic"),
+        ("non-holonomic (maybe holonomic)", "non-holonomic; (maybe; holonomic)"),  # a hedge names no option: as typed
     ],
 )
 def test_preview_of_a_choice_names_the_options_chosen(server, answer, text):

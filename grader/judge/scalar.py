@@ -11,6 +11,8 @@ Contents:
 from __future__ import annotations
 
 import re
+from functools import lru_cache
+from typing import NamedTuple
 
 import sympy
 
@@ -88,53 +90,110 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     wanted = set(choice_labels(expected.text) or ())
     texts = _option_texts(expected.option("options") or ())
     options = list(texts)
-    given, read, conflict = _read_choice(submitted, texts, multiple=bool(expected.option("multiple")))
-    if conflict:
-        details = {"label": conflict[0], "words": conflict[1]}
+    multiple = bool(expected.option("multiple"))
+    reading = _read_choice(submitted, texts, multiple=multiple)
+    if reading.conflict:
+        details = {"label": reading.conflict[0], "words": reading.conflict[1]}
         return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
+    if reading.hedged:
+        return Outcome("invalid", 0.0, "choices_hedged" if multiple else "choice_hedged", {"typed": _typed(submitted)})
+    given = reading.labels
     if given is None:
-        shown = f"`{submitted.strip()[:40]}`" if isinstance(submitted, str) and submitted.strip() else "This"
-        details = {"labels": shown, "options": ", ".join(options) or "?"}
+        details = {"labels": _typed(submitted), "options": ", ".join(options) or "?"}
         return Outcome("invalid", 0.0, "choice_unknown", details, "labels")
     unknown = [label for label in given if options and label not in options]
     if unknown:
         # "e" is a label that is not there; "the first one" is words, shown as typed
         words = any(len(label) > 2 for label in unknown)
-        shown = f"`{submitted.strip()[:40]}`" if words else ", ".join(unknown)
+        shown = _typed(submitted) if words else ", ".join(unknown)
         return Outcome("invalid", 0.0, "choice_unknown", {"labels": shown, "options": ", ".join(options)}, "labels")
-    if not expected.option("multiple") and len(set(given)) > 1:
+    if not multiple and len(set(given)) > 1:
         return Outcome("not_equivalent", 0.0, "choice_count", {"count": "one option"}, "labels")
     right = set(given) == wanted
-    notes = (("choice_read", {"labels": ", ".join(read)}),) if read else ()
     return Outcome(
         "equivalent" if right else "not_equivalent",
         float(right),
         "equivalent" if right else "choice_wrong",
-        method="option text" if read else "labels",
-        notes=notes,
+        method="option text" if reading.words else "labels",
+        notes=_reading_notes(reading),
     )
+
+
+def _typed(submitted) -> str:
+    """A choice answer as a refusal repeats it: its start, as typed."""
+    return f"`{submitted.strip()[:40]}`" if isinstance(submitted, str) and submitted.strip() else "This"
+
+
+def _reading_notes(reading: _Reading) -> tuple:
+    """How the answer was read: the option its words name, and what was read past after it."""
+    rest = reading.remark.strip().lstrip(",;:–—- ").strip()
+    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+    labels = ", ".join(reading.words or reading.labels)
+    if not rest:
+        return (("choice_read", {"labels": labels}),) if reading.words else ()
+    return (("choice_read_remark" if reading.words else "choice_remark", {"labels": labels, "rest": rest}),)
+
+
+_SHOWN = 60  # characters of a remark repeated back to the student
 
 
 def chosen(submitted: str, options, *, multiple: bool = False) -> list[str] | None:
     """The labels a choice answer names, as the checker reads them (``b (rheonomic)`` is b), or
-    None where it names no option's label or words, or names two options at once."""
-    given, _, conflict = _read_choice(submitted, _option_texts(options), multiple=multiple)
-    return None if conflict or given is None else given
+    None where it names no option's label or words, names two options at once, or hedges."""
+    reading = _read_choice(submitted, _option_texts(options), multiple=multiple)
+    return None if reading.conflict or reading.hedged else reading.labels
 
 
-def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> tuple[list | None, list | None, tuple | None]:
-    """(the labels given, or None; those read from words, or None; a label and words naming
-    another option, or None)."""
+class _Reading(NamedTuple):
+    """A choice answer as read: the labels it names (or None); those read from an option's words (or
+    None); what was read past after the option (a remark, a reason); a label with words that name
+    another option (or None); and whether it hedges, doubts or takes back what it names."""
+
+    labels: list[str] | None = None
+    words: list[str] | None = None
+    remark: str = ""
+    conflict: tuple[str, str] | None = None
+    hedged: bool = False
+
+
+def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> _Reading:
+    """How ``submitted`` reads as a choice among ``texts`` (label → the option's words)."""
     submitted = visible(submitted).strip() if isinstance(submitted, str) else submitted  # b​, ｂ: b
     given = choice_labels(submitted) if isinstance(submitted, str) else None
     if not isinstance(submitted, str) or (given is not None and all(label in texts for label in given)):
-        return given, None, None
-    # "non-holonomic" or "φ" for option b: the option's own words, where they name one option
-    read = _by_text(submitted, texts, multiple=multiple)
-    labelled = None if read else _labelled(submitted, texts)
-    if labelled and labelled[1]:
-        return given, None, labelled
-    return read or ([labelled[0]] if labelled else given), read, None
+        return _Reading(given)
+    if len(submitted) > MAX_CHOICE_LENGTH:
+        return _Reading(given)
+    readings = _readings(texts)
+    words = None
+    found = _labels_first(submitted, texts)  # a, c (since …)
+    if found is None:
+        found = _by_text(submitted, readings, multiple=multiple)  # "non-holonomic", "φ": an option's words
+        words = found[0] if found else None
+    if found is None:
+        labelled = _labelled(submitted, texts, readings)  # b (rheonomic), b, since …
+        if labelled and labelled[1]:
+            return _Reading(given, conflict=labelled[:2])
+        found = ([labelled[0]], labelled[2]) if labelled else None
+    labels, remark = found or (None, "")
+    if _hedges(submitted, labels, remark, readings, texts):
+        return _Reading(hedged=True)
+    return _Reading(labels or given, words, remark)
+
+
+def _labels_first(submitted: str, texts: dict[str, str]) -> tuple[list[str], str] | None:
+    """``a, c (since …)``: two or more of the options' labels, then what follows them; None where the
+    answer does not start so (``b, a constraint …`` is a label and a reason: the article is no label)."""
+    found = _LABEL_LIST.match(submitted)
+    if found is None:
+        return None
+    labels = [label.lower() for label in re.findall(r"[A-Za-z0-9]+", re.sub(r"\band\b", " ", found[0]))]
+    return (labels, submitted[found.end() :]) if all(label in texts for label in labels) else None
+
+
+# labels, each a word of its own before a mark or the end (so not the article in "a constraint")
+_ONE_LABEL = r"\(?[A-Za-z0-9]{1,3}\)?(?=\s*(?:[,;:/&().!–—-]|and\b|$))"
+_LABEL_LIST = re.compile(rf"\s*{_ONE_LABEL}(?:\s*(?:[,;/&]|\band\b)\s*{_ONE_LABEL})+")
 
 
 def _option_texts(options) -> dict[str, str]:
@@ -143,24 +202,27 @@ def _option_texts(options) -> dict[str, str]:
     return {str(label).lower(): str(text) for label, text in pairs}
 
 
-def _by_text(submitted: str, texts: dict[str, str], *, multiple: bool) -> list[str] | None:
-    """The labels whose options a student wrote out in words, or None: the whole answer one
-    option's words, or its claim before the reason (``rheonomic`` for "rheonomic, since the
-    constraint depends explicitly on time"); or (where several may be chosen) each piece
-    between commas one's."""
-    if len(submitted) > MAX_CHOICE_LENGTH:
-        return None
-    readings = _readings(texts)
+def _by_text(submitted: str, readings: dict[str, str | None], *, multiple: bool) -> tuple[list[str], str] | None:
+    """The labels whose options a student wrote out in words, and what was read past after them; or
+    None: the whole answer one option's words; or its claim before a reason or a remark in brackets
+    (``rheonomic`` for "rheonomic, since the constraint depends explicitly on time", ``scleronomic (no
+    explicit t)``), also said in a sentence (``φ is cyclic``); or (where several may be chosen) each
+    piece between commas one's. Whether what was read past hedges is for :func:`_hedges` to say."""
     whole = _named(submitted, readings)
-    if not whole and not multiple:  # "rheonomic because l depends on t": the claim, then the reason
-        claim, rest = _claim(submitted)
-        whole = _named(claim, readings) or _with_remark(claim, readings, texts) or _said_of(claim, readings)
-        if whole and rest is not None and _names_another(rest, whole, readings, texts):
-            return None  # "φ, θ", "rheonomic, maybe scleronomic": a list or a hedge, no claim and reason
-    if whole or not multiple:
-        return [whole] if whole else None
-    labels = [_named(piece, readings) for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
-    return labels if labels and all(labels) else None
+    if whole:
+        return [whole], ""
+    if multiple:
+        pieces = [piece for piece in re.split(r"\s*[,;]\s*|\s+and\s+", submitted) if piece.strip()]
+        labels = [_named(piece, readings) for piece in pieces]
+        return (labels, "") if labels and all(labels) else None
+    claim, _ = _claim(submitted)
+    remarked = _REMARK.fullmatch(claim)
+    body = remarked["claim"] if remarked and _balanced(remarked["remark"]) else claim
+    label = _named(claim, readings)  # −d/dt(∂V/∂q̇_j): brackets of the option's own
+    if label:
+        return [label], submitted[len(claim) :]
+    label = _named(body, readings) or _said_of(body, readings)  # φ is cyclic (θ): the sentence, then a remark
+    return ([label], submitted[len(body) :]) if label else None
 
 
 def _readings(texts: dict[str, str]) -> dict[str, str | None]:
@@ -220,25 +282,26 @@ def _keys(text: str) -> set[str]:
     return ({_plain(text)} | {"$" + formula for formula in _formulas(text)}) - {""}
 
 
-def _formulas(text: str) -> set[str]:
+@lru_cache(maxsize=4096)  # a remark is looked up word by word, and a class types the same words
+def _formulas(text: str) -> frozenset[str]:
     """A formula as compared: the parser's tokens, each name in its one spelling, so that ``−∂V/∂q_j``
     and ``$-\\partial V / \\partial q_j$`` are alike and keep their sign and dots, while case counts
     (V is not v); also the value after a quantity's name (``Q_j = −∂V/∂q_j``); and a number in
     words as its digits (``zero``, 0). None where the parser does not read the text."""
     number = NUMBER_WORDS.get(text.strip().lower())
     if number is not None:
-        return {number}
+        return frozenset({number})
     try:
         tokens = [token for token in tokenize(_TYPEFACE.sub(lambda found: found[1] or "", text)) if token.kind != "end"]
     except ParseFailure:
-        return set()
+        return frozenset()
     spelled = [_spelled(token) for token in tokens]
     formulas = {"".join(spelled)}
     named = len(tokens) > 2 and tokens[0].kind == "name" and tokens[1].is_op("=")
     named = named and not tokens[0].value.dots and _QUANTITY.fullmatch(tokens[0].value.raw)
     if named and not any(token.is_op("=") for token in tokens[2:]):  # not ∂V/∂q_j = −∂V/∂q_j
         formulas.add("".join(spelled[2:]))
-    return formulas
+    return frozenset(formulas)
 
 
 def _spelled(token) -> str:
@@ -268,22 +331,6 @@ def _claim(text: str) -> tuple[str, str | None]:
     return text, None
 
 
-def _names_another(rest: str, label: str, readings: dict[str, str | None], texts: dict[str, str]) -> bool:
-    """Whether what follows an option's words names another option, alone or as labels (``φ, θ``,
-    ``rheonomic, c``), or starts with a hedge (``…, or θ``, ``…, maybe …``, ``…, both``): then the
-    answer is no claim with its reason. A clarifying ``not`` before another option confirms the choice
-    (``rheonomic, not scleronomic``); before the same option it takes it back (``b; not b``)."""
-    denial = _denied(rest, readings, texts)
-    if denial:
-        return denial[0] == label or _names_another(denial[1] or "", label, readings, texts)
-    if _HEDGE.match(rest):
-        return True
-    if _named(rest, readings) not in (None, label):
-        return True
-    labels = choice_labels(rest)
-    return bool(labels) and all(other in texts for other in labels) and set(labels) != {label}
-
-
 def _denied(text: str, readings: dict[str, str | None], texts: dict[str, str]) -> tuple[str, str | None] | None:
     """``not θ``, ``not scleronomic, since …``, ``not a``: the option that a clarifying ``not`` sets
     aside, by its label, words or formula, and what follows it (or None); None where the text is no
@@ -296,28 +343,27 @@ def _denied(text: str, readings: dict[str, str | None], texts: dict[str, str]) -
     return (label, rest) if label else None
 
 
-def _labelled(submitted: str, texts: dict[str, str]) -> tuple[str, str] | None:
+def _labelled(submitted: str, texts: dict[str, str], readings: dict[str, str | None]) -> tuple[str, str, str] | None:
     """``b (rheonomic)``, ``b) rheonomic``, ``b: rheonomic``, ``b, since l = l(t)``: a label, then its
-    option's words, or after a mark of punctuation or in brackets (``b (the hoop rotates)``) a reason
-    naming no other option. Returns the
-    label and "" ; or the label and the words where they name another option (``b (scleronomic)``);
-    or None."""
-    match = _LABELLED.fullmatch(submitted) if len(submitted) <= MAX_CHOICE_LENGTH else None
+    option's words, or after a mark of punctuation or in brackets (``b (the hoop rotates)``) a
+    remark. Returns the label, "" and what was read past (nothing after the option's own words, but
+    what follows them); or the label and the words where they name another option (``b
+    (scleronomic)``); or None."""
+    match = _LABELLED.fullmatch(submitted)
     if match is None or match["label"].lower() not in texts:
         return None
     label, words = match["label"].lower(), match["words"].strip(" ()[].")
-    named = _by_text(words, texts, multiple=False)
+    named = _by_text(words, readings, multiple=False)
     if named:
-        return (label, "") if named == [label] else (label, words)
-    readings = _readings(texts)
-    denial = _denied(words, readings, texts)
-    if denial:  # b, not a
-        return None if _names_another(words, label, readings, texts) else (label, "")
+        return (label, "", named[1]) if named[0] == [label] else (label, words, "")
     labels = choice_labels(words)
-    if (labels and all(len(other) <= 2 for other in labels)) or _OR.search(words) or _HEDGE.match(words):
-        return None  # a, e: labels, one of them no option's; b - or maybe a, b; not b: a hedge
+    doubted = _TAKEN_BACK.fullmatch(words) or _DOUBT.search(words)  # b (no), b (50/50): read, to be refused
+    if labels and all(len(other) <= 2 for other in labels) and not doubted:
+        return None  # a, e: labels, one of them no option
     bracketed = match["words"].startswith("(") and match["words"].endswith(")")  # b (the hoop rotates)
-    return (label, "") if match["mark"].strip() or bracketed or _REASON.match(" " + words) else None
+    if match["mark"].strip() or bracketed or _REASON.match(" " + words):
+        return label, "", match["words"]
+    return None
 
 
 # a label, then words: b (rheonomic), (b) rheonomic, b. rheonomic, b - since …
@@ -325,24 +371,116 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 
 # where an option's reason begins: "rheonomic, since …", "holonomic because …"
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
-_OR = re.compile(r"\bor\b", re.I)  # a hedge between options: b - or maybe a
-# what a hedge starts with, after an option: "φ, or θ", "rheonomic, maybe …", "b; not b", "φ, both"
-_HEDGE = re.compile(rf"\s*(?:{_HEDGES})\b", re.I)
 
 
-def _with_remark(claim: str, readings: dict[str, str | None], texts: dict[str, str]) -> str | None:
-    """``scleronomic (no explicit t)``: one option's words, then a remark in brackets that names no
-    other option, does not hedge with "or" and does not take the option back (``φ (not φ)``; ``φ
-    (not θ)`` confirms it); None for any other answer."""
-    found = _REMARK.fullmatch(claim)
-    if found is None or not _balanced(found["remark"]) or _OR.search(found["remark"]):
-        return None
-    named = _named(found["claim"], readings)
-    others = {_named(remark, readings) for remark in (found["remark"], _claim(found["remark"])[0])}
-    if others - {None, named}:
-        return None  # not rheonomic (scleronomic, …)
-    denial = _denied(found["remark"], readings, texts)
-    return None if denial and denial[0] == named else named  # φ (not θ), not φ (not φ)
+def _hedges(submitted: str, labels, remark: str, readings: dict[str, str | None], texts: dict[str, str]) -> bool:
+    """Whether an answer is no one answer: it doubts or denies an option, or offers another, in words
+    that are not the named options' own (``rheonomic (maybe scleronomic)``, ``b (false)``, ``φ is cyclic
+    (θ too)``, ``rheonomic, unless …``, ``b?``); or what was read past after the option names another
+    or takes it back (``rheonomic (scleronomic)``, ``φ, θ``, ``b (no)``, ``φ (not φ)``), where it is no
+    reason (``φ, because θ appears in L``: a reason may name another option, to say why not). Where no
+    option was read, whether the answer names one, and doubts it or names another too (``b or a``)."""
+    own = " ".join(texts[label] for label in (labels or texts) if label in texts).lower()  # d) both: no hedge
+    doubts = (found[0].lower() for found in _DOUBT.finditer(submitted))
+    doubted = any(not re.search(rf"(?<!\w){re.escape(doubt)}(?!\w)", own) for doubt in doubts)
+    if labels is None:
+        named, _ = _mentioned(submitted, readings, texts)
+        return bool(named) and (doubted or len(named) > 1)
+    equated = submitted.split("=", 1)[0].strip() if "=" in submitted else ""  # r = θ, b = −∂V/∂q_j: two options
+    equated = equated.lower() if equated.lower() in texts else _named(equated, readings) if equated else None
+    if equated and equated not in labels:
+        return True
+    return doubted or any(_takes_another(piece, set(labels), readings, texts) for piece in _remark_pieces(remark))
+
+
+# words that doubt or deny an option, or offer another beside it, wherever they stand
+_DOUBT = re.compile(
+    r"\b(?:or|nor|maybe|perhaps|possibly|probably|either|neither|both|too|also|unless|actually|false|wrong|"
+    r"incorrect|unsure|uncertain|unlikely|guess|guessing|idk|dunno|nope|nah|wait|oops)\b"
+    r"|\b(?:not\s+(?:sure|certain|really|quite|right|correct|true|likely)|as\s+well|I\s+think|(?:might|could)\s+be)\b"
+    r"|[?？¿‽⁇⁈⁉؟⸮]|\d\s*%|\b50\s*[/:-]\s*50\b",
+    re.I,
+)
+
+
+def _remark_pieces(remark: str) -> list[str]:
+    """What was read past after an option, in pieces: a remark in brackets, and what follows it."""
+    text = remark.strip()
+    pieces = []
+    if text.startswith("("):
+        depth = 0
+        for end, c in enumerate(text):
+            depth += (c == "(") - (c == ")")
+            if depth == 0:
+                pieces.append(text[1:end])
+                text = text[end + 1 :]
+                break
+        else:
+            pieces.append(text[1:])
+            text = ""
+    text = text.strip().lstrip(",;:–—-.").strip()
+    return [piece for piece in (*pieces, text) if piece.strip()]
+
+
+def _takes_another(text: str, labels: set[str], readings: dict[str, str | None], texts: dict[str, str]) -> bool:
+    """Whether ``text``, read past after the options ``labels``, names another option or takes one
+    back: ``θ``, ``scleronomic, …``, ``(no)``, ``(not φ)``, ``… I'd say not``. A clarifying ``not``
+    before another option confirms the choice (``rheonomic, not scleronomic``, ``b (not a)``), and a
+    reason (``since …``, ``because …``) may name another option, to say why not."""
+    if _TAKEN_BACK.fullmatch(text) or _ENDS_DENIED.search(text):
+        return True
+    denial = _denied(text, readings, texts)
+    if denial:
+        return denial[0] in labels or _takes_another(denial[1] or "", labels, readings, texts)
+    if _BECAUSE.match(text):
+        return False
+    named, denied = _mentioned(text, readings, texts)
+    return bool(named - labels or denied & labels)
+
+
+# a remark that takes the option back: (no), (not really), (nope); … or not, … I'd say not
+_TAKEN_BACK = re.compile(r"\W*(?:no|not|never)(?:\s+(?:this|that|it|so))?\W*", re.I)
+_ENDS_DENIED = re.compile(r"(?:\bno|\bnot|n't)\W*$", re.I)
+_BECAUSE = re.compile(r"\s*(?:since|because|as|given|due|for)\b", re.I)
+
+
+def _mentioned(text: str, readings: dict[str, str | None], texts: dict[str, str]) -> tuple[set[str], set[str]]:
+    """The options ``text`` names anywhere, by their words or formulas (``… but scleronomic``, ``… θ
+    appears in L``) or, where it is labels among words that join them (``(but a)``, ``(=a)``), by their
+    labels; and those it names after ``not`` (``not θ``). Labels among other words are no option's
+    (``r ≥ a``, ``a constraint``)."""
+    tokens = _TOKEN.findall(text)[:_TOKENS]
+    named, denied = set(), set()
+    start = 0
+    while start < len(tokens):
+        for size in range(min(_SPAN, len(tokens) - start), 0, -1):
+            found = {readings.get(key) for key in _keys(" ".join(tokens[start : start + size]))} - {None}
+            if len(found) == 1:
+                said_not = start and tokens[start - 1].lower() == "not"
+                (denied if said_not else named).add(found.pop())
+                start += size
+                break
+        else:
+            start += 1
+    words = [token.strip("=+→<>≠-–—.'\"").lower() for token in tokens]
+    if all(not word or word in texts or word in _JOINING for word in words):
+        for before, word in zip(["", *words], words, strict=False):
+            if word in texts:
+                (denied if before == "not" else named).add(word)
+    return named, denied
+
+
+_TOKEN = re.compile(r"[=≠→+]|[^\s,;:()\[\]{}!?=≠→+]+")  # a sign apart: (=θ) names θ
+_TOKENS = 60  # words of a remark looked at: a choice answer is short (MAX_CHOICE_LENGTH)
+_SPAN = 5  # words of a remark that may name one option, at the most
+# words that join labels into a hedge or a correction, saying nothing of their own: (but a), (I mean a)
+_JOINING = frozenset({
+    "and", "but", "or", "nor", "maybe", "perhaps", "possibly", "probably", "rather", "i", "mean", "well", "then",
+    "again", "like", "same", "as", "instead", "of", "vs", "versus", "except", "sometimes", "more", "plus", "also",
+    "too", "either", "both", "actually", "unless", "than", "no", "not", "yes", "ok", "is", "it", "the", "answer",
+    "option", "choice", "could", "might", "be", "wait", "sorry", "oops", "meant", "make", "that", "change", "to",
+    "correction", "typo", "say", "so", "ie", "i.e",
+})  # fmt: skip
 
 
 def _balanced(text: str) -> bool:
