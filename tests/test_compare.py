@@ -2885,6 +2885,16 @@ def test_a_hedge_is_refused_whichever_option_it_names_first(options, submitted):
         (CYCLIC_CHOICE, "b", "φ is cyclic (since L lacks it)", "equivalent",
          ("Correct.", _read_past("b", "(since L lacks it)"))),
         (TIME_CHOICE, "b", "the answer is b or a", "invalid", (_hedged("the answer is b or a"),)),
+        # a label said to be the answer, or an option's words in brackets or with a mark after them
+        (TIME_CHOICE, "b", "The answer is b.", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "I choose b", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "option b", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "b is correct", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "b is the answer", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "I choose rheonomic", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        (TIME_CHOICE, "b", "(rheonomic)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        (TIME_CHOICE, "b", "rheonomic!", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        (FORCE_CHOICE, "a", "(−∂V/∂q_j)", "equivalent", ("Correct.", "Read as the option you wrote out: a.")),
         # two labels, then a reason: two options, where one is asked for
         (TIME_CHOICE, "a", "a, b (since the hoop turns)", "not_equivalent", ("Choose one option.",)),
         (TIME_CHOICE, "a", "a, b, since the hoop turns", "not_equivalent", ("Choose one option.",)),

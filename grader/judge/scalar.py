@@ -164,7 +164,14 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> _Readin
         return _Reading(given)
     if len(submitted) > MAX_CHOICE_LENGTH:
         return _Reading(given)
+    core = _SAID_AFTER.sub("", _SAID_BEFORE.sub("", submitted, count=1), count=1)
+    said = choice_labels(core)
+    if said and all(label in texts for label in said):
+        return _Reading(said)  # the answer is b, I choose b, option b, b is correct
     readings = _readings(texts)
+    said = _named(core, readings) if core != submitted else None
+    if said:
+        return _Reading([said], [said])  # I choose rheonomic
     words = None
     found = _labels_first(submitted, texts)  # a, c (since …)
     if found is None:
@@ -179,6 +186,17 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> _Readin
     if _hedges(submitted, labels, remark, readings, texts):
         return _Reading(hedged=True)
     return _Reading(labels or given, words, remark)
+
+
+# words that say a label is the answer, before or after it: "the answer is b", "I choose b", "b is correct"
+_SAID_BEFORE = re.compile(
+    r"\A\s*(?:(?:(?:my|the)\s+)?(?:(?:final|correct|right)\s+)?(?:answer|option|choice)(?:\s+is\b|\s*:|\b)"
+    r"|I\s+(?:choose|chose|pick|picked|select|selected|go\s+with|say)\b)\s*",
+    re.I,
+)
+_SAID_AFTER = re.compile(
+    r"\s+is\s+(?:the\s+|my\s+)?(?:(?:correct|right)(?:\s+(?:answer|option|choice|one))?|answer)\s*[.!]?\s*$", re.I
+)
 
 
 def _labels_first(submitted: str, texts: dict[str, str]) -> tuple[list[str], str] | None:
@@ -208,7 +226,10 @@ def _by_text(submitted: str, readings: dict[str, str | None], *, multiple: bool)
     (``rheonomic`` for "rheonomic, since the constraint depends explicitly on time", ``scleronomic (no
     explicit t)``), also said in a sentence (``φ is cyclic``); or (where several may be chosen) each
     piece between commas one's. Whether what was read past hedges is for :func:`_hedges` to say."""
-    whole = _named(submitted, readings)
+    bare = submitted.rstrip(".!").strip()  # rheonomic!, −∂V/∂q_j., (rheonomic): as b!, b. and (b) are b
+    if bare.startswith("(") and bare.endswith(")") and _balanced(bare[1:-1]):
+        bare = bare[1:-1].strip()
+    whole = _named(bare, readings)
     if whole:
         return [whole], ""
     if multiple:
