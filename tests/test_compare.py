@@ -2938,6 +2938,45 @@ def test_several_options_are_checked_for_the_same_words(submitted, status, feedb
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+PENDULUM_MEANINGS = (
+    ("theta", "polar angle of the string from the downward vertical"),
+    ("phi", "azimuthal angle about the vertical through the pivot"),
+    ("m", "mass of the bob"),
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "meanings", "status", "feedback"),
+    [
+        # where an option is a symbol of the problem, the problem's own words for it name it
+        ("the azimuthal angle", PENDULUM_MEANINGS, "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("Azimuthal angle", PENDULUM_MEANINGS, "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("the azimuthal angle about the vertical through the pivot", PENDULUM_MEANINGS, "equivalent",
+         ("Correct.", "Read as the option you wrote out: b.")),
+        ("the azimuthal angle is cyclic", PENDULUM_MEANINGS, "equivalent",
+         ("Correct.", "Read as the option you wrote out: b.")),
+        ("the polar angle", PENDULUM_MEANINGS, "not_equivalent",
+         ("Not the right choice.", "Read as the option you wrote out: a.")),
+        # the words and the letter must agree
+        ("the azimuthal angle φ", PENDULUM_MEANINGS, "equivalent",
+         ("Correct.", "Read as the option you wrote out: b.")),
+        ("the polar angle φ", PENDULUM_MEANINGS, "invalid", (_hedged("the polar angle φ"),)),
+        ("the azimuthal angle (maybe the polar angle)", PENDULUM_MEANINGS, "invalid",
+         (_hedged("the azimuthal angle (maybe the polar ang"),)),
+        # no guess: a word of the description alone, a head two symbols share, a symbol no option
+        ("azimuthal", PENDULUM_MEANINGS, "invalid", ("`azimuthal` is not one of the options (a, b, c, d).",)),
+        ("the angle", PENDULUM_MEANINGS, "invalid", ("`the angle` is not one of the options (a, b, c, d).",)),
+        ("the angle", (("theta", "angle of the string"), ("phi", "angle about the vertical")), "invalid",
+         ("`the angle` is not one of the options (a, b, c, d).",)),
+        ("the mass", PENDULUM_MEANINGS, "invalid", ("`the mass` is not one of the options (a, b, c, d).",)),
+        ("the azimuthal angle", (), "invalid", ("`the azimuthal angle` is not one of the options (a, b, c, d).",)),
+    ],
+)  # fmt: skip
+def test_an_option_that_is_a_symbol_may_be_named_by_its_meaning(submitted, meanings, status, feedback):
+    verdict = compare("b", submitted, meanings=meanings, **CYCLIC_CHOICE)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
 def test_several_choices_may_be_written_out_each_between_commas():
     options = (("a", "holonomic"), ("b", "scleronomic"), ("c", "rheonomic"))
     verdict = compare("a, b", "Holonomic, scleronomic", kind="choice", options=options, multiple=True)

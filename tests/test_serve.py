@@ -202,6 +202,12 @@ def test_preview_of_a_choice_names_the_options_chosen(server, answer, text):
     assert (status, record) == (200, {"ok": True, "mathml": "", "text": text})
 
 
+def test_preview_of_a_choice_reads_a_symbol_by_what_the_problem_says_it_means(server):
+    request = {"part": "spherical-pendulum.cyclic", "answer": "the azimuthal angle"}
+    status, record = _post(server, "/api/preview", request)
+    assert (status, record) == (200, {"ok": True, "mathml": "", "text": "b) $\\phi$"})
+
+
 def test_preview_of_a_number_is_the_text_as_typed(server):
     status, record = _post(server, "/api/preview", {"part": "plane-pendulum.period", "answer": " 2.006 "})
     assert (status, record) == (200, {"ok": True, "mathml": "", "text": "2.006"})

@@ -91,7 +91,7 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     texts = _option_texts(expected.option("options") or ())
     options = list(texts)
     multiple = bool(expected.option("multiple"))
-    reading = _read_choice(submitted, texts, multiple=multiple)
+    reading = _read_choice(submitted, texts, multiple=multiple, meanings=expected.option("meanings") or ())
     if reading.conflict:
         details = {"label": reading.conflict[0], "words": reading.conflict[1]}
         return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
@@ -137,10 +137,10 @@ def _reading_notes(reading: _Reading) -> tuple:
 _SHOWN = 60  # characters of a remark repeated back to the student
 
 
-def chosen(submitted: str, options, *, multiple: bool = False) -> list[str] | None:
+def chosen(submitted: str, options, *, multiple: bool = False, meanings=()) -> list[str] | None:
     """The labels a choice answer names, as the checker reads them (``b (rheonomic)`` is b), or
     None where it names no option's label or words, names two options at once, or hedges."""
-    reading = _read_choice(submitted, _option_texts(options), multiple=multiple)
+    reading = _read_choice(submitted, _option_texts(options), multiple=multiple, meanings=meanings)
     return None if reading.conflict or reading.hedged else reading.labels
 
 
@@ -156,8 +156,9 @@ class _Reading(NamedTuple):
     hedged: bool = False
 
 
-def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> _Reading:
-    """How ``submitted`` reads as a choice among ``texts`` (label → the option's words)."""
+def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=()) -> _Reading:
+    """How ``submitted`` reads as a choice among ``texts`` (label → the option's words), where the
+    problem's symbols mean ``meanings`` ((name, meaning) pairs)."""
     submitted = visible(submitted).strip() if isinstance(submitted, str) else submitted  # b​, ｂ: b
     given = choice_labels(submitted) if isinstance(submitted, str) else None
     if not isinstance(submitted, str) or (given is not None and all(label in texts for label in given)):
@@ -168,7 +169,7 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool) -> _Readin
     said = choice_labels(core)
     if said and all(label in texts for label in said):
         return _Reading(said)  # the answer is b, I choose b, option b, b is correct
-    readings = _readings(texts)
+    readings = _readings(texts, meanings)
     said = _named(core, readings) if core != submitted else None
     if said:
         return _Reading([said], [said])  # I choose rheonomic
@@ -246,16 +247,46 @@ def _by_text(submitted: str, readings: dict[str, str | None], *, multiple: bool)
     return ([label], submitted[len(body) :]) if label else None
 
 
-def _readings(texts: dict[str, str]) -> dict[str, str | None]:
+def _readings(texts: dict[str, str], meanings=()) -> dict[str, str | None]:
     """What each option is known by (:func:`_keys`), to its label, or to None where two options read
     alike: its words, its claim before the reason, and a formula of its own between commas
-    (``is held fixed, $\\delta t = 0$``)."""
+    (``is held fixed, $\\delta t = 0$``); and where an option is one of the problem's symbols, what the
+    problem says it means (:func:`_described`)."""
     readings: dict[str, str | None] = {}
     for label, text in texts.items():
         formulas = [piece for piece in re.split(r"\s*[,;]\s*", text) if _MATH.fullmatch(piece)]
         for key in set().union(*(_option_keys(words) for words in (text, _claim(text)[0], *formulas))):
             readings[key] = label if readings.get(key, label) == label else None  # two options alike name neither
+    for key, label in _described(readings, meanings).items():
+        readings[key] = label if readings.get(key, label) == label else None
     return readings
+
+
+def _described(readings: dict[str, str | None], meanings) -> dict[str, str]:
+    """The problem's own words for the symbols that are options, to their labels: ``azimuthal angle``
+    and ``the azimuthal angle`` (its head, before the first preposition or mark) and the whole of
+    "azimuthal angle about the vertical through the pivot", for an option φ where the symbol table
+    says so. A head two of the problem's symbols share names neither (``angle`` for θ and φ)."""
+    owners: dict[str, set[str]] = {}  # the problem's words → the symbols they describe
+    for name, meaning in meanings:
+        head = _HEAD.match(str(meaning))
+        for words in {str(meaning), head["head"] if head else ""} - {""}:
+            for key in {_plain(words), _plain("the " + words)}:
+                owners.setdefault(key, set()).add(str(name))
+    described = {}
+    for key, names in owners.items():
+        labels = {readings.get("$" + formula) for name in names for formula in _formulas(name)}
+        if len(names) == 1 and len(labels) == 1 and None not in labels:
+            described[key] = labels.pop()
+    return described
+
+
+# a description's head: "polar angle" of "polar angle of the string from the downward vertical"
+_HEAD = re.compile(
+    r"\s*(?P<head>[^\W\d_][\w\s'-]*?)\s*(?=$|[,;:(]|\b(?:of|about|from|at|in|on|to|with|along|between|through|"
+    r"around|measured|for|relative|as|by)\b)",
+    re.I,
+)
 
 
 def _option_keys(words: str) -> set[str]:
@@ -277,8 +308,9 @@ def _named(text: str, readings: dict[str, str | None]) -> str | None:
     or None."""
     keys = _keys(text)
     described = _DESCRIBED.fullmatch(text)
-    if described:
+    if described:  # the azimuthal angle φ: the letter, and the words where the problem says what they mean
         keys |= {"$" + formula for formula in _formulas(described["letter"])}
+        keys |= _keys(text[: described.start("letter")])
     found = {readings.get(key) for key in keys} - {None}
     denied = _NOT.fullmatch(text) if not found else None
     if denied:
