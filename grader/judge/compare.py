@@ -25,6 +25,7 @@ import sympy
 from sympy.core.function import AppliedUndef
 
 from grader.errors import AuthorError
+from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
 from grader.judge.expected import Expected, Outcome, prepare
@@ -35,7 +36,7 @@ from grader.judge.lagrangian import check_lagrangian
 from grader.judge.motion import accelerations_in, check_equation, check_equations
 from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
-from grader.judge.scalar import check_choice, check_integer, check_number
+from grader.judge.scalar import check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import (
     SI_UNITS,

@@ -38,8 +38,8 @@ from grader.errors import GraderError
 from grader.grade.part import setting_of, symbol_meanings
 from grader.grade.selfcheck import SYMBOLS, WORDS, CheckResult, find_part
 from grader.judge import DEFAULT_TIMEOUT
+from grader.judge.choice import chosen
 from grader.judge.deadline import CheckTimeout, Deadline
-from grader.judge.scalar import chosen
 from grader.parse import parse_answer
 from grader.serve.page import MATH_KINDS, problem_views, render_page
 from grader.serve.workers import OVERRUN, CheckPool, PoolBusy
