@@ -196,6 +196,12 @@ FEEDBACK: dict[str, str] = {
     "choice_wrong": "Not the right choice.",
     "choice_conflict": "Your label {label} and your words `{words}` name different options: give one of them.",
     "choice_read": "Read as the option you wrote out: {labels}.",
+    "choice_read_remark": "Read as the option you wrote out: {labels}; what follows it (`{rest}`) is not graded.",
+    "choice_remark": "Graded your choice, {labels}; what follows it (`{rest}`) is not graded.",
+    "choice_hedged": "One option is asked for here, and your answer {typed} offers another, or doubts or denies the"
+    " one it names: give the one you mean.",
+    "choices_hedged": "Your answer {typed} offers another option, or doubts or denies one it names: give just the"
+    " options you mean.",
     "text_review": "A person will read this answer; the rubric found {found} of its {total} ideas.",
     "text_review_discounted": "A person will read this answer; the rubric found {found} of its {total} ideas. It did"
     " not count {discounted} more that your answer negates, doubts or says of something else.",
