@@ -49,6 +49,14 @@ NEGATION = [
     ("the momentum (p_k, not q̇_k) is conserved", "conserved", FOUND),
     ("it is not (in general, for any system) conserved", "conserved", NEGATED),
     ("e.g. not a pendulum, but conserved", "conserved", FOUND),
+    # "≠" denies the relation on both its sides, as "is not" would
+    ("so H ≠ T + V", "t + v", NEGATED),
+    ("so H != T + V", "t + v", NEGATED),
+    ("so H \\ne T + V", "t + v", NEGATED),
+    ("so E = T + V ≠ H", "t + v", NEGATED),
+    # the negations of languages students mix in; "non" stays a prefix ("non-holonomic ones are …")
+    ("la quantité n'est pas conserved", "conserved", NEGATED),
+    ("der Impuls ist nicht conserved", "conserved", NEGATED),
 ]
 
 
@@ -430,6 +438,10 @@ PROPOSALS = [
     ("generalized-forces.hamiltonian",
      "H = Σ p_j q̇_j − L. It is conserved if ∂L/∂t = 0; it is the total energy T + V if the constraints are"
      " time independent and V does not depend on the velocities.", 3),
+    # a probe's false answers, proposed credit before (the credit then in the comment)
+    ("plane-pendulum.why-harmonic",
+     "Il n'est pas vrai que sin θ ≈ θ, et la force n'est pas proportional to θ.", 0),  # was 2/2
+    ("spherical-pendulum.conservation", "p_φ is constant. ∂L/∂t ≠ 0. H ≠ T + V.", 1),  # was 2/3
 ]  # fmt: skip
 
 

@@ -16,9 +16,10 @@ credit for a statement turned round.
   uniform ("doesn't" is "does not", "cannot" is "can not"). ``…`` in a phrasing stands for
   any words of one clause: ``not … explicitly`` is found in "does not contain t explicitly".
 * It does not count where it is negated: a negation (not, no, never, none, nothing, neither,
-  nor, without) among the six words before it in its clause or in its ``…``, or a negating
-  prefix on its first word (non-, un, in, im, ir: ``conserved`` in "non-conserved",
-  ``dependent`` in "independent"). A negation among the phrasing's own words is its meaning.
+  nor, without, ≠; pas, nicht, kein…) among the six words before it in its clause or in its
+  ``…``, a "≠" just after it ("T + V ≠ H"), or a negating prefix on its first word (non-, un,
+  in, im, ir: ``conserved`` in "non-conserved", ``dependent`` in "independent"). A negation
+  among the phrasing's own words is its meaning.
 * Nor where it is taken back: later in its sentence ("…, which is false", "— not true in
   general", "(wrong)"), by the next sentence ("That is not true."), or by a denial before its
   "that" ("it is not true that …", "I do not think that …").
@@ -65,8 +66,16 @@ GAP = "..."  # "…" after NFKC: in a phrasing, any words of the same clause
 
 # apostrophes a keyboard or a word processor may give "doesn't"
 _APOSTROPHES = str.maketrans({"’": "'", "‘": "'", "ʼ": "'", "´": "'", "`": "'"})
-# "not only" affirms: "it not only uses scalar energies but also…"
-_NEGATION = re.compile(r"\b(?:not(?! only\b| just\b)|no|never|none|nothing|neither|nor|without)\b")
+# "not only" affirms: "it not only uses scalar energies but also…"; "≠" denies what it relates,
+# so "t + v" in "H ≠ T + V" is negated, as in "H is not T + V"
+_UNEQUAL = r"≠|!=|=/=|\\neq?\b"
+# the negations of languages students mix in: "la force n'est pas proportionnelle", "nicht konstant"
+_FOREIGN_NEGATION = r"pas|jamais|nicht|kein|keine|keinen|nie|niet|nunca"
+_NEGATION = re.compile(
+    rf"\b(?:not(?! only\b| just\b)|no|never|none|nothing|neither|nor|without|{_FOREIGN_NEGATION})\b|{_UNEQUAL}"
+)
+# and what stands just before it: "T + V ≠ H"
+_UNEQUAL_AFTER = re.compile(rf"\s*(?:{_UNEQUAL})")
 # "doesn't" and "cannot" read as "does not" and "can not", so the phrasing "not be written" is
 # found in "can't be written", and one negation word serves them all
 _CONTRACTED = re.compile(r"n't\b|(?<=\bcan)not\b")
@@ -86,7 +95,7 @@ _CONTRAST = re.compile(
 _LETTER_NAME = r"(?<![^\W\d_]|\.){}(?![^\W\d_]|[\u0300-\u036f]|\.[^\W\d_]|'(?!s\b))"
 # an aside in brackets negates nothing outside it: "the momentum (p_k, not q̇_k) is conserved"
 _ASIDE = re.compile(r"\([^()]*\)|\[[^\[\]]*\]")
-_SENTENCE_END = re.compile(r"[;!?]|\.(?=\s|$)")
+_SENTENCE_END = re.compile(r"[;?]|!(?!=)|\.(?=\s|$)")  # "!=" is a relation, not a cry
 # not "or": a negation reaches across it ("does not use energies or generalized coordinates")
 _CLAUSE_END = re.compile(
     r"[,:]|\b(?:and|but|while|whereas|so|then|hence|thus|therefore|since|because|if|when|whenever|"
@@ -220,7 +229,7 @@ def _occurrences(reading: _Reading, phrasing: str):
             negated = negated or bool(_NEGATION.search(text, end, found))
             end = found + len(piece)
         else:
-            yield start, end, negated or _taken_back(reading, end)
+            yield start, end, negated or bool(_UNEQUAL_AFTER.match(text, end)) or _taken_back(reading, end)
         start = text.find(first, start + 1)
 
 
