@@ -81,6 +81,30 @@ TAKEN_BACK = [
     ("It is false that its momentum is conserved.", NEGATED),
     ("I don't think that the momentum is conserved.", NEGATED),
     ("It is a misconception that the momentum is conserved.", NEGATED),
+    ("It is false that q is cyclic and that its momentum is conserved.", NEGATED),  # a denial shared
+    ("Its momentum is conserved. Not really.", NEGATED),
+    ("Its momentum is conserved, not really.", NEGATED),
+    ("Its momentum is conserved. Nope.", NEGATED),
+    ("Its momentum is conserved. Not!", NEGATED),
+    ("Its momentum is conserved, no wait, its energy is.", NEGATED),
+    ("Its momentum is conserved, or not.", NEGATED),
+    ("Its momentum is conserved (both false)", NEGATED),
+    ("Some say its momentum is conserved, but they are wrong.", NEGATED),
+    ("Its momentum is conserved; they're wrong.", NEGATED),
+    # a remark that takes back all said before it, not only its sentence
+    ("Its momentum is conserved. Its energy is constant. None of this is true.", NEGATED),
+    ("Its momentum is conserved. Both statements are false.", NEGATED),
+    ("Its momentum is conserved. All of the above is wrong.", NEGATED),
+    ("Its momentum is conserved. I am joking.", NEGATED),
+    ("Its momentum is conserved. I'm just kidding.", NEGATED),
+    ("Its momentum is conserved - just kidding", NEGATED),
+    ("Its momentum is conserved. Ignore the above.", NEGATED),
+    # doubted after it, or said by others
+    ("Its momentum is conserved, I think.", NEGATED),
+    ("Its momentum is conserved (I think).", NEGATED),
+    ("Its momentum is conserved, probably.", NEGATED),
+    ("Some people think its momentum is conserved.", NEGATED),
+    ("Some say that its momentum is conserved.", NEGATED),
     # what takes back something else, or nothing
     ("Is its momentum conserved? Yes.", FOUND),
     ("Its momentum is conserved, not its energy.", FOUND),
@@ -100,6 +124,27 @@ TAKEN_BACK = [
 def test_a_statement_taken_back_earns_nothing(text, outcome):
     reading = rubric_score(text, [CONSERVED])
     assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
+TAKEN_BACK_OR_NOT = [
+    # (a statement taken back, a neighbour of it that is not): each rule with where it stops
+    ("Its momentum is conserved. No.", "Yes, its momentum is conserved. No, its energy is not."),
+    ("Its momentum is conserved. Nope.", "Nope, its momentum is conserved."),
+    ("Its momentum is conserved. None of this is true.", "None of this is true: its momentum is conserved."),
+    ("Its momentum is conserved. None of this is true.", "Its momentum is conserved. None of the energy is lost."),
+    ("Its momentum is conserved. None of this is true.",
+     "Its momentum is conserved. None of these are true for the energy."),
+    ("Its momentum is conserved, I think.", "Its momentum is conserved, and I think that is why q is cyclic."),
+    ("Some say its momentum is conserved.", "Some say its energy is not conserved, but its momentum is conserved."),
+    ("It is false that q is cyclic and that its momentum is conserved.",
+     "Note that q is cyclic and that its momentum is conserved."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("taken_back", "kept"), TAKEN_BACK_OR_NOT)
+def test_a_rule_that_takes_a_statement_back_stops_at_its_neighbour(taken_back, kept):
+    readings = rubric_score(taken_back, [CONSERVED]), rubric_score(kept, [CONSERVED])
+    assert [(bool(reading.found), bool(reading.discounted)) for reading in readings] == [NEGATED, FOUND]
 
 
 # the two ideas of "define scleronomic and rheonomic", each tied to the term it describes
@@ -335,6 +380,9 @@ FEEDBACK = [
     ("Scleronomic constraints are maybe time independent.", 0.0,
      "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 1 more that your"
      " answer negates, doubts or says of something else."),
+    ("Scleronomic ones are time independent, rheonomic ones time dependent. Both statements are false.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
+     " answer negates, doubts or says of something else."),
 ]  # fmt: skip
 
 
@@ -442,6 +490,22 @@ PROPOSALS = [
     ("plane-pendulum.why-harmonic",
      "Il n'est pas vrai que sin θ ≈ θ, et la force n'est pas proportional to θ.", 0),  # was 2/2
     ("spherical-pendulum.conservation", "p_φ is constant. ∂L/∂t ≠ 0. H ≠ T + V.", 1),  # was 2/3
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. Not really.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. None of this is true.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. Both statements are false.", 0),
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ (both false)", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. I am joking.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "Some say sin θ ≈ θ and the force is proportional to θ, but they are wrong.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "The force is proportional to θ, I think; sin θ ≈ θ for small angles.", 1),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "It is false that for small angles sin θ ≈ θ and that the restoring force is proportional to θ.", 0),  # was 1
 ]  # fmt: skip
 
 

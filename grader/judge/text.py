@@ -21,12 +21,15 @@ credit for a statement turned round.
   in, im, ir: ``conserved`` in "non-conserved", ``dependent`` in "independent"). A negation
   among the phrasing's own words is its meaning.
 * Nor where it is taken back: later in its sentence ("…, which is false", "— not true in
-  general", "(wrong)"), by the next sentence ("That is not true."), or by a denial before its
-  "that" ("it is not true that …", "I do not think that …").
-* Nor where it is doubted: after maybe, perhaps, possibly, probably or "I guess" as a negation
-  would stand, before "I'm not sure" in its sentence, in a question not answered yes ("…
-  conserved? No."; a why or how question takes its statement for granted), or offered with "or"
-  beside a phrasing of the rival idea, no term named between ("time dependent or time independent").
+  general", "(wrong)", "but they are wrong"), by the next sentence ("That is not true.", "Not
+  really.", "Nope."), by a remark on all said before it ("None of this is true.", "Both
+  statements are false.", "I am joking."), or by a denial before its "that" ("it is not true
+  that …", "I do not think that …"), which a "that" joined to it shares ("… that A and that B").
+* Nor where it is doubted: after maybe, perhaps, possibly, probably, "I guess" or "some say" as
+  a negation would stand, before "I'm not sure" or "I think" ending its sentence, in a question
+  not answered yes ("… conserved? No."; a why or how question takes its statement for granted),
+  or offered with "or" beside a phrasing of the rival idea, no term named between ("time
+  dependent or time independent").
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
@@ -102,23 +105,52 @@ _CLAUSE_END = re.compile(
     r"although|though|unlike|which|that|whose|where)\b"
 )
 # what says a statement is not so (or doubts it) after it, "…, which is false", "That is not
-# true.", "I'm not sure", ending its clause or giving a reason: "not true for the energy" takes
-# back nothing said before it
+# true.", "Not really.", "I'm not sure", "…, I think.", ending its clause or giving a reason:
+# "not true for the energy" takes back nothing said before it, nor does the "no" that answers
+# the next question ("Yes, H is conserved. No, H ≠ E.")
 _FALSE = (
-    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain)|false|wrong|incorrect|untrue|unsure|guess)"
-    r"(?:\s+(?:in general|at all|here|either|though))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
+    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain|really|quite|exactly)|false|wrong|incorrect"
+    r"|untrue|unsure|nonsense|guess|think|believe|suppose|maybe|perhaps|probably|possibly|or not"
+    r"|(?:not|no|nope)(?=\s*(?:[.!?;)]|$))|no,? wait|wait,? no|scratch that|(?:just )?(?:joking|kidding)|a joke)"
+    r"(?:\s+(?:in general|at all|here|either|though|so))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
 )
 _FALSITY_REMARK = re.compile(
-    rf"\W*(?:(?:this|it|that|which|i|the (?:statement|claim))\W+)?(?:(?:is|was|are|s|am|m|would be) )?{_FALSE}"
+    r"\W*(?:(?:this|it|that|which|i|they|these|those|the (?:statement|claim))\W+)?"
+    rf"(?:(?:is|was|are|s|am|m|re|would be) )?{_FALSE}"
 )
-# a doubt before a statement, as a negation would stand: "maybe time independent"
-_DOUBT = re.compile(r"\b(?:maybe|perhaps|possibly|probably|i guess)\b")
-_DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*{_FALSE}")
+# a doubt before a statement, as a negation would stand: "maybe time independent"; what "some say"
+# is not what the student says
+_SOME_SAY = r"some (?:people |students |books )?(?:say|claim|think|believe)"
+_DOUBT = re.compile(rf"\b(?:maybe|perhaps|possibly|probably|i guess|{_SOME_SAY})\b")
+_DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*(?:(?:both|all|i)\W+(?:(?:are|am|m) )?)?{_FALSE}")
+# a remark that takes back all said before it, not only its sentence: "None of this is true.",
+# "Both statements are false.", "I am joking.", "Ignore the above."
+_ALL_OF_IT = (
+    r"(?:all|both|everything(?: above| i (?:said|wrote))?|all (?:of )?(?:this|these|them|it|the above)"
+    r"|both of (?:these|them|those)|the above|(?:all|both) (?:of )?(?:the |my |these |those )?"
+    r"(?:statements|claims|sentences|answers))(?: above)?"
+)
+_RETRACTION = re.compile(
+    r"(?:^|[.;:!?,(—–]|\s--?\s|\b(?:but|and|though|however)\b)\W*(?P<remark>"
+    r"none of (?:this|these|that|those|it|them|the above|what i (?:said|wrote))(?: above)?"
+    r" (?:is|are|was|were) (?:true|correct|right|valid|so)"
+    rf"|{_ALL_OF_IT}(?: (?:is|are|was|were))?(?: all)?"
+    r" (?:false|wrong|incorrect|untrue|nonsense|not (?:true|correct|so))"
+    r"|(?:i am|i'm|im|just) (?:just )?(?:joking|kidding)|(?:this|it) (?:is|was) (?:all )?a joke"
+    r"|(?:please )?(?:ignore|disregard) (?:all of |everything )?(?:this|that|the above|above|everything))"
+    r"(?=\s*(?:[—–),.;:!?]|$))"
+)
 # a question states nothing unless answered yes; one asking why or how takes its statement for granted
 _WHY = re.compile(r"\W*(?:why|how)\b")
 _YES = re.compile(r"\W*(?:yes|yeah|yep|indeed|correct|true)\b")
 # a denial before "that" ("it is not true that …", "I do not think that …", "a misconception that …")
-_DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake)\b")
+_DENIAL = re.compile(
+    r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake"
+    rf"|{_SOME_SAY})\b"
+)
+# what joins a "that" to an earlier one, whose denial it shares: "it is false that A and that B"
+_JOINED = re.compile(r"(?:\band|\bor|\bnor|,)\s*$")
+_THAT = re.compile(r"\bthat\b")
 # "A and B are X and Y, respectively": the word, and what parts the terms of such a list (the rest
 # of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
 _RESPECTIVELY = re.compile(r"\brespectively\b|\bresp\b\.?")
@@ -170,6 +202,8 @@ class _Reading:
         self.clauses, self.sentences = _boundaries(text)
         self.clause_ends = [start for start, _ in self.clauses]
         self.sentence_ends = [start for start, _ in self.sentences]
+        # where the last remark that takes back all before it stands ("None of this is true.")
+        self.retracted = max((match.start("remark") for match in _RETRACTION.finditer(text)), default=-1)
 
     def clause(self, start: int, end: int) -> tuple[int, int]:
         return _around(self.clauses, self.clause_ends, start, end, len(self.text))
@@ -244,10 +278,27 @@ def _negated_before(reading: _Reading, low: int, start: int, phrasing: str) -> b
     window = " ".join(before.split()[-NEGATION_REACH:])
     if _NEGATION.search(window) or _DOUBT.search(window):
         return True
-    if text[max(0, low - 4) : low] != "that":
-        return False
-    denial, _ = reading.clause(low - 4, low - 4)
-    return bool(_DENIAL.search(" ".join(text[denial : low - 4].split()[-3:])))
+    return _denied_that(reading, low - 4)
+
+
+def _denied_that(reading: _Reading, that: int) -> bool:
+    """Whether the "that" at ``that`` follows a denial ("it is not true that …"), its own or, where
+    it is joined to an earlier one by "and" or "or", that one's: "it is false that A and that B"."""
+    text = reading.text
+    sentence, _ = reading.sentence(that, that)
+    for _ in range(NEGATION_REACH):  # how many "that"s a denial reaches
+        if text[max(0, that) : that + 4] != "that":
+            return False
+        denial, _ = reading.clause(that, that)
+        if _DENIAL.search(" ".join(text[denial:that].split()[-3:])):
+            return True
+        if not _JOINED.search(text, max(sentence, that - 6), that):
+            return False
+        earlier = [match.start() for match in _THAT.finditer(text, sentence, that - 1)]
+        if not earlier:
+            return False
+        that = earlier[-1]
+    return False
 
 
 def _taken_back(reading: _Reading, end: int) -> bool:
@@ -255,6 +306,8 @@ def _taken_back(reading: _Reading, end: int) -> bool:
     sentence ("which is false", "— not true in general", "I'm not sure"), by the next sentence
     ("That is wrong."), or in a question not answered yes ("… is conserved? No.")."""
     text = reading.text
+    if end <= reading.retracted:
+        return True
     _, high = reading.sentence(end, end)
     if _DASHED_FALSITY.search(text, end, high):
         return True
