@@ -313,6 +313,48 @@ def test_a_hedged_statement_earns_nothing(text, found):
     assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
 
 
+ALTERNATIVES = [
+    # (offered, stated), for the momentum's idea: a phrasing offered with "or" beside another claim of
+    # its own shape, which turns it round or repeats one of its words, is offered, not stated; unless
+    # what the "or" offers is credited too, or is no claim of that shape
+    ("Its momentum is conserved or not.", "Its momentum is conserved or a constant of the motion."),
+    ("Its momentum is either conserved or not.", "Its momentum is conserved (or a constant of the motion)."),
+    ("Its momentum is conserved or it is not.", "Its momentum is conserved or constant."),
+    ("Its momentum is conserved or not conserved.", "Its momentum, or p, is conserved."),
+    (
+        "Its momentum is conserved or the energy is conserved.",
+        "Its momentum is conserved, whether or not the energy is.",
+    ),
+]
+
+
+@pytest.mark.parametrize(("offered", "stated"), ALTERNATIVES)
+def test_a_phrasing_offered_beside_another_of_its_shape_earns_nothing(offered, stated):
+    readings = rubric_score(offered, [COORDINATE, MOMENTUM]), rubric_score(stated, [COORDINATE, MOMENTUM])
+    assert [(MOMENTUM[0] in reading.found, MOMENTUM[0] in reading.discounted) for reading in readings] == [
+        NEGATED,
+        FOUND,
+    ]
+
+
+HARMONIC = [("sin θ ≈ θ", 1.0, ("sin θ ≈ θ", "small angle approximation")),
+            ("proportional to θ", 1.0, ("proportional to θ", "proportional to the angle", "linear in θ"))]  # fmt: skip
+SHAPES = [
+    # (text, the ideas found): the "or" in "proportional to θ or to the angle" offers "proportional to the
+    # angle", which the rubric credits too
+    ("sin θ ≈ θ or sin θ ≈ 1, so the force is proportional to θ or to 1.", ()),
+    ("sin θ ≈ 1 or sin θ ≈ θ, so the force is linear in θ or proportional to θ.", ("proportional to θ",)),
+    ("sin θ ≈ θ or sin θ ≈ 1, so the force is proportional to θ or to the angle.", ("proportional to θ",)),
+    ("The small angle approximation or linearisation: sin θ ≈ θ or θ̈ = −(g/l) θ, proportional to θ or to 1.",
+     ("sin θ ≈ θ",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("text", "found"), SHAPES)
+def test_an_alternative_is_read_in_the_phrasings_place(text, found):
+    assert rubric_score(text, HARMONIC).found == found
+
+
 # H is the energy when the constraints are scleronomic, and conserved when L has no explicit t
 ENERGY = ("H = E when scleronomic", 1.0, ("scleronomic",), ("e", "energy"), ("conserved",))
 
@@ -382,6 +424,9 @@ FEEDBACK = [
      " answer negates, doubts or says of something else."),
     ("Scleronomic ones are time independent, rheonomic ones time dependent. Both statements are false.", 0.0,
      "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic constraints are time independent or not. Rheonomic ones are time dependent.", 0.5,
+     "A person will read this answer; the rubric found 1 of its 2 ideas. It did not count 1 more that your"
      " answer negates, doubts or says of something else."),
 ]  # fmt: skip
 
@@ -506,6 +551,9 @@ PROPOSALS = [
      "The force is proportional to θ, I think; sin θ ≈ θ for small angles.", 1),  # was 2/2
     ("plane-pendulum.why-harmonic",
      "It is false that for small angles sin θ ≈ θ and that the restoring force is proportional to θ.", 0),  # was 1
+    ("plane-pendulum.why-harmonic",
+     "sin θ ≈ θ or sin θ ≈ 1, so the force is proportional to θ or to 1.", 0),  # was 2/2
+    ("spherical-pendulum.conservation", "The momentum is conserved or not. ∂L/∂t = 0. H = T + V.", 2),  # was 3/3
 ]  # fmt: skip
 
 

@@ -28,8 +28,10 @@ credit for a statement turned round.
 * Nor where it is doubted: after maybe, perhaps, possibly, probably, "I guess" or "some say" as
   a negation would stand, before "I'm not sure" or "I think" ending its sentence, in a question
   not answered yes ("… conserved? No."; a why or how question takes its statement for granted),
-  or offered with "or" beside a phrasing of the rival idea, no term named between ("time
-  dependent or time independent").
+  offered with "or" beside a phrasing of the rival idea, no term named between ("time dependent
+  or time independent"), or with "or" right beside another claim of its own shape, which turns
+  it round or repeats one of its words ("conserved or not", "sin θ ≈ θ or sin θ ≈ 1"), unless
+  the rubric credits that one too ("proportional to θ or to the angle").
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
@@ -164,6 +166,12 @@ _APPOSITION = re.compile(r"[^\W\d_]*\s+")  # and the name right after it: "a cyc
 # between a phrasing and the term it stands before as an adjective: "a conserved (generalized) momentum"
 _ATTRIBUTE = re.compile(r"\s+(?:(?:generalized|generalised|canonical|conjugate|angular|linear)\s+)?")
 _OR = re.compile(r"\bor\b")
+# a phrasing offered beside another of its own shape: "sin θ ≈ θ or sin θ ≈ 1", "proportional to θ or to
+# 1", "conserved or not", "not conserved or it is conserved"
+_OR_AFTER = re.compile(r"\s+or\s+")
+_OR_BEFORE = re.compile(r"(?<![^\W\d_])or\s+(?:(?:it|they|this|that)(?: is| are| was|'s|'re)\s+)?$")
+_OR_TURNED = re.compile(r"\W*(?:not|no|never|(?:it|they|this|that)(?: is| are| was| does| do| has| can|'s|'re))\b")
+_LINKING_WORDS = frozenset(("the", "a", "an", "is", "are", "be", "it", "its", "of", "in", "and", "not", "no", "never"))
 # what follows a list of terms of which a phrasing is said together: "A and B constraints", "A and B both"
 _LIST_TAIL = re.compile(r"[^\W\d_]*(?:'s)?\s+(?:(?:constraints|methods|ones|formulations|approaches)\b|both\b)")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
@@ -465,6 +473,38 @@ def _hedged(reading: _Reading, starts, start: int, end: int, alternatives) -> bo
     return False
 
 
+def _words(text: str) -> list[str]:
+    """The words that give a piece its shape: of two letters or more, neither a number, a linking word
+    nor a negation, which is not a shape but a meaning."""
+    words = (word.strip(".,;:!?()[]{}\"'") for word in text.split())
+    return [word for word in words if len(word) > 1 and word not in _LINKING_WORDS and not word.isdigit()]
+
+
+def _alternative(reading: _Reading, start: int, end: int, credited) -> bool:
+    """Whether the phrasing at ``start:end`` is offered with "or" beside another claim of its own shape,
+    in its clause: the other side turns it round ("conserved or not", "… or it is conserved") or
+    repeats one of its words ("sin θ ≈ θ or sin θ ≈ 1", "proportional to θ or to 1"); unless what it
+    offers, read in the phrasing's place, is credited too (``credited(piece)``: "proportional to θ
+    or to the angle", "linear in θ or proportional to θ")."""
+    text = reading.text
+    low, high = reading.clause(start, end)
+    after = _OR_AFTER.match(text, end, high)
+    if after:
+        other = text[after.end() : high]
+    else:
+        before = _OR_BEFORE.search(text, max(low, start - 20), start)
+        if not before:
+            return False
+        other = text[low : before.start()]
+    own = _words(text[start:end])
+    if not (_OR_TURNED.match(other) or set(own).intersection(_words(other))):
+        return False
+    if after and other.split() and other.split()[0] in own:  # "to θ or to the angle": "to the angle" in its place
+        phrase = text[start:end]
+        other = phrase[: phrase.find(other.split()[0])] + other
+    return not credited(other)
+
+
 def rubric_score(text: str, rubric) -> RubricReading:
     """What ``rubric`` makes of ``text``: the points proposed, the ideas found and missed.
 
@@ -483,9 +523,15 @@ def rubric_score(text: str, rubric) -> RubricReading:
     >>> rubric_score("Scleronomic ones depend on t and rheonomic ones are time independent", scleronomic).points
     0.0
     """
-    reading = _Reading(_normal(text[:MAX_TEXT_LENGTH]))
-    found, missing, discounted, points = [], [], [], 0.0
     ideas = [(idea, worth, phrasings, *(*binding, (), ())[:2]) for idea, worth, phrasings, *binding in rubric]
+    return _score(_Reading(_normal(text[:MAX_TEXT_LENGTH])), ideas, alternatives=True)
+
+
+def _score(reading: _Reading, ideas, *, alternatives: bool) -> RubricReading:
+    """``rubric_score`` of a text read; with ``alternatives``, a phrasing offered with "or" beside
+    another of its shape counts only where the other is credited too (read with no such check, so
+    "a or a or a …" is read once more, not once for each "or")."""
+    found, missing, discounted, points = [], [], [], 0.0
     # the subjects the question asks about: two (scleronomic and rheonomic) where one idea's rival is
     # another's own; then a phrasing said of no term is said of neither
     subjects = {_normal(term) for *_, about, _ in ideas for term in about}
@@ -495,6 +541,10 @@ def rubric_score(text: str, rubric) -> RubricReading:
         if index not in places:
             places[index] = list(_found(reading, ideas[index][2]))
         return places[index]
+
+    def credited(rival_ideas):
+        others = [idea for other, idea in enumerate(ideas) if other not in rival_ideas]
+        return lambda piece: bool(_score(_Reading(piece), others, alternatives=False).found)
 
     for index, (idea, worth, _, about, not_about) in enumerate(ideas):
         rival_terms = {_normal(term) for term in not_about} & subjects
@@ -513,6 +563,8 @@ def rubric_score(text: str, rubric) -> RubricReading:
                 # what a rival idea says of the same subject, offered as an alternative: "time
                 # dependent or time independent"
                 and not any(_hedged(reading, starts, start, end, found_places(other)) for other in rival_ideas)
+                # or beside another claim of its own shape: "sin θ ≈ θ or sin θ ≈ 1"
+                and not (alternatives and _alternative(reading, start, end, credited(rival_ideas)))
             )
             if counted:
                 break
