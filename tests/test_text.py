@@ -554,6 +554,26 @@ PROPOSALS = [
     ("plane-pendulum.why-harmonic",
      "sin θ ≈ θ or sin θ ≈ 1, so the force is proportional to θ or to 1.", 0),  # was 2/2
     ("spherical-pendulum.conservation", "The momentum is conserved or not. ∂L/∂t = 0. H = T + V.", 2),  # was 3/3
+    # H conserved and why are two ideas: the reason earns its half beside a denied claim
+    ("rotating-hoop.energy",
+     "The Hamiltonian is not conserved, the energy is not conserved, H ≠ E. The Lagrangian has no explicit time"
+     " dependence.", 2.5),  # was 3/3
+    ("rotating-hoop.energy", "E is not conserved or it is conserved. L has no explicit time dependence. H ≠ E.",
+     1.5),  # was 3/3
+    ("rotating-hoop.energy", "H is conserved because L depends explicitly on time.", 0.5),  # the claim, not why
+    ("rotating-hoop.energy",
+     "H is a constant of the motion (a Jacobi integral) since ∂L/∂t = 0. It is not the total energy: T + V ≠ H."
+     " E changes since the motor does work on the bead.", 3),  # was 2/3
+    # the momentum of φ, the cyclic coordinate, not θ's, the coordinate's or the bob's
+    ("spherical-pendulum.conservation",
+     "θ is cyclic, so the momentum conjugate to θ is constant. No explicit time. H = T + V.", 2),  # was 3/3
+    ("spherical-pendulum.conservation",
+     "The coordinate conjugate to p_φ is conserved. L has no explicit time dependence. H = T + V.", 2),  # was 3/3
+    ("spherical-pendulum.conservation", "The momentum of the bob is conserved. L has no explicit t, and H = T + V.",
+     2),  # was 3/3
+    ("spherical-pendulum.conservation", "E is a constant of the motion. ∂L/∂t = 0, H = T + V.", 2),  # was 3/3
+    ("spherical-pendulum.conservation",
+     "p_φ is constant. ∂L/∂t = 0. H ≠ T + V because the constraints are scleronomic.", 2),  # was 3/3
 ]  # fmt: skip
 
 
