@@ -6,6 +6,8 @@ a statement turned round (negated, or said of the rival term) must never earn th
 
 from __future__ import annotations
 
+import time
+
 import pytest
 from course import BANK
 
@@ -395,6 +397,14 @@ HOSTILE = [
 def test_a_hostile_text_gets_a_proposal(text):
     reading = rubric_score(text, [SCLERONOMIC, RHEONOMIC])
     assert 0 <= reading.points <= 2 and len(reading.found) + len(reading.missing) == 2
+
+
+@pytest.mark.parametrize("text", ["!=" * 2500, " -- " * 1250])
+def test_a_long_run_of_punctuation_is_read_once(text):
+    # a remark's opening is looked for a few characters after a boundary, not across the whole run
+    start = time.process_time()
+    rubric_score(text, [SCLERONOMIC, RHEONOMIC])
+    assert time.process_time() - start < 0.25
 
 
 def test_a_text_is_read_up_to_its_limit():

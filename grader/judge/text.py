@@ -133,7 +133,7 @@ _ALL_OF_IT = (
     r"(?:statements|claims|sentences|answers))(?: above)?"
 )
 _RETRACTION = re.compile(
-    r"(?:^|[.;:!?,(—–]|\s--?\s|\b(?:but|and|though|however)\b)\W*(?P<remark>"
+    r"(?:^|[.;:!?,(—–]|\s--?\s|\b(?:but|and|though|however)\b)\W{0,4}(?P<remark>"
     r"none of (?:this|these|that|those|it|them|the above|what i (?:said|wrote))(?: above)?"
     r" (?:is|are|was|were) (?:true|correct|right|valid|so)"
     rf"|{_ALL_OF_IT}(?: (?:is|are|was|were))?(?: all)?"
