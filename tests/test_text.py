@@ -584,6 +584,11 @@ PROPOSALS = [
     ("spherical-pendulum.conservation", "E is a constant of the motion. ∂L/∂t = 0, H = T + V.", 2),  # was 3/3
     ("spherical-pendulum.conservation",
      "p_φ is constant. ∂L/∂t = 0. H ≠ T + V because the constraints are scleronomic.", 2),  # was 3/3
+    # and right answers the binding must still credit
+    ("spherical-pendulum.conservation",
+     "φ is cyclic, so ṗ_φ = 0. L has no explicit t, so H is conserved, and H = T + V since T is quadratic.", 3),
+    ("rotating-hoop.energy",
+     "H is conserved since L is time independent. H ≠ E. E is not conserved: the motor does work on the bead.", 3),
 ]  # fmt: skip
 
 
