@@ -107,6 +107,24 @@ TAKEN_BACK = [
     ("Its momentum is conserved, probably.", NEGATED),
     ("Some people think its momentum is conserved.", NEGATED),
     ("Some say that its momentum is conserved.", NEGATED),
+    ("People often think its momentum is conserved.", NEGATED),
+    ("You might think its momentum is conserved.", NEGATED),
+    ("A common misconception is to think that its momentum is conserved.", NEGATED),
+    # what students write to take a statement back, as a probe of their phrasings found
+    ("Its momentum is conserved. Not at all.", NEGATED),
+    ("Its momentum is conserved. Of course not.", NEGATED),
+    ("Its momentum is conserved. Totally wrong.", NEGATED),
+    ("Its momentum is conserved. That's a lie.", NEGATED),
+    ("Its momentum is conserved. JK.", NEGATED),
+    ("Its momentum is conserved. Never mind.", NEGATED),
+    ("Its momentum is conserved. I don't know.", NEGATED),
+    ("Its momentum is conserved. Or is it?", NEGATED),
+    ("Its momentum is conserved (or maybe not).", NEGATED),
+    ("Its momentum is conserved. Neither is true.", NEGATED),
+    ("Its momentum is conserved; actually it's the other way round.", NEGATED),
+    ("Its momentum is conserved. My answer is wrong.", NEGATED),
+    ("Its momentum is conserved. Its energy is constant. I'm not sure about any of this.", NEGATED),
+    ("There is no doubt that its momentum is conserved.", FOUND),  # no denial before its "that"
     # what takes back something else, or nothing
     ("Is its momentum conserved? Yes.", FOUND),
     ("Its momentum is conserved, not its energy.", FOUND),
@@ -140,6 +158,8 @@ TAKEN_BACK_OR_NOT = [
     ("Some say its momentum is conserved.", "Some say its energy is not conserved, but its momentum is conserved."),
     ("It is false that q is cyclic and that its momentum is conserved.",
      "Note that q is cyclic and that its momentum is conserved."),
+    ("Its momentum is conserved. The opposite is true.", "Its momentum is conserved. The opposite is true of E."),
+    ("Its momentum is conserved. I don't know.", "Its momentum is conserved. I don't know its energy."),
 ]  # fmt: skip
 
 

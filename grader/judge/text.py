@@ -22,16 +22,18 @@ credit for a statement turned round.
   among the phrasing's own words is its meaning.
 * Nor where it is taken back: later in its sentence ("…, which is false", "— not true in
   general", "(wrong)", "but they are wrong"), by the next sentence ("That is not true.", "Not
-  really.", "Nope."), by a remark on all said before it ("None of this is true.", "Both
-  statements are false.", "I am joking."), or by a denial before its "that" ("it is not true
-  that …", "I do not think that …"), which a "that" joined to it shares ("… that A and that B").
-* Nor where it is doubted: after maybe, perhaps, possibly, probably, "I guess" or "some say" as
-  a negation would stand, before "I'm not sure" or "I think" ending its sentence, in a question
-  not answered yes ("… conserved? No."; a why or how question takes its statement for granted),
-  offered with "or" beside a phrasing of the rival idea, no term named between ("time dependent
-  or time independent"), or with "or" right beside another claim of its own shape, which turns
-  it round or repeats one of its words ("conserved or not", "sin θ ≈ θ or sin θ ≈ 1"), unless
-  the rubric credits that one too ("proportional to θ or to the angle").
+  really.", "Nope.", "The opposite is true."), by a remark on all said before it ("None of this
+  is true.", "Both statements are false.", "I am joking."), or by a denial before its "that"
+  ("it is not true that …", "I do not think that …"), which a "that" joined to it shares ("…
+  that A and that B").
+* Nor where it is doubted: after maybe, perhaps, possibly, probably, "I guess" or what others
+  say ("some say", "you might think", "a common mistake is to think") as a negation would stand,
+  before "I'm not sure" or "I think" ending its sentence, in a question not answered yes ("…
+  conserved? No."; a why or how question takes its statement for granted), offered with "or"
+  beside a phrasing of the rival idea, no term named between ("time dependent or time
+  independent"), or with "or" right beside another claim of its own shape, which turns it round
+  or repeats one of its words ("conserved or not", "sin θ ≈ θ or sin θ ≈ 1"), unless the rubric
+  credits that one too ("proportional to θ or to the angle").
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
@@ -107,38 +109,49 @@ _CLAUSE_END = re.compile(
     r"although|though|unlike|which|that|whose|where)\b"
 )
 # what says a statement is not so (or doubts it) after it, "…, which is false", "That is not
-# true.", "Not really.", "I'm not sure", "…, I think.", ending its clause or giving a reason:
-# "not true for the energy" takes back nothing said before it, nor does the "no" that answers
-# the next question ("Yes, H is conserved. No, H ≠ E.")
+# true.", "Not really.", "The opposite is true.", "I'm not sure", "…, I think.", ending its clause
+# or giving a reason: "not true for the energy" takes back nothing said before it, nor does the
+# "no" that answers the next question ("Yes, H is conserved. No, H ≠ E.")
 _FALSE = (
-    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain|really|quite|exactly)|false|wrong|incorrect"
-    r"|untrue|unsure|nonsense|guess|think|believe|suppose|maybe|perhaps|probably|possibly|or not"
-    r"|(?:not|no|nope)(?=\s*(?:[.!?;)]|$))|no,? wait|wait,? no|scratch that|(?:just )?(?:joking|kidding)|a joke)"
+    r"(?:(?:totally|completely|entirely|simply|just|all|very|obviously|of course) )?"
+    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain|really|quite|exactly|at all)|false|wrong"
+    r"|incorrect|untrue|unsure|nonsense|a lie|lies|guess|think|believe|suppose|maybe|perhaps|probably|possibly"
+    r"|do not know|no idea|or (?:maybe |perhaps |probably )?not|or is it|(?:not|no|nope)(?=\s*(?:[.!?;)]|$))"
+    r"|no,? wait|wait,? no|(?:lol|haha),? no|scratch that|never mind|(?:just )?(?:joking|kidding)|jk|a joke"
+    r"|(?:the )?(?:opposite|reverse|other way (?:round|around))(?: is (?:true|the case))?"
+    r"|(?:none|neither)(?: of (?:this|these|that|those|them|it|the two))?(?: statements?| claims?)?"
+    r" (?:is|are) (?:true|correct|right|so))"
     r"(?:\s+(?:in general|at all|here|either|though|so))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
 )
 _FALSITY_REMARK = re.compile(
-    r"\W*(?:(?:this|it|that|which|i|they|these|those|the (?:statement|claim))\W+)?"
+    r"\W*(?:(?:actually|in fact|really),? )?(?:(?:this|it|that|which|i|they|these|those|the (?:statement|claim))\W+)?"
     rf"(?:(?:is|was|are|s|am|m|re|would be) )?{_FALSE}"
 )
-# a doubt before a statement, as a negation would stand: "maybe time independent"; what "some say"
-# is not what the student says
-_SOME_SAY = r"some (?:people |students |books )?(?:say|claim|think|believe)"
+# a doubt before a statement, as a negation would stand: "maybe time independent"; what others say
+# or think is not what the student says ("some say", "a common mistake is to think")
+_SOME_SAY = (
+    r"(?:some|many|most) (?:people |students |books )?(?:say|claim|think|believe)"
+    r"|people (?:often |usually |commonly )?(?:say|claim|think|believe)|you (?:might|may|could|would) (?:think|say)"
+    r"|(?:it is|it's) (?:often |commonly |widely |sometimes )?(?:said|claimed|believed|thought)"
+    r"|(?:mistake|misconception|myth|error) (?:is )?to (?:say|think|believe|claim)"
+)
 _DOUBT = re.compile(rf"\b(?:maybe|perhaps|possibly|probably|i guess|{_SOME_SAY})\b")
 _DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*(?:(?:both|all|i)\W+(?:(?:are|am|m) )?)?{_FALSE}")
 # a remark that takes back all said before it, not only its sentence: "None of this is true.",
-# "Both statements are false.", "I am joking.", "Ignore the above."
+# "Both statements are false.", "My answer is wrong.", "I am joking.", "Ignore the above."
 _ALL_OF_IT = (
-    r"(?:all|both|everything(?: above| i (?:said|wrote))?|all (?:of )?(?:this|these|them|it|the above)"
+    r"(?:all|both|everything(?: above| i (?:said|wrote))?|all (?:of )?(?:this|these|that|those|them|it|the above)"
     r"|both of (?:these|them|those)|the above|(?:all|both) (?:of )?(?:the |my |these |those )?"
-    r"(?:statements|claims|sentences|answers))(?: above)?"
+    r"(?:statements|claims|sentences|answers)|(?:this|my|the above) answer)(?: above)?"
 )
 _RETRACTION = re.compile(
     r"(?:^|[.;:!?,(—–]|\s--?\s|\b(?:but|and|though|however)\b)\W{0,4}(?P<remark>"
     r"none of (?:this|these|that|those|it|them|the above|what i (?:said|wrote))(?: above)?"
     r" (?:is|are|was|were) (?:true|correct|right|valid|so)"
     rf"|{_ALL_OF_IT}(?: (?:is|are|was|were))?(?: all)?"
-    r" (?:false|wrong|incorrect|untrue|nonsense|not (?:true|correct|so))"
-    r"|(?:i am|i'm|im|just) (?:just )?(?:joking|kidding)|(?:this|it) (?:is|was) (?:all )?a joke"
+    r" (?:(?:totally|completely|entirely) )?(?:false|wrong|incorrect|untrue|nonsense|not (?:true|correct|so))"
+    r"|(?:i am|i'm|im|just) (?:just )?(?:joking|kidding)|jk|(?:this|it) (?:is|was) (?:all )?a joke"
+    r"|(?:i am|i'm) not sure (?:about|of) (?:any|all) of (?:this|it|that|these)"
     r"|(?:please )?(?:ignore|disregard) (?:all of |everything )?(?:this|that|the above|above|everything))"
     r"(?=\s*(?:[—–),.;:!?]|$))"
 )
@@ -147,8 +160,8 @@ _WHY = re.compile(r"\W*(?:why|how)\b")
 _YES = re.compile(r"\W*(?:yes|yeah|yep|indeed|correct|true)\b")
 # a denial before "that" ("it is not true that …", "I do not think that …", "a misconception that …")
 _DENIAL = re.compile(
-    r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake"
-    rf"|{_SOME_SAY})\b"
+    r"\b(?:not(?! only\b| doubt)|never(?! doubt)|no(?! doubt)|false|wrong|incorrect|untrue|myth|misconception"
+    rf"|mistake|{_SOME_SAY})\b"
 )
 # what joins a "that" to an earlier one, whose denial it shares: "it is false that A and that B"
 _JOINED = re.compile(r"(?:\band|\bor|\bnor|,)\s*$")
@@ -298,7 +311,10 @@ def _denied_that(reading: _Reading, that: int) -> bool:
         if text[max(0, that) : that + 4] != "that":
             return False
         denial, _ = reading.clause(that, that)
-        if _DENIAL.search(" ".join(text[denial:that].split()[-3:])):
+        words = text[denial:that].split()
+        # three words hold a denial ("it is not true that"), six one by others ("a common
+        # misconception is to think that")
+        if _DENIAL.search(" ".join(words[-3:])) or _DOUBT.search(" ".join(words[-NEGATION_REACH:])):
             return True
         if not _JOINED.search(text, max(sentence, that - 6), that):
             return False
