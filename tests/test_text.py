@@ -604,6 +604,19 @@ PROPOSALS = [
     ("spherical-pendulum.conservation", "E is a constant of the motion. ∂L/∂t = 0, H = T + V.", 2),  # was 3/3
     ("spherical-pendulum.conservation",
      "p_φ is constant. ∂L/∂t = 0. H ≠ T + V because the constraints are scleronomic.", 2),  # was 3/3
+    # rubrics whose topic words credited wrong statements, now bound to what they describe
+    ("constraint-classification.types-of-constraints",
+     "Scleronomic constraints depend explicitly on time and rheonomic ones do not. Holonomic ones are equations"
+     " f(r, t) = 0, like a pendulum.", 2),  # was 3/4
+    ("constraint-classification.types-of-constraints",
+     "Holonomic constraints are time independent, non-holonomic ones time dependent.", 0),  # was 1/4
+    ("constraint-classification.types-of-constraints",
+     "Holonomic and non-holonomic; scleronomic and rheonomic.", 0),  # was 1/4: names, no definition
+    ("principles.dalembert-in-words", "The virtual work of the applied forces is zero.", 1),  # was 2/3: statics
+    ("damped-oscillator.rayleigh-meaning", "F is quadratic in the coordinates; F is the rate of energy dissipation.",
+     0),  # was 2/3: 2F is the rate
+    ("damped-oscillator.rayleigh-meaning", "F is the power dissipated by friction, quadratic in the velocities.",
+     1),  # was 2/3
     # and right answers the binding must still credit
     ("spherical-pendulum.conservation",
      "φ is cyclic, so ṗ_φ = 0. L has no explicit t, so H is conserved, and H = T + V since T is quadratic.", 3),
