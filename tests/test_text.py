@@ -377,6 +377,25 @@ def test_an_alternative_is_read_in_the_phrasings_place(text, found):
     assert rubric_score(text, HARMONIC).found == found
 
 
+ELLIPSES = [
+    # (an ellipsis that stands for the rival's claim turned round, and one that does not, with the
+    # ideas it finds): "… if it does not" reads as the claim before it with "not", "… ones do" as
+    # it without its "not"
+    ("A constraint is rheonomic if it contains time explicitly, and scleronomic if it does not.",
+     "A constraint is rheonomic if it does not contain time explicitly, and scleronomic if it does.", NEITHER),
+    ("Scleronomic constraints do not contain t explicitly. Rheonomic ones do.",
+     "Scleronomic constraints contain t explicitly. Rheonomic ones do not.", NEITHER),
+    ("Rheonomic constraints contain t explicitly; scleronomic ones do not.",
+     "Rheonomic constraints contain t explicitly; scleronomic ones do too.", SECOND),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("elided", "not_elided", "found"), ELLIPSES)
+def test_an_ellipsis_stands_for_the_claim_before_it_turned_round(elided, not_elided, found):
+    readings = rubric_score(elided, [SCLERONOMIC, RHEONOMIC]), rubric_score(not_elided, [SCLERONOMIC, RHEONOMIC])
+    assert [reading.found for reading in readings] == [BOTH, found]
+
+
 # H is the energy when the constraints are scleronomic, and conserved when L has no explicit t
 ENERGY = ("H = E when scleronomic", 1.0, ("scleronomic",), ("e", "energy"), ("conserved",))
 
@@ -617,6 +636,15 @@ PROPOSALS = [
      0),  # was 2/3: 2F is the rate
     ("damped-oscillator.rayleigh-meaning", "F is the power dissipated by friction, quadratic in the velocities.",
      1),  # was 2/3
+    # an ellipsis for the claim before it, as 17 and 24 students of the example class write
+    ("constraint-classification.scleronomic-definition",
+     "A constraint is rheonomic if time appears explicitly in its equation (bead on a moving wire) and scleronomic"
+     " if it does not (bead on a fixed wire).", 2),  # was 1/2
+    ("constraint-classification.scleronomic-long",
+     "A constraint is scleronomic when its equation does not contain time explicitly and rheonomic when it does."
+     " Scleronomic: a bead on a fixed wire. Rheonomic: a bead on a rotating loop.", 4),  # was 3/4
+    ("generalized-forces.hamiltonian",
+     "H = Σ p q̇ − L. H = T + V when the constraints are scleronomic, and it is conserved when they are not.", 2),
     # and right answers the binding must still credit
     ("spherical-pendulum.conservation",
      "φ is cyclic, so ṗ_φ = 0. L has no explicit t, so H is conserved, and H = T + V since T is quadratic.", 3),

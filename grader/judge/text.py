@@ -42,6 +42,11 @@ credit for a statement turned round.
   describes it ("a conserved momentum"). With "respectively", a list of terms pairs with its
   descriptions in order ("A and B are X and Y, respectively"), or where they are too few to
   follow, with neither.
+* An ellipsis that ends a clause said of the idea's term ("… and scleronomic if it does not",
+  "rheonomic ones do") stands for the last claim a rival idea counted in its sentence or the one
+  before, read with "not" where it says not and without the claim's own "not" where it does not:
+  "rheonomic if time appears explicitly, and scleronomic if it does not" finds ``not …
+  explicitly`` for scleronomic.
 * A term does not stand for itself when it is denied ("H is not equal to T + V when …"),
   negated by a prefix ("non-holonomic" for holonomic), inside a longer term, set against the
   subject ("unlike Newton's method"), listed with a rival ("Newton's and Lagrange's methods
@@ -116,16 +121,19 @@ _FALSE = (
     r"(?:(?:totally|completely|entirely|simply|just|all|very|obviously|of course) )?"
     r"(?:not (?:true|correct|right|valid|the case|so|sure|certain|really|quite|exactly|at all)|false|wrong"
     r"|incorrect|untrue|unsure|nonsense|a lie|lies|guess|think|believe|suppose|maybe|perhaps|probably|possibly"
-    r"|do not know|no idea|or (?:maybe |perhaps |probably )?not|or is it|(?:not|no|nope)(?=\s*(?:[.!?;)]|$))"
+    r"|do not know|no idea|or (?:maybe |perhaps |probably )?not|or is it"
     r"|no,? wait|wait,? no|(?:lol|haha),? no|scratch that|never mind|(?:just )?(?:joking|kidding)|jk|a joke"
     r"|(?:the )?(?:opposite|reverse|other way (?:round|around))(?: is (?:true|the case))?"
     r"|(?:none|neither)(?: of (?:this|these|that|those|them|it|the two))?(?: statements?| claims?)?"
     r" (?:is|are) (?:true|correct|right|so))"
     r"(?:\s+(?:in general|at all|here|either|though|so))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
 )
+# and "Not!", "No." or "Nope." on their own: "… when they are not." stands for the claim before it
+_BARE_DENIAL = r"(?:(?:of course|obviously|certainly|definitely) )?(?:not|no|nope)(?=\s*(?:[.!?;)]|$))"
 _FALSITY_REMARK = re.compile(
-    r"\W*(?:(?:actually|in fact|really),? )?(?:(?:this|it|that|which|i|they|these|those|the (?:statement|claim))\W+)?"
-    rf"(?:(?:is|was|are|s|am|m|re|would be) )?{_FALSE}"
+    rf"\W*(?:{_BARE_DENIAL}|(?:(?:actually|in fact|really),? )?"
+    r"(?:(?:this|it|that|which|i|they|these|those|the (?:statement|claim))\W+)?"
+    rf"(?:(?:is|was|are|s|am|m|re|would be) )?{_FALSE})"
 )
 # a doubt before a statement, as a negation would stand: "maybe time independent"; what others say
 # or think is not what the student says ("some say", "a common mistake is to think")
@@ -136,7 +144,9 @@ _SOME_SAY = (
     r"|(?:mistake|misconception|myth|error) (?:is )?to (?:say|think|believe|claim)"
 )
 _DOUBT = re.compile(rf"\b(?:maybe|perhaps|possibly|probably|i guess|{_SOME_SAY})\b")
-_DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*(?:(?:both|all|i)\W+(?:(?:are|am|m) )?)?{_FALSE}")
+_DASHED_FALSITY = re.compile(
+    rf"(?:[—–(]| - | -- )\W*(?:{_BARE_DENIAL}|(?:(?:both|all|i)\W+(?:(?:are|am|m) )?)?{_FALSE})"
+)
 # a remark that takes back all said before it, not only its sentence: "None of this is true.",
 # "Both statements are false.", "My answer is wrong.", "I am joking.", "Ignore the above."
 _ALL_OF_IT = (
@@ -179,6 +189,13 @@ _APPOSITION = re.compile(r"[^\W\d_]*\s+")  # and the name right after it: "a cyc
 # between a phrasing and the term it stands before as an adjective: "a conserved (generalized) momentum"
 _ATTRIBUTE = re.compile(r"\s+(?:(?:generalized|generalised|canonical|conjugate|angular|linear)\s+)?")
 _OR = re.compile(r"\bor\b")
+# a clause that ends on its verb, which stands for the claim before it: "scleronomic if it does not",
+# "rheonomic when it does"; and a negation that begins a claim, which it turns round
+_ELLIPSIS = re.compile(
+    r"\b(?:it|they|one|ones|this|that|these|those)\s+(?:does|do|did|is|are|was|were|has|have)(?P<not>\s+not)?"
+    r"(?:\s+(?:so|too))?(?=\s*(?:$|[—–(),.;:!?]))"
+)
+_LEADING_NEGATION = re.compile(r"^(?:not|no|never)\s+")
 # a phrasing offered beside another of its own shape: "sin θ ≈ θ or sin θ ≈ 1", "proportional to θ or to
 # 1", "conserved or not", "not conserved or it is conserved"
 _OR_AFTER = re.compile(r"\s+or\s+")
@@ -562,28 +579,66 @@ def _score(reading: _Reading, ideas, *, alternatives: bool) -> RubricReading:
         others = [idea for other, idea in enumerate(ideas) if other not in rival_ideas]
         return lambda piece: bool(_score(_Reading(piece), others, alternatives=False).found)
 
-    for index, (idea, worth, _, about, not_about) in enumerate(ideas):
-        rival_terms = {_normal(term) for term in not_about} & subjects
-        rival_ideas = [
-            other
-            for other, (*_, other_about, _) in enumerate(ideas)
-            if other != index and rival_terms & {_normal(term) for term in other_about}
-        ]
-        mentions, starts = _mentions(reading, about, not_about) if about else ([], [])
+    contexts: dict[int, tuple] = {}
+
+    def context(index: int):
+        """An idea's rival terms, rival ideas, and the places its terms are named."""
+        if index not in contexts:
+            *_, about, not_about = ideas[index]
+            rival_terms = {_normal(term) for term in not_about} & subjects
+            rival_ideas = [
+                other
+                for other, (*_, other_about, _) in enumerate(ideas)
+                if other != index and rival_terms & {_normal(term) for term in other_about}
+            ]
+            contexts[index] = (rival_terms, rival_ideas, *(_mentions(reading, about, not_about) if about else ([], [])))
+        return contexts[index]
+
+    def counts(index: int, start: int, end: int, negated: bool) -> bool:
+        rival_terms, rival_ideas, mentions, starts = context(index)
+        return (
+            not negated
+            and (not ideas[index][3] or _said_of_own(reading, mentions, starts, start, end, rivals=bool(rival_terms)))
+            # what a rival idea says of the same subject, offered as an alternative: "time
+            # dependent or time independent"
+            and not any(_hedged(reading, starts, start, end, found_places(other)) for other in rival_ideas)
+            # or beside another claim of its own shape: "sin θ ≈ θ or sin θ ≈ 1"
+            and not (alternatives and _alternative(reading, start, end, credited(rival_ideas)))
+        )
+
+    def elided(index: int) -> bool:
+        """Whether an ellipsis said of the idea's term stands for a rival's claim turned round:
+        "rheonomic if time appears explicitly, and scleronomic if it does not"."""
+        _, rival_ideas, mentions, starts = context(index)
+        for match in _ELLIPSIS.finditer(reading.text):
+            if not _said_of_own(reading, mentions, starts, match.start(), match.end(), rivals=True):
+                continue
+            low, _ = reading.sentence(match.start(), match.start())
+            if low:  # or the sentence before: "Rheonomic ones contain t explicitly. Scleronomic ones do not."
+                low, _ = reading.sentence(low - 1, low - 1)
+            before = [
+                (start, end)
+                for other in rival_ideas
+                for start, end, negated in found_places(other)
+                if low <= start and end <= match.start() and counts(other, start, end, negated)
+            ]
+            if before:
+                start, end = max(before)
+                claim = _LEADING_NEGATION.sub("", reading.text[start:end])  # "not contain t explicitly": "contain …"
+                claim = "not " + claim if match.group("not") else claim
+                if any(not negated for *_, negated in _found(_Reading(claim), ideas[index][2])):
+                    return True
+        return False
+
+    for index, (idea, worth, _, about, _) in enumerate(ideas):
         seen = counted = False
         for start, end, negated in _found(reading, ideas[index][2]):
             seen = True
-            counted = (
-                not negated
-                and (not about or _said_of_own(reading, mentions, starts, start, end, rivals=bool(rival_terms)))
-                # what a rival idea says of the same subject, offered as an alternative: "time
-                # dependent or time independent"
-                and not any(_hedged(reading, starts, start, end, found_places(other)) for other in rival_ideas)
-                # or beside another claim of its own shape: "sin θ ≈ θ or sin θ ≈ 1"
-                and not (alternatives and _alternative(reading, start, end, credited(rival_ideas)))
-            )
+            counted = counts(index, start, end, negated)
             if counted:
                 break
+        if not counted and about and context(index)[1] and _ELLIPSIS.search(reading.text):
+            counted = elided(index)
         if counted:
             found.append(idea)
             points += worth
