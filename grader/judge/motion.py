@@ -255,11 +255,16 @@ def _float_rows(
     None where it is undefined.
 
     A ``reference`` system is compiled from the expected answer and kept in its cache (so
-    its identity is stable): its rows are the same for every submission and kept too.
+    its identity is stable): its rows are the same for every submission and kept too. A
+    submitted system's last rows are kept with the system itself (only the very same objects
+    reuse them): the vanishing-factor search and the linearity test read them again.
     """
     key = ("rows", tuple(id(f) for f in system), steps)
     if reference and key in expected.cache:
         return expected.cache[key]
+    last = None if reference else expected.cache.get("last rows")
+    if last is not None and last[:2] == (tuple(system), steps):  # a Compiled equals only itself
+        return last[2]
     batch = _accelerated_states(expected, steps)
     width = len(_positions(expected)) + 2
     evaluated = []
@@ -273,6 +278,8 @@ def _float_rows(
         rows.append(_Rows(samples, precise=False, step=step) if defined else None)
     if reference:
         expected.cache[key] = rows
+    else:
+        expected.cache["last rows"] = (tuple(system), steps, rows)
     return rows
 
 
