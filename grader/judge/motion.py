@@ -41,6 +41,7 @@ whatever the state.
 from __future__ import annotations
 
 import enum
+import functools
 import itertools
 import math
 from collections.abc import Sequence
@@ -113,7 +114,7 @@ class _Rows:
             (b, *stepped, probed), (b_scale, *stepped_scales, probe_scale) = values, scales
             c = [(value - b) / step for value in stepped]
             c_scales = [max(scale, b_scale) / step for scale in stepped_scales]
-            probe = [type(step)(p) for p in _probe(len(c))]  # fractions for exact rows
+            probe = _probe_as(type(step), len(c))  # fractions for exact rows
             predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
             noise = max(probe_scale, b_scale + sum(s * abs(p) for s, p in zip(c_scales, probe, strict=True)))
             self.linear_each.append(closeness(probed, predicted, noise, precise=precise))
@@ -152,6 +153,12 @@ class _Rows:
 
 def _probe(n: int) -> list[float]:
     return [_PROBE[k % len(_PROBE)] * (1 + k // len(_PROBE)) for k in range(n)]
+
+
+@functools.cache
+def _probe_as(number: type, n: int) -> tuple:
+    """:func:`_probe` in the number type of the rows, made once: every row of every state reads it."""
+    return tuple(number(p) for p in _probe(n))
 
 
 def _settings(n: int, step: float = 1.0) -> list[list[float]]:
@@ -195,8 +202,10 @@ def _steps(expected: Expected, reference: Sequence[Compiled]) -> tuple[float, ..
 
 
 def _worst(a: Closeness, b: Closeness) -> Closeness:
-    order = (Closeness.EQUAL, Closeness.UNSURE, Closeness.DIFFERENT)
-    return max(a, b, key=order.index)
+    return max(a, b, key=_BADNESS.__getitem__)
+
+
+_BADNESS = {Closeness.EQUAL: 0, Closeness.UNSURE: 1, Closeness.DIFFERENT: 2}
 
 
 def _positions(expected: Expected) -> list[int]:
