@@ -96,6 +96,15 @@ def _equations(value) -> tuple:
     return tuple(_as_zero(item) for item in (value if isinstance(value, tuple) else (value,)))
 
 
+def _expected_equations(expected: Expected) -> tuple[tuple, tuple[tuple[str, ...], ...]]:
+    """The expected answer's equations (each as an expression = 0), and the coordinates whose
+    accelerations each holds: built once, not for every answer (lhs − rhs is a new sum to sympy)."""
+    if "equations as zero" not in expected.cache:
+        equations = _equations(expected.value)
+        expected.cache["equations as zero"] = equations, tuple(tuple(accelerations_in(f, expected)) for f in equations)
+    return expected.cache["equations as zero"]
+
+
 class _Rows:
     """Coefficient rows (c₁…cₙ, b) of equations at one state, and whether they are linear in q̈.
 
@@ -408,12 +417,12 @@ def _decided(results: list[Closeness]) -> bool | None:
 
 
 def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    (f,) = _equations(expected.value)
+    (f,), (accelerations,) = _expected_equations(expected)
     (g,) = _equations(answer.value)
-    if not accelerations_in(f, expected):
+    if not accelerations:
         return _check_relation(expected, f, expected.setting.plain(g), deadline)
     if not accelerations_in(g, expected):
-        names = ", ".join(unicode_name(q, 2) for q in accelerations_in(f, expected))
+        names = ", ".join(unicode_name(q, 2) for q in accelerations)
         return Outcome("not_equivalent", 0.0, "not_equation_of_motion", {"accelerations": names}, "accelerations")
     expected_f = expected.compiled("equation", f)
     submitted_g = expected.compile(g)
@@ -446,7 +455,7 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         # right wherever states are drawn, wrong at rest or at the origin: a vanishing factor
         return Outcome("not_equivalent", 0.0, "vanishing_factor", method="accelerations")
     if _nonlinear(expected, [expected_f], [submitted_g]) == [True]:
-        names = ", ".join(unicode_name(q, 2) for q in accelerations_in(f, expected))
+        names = ", ".join(unicode_name(q, 2) for q in accelerations)
         return Outcome("not_equivalent", 0.0, "not_linear", {"accelerations": names}, "accelerations")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
 
@@ -1133,7 +1142,7 @@ class _State:
 
 
 def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    theirs, references = _equations(answer.value), _equations(expected.value)
+    theirs, (references, _) = _equations(answer.value), _expected_equations(expected)
     expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(references)]
     submitted_gs = [expected.compile(g) for g in theirs]
     numbered = _states(expected, expected_fs, submitted_gs, deadline)
@@ -1225,9 +1234,10 @@ def _terms_named(expected: Expected, references: Sequence, g, position: int, dea
     so near: the student combined or solved the equations, and the terms they wrote are not
     the expected ones."""
     named, accelerations, plain = [], set(accelerations_in(g, expected)), None
+    _, of_references = _expected_equations(expected)
     # the one in the same place first: of two equally near, min keeps the first
     for i, f in sorted(enumerate(references), key=lambda item: item[0] != position):
-        if not accelerations or set(accelerations_in(f, expected)) != accelerations:
+        if not accelerations or set(of_references[i]) != accelerations:
             continue  # θ̈₁ = … solved is no term or two away from an equation in θ̈₁ and θ̈₂
         plain = plain if plain is not None else expected.setting.plain(g)  # built only when compared
         outcome = _diagnose_motion(expected, f, plain, deadline, key=f"equations {i}, normalized")
@@ -1256,7 +1266,7 @@ def _state_agrees(state: _State) -> bool:
 def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: Deadline) -> bool:
     """Whether the submitted system is the expected one linearized about q = q̇ = 0."""
     if "equations, linearized" not in expected.cache:
-        linear = [taylor(f, expected.setting, 1) for f in _equations(expected.value)]
+        linear = [taylor(f, expected.setting, 1) for f in _expected_equations(expected)[0]]
         finite = not any(f.has(sympy.nan, sympy.zoo) for f in linear)
         expected.cache["equations, linearized"] = (
             [expected.compiled(f"equations, linearized {i}", f) for i, f in enumerate(linear)] if finite else None
