@@ -330,10 +330,13 @@ def diagnose_difference(
     deadline.check()
     cache_key = ("approximations", key)
     if cache_key not in expected.cache:
-        expected.cache[cache_key] = approximate(e)
-    for number, form in enumerate(expected.cache[cache_key]):
-        if form.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo):
-            continue  # the approximation does not exist here (a Taylor expansion through a pole)
+        expected.cache[cache_key] = [
+            (number, form)
+            for number, form in enumerate(approximate(e))
+            # not one that does not exist here (a Taylor expansion through a pole)
+            if not form.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo)
+        ]
+    for number, form in expected.cache[cache_key]:
         same, form_pairs = same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")
         if same or (expected.option("up_to_constant") and constant_difference(form_pairs)):
             return Outcome("not_equivalent", 0.0, "small_angle")  # with another zero level too
