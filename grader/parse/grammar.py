@@ -32,6 +32,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 from sympy.core.function import AppliedUndef
+from sympy.core.traversal import iterargs
 
 from grader.parse.functions import COMPLEX, SYMPY
 from grader.parse.messages import ParseFailure
@@ -49,7 +50,7 @@ from grader.parse.names import (
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
-__all__ = ["ANSWER", "TIME", "Context", "parse_tokens", "too_many_digits"]
+__all__ = ["ANSWER", "TIME", "Context", "holds_any", "parse_tokens", "too_many_digits"]
 
 TIME = sympy.Symbol("t", real=True)
 # The name an expression followed by the definitions of its names stands under: ``½ m v², v = l θ̇``
@@ -1362,9 +1363,19 @@ def _apply(name: str, argument, token: Token):
     if argument.is_number and not _magnitude(argument) <= _MAX_MAGNITUDE:
         raise ParseFailure("value_too_large", token.start, token.end)
     value = SYMPY[name](argument)
-    if value.has(sympy.zoo, sympy.nan):
+    if holds_any(value, _NOT_A_NUMBER):
         raise ParseFailure("undefined_value", token.start, token.end)
     return value
+
+
+_NOT_A_NUMBER = frozenset({sympy.zoo, sympy.nan})
+
+
+def holds_any(value, atoms: frozenset) -> bool:
+    """Whether any node of ``value`` is one of ``atoms`` (zoo, nan…). One walk, hashing atoms only:
+    ``value.has(*atoms)`` hashes every node, then walks once more for each atom to match it, and a
+    new answer's value is new to its cache."""
+    return any(node.is_Atom and node in atoms for node in iterargs(value))
 
 
 def _quotient(numerator, denominator, token: Token):
