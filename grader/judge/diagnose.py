@@ -564,6 +564,12 @@ def describe_term(
 
 def _shown(expr, setting: Setting) -> str:
     """``expr`` (in plain symbols) as a sentence shows it: ω² sin(θ), sin(2θ)."""
+    if isinstance(expr, _TRIG) and expr.args[0] in setting.angles:
+        # sin θ, cos(θ₁ − θ₂): the problem's own, named in answer after answer, and printing one
+        # costs sympy a millisecond of rebuilding and sorting: each is said once per problem
+        if expr not in setting.said:
+            setting.said[expr] = in_sentence(to_text(setting.as_typed(expr)))
+        return setting.said[expr]
     return in_sentence(to_text(setting.as_typed(expr)))
 
 

@@ -139,6 +139,18 @@ class Setting:
         return symbol == TIME or symbol in self.varying
 
     @cached_property
+    def angles(self) -> frozenset:
+        """The plain symbols of the coordinates, and the difference of each two (θ₁ − θ₂ and θ₂ − θ₁)."""
+        coordinates = [self.state[(name, 0)] for name in self.coords]
+        return frozenset(coordinates) | {a - b for a in coordinates for b in coordinates if a != b}
+
+    @cached_property
+    def said(self) -> dict:
+        """The problem's own functions of :attr:`angles` as feedback words them, kept for the next
+        answer (see :mod:`grader.judge.diagnose`)."""
+        return {}
+
+    @cached_property
     def varying(self) -> frozenset:
         """The plain symbols of the coordinates and their derivatives, and the given names."""
         return frozenset(self.state.values()) | {sympy.Symbol(name) for name in self.given}
