@@ -225,7 +225,7 @@ def _positions(expected: Expected) -> list[int]:
 def accelerations_in(expr, expected: Expected) -> list[str]:
     """The coordinates whose acceleration occurs in ``expr`` (as parsed, or in plain symbols)."""
     setting = expected.setting
-    present = expr.free_symbols | expr.atoms(sympy.Derivative)
+    present = expr.atoms(sympy.Symbol, sympy.Derivative)  # one walk: q̈ as a plain symbol, or as parsed
     return [q for q in setting.coords if setting.acceleration(q) in present or setting.node(q, 2) in present]
 
 
