@@ -1166,7 +1166,6 @@ def _check_brackets(tokens: list[Token]) -> None:
     """
     stack: list[Token] = []
     kept: list[Token] = []
-    has_equals = any(token.is_op("=") for token in tokens)
     for index, token in enumerate(tokens):
         if token.kind == "op" and token.value in _CLOSERS:
             stack.append(token)
@@ -1187,7 +1186,8 @@ def _check_brackets(tokens: list[Token]) -> None:
                 stack
                 or (kept and kept[-1].kind == "op" and kept[-1].value in _CONTINUES_AFTER)
                 or (following.kind == "op" and following.value in _CONTINUES_BEFORE)
-                or (following.is_op("-") and not has_equals)
+                # looked for only here, where a line starts with a minus: most answers are one line
+                or (following.is_op("-") and not any(other.is_op("=") for other in tokens))
             ):
                 continue
         kept.append(token)
