@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import importlib
+import re
 from types import SimpleNamespace
 
 import pytest
@@ -2676,6 +2677,27 @@ def test_a_choice_may_be_written_as_its_claim_without_the_reason(submitted, stat
     assert (verdict.feedback[-1] == f"Read as the option you wrote out: {read}.") == (read is not None)
 
 
+def _hedged(typed):
+    return (
+        f"One option is asked for here, and your answer `{typed}` offers another, or doubts or denies the one it"
+        " names: give the one you mean."
+    )
+
+
+def _past(labels, rest):
+    return f"Graded your choice, {labels}; what follows it (`{rest}`) is not graded."
+
+
+def _read_past(labels, rest):
+    return f"Read as the option you wrote out: {labels}; what follows it (`{rest}`) is not graded."
+
+
+def _option_read(feedback):
+    """The options a verdict's feedback says the answer's words were read as, or None."""
+    notes = (re.match(r"Read as the option you wrote out: (.*?)[.;]", line) for line in feedback)
+    return next((note[1] for note in notes if note), None)
+
+
 TIME_CHOICE = {"kind": "choice", "options": (("a", "scleronomic"), ("b", "rheonomic"))}
 CYCLIC_CHOICE = {"kind": "choice", "options": (("a", r"$\theta$"), ("b", r"$\phi$"), ("c", "neither"), ("d", "both"))}
 
@@ -2708,7 +2730,7 @@ CYCLIC_CHOICE = {"kind": "choice", "options": (("a", r"$\theta$"), ("b", r"$\phi
 def test_a_choice_may_be_said_in_a_sentence(submitted, status, read):
     verdict = compare("b", submitted, **CYCLIC_CHOICE)
     assert verdict.status == status, verdict
-    assert (f"Read as the option you wrote out: {read}." in verdict.feedback) == (read is not None)
+    assert _option_read(verdict.feedback) == read
 
 
 FORCE_CHOICE = {
@@ -2779,42 +2801,44 @@ DOTS_CHOICE = {
 def test_an_option_that_is_a_formula_may_be_typed_as_one(options, expected, submitted, status, read):
     verdict = compare(expected, submitted, **options)
     assert verdict.status == status, verdict
-    assert (f"Read as the option you wrote out: {read}." in verdict.feedback) == (read is not None)
+    assert _option_read(verdict.feedback) == read
 
 
 @pytest.mark.parametrize(
     ("submitted", "status", "feedback"),
     [
-        # a label, then its option's words, or after a mark a reason: the label
+        # a label, then its option's words, or after a mark a reason: the label, and what was read past said
         ("b (rheonomic)", "equivalent", ("Correct.",)),
         ("b) rheonomic", "equivalent", ("Correct.",)),
         ("(b) Rheonomic", "equivalent", ("Correct.",)),
         ("b. rheonomic", "equivalent", ("Correct.",)),
-        ("b, since l = l(t)", "equivalent", ("Correct.",)),
-        ("b - it depends on time", "equivalent", ("Correct.",)),
+        ("b, since l = l(t)", "equivalent", ("Correct.", _past("b", "since l = l(t)"))),
+        ("b - it depends on time", "equivalent", ("Correct.", _past("b", "it depends on time"))),
         ("a: scleronomic", "not_equivalent", ("Not the right choice.",)),
-        ("b, not a", "equivalent", ("Correct.",)),  # the other option set aside
-        ("b (not scleronomic)", "equivalent", ("Correct.",)),
-        ("b, not rheonomic", "invalid", ("`b, not rheonomic` is not one of the options (a, b).",)),
+        ("b, not a", "equivalent", ("Correct.", _past("b", "not a"))),  # the other option set aside
+        ("b (not scleronomic)", "equivalent", ("Correct.", _past("b", "(not scleronomic)"))),
+        ("b, not rheonomic", "invalid", (_hedged("b, not rheonomic"),)),
         # or a reason in brackets, as after a comma
-        ("b (the hoop rotates)", "equivalent", ("Correct.",)),
-        ("b (the hoop's axis turns)", "equivalent", ("Correct.",)),
-        ("a (the hoop's shape is fixed)", "not_equivalent", ("Not the right choice.",)),
-        ("b (a)", "invalid", ("`b (a)` is not one of the options (a, b).",)),
-        ("b (or a)", "invalid", ("`b (or a)` is not one of the options (a, b).",)),
-        ("b (maybe scleronomic)", "invalid", ("`b (maybe scleronomic)` is not one of the options (a, b).",)),
+        ("b (the hoop rotates)", "equivalent", ("Correct.", _past("b", "(the hoop rotates)"))),
+        ("b (the hoop's axis turns)", "equivalent", ("Correct.", _past("b", "(the hoop's axis turns)"))),
+        ("a (the hoop's shape is fixed)", "not_equivalent",
+         ("Not the right choice.", _past("a", "(the hoop's shape is fixed)"))),
+        ("b (a)", "invalid", (_hedged("b (a)"),)),
+        ("b (or a)", "invalid", (_hedged("b (or a)"),)),
+        ("b (maybe scleronomic)", "invalid", (_hedged("b (maybe scleronomic)"),)),
         # the claim, then the reason
-        ("rheonomic because l depends on t", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("rheonomic because l depends on t", "equivalent", ("Correct.", _read_past("b", "because l depends on t"))),
         # the option's words, then a remark in brackets that names no other option and does not hedge
-        ("rheonomic (t appears explicitly)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
-        ("rheonomic (l = l(t), set from outside)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
-        ("rheonomic (scleronomic, …)", "invalid", ("`rheonomic (scleronomic, …)` is not one of the options (a, b).",)),
+        ("rheonomic (t appears explicitly)", "equivalent", ("Correct.", _read_past("b", "(t appears explicitly)"))),
+        ("rheonomic (l = l(t), set from outside)", "equivalent",
+         ("Correct.", _read_past("b", "(l = l(t), set from outside)"))),
+        ("rheonomic (scleronomic, …)", "invalid", (_hedged("rheonomic (scleronomic, …)"),)),
         # Goldstein's names for them
         ("Rheonomous", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         ("b (rheonomous)", "equivalent", ("Correct.",)),
         ("scleronomous", "not_equivalent", ("Not the right choice.", "Read as the option you wrote out: a.")),
-        ("rheonomic (scleronomic)", "invalid", ("`rheonomic (scleronomic)` is not one of the options (a, b).",)),
-        ("rheonomic (or scleronomic)", "invalid", ("`rheonomic (or scleronomic)` is not one of the options (a, b).",)),
+        ("rheonomic (scleronomic)", "invalid", (_hedged("rheonomic (scleronomic)"),)),
+        ("rheonomic (or scleronomic)", "invalid", (_hedged("rheonomic (or scleronomic)"),)),
         # a label and words that name another option: which one is meant?
         ("a (rheonomic)", "invalid",
          ("Your label a and your words `rheonomic` name different options: give one of them.",)),
@@ -2822,9 +2846,9 @@ def test_an_option_that_is_a_formula_may_be_typed_as_one(options, expected, subm
         ("b foo", "invalid", ("`b foo` is not one of the options (a, b).",)),
         ("not scleronomic", "invalid", ("`not scleronomic` is not one of the options (a, b).",)),  # no non-scleronomic
         ("It is not scleronomic", "invalid", ("`It is not scleronomic` is not one of the options (a, b).",)),
-        ("b or a", "invalid", ("or is not one of the options (a, b).",)),
+        ("b or a", "invalid", (_hedged("b or a"),)),
         ("b, e", "invalid", ("e is not one of the options (a, b).",)),
-        ("b - or maybe a", "invalid", ("`b - or maybe a` is not one of the options (a, b).",)),
+        ("b - or maybe a", "invalid", (_hedged("b - or maybe a"),)),
     ],
 )  # fmt: skip
 def test_a_label_may_come_with_its_options_words_or_a_reason(submitted, status, feedback):
@@ -2881,6 +2905,196 @@ def test_an_option_then_another_or_a_hedge_is_no_choice(submitted, options, stat
 def test_a_label_is_read_as_it_looks(submitted, status):
     verdict = compare("b", submitted, **TIME_CHOICE)
     assert verdict.status == status, verdict
+
+
+HOLONOMY_CHOICE = {"kind": "choice", "options": (("a", "holonomic"), ("b", "non-holonomic"))}
+RADIAL_CHOICE = {"kind": "choice", "options": (("a", "$r$"), ("b", r"$\theta$"), ("c", r"both $r$ and $\theta$"))}
+
+
+@pytest.mark.parametrize(
+    ("options", "submitted"),
+    [
+        # another option offered beside the one named, in brackets or after it
+        (HOLONOMY_CHOICE, "non-holonomic (maybe holonomic)"),
+        (TIME_CHOICE, "rheonomic (but scleronomic too)"),
+        (CYCLIC_CHOICE, "φ (maybe θ)"),
+        (CYCLIC_CHOICE, "φ is cyclic (θ too)"),  # θ too is option d, both
+        (HOLONOMY_CHOICE, "non-holonomic (both)"),
+        (HOLONOMY_CHOICE, "non-holonomic (either)"),
+        (HOLONOMY_CHOICE, "non-holonomic (actually holonomic)"),
+        (HOLONOMY_CHOICE, "non-holonomic (could also be holonomic)"),
+        (HOLONOMY_CHOICE, "non-holonomic, unless it is holonomic"),
+        (HOLONOMY_CHOICE, "b (maybe a)"),
+        (TIME_CHOICE, "rheonomic (or scleronomic)"),
+        (TIME_CHOICE, "rheonomic (but scleronomic)"),  # another option named, with no hedge word
+        (TIME_CHOICE, "b (I mean a)"),
+        (TIME_CHOICE, "b (=a)"),
+        (TIME_CHOICE, "b, no wait, a"),
+        (TIME_CHOICE, "rheonomic, no wait, scleronomic"),
+        (TIME_CHOICE, "rheonomic (no, scleronomic)"),
+        (CYCLIC_CHOICE, "φ (θ)"),
+        (CYCLIC_CHOICE, "φ (=θ)"),
+        (FORCE_CHOICE, "−∂V/∂q_j (+∂V/∂q_j)"),
+        # the option named denied, doubted or taken back
+        (HOLONOMY_CHOICE, "b (false)"),
+        (HOLONOMY_CHOICE, "b (incorrect)"),
+        (HOLONOMY_CHOICE, "non-holonomic is wrong"),
+        (TIME_CHOICE, "rheonomic is false"),
+        (TIME_CHOICE, "rheonomic: false"),
+        (TIME_CHOICE, "rheonomic (not sure)"),
+        (TIME_CHOICE, "b (not really)"),
+        (TIME_CHOICE, "b (no)"),
+        (TIME_CHOICE, "rheonomic (nope)"),
+        (TIME_CHOICE, "rheonomic, or not"),
+        (TIME_CHOICE, "b (50/50)"),
+        (TIME_CHOICE, "rheonomic (90% sure)"),
+        (TIME_CHOICE, "rheonomic (I think)"),
+        (TIME_CHOICE, "b (?)"),
+        (TIME_CHOICE, "b (a‽)"),
+        # a label or another option's name set equal to the option
+        (CYCLIC_CHOICE, "a = φ"),
+        (RADIAL_CHOICE, "r = θ"),
+        (FORCE_CHOICE, "b = −∂V/∂q_j"),
+        # as typed on other keyboards: full-width letters and brackets, a no-break space
+        (TIME_CHOICE, "b (ｍａｙｂｅ ａ)"),
+        (TIME_CHOICE, "b （maybe a）"),
+        (TIME_CHOICE, "rheonomic\u00a0(maybe scleronomic)"),
+    ],
+)
+def test_an_option_hedged_doubted_or_denied_is_refused_and_one_asked_for(options, submitted):
+    expected = "a" if options is FORCE_CHOICE else "b"  # the option named first is the right one
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("invalid", 0.0, (_hedged(submitted),))
+
+
+@pytest.mark.parametrize(
+    ("options", "submitted"),
+    [
+        # the same hedges with the wrong option named first: never read as that option, so never right either way
+        (HOLONOMY_CHOICE, "holonomic (maybe non-holonomic)"),
+        (TIME_CHOICE, "scleronomic (but rheonomic too)"),
+        (CYCLIC_CHOICE, "θ (maybe φ)"),
+        (TIME_CHOICE, "a (maybe b)"),
+        (TIME_CHOICE, "a, no wait, b"),
+        (TIME_CHOICE, "scleronomic, unless it is rheonomic"),
+    ],
+)
+def test_a_hedge_is_refused_whichever_option_it_names_first(options, submitted):
+    verdict = compare("b", submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("invalid", 0.0, (_hedged(submitted),))
+
+
+@pytest.mark.parametrize(
+    ("options", "expected", "submitted", "status", "feedback"),
+    [
+        # a remark or a reason after the option is read past, and said so
+        (TIME_CHOICE, "b", "b (since the constraint depends on time)", "equivalent",
+         ("Correct.", _past("b", "(since the constraint depends on time)"))),
+        (TIME_CHOICE, "b", "b, because the hoop turns", "equivalent",
+         ("Correct.", _past("b", "because the hoop turns"))),
+        (CYCLIC_CHOICE, "b", "φ, since L does not depend on it", "equivalent",
+         ("Correct.", _read_past("b", "since L does not depend on it"))),
+        (CYCLIC_CHOICE, "b", "φ, because θ appears in L", "equivalent",  # a reason may name another option
+         ("Correct.", _read_past("b", "because θ appears in L"))),
+        (HOLONOMY_CHOICE, "b", "b (r ≥ a)", "equivalent", ("Correct.", _past("b", "(r ≥ a)"))),  # a is a radius
+        (HOLONOMY_CHOICE, "b", "non-holonomic (r ≥ a, an inequality)", "equivalent",
+         ("Correct.", _read_past("b", "(r ≥ a, an inequality)"))),
+        (TIME_CHOICE, "b", "scleronomic (no explicit t)", "not_equivalent",
+         ("Not the right choice.", _read_past("a", "(no explicit t)"))),
+        (TIME_CHOICE, "b", "b (correct)", "equivalent", ("Correct.", _past("b", "(correct)"))),
+        (CYCLIC_CHOICE, "b", "φ is cyclic (since L lacks it)", "equivalent",
+         ("Correct.", _read_past("b", "(since L lacks it)"))),
+        (TIME_CHOICE, "b", "the answer is b or a", "invalid", (_hedged("the answer is b or a"),)),
+        # a label said to be the answer, or an option's words in brackets or with a mark after them
+        (TIME_CHOICE, "b", "The answer is b.", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "I choose b", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "option b", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "b is correct", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "b is the answer", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "I choose rheonomic", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        (TIME_CHOICE, "b", "(rheonomic)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        (TIME_CHOICE, "b", "rheonomic!", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        (FORCE_CHOICE, "a", "(−∂V/∂q_j)", "equivalent", ("Correct.", "Read as the option you wrote out: a.")),
+        # two labels, then a reason: two options, where one is asked for
+        (TIME_CHOICE, "a", "a, b (since the hoop turns)", "not_equivalent", ("Choose one option.",)),
+        (TIME_CHOICE, "a", "a, b, since the hoop turns", "not_equivalent", ("Choose one option.",)),
+    ],
+)  # fmt: skip
+def test_what_follows_an_option_is_read_past_and_said(options, expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+SEVERAL_CHOICE = {
+    "kind": "choice",
+    "multiple": True,
+    "options": (("a", "holonomic"), ("b", "scleronomic"), ("c", "rheonomic")),
+}
+_SEVERAL_HEDGED = (
+    "Your answer `{}` offers another option, or doubts or denies one it names: give just the options you mean."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        ("a, b (since the hoop is fixed)", "equivalent", ("Correct.", _past("a, b", "(since the hoop is fixed)"))),
+        ("a, b, since the hoop is fixed", "equivalent", ("Correct.", _past("a, b", "since the hoop is fixed"))),
+        ("a, c (since the hoop is fixed)", "not_equivalent",
+         ("Not the right choice.", _past("a, c", "(since the hoop is fixed)"))),
+        ("a, b (not c)", "equivalent", ("Correct.", _past("a, b", "(not c)"))),
+        ("a, b (c too)", "invalid", (_SEVERAL_HEDGED.format("a, b (c too)"),)),
+        ("a, b (or c)", "invalid", (_SEVERAL_HEDGED.format("a, b (or c)"),)),
+        ("a, b (rheonomic)", "invalid", (_SEVERAL_HEDGED.format("a, b (rheonomic)"),)),
+        ("a, b?", "invalid", (_SEVERAL_HEDGED.format("a, b?"),)),
+        ("a, maybe b", "invalid", (_SEVERAL_HEDGED.format("a, maybe b"),)),
+        ("holonomic, scleronomic (maybe)", "invalid", (_SEVERAL_HEDGED.format("holonomic, scleronomic (maybe)"),)),
+        ("holonomic, scleronomic, maybe rheonomic", "invalid",
+         (_SEVERAL_HEDGED.format("holonomic, scleronomic, maybe rheonomic"),)),
+    ],
+)  # fmt: skip
+def test_several_options_are_checked_for_the_same_words(submitted, status, feedback):
+    verdict = compare("a, b", submitted, **SEVERAL_CHOICE)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+PENDULUM_MEANINGS = (
+    ("theta", "polar angle of the string from the downward vertical"),
+    ("phi", "azimuthal angle about the vertical through the pivot"),
+    ("m", "mass of the bob"),
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "meanings", "status", "feedback"),
+    [
+        # where an option is a symbol of the problem, the problem's own words for it name it
+        ("the azimuthal angle", PENDULUM_MEANINGS, "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("Azimuthal angle", PENDULUM_MEANINGS, "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+        ("the azimuthal angle about the vertical through the pivot", PENDULUM_MEANINGS, "equivalent",
+         ("Correct.", "Read as the option you wrote out: b.")),
+        ("the azimuthal angle is cyclic", PENDULUM_MEANINGS, "equivalent",
+         ("Correct.", "Read as the option you wrote out: b.")),
+        ("the polar angle", PENDULUM_MEANINGS, "not_equivalent",
+         ("Not the right choice.", "Read as the option you wrote out: a.")),
+        # the words and the letter must agree
+        ("the azimuthal angle φ", PENDULUM_MEANINGS, "equivalent",
+         ("Correct.", "Read as the option you wrote out: b.")),
+        ("the polar angle φ", PENDULUM_MEANINGS, "invalid", (_hedged("the polar angle φ"),)),
+        ("the azimuthal angle (maybe the polar angle)", PENDULUM_MEANINGS, "invalid",
+         (_hedged("the azimuthal angle (maybe the polar ang"),)),
+        # no guess: a word of the description alone, a head two symbols share, a symbol no option
+        ("azimuthal", PENDULUM_MEANINGS, "invalid", ("`azimuthal` is not one of the options (a, b, c, d).",)),
+        ("the angle", PENDULUM_MEANINGS, "invalid", ("`the angle` is not one of the options (a, b, c, d).",)),
+        ("the angle", (("theta", "angle of the string"), ("phi", "angle about the vertical")), "invalid",
+         ("`the angle` is not one of the options (a, b, c, d).",)),
+        ("the mass", PENDULUM_MEANINGS, "invalid", ("`the mass` is not one of the options (a, b, c, d).",)),
+        ("the azimuthal angle", (), "invalid", ("`the azimuthal angle` is not one of the options (a, b, c, d).",)),
+    ],
+)  # fmt: skip
+def test_an_option_that_is_a_symbol_may_be_named_by_its_meaning(submitted, meanings, status, feedback):
+    verdict = compare("b", submitted, meanings=meanings, **CYCLIC_CHOICE)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
 def test_several_choices_may_be_written_out_each_between_commas():
@@ -3042,6 +3256,20 @@ def _false_for_a_person(value, working):
         (PERIOD, "2π√(1/9.81) = 2.0 s", PERIOD_PART, "equivalent", 1.0, ("Correct.", _final("2.0 s"))),  # rounded
         (PERIOD, "2.006 s = 2006 ms", PERIOD_PART, "equivalent", 1.0,
          ("Correct.", _final("2006 ms"), "Read as 2.006 s.")),  # in another unit
+        (PERIOD, "2π√(1/9.81) = 2.006 s = 2006 ms", PERIOD_PART, "equivalent", 1.0,
+         ("Correct.", _final("2006 ms"), "Read as 2.006 s.")),  # a side with no unit: in SI units, or in ms
+        (PERIOD, "2π√(1/9.81) = 2006 ms", PERIOD_PART, "equivalent", 1.0,
+         ("Correct.", _final("2006 ms"), "Read as 2.006 s.")),
+        # two statements joined by a comma: the run back to the side that is no number
+        (PERIOD, "ω = √(9.81) = 3.13, T = 2π/3.13 = 2.006 s", PERIOD_PART, "equivalent", 1.0,
+         ("Correct.", _final("2.006 s"))),
+        # units of different dimensions are never equal; nor are the sides of a run that a step follows
+        (PERIOD, "2π√(1/9.81) = 2.006 kg = 2.006 s", PERIOD_PART, "undecided", 1.0,
+         (_false_for_a_person("2.006 s", "2π√(1/9.81) = 2.006 kg = 2.006 s"),)),
+        ("15", "3·5 = 16 → 15", {}, "undecided", 1.0, (_false_for_a_person(15, "3·5 = 16"),)),
+        ("15", "3·5 = 16, so 15", {}, "undecided", 1.0, (_false_for_a_person(15, "3·5 = 16"),)),
+        ("3", "4 - 1 = 2 d.o.f.", {}, "not_equivalent", 0.0,
+         ("Not equivalent to the expected answer.", _false(2, "4 - 1 = 2 d.o.f."))),  # a remark after it too
     ],
 )  # fmt: skip
 def test_working_that_does_not_hold_goes_to_a_person_where_the_final_value_is_right(
@@ -4002,23 +4230,38 @@ def test_a_value_may_come_before_its_name(submitted, status):
     [
         # a claim beside the value, true of p_φ (φ is cyclic) but not asked, and false of others: for a person
         ("p_φ = m l² sin²θ φ̇ = constant", "undecided", 1.0, ("Your answer ends `= constant`, which says the quantity"
-         " is conserved: that is not asked here. Its formula was graded and is right; a person will check this"
+         " is constant: that is not asked here. Its formula was graded and is right; a person will check this"
          " answer.",)),
         ("m l^2 sin(theta)^2 phidot = const", "undecided", 1.0, ("Your answer ends `= const`, which says the quantity"
-         " is conserved: that is not asked here. Its formula was graded and is right; a person will check this"
+         " is constant: that is not asked here. Its formula was graded and is right; a person will check this"
          " answer.",)),
-        ("p_φ = m l² sin²θ φ̇ = C", "undecided", 1.0, ("Your answer ends `= C`, which says the quantity is conserved:"
+        ("p_φ = m l² sin²θ φ̇ = C", "undecided", 1.0, ("Your answer ends `= C`, which says the quantity is constant:"
          " that is not asked here. Its formula was graded and is right; a person will check this answer.",)),
         # wrong either way: graded, and told how it was read
         ("m l^2 sin(theta) phidot = const", "not_equivalent", 0.0, ("Your answer depends on l, m and φ̇ as the right"
          " answer does, but on θ in another way: check how your answer depends on θ.", "Read without `= const`,"
-         " which says the quantity is conserved: its formula was graded.")),
+         " which says the quantity is constant: its formula was graded.")),
     ],
 )  # fmt: skip
 def test_a_value_said_to_be_constant_is_no_value_labelled_constant(submitted, status, score, feedback):
     # before: "Your answer is labelled constant, but the quantity asked for is p_φ", which it is not
     verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)
     assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "score"),
+    [
+        # the name, its value, and "= const" after it: before, ẍ itself was graded as the value, wrong
+        ("ẍ = (m1 - m2) g/(m1 + m2) = const", "undecided", 1.0),
+        ("xddot = (m1 - m2) g / (m1 + m2) = constant", "undecided", 1.0),
+        ("ẍ = (m1 + m2) g/(m1 - m2) = const", "not_equivalent", 0.0),
+    ],
+)
+def test_a_chain_that_ends_in_a_constant_says_its_value_is_constant(submitted, status, score):
+    verdict = compare(ATWOOD_A, submitted, coords=["x"], known=["m1", "m2", "g"])
+    assert (verdict.status, verdict.score) == (status, score), verdict
+    assert any("which says the quantity is constant" in line for line in verdict.feedback), verdict
 
 
 def test_a_wrong_value_under_another_name_is_told_the_label_too():

@@ -370,6 +370,8 @@ def test_equations_that_determine_no_acceleration_earn_no_method_credit(tmp_path
         # no energy: its equations are no physics
         ("atwood-machine", "xdot^2", "xddot = 0", False),
         ("spherical-pendulum", "thetadot^2 + phidot^2", "thetaddot = 0; phiddot = 0", False),
+        # a listed mistake's, whose hint the student is told instead of its units
+        ("plane-pendulum", "1/2 m l thetadot^2 + m g l cos(theta)", "m l thetaddot + m g l sin(theta) = 0", False),
         # a coordinate left out (the potential forgotten): no force, equations easier than those asked
         ("atwood-machine", "1/2 (m1 + m2) xdot^2", "(m1 + m2) xddot = 0", False),
         ("plane-pendulum", "1/2 m l^2 thetadot^2 + m g l", "thetaddot = 0", False),

@@ -194,11 +194,18 @@ CHOICE = "constraint-classification.rigid-body-holonomic"
         ("z", "z"),
         ("b (non-holonomic)", "b) non-holonomic"),  # read as the checker reads it, not word by word
         ("non-holonomic", "b) non-holonomic"),
+        ("non-holonomic (maybe holonomic)", "non-holonomic; (maybe; holonomic)"),  # a hedge names no option: as typed
     ],
 )
 def test_preview_of_a_choice_names_the_options_chosen(server, answer, text):
     status, record = _post(server, "/api/preview", {"part": CHOICE, "answer": answer})
     assert (status, record) == (200, {"ok": True, "mathml": "", "text": text})
+
+
+def test_preview_of_a_choice_reads_a_symbol_by_what_the_problem_says_it_means(server):
+    request = {"part": "spherical-pendulum.cyclic", "answer": "the azimuthal angle"}
+    status, record = _post(server, "/api/preview", request)
+    assert (status, record) == (200, {"ok": True, "mathml": "", "text": "b) $\\phi$"})
 
 
 def test_preview_of_a_number_is_the_text_as_typed(server):

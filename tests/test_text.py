@@ -6,6 +6,8 @@ a statement turned round (negated, or said of the rival term) must never earn th
 
 from __future__ import annotations
 
+import time
+
 import pytest
 from course import BANK
 
@@ -49,6 +51,14 @@ NEGATION = [
     ("the momentum (p_k, not q̇_k) is conserved", "conserved", FOUND),
     ("it is not (in general, for any system) conserved", "conserved", NEGATED),
     ("e.g. not a pendulum, but conserved", "conserved", FOUND),
+    # "≠" denies the relation on both its sides, as "is not" would
+    ("so H ≠ T + V", "t + v", NEGATED),
+    ("so H != T + V", "t + v", NEGATED),
+    ("so H \\ne T + V", "t + v", NEGATED),
+    ("so E = T + V ≠ H", "t + v", NEGATED),
+    # the negations of languages students mix in; "non" stays a prefix ("non-holonomic ones are …")
+    ("la quantité n'est pas conserved", "conserved", NEGATED),
+    ("der Impuls ist nicht conserved", "conserved", NEGATED),
 ]
 
 
@@ -73,6 +83,48 @@ TAKEN_BACK = [
     ("It is false that its momentum is conserved.", NEGATED),
     ("I don't think that the momentum is conserved.", NEGATED),
     ("It is a misconception that the momentum is conserved.", NEGATED),
+    ("It is false that q is cyclic and that its momentum is conserved.", NEGATED),  # a denial shared
+    ("Its momentum is conserved. Not really.", NEGATED),
+    ("Its momentum is conserved, not really.", NEGATED),
+    ("Its momentum is conserved. Nope.", NEGATED),
+    ("Its momentum is conserved. Not!", NEGATED),
+    ("Its momentum is conserved, no wait, its energy is.", NEGATED),
+    ("Its momentum is conserved, or not.", NEGATED),
+    ("Its momentum is conserved (both false)", NEGATED),
+    ("Some say its momentum is conserved, but they are wrong.", NEGATED),
+    ("Its momentum is conserved; they're wrong.", NEGATED),
+    # a remark that takes back all said before it, not only its sentence
+    ("Its momentum is conserved. Its energy is constant. None of this is true.", NEGATED),
+    ("Its momentum is conserved. Both statements are false.", NEGATED),
+    ("Its momentum is conserved. All of the above is wrong.", NEGATED),
+    ("Its momentum is conserved. I am joking.", NEGATED),
+    ("Its momentum is conserved. I'm just kidding.", NEGATED),
+    ("Its momentum is conserved - just kidding", NEGATED),
+    ("Its momentum is conserved. Ignore the above.", NEGATED),
+    # doubted after it, or said by others
+    ("Its momentum is conserved, I think.", NEGATED),
+    ("Its momentum is conserved (I think).", NEGATED),
+    ("Its momentum is conserved, probably.", NEGATED),
+    ("Some people think its momentum is conserved.", NEGATED),
+    ("Some say that its momentum is conserved.", NEGATED),
+    ("People often think its momentum is conserved.", NEGATED),
+    ("You might think its momentum is conserved.", NEGATED),
+    ("A common misconception is to think that its momentum is conserved.", NEGATED),
+    # what students write to take a statement back, as a probe of their phrasings found
+    ("Its momentum is conserved. Not at all.", NEGATED),
+    ("Its momentum is conserved. Of course not.", NEGATED),
+    ("Its momentum is conserved. Totally wrong.", NEGATED),
+    ("Its momentum is conserved. That's a lie.", NEGATED),
+    ("Its momentum is conserved. JK.", NEGATED),
+    ("Its momentum is conserved. Never mind.", NEGATED),
+    ("Its momentum is conserved. I don't know.", NEGATED),
+    ("Its momentum is conserved. Or is it?", NEGATED),
+    ("Its momentum is conserved (or maybe not).", NEGATED),
+    ("Its momentum is conserved. Neither is true.", NEGATED),
+    ("Its momentum is conserved; actually it's the other way round.", NEGATED),
+    ("Its momentum is conserved. My answer is wrong.", NEGATED),
+    ("Its momentum is conserved. Its energy is constant. I'm not sure about any of this.", NEGATED),
+    ("There is no doubt that its momentum is conserved.", FOUND),  # no denial before its "that"
     # what takes back something else, or nothing
     ("Is its momentum conserved? Yes.", FOUND),
     ("Its momentum is conserved, not its energy.", FOUND),
@@ -92,6 +144,29 @@ TAKEN_BACK = [
 def test_a_statement_taken_back_earns_nothing(text, outcome):
     reading = rubric_score(text, [CONSERVED])
     assert (bool(reading.found), bool(reading.discounted)) == outcome
+
+
+TAKEN_BACK_OR_NOT = [
+    # (a statement taken back, a neighbour of it that is not): each rule with where it stops
+    ("Its momentum is conserved. No.", "Yes, its momentum is conserved. No, its energy is not."),
+    ("Its momentum is conserved. Nope.", "Nope, its momentum is conserved."),
+    ("Its momentum is conserved. None of this is true.", "None of this is true: its momentum is conserved."),
+    ("Its momentum is conserved. None of this is true.", "Its momentum is conserved. None of the energy is lost."),
+    ("Its momentum is conserved. None of this is true.",
+     "Its momentum is conserved. None of these are true for the energy."),
+    ("Its momentum is conserved, I think.", "Its momentum is conserved, and I think that is why q is cyclic."),
+    ("Some say its momentum is conserved.", "Some say its energy is not conserved, but its momentum is conserved."),
+    ("It is false that q is cyclic and that its momentum is conserved.",
+     "Note that q is cyclic and that its momentum is conserved."),
+    ("Its momentum is conserved. The opposite is true.", "Its momentum is conserved. The opposite is true of E."),
+    ("Its momentum is conserved. I don't know.", "Its momentum is conserved. I don't know its energy."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("taken_back", "kept"), TAKEN_BACK_OR_NOT)
+def test_a_rule_that_takes_a_statement_back_stops_at_its_neighbour(taken_back, kept):
+    readings = rubric_score(taken_back, [CONSERVED]), rubric_score(kept, [CONSERVED])
+    assert [(bool(reading.found), bool(reading.discounted)) for reading in readings] == [NEGATED, FOUND]
 
 
 # the two ideas of "define scleronomic and rheonomic", each tied to the term it describes
@@ -260,6 +335,67 @@ def test_a_hedged_statement_earns_nothing(text, found):
     assert rubric_score(text, [SCLERONOMIC, RHEONOMIC]).found == found
 
 
+ALTERNATIVES = [
+    # (offered, stated), for the momentum's idea: a phrasing offered with "or" beside another claim of
+    # its own shape, which turns it round or repeats one of its words, is offered, not stated; unless
+    # what the "or" offers is credited too, or is no claim of that shape
+    ("Its momentum is conserved or not.", "Its momentum is conserved or a constant of the motion."),
+    ("Its momentum is either conserved or not.", "Its momentum is conserved (or a constant of the motion)."),
+    ("Its momentum is conserved or it is not.", "Its momentum is conserved or constant."),
+    ("Its momentum is conserved or not conserved.", "Its momentum, or p, is conserved."),
+    (
+        "Its momentum is conserved or the energy is conserved.",
+        "Its momentum is conserved, whether or not the energy is.",
+    ),
+]
+
+
+@pytest.mark.parametrize(("offered", "stated"), ALTERNATIVES)
+def test_a_phrasing_offered_beside_another_of_its_shape_earns_nothing(offered, stated):
+    readings = rubric_score(offered, [COORDINATE, MOMENTUM]), rubric_score(stated, [COORDINATE, MOMENTUM])
+    assert [(MOMENTUM[0] in reading.found, MOMENTUM[0] in reading.discounted) for reading in readings] == [
+        NEGATED,
+        FOUND,
+    ]
+
+
+HARMONIC = [("sin θ ≈ θ", 1.0, ("sin θ ≈ θ", "small angle approximation")),
+            ("proportional to θ", 1.0, ("proportional to θ", "proportional to the angle", "linear in θ"))]  # fmt: skip
+SHAPES = [
+    # (text, the ideas found): the "or" in "proportional to θ or to the angle" offers "proportional to the
+    # angle", which the rubric credits too
+    ("sin θ ≈ θ or sin θ ≈ 1, so the force is proportional to θ or to 1.", ()),
+    ("sin θ ≈ 1 or sin θ ≈ θ, so the force is linear in θ or proportional to θ.", ("proportional to θ",)),
+    ("sin θ ≈ θ or sin θ ≈ 1, so the force is proportional to θ or to the angle.", ("proportional to θ",)),
+    ("The small angle approximation or linearisation: sin θ ≈ θ or θ̈ = −(g/l) θ, proportional to θ or to 1.",
+     ("sin θ ≈ θ",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("text", "found"), SHAPES)
+def test_an_alternative_is_read_in_the_phrasings_place(text, found):
+    assert rubric_score(text, HARMONIC).found == found
+
+
+ELLIPSES = [
+    # (an ellipsis that stands for the rival's claim turned round, and one that does not, with the
+    # ideas it finds): "… if it does not" reads as the claim before it with "not", "… ones do" as
+    # it without its "not"
+    ("A constraint is rheonomic if it contains time explicitly, and scleronomic if it does not.",
+     "A constraint is rheonomic if it does not contain time explicitly, and scleronomic if it does.", NEITHER),
+    ("Scleronomic constraints do not contain t explicitly. Rheonomic ones do.",
+     "Scleronomic constraints contain t explicitly. Rheonomic ones do not.", NEITHER),
+    ("Rheonomic constraints contain t explicitly; scleronomic ones do not.",
+     "Rheonomic constraints contain t explicitly; scleronomic ones do too.", SECOND),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("elided", "not_elided", "found"), ELLIPSES)
+def test_an_ellipsis_stands_for_the_claim_before_it_turned_round(elided, not_elided, found):
+    readings = rubric_score(elided, [SCLERONOMIC, RHEONOMIC]), rubric_score(not_elided, [SCLERONOMIC, RHEONOMIC])
+    assert [reading.found for reading in readings] == [BOTH, found]
+
+
 # H is the energy when the constraints are scleronomic, and conserved when L has no explicit t
 ENERGY = ("H = E when scleronomic", 1.0, ("scleronomic",), ("e", "energy"), ("conserved",))
 
@@ -302,6 +438,14 @@ def test_a_hostile_text_gets_a_proposal(text):
     assert 0 <= reading.points <= 2 and len(reading.found) + len(reading.missing) == 2
 
 
+@pytest.mark.parametrize("text", ["!=" * 2500, " -- " * 1250])
+def test_a_long_run_of_punctuation_is_read_once(text):
+    # a remark's opening is looked for a few characters after a boundary, not across the whole run
+    start = time.process_time()
+    rubric_score(text, [SCLERONOMIC, RHEONOMIC])
+    assert time.process_time() - start < 0.25
+
+
 def test_a_text_is_read_up_to_its_limit():
     padding = " " * MAX_TEXT_LENGTH
     assert rubric_score("conserved" + padding, [CONSERVED]).found
@@ -326,6 +470,12 @@ FEEDBACK = [
      " answer negates, doubts or says of something else."),
     ("Scleronomic constraints are maybe time independent.", 0.0,
      "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 1 more that your"
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic ones are time independent, rheonomic ones time dependent. Both statements are false.", 0.0,
+     "A person will read this answer; the rubric found 0 of its 2 ideas. It did not count 2 more that your"
+     " answer negates, doubts or says of something else."),
+    ("Scleronomic constraints are time independent or not. Rheonomic ones are time dependent.", 0.5,
+     "A person will read this answer; the rubric found 1 of its 2 ideas. It did not count 1 more that your"
      " answer negates, doubts or says of something else."),
 ]  # fmt: skip
 
@@ -430,6 +580,76 @@ PROPOSALS = [
     ("generalized-forces.hamiltonian",
      "H = Σ p_j q̇_j − L. It is conserved if ∂L/∂t = 0; it is the total energy T + V if the constraints are"
      " time independent and V does not depend on the velocities.", 3),
+    # a probe's false answers, proposed credit before (the credit then in the comment)
+    ("plane-pendulum.why-harmonic",
+     "Il n'est pas vrai que sin θ ≈ θ, et la force n'est pas proportional to θ.", 0),  # was 2/2
+    ("spherical-pendulum.conservation", "p_φ is constant. ∂L/∂t ≠ 0. H ≠ T + V.", 1),  # was 2/3
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. Not really.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. None of this is true.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. Both statements are false.", 0),
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ (both false)", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "For small angles sin θ ≈ θ, so the restoring force is proportional to θ. I am joking.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "Some say sin θ ≈ θ and the force is proportional to θ, but they are wrong.", 0),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "The force is proportional to θ, I think; sin θ ≈ θ for small angles.", 1),  # was 2/2
+    ("plane-pendulum.why-harmonic",
+     "It is false that for small angles sin θ ≈ θ and that the restoring force is proportional to θ.", 0),  # was 1
+    ("plane-pendulum.why-harmonic",
+     "sin θ ≈ θ or sin θ ≈ 1, so the force is proportional to θ or to 1.", 0),  # was 2/2
+    ("spherical-pendulum.conservation", "The momentum is conserved or not. ∂L/∂t = 0. H = T + V.", 2),  # was 3/3
+    # H conserved and why are two ideas: the reason earns its half beside a denied claim
+    ("rotating-hoop.energy",
+     "The Hamiltonian is not conserved, the energy is not conserved, H ≠ E. The Lagrangian has no explicit time"
+     " dependence.", 2.5),  # was 3/3
+    ("rotating-hoop.energy", "E is not conserved or it is conserved. L has no explicit time dependence. H ≠ E.",
+     1.5),  # was 3/3
+    ("rotating-hoop.energy", "H is conserved because L depends explicitly on time.", 0.5),  # the claim, not why
+    ("rotating-hoop.energy",
+     "H is a constant of the motion (a Jacobi integral) since ∂L/∂t = 0. It is not the total energy: T + V ≠ H."
+     " E changes since the motor does work on the bead.", 3),  # was 2/3
+    # the momentum of φ, the cyclic coordinate, not θ's, the coordinate's or the bob's
+    ("spherical-pendulum.conservation",
+     "θ is cyclic, so the momentum conjugate to θ is constant. No explicit time. H = T + V.", 2),  # was 3/3
+    ("spherical-pendulum.conservation",
+     "The coordinate conjugate to p_φ is conserved. L has no explicit time dependence. H = T + V.", 2),  # was 3/3
+    ("spherical-pendulum.conservation", "The momentum of the bob is conserved. L has no explicit t, and H = T + V.",
+     2),  # was 3/3
+    ("spherical-pendulum.conservation", "E is a constant of the motion. ∂L/∂t = 0, H = T + V.", 2),  # was 3/3
+    ("spherical-pendulum.conservation",
+     "p_φ is constant. ∂L/∂t = 0. H ≠ T + V because the constraints are scleronomic.", 2),  # was 3/3
+    # rubrics whose topic words credited wrong statements, now bound to what they describe
+    ("constraint-classification.types-of-constraints",
+     "Scleronomic constraints depend explicitly on time and rheonomic ones do not. Holonomic ones are equations"
+     " f(r, t) = 0, like a pendulum.", 2),  # was 3/4
+    ("constraint-classification.types-of-constraints",
+     "Holonomic constraints are time independent, non-holonomic ones time dependent.", 0),  # was 1/4
+    ("constraint-classification.types-of-constraints",
+     "Holonomic and non-holonomic; scleronomic and rheonomic.", 0),  # was 1/4: names, no definition
+    ("principles.dalembert-in-words", "The virtual work of the applied forces is zero.", 1),  # was 2/3: statics
+    ("damped-oscillator.rayleigh-meaning", "F is quadratic in the coordinates; F is the rate of energy dissipation.",
+     0),  # was 2/3: 2F is the rate
+    ("damped-oscillator.rayleigh-meaning", "F is the power dissipated by friction, quadratic in the velocities.",
+     1),  # was 2/3
+    # an ellipsis for the claim before it, as 17 and 24 students of the example class write
+    ("constraint-classification.scleronomic-definition",
+     "A constraint is rheonomic if time appears explicitly in its equation (bead on a moving wire) and scleronomic"
+     " if it does not (bead on a fixed wire).", 2),  # was 1/2
+    ("constraint-classification.scleronomic-long",
+     "A constraint is scleronomic when its equation does not contain time explicitly and rheonomic when it does."
+     " Scleronomic: a bead on a fixed wire. Rheonomic: a bead on a rotating loop.", 4),  # was 3/4
+    ("generalized-forces.hamiltonian",
+     "H = Σ p q̇ − L. H = T + V when the constraints are scleronomic, and it is conserved when they are not.", 2),
+    # and right answers the binding must still credit
+    ("spherical-pendulum.conservation",
+     "φ is cyclic, so ṗ_φ = 0. L has no explicit t, so H is conserved, and H = T + V since T is quadratic.", 3),
+    ("rotating-hoop.energy",
+     "H is conserved since L is time independent. H ≠ E. E is not conserved: the motor does work on the bead.", 3),
 ]  # fmt: skip
 
 

@@ -2,6 +2,8 @@
 
 Contents:
     expected_answer(problem, part)                  the reference text (derived for derive_from)
+    part_options(part, problem)                     the compare options a part implies
+    symbol_meanings(problem)                        the problem's symbols with what each means
     grade_answer(problem, part, submitted, …)       the Verdict a student gets, with the part's
                                                     mistakes, and credit for equations that follow
                                                     from the student's own wrong Lagrangian
@@ -22,7 +24,7 @@ from grader.judge.lagrangian import equations_of_motion
 from grader.judge.setting import Setting
 from grader.parse import parse_answer
 
-__all__ = ["expected_answer", "grade_answer", "part_options", "setting_of"]
+__all__ = ["expected_answer", "grade_answer", "part_options", "setting_of", "symbol_meanings"]
 
 CARRIED = "Your equations follow correctly from your own Lagrangian, which is not right: method credit."
 
@@ -63,18 +65,26 @@ def _frozen(setting: dict) -> dict:
     }
 
 
-def part_options(part: Part) -> dict:
-    """The compare options a part implies: its own, its given names, and its choices or rubric."""
+def part_options(part: Part, problem: Problem | None = None) -> dict:
+    """The compare options a part implies: its own, its given names, and its choices (with what the
+    problem's symbols mean, where it is given) or rubric."""
     options = dict(part.options)
     if part.given:
         options["given"] = dict(part.given)
     if part.kind == "choice":
         options["options"] = tuple(part.choices.items())  # labels with their words, which a student may write
+        if problem is not None:
+            options["meanings"] = symbol_meanings(problem)  # "the azimuthal angle" for an option φ
     if part.kind == "text":
         options["rubric"] = tuple(
             (idea.idea, idea.points, idea.phrasings, idea.about, idea.not_about) for idea in part.rubric
         )
     return options
+
+
+def symbol_meanings(problem: Problem) -> tuple[tuple[str, str], ...]:
+    """The problem's symbols with what each means, as its symbol table says (``phi``, "azimuthal angle …")."""
+    return tuple((s.name, s.meaning) for s in (*problem.coordinates, *problem.parameters) if s.meaning)
 
 
 def grade_answer(
@@ -98,7 +108,7 @@ def grade_answer(
         AuthorError: when the part's reference answer or options are wrong (``grader validate`` finds these).
     """
     deadline = Deadline(timeout)
-    arguments = {"kind": part.kind, **setting_of(problem), **part_options(part)}
+    arguments = {"kind": part.kind, **setting_of(problem), **part_options(part, problem)}
     verdict = compare(expected_answer(problem, part), submitted, **arguments, timeout=timeout)
     if verdict.status != "not_equivalent":
         return verdict
@@ -145,7 +155,9 @@ def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str,
     alone was, and a labelled one lost its equations their credit)."""
     setting = setting_of(problem)
     source = problem.part(part.derive_from)
-    graded = grade_answer(problem, source, lagrangian, timeout=deadline.remaining())
+    # judged against the reference alone: a listed mistake's hint would hide what the verdict says of its units
+    arguments = {"kind": source.kind, **setting, **part_options(source)}
+    graded = compare(expected_answer(problem, source), lagrangian, **arguments, timeout=deadline.remaining())
     read = graded.answer
     if read is None or not read.ok or read.kind != "expression" or deadline.remaining() <= 0:
         return None

@@ -69,7 +69,7 @@ def _check_part(problem: Problem, part: Part) -> Iterable[str]:
                 f" {part.derive_from!r} ({_said(verdict)})"
             )
     for mistake in part.mistakes:
-        arguments = {"kind": part.kind, **setting_of(problem), **part_options(part)}
+        arguments = {"kind": part.kind, **setting_of(problem), **part_options(part, problem)}
         if compare(expected, mistake.answer, **arguments).equivalent:
             yield f"mistake {mistake.answer!r} is equivalent to the reference answer"
             continue

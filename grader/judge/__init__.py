@@ -6,7 +6,7 @@ Contents:
     KINDS       the closed registry of answer kinds and their options
 
 Modules: ``compare`` (dispatch, the shared steps), ``expression``, ``motion``
-(equation, equations), ``lagrangian``, ``scalar`` (integer, number, choice), the
+(equation, equations), ``lagrangian``, ``scalar`` (integer, number), ``choice``, the
 kinds' checkers; ``numeric`` and ``sampling`` (fast evaluation at seeded points),
 ``diagnose`` (naming mistakes), ``feedback`` (every sentence), ``deadline`` (time
 limits), ``setting`` and ``expected`` (the problem's symbols, the prepared reference).

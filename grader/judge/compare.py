@@ -25,6 +25,7 @@ import sympy
 from sympy.core.function import AppliedUndef
 
 from grader.errors import AuthorError
+from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
 from grader.judge.euler_lagrange import euler_lagrange
@@ -36,7 +37,7 @@ from grader.judge.lagrangian import check_lagrangian
 from grader.judge.motion import accelerations_in, check_equation, check_equations
 from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
-from grader.judge.scalar import check_choice, check_integer, check_number
+from grader.judge.scalar import check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import (
     SI_UNITS,
@@ -116,7 +117,7 @@ KINDS: dict[str, Kind] = {
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
         Kind("integer", check_integer, shape="expression"),
         Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None}, shape="expression"),
-        Kind("choice", check_choice, {"options": (), "multiple": False}, parsed=False),
+        Kind("choice", check_choice, {"options": (), "multiple": False, "meanings": ()}, parsed=False),
         Kind("text", check_text, {"rubric": ()}, parsed=False),
     )
 }
@@ -143,7 +144,8 @@ def compare(
             answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
             (seconds, default 2), and the kind's own options (``up_to_constant``, ``h_is_energy``, ``asks_more``,
-            ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs…).
+            ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs,
+            and ``meanings``, the problem's symbols with what they mean…).
 
     Returns:
         A :class:`Verdict`. Nothing a student types makes this raise or hang.
@@ -410,7 +412,13 @@ def _sides(text: str) -> list[str] | None:
     label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
     if not re.fullmatch(r"\s*[^\W\d][\w\s(),'̇]*", label) or not 2 <= len(sides) <= _MAX_LINES:
         return None
-    return [f"{label.strip()} = {side.strip()}" for side in sides] if all(side.strip() for side in sides) else None
+    sides = [side.strip() for side in sides]
+    if not all(sides):
+        return None
+    lines = [f"{label.strip()} = {side}" for side in sides]
+    if is_arbitrary_constant(canonical_name(sides[-1])):  # ẍ = … = const: the value before it is said constant
+        lines[-1] = f"{sides[-2]} = {sides[-1]}"
+    return lines
 
 
 def _judge_lines(
@@ -483,6 +491,8 @@ _AN = {"expression": "an expression", "equation": "an equation", "equations": "a
 def _hashable(value):
     if isinstance(value, list | tuple | set | frozenset):
         return tuple(_hashable(item) for item in value)
+    if isinstance(value, dict):  # meanings={"phi": "azimuthal angle"}
+        return tuple(sorted((key, _hashable(item)) for key, item in value.items()))
     return value
 
 

@@ -82,15 +82,26 @@ def expand_terms(expr) -> dict | None:
     left as they are (sympy splits log(ab) and (a + b)^(3/2), and moves e^(−a) below):
     shapes only have to agree with each other.
 
+    The last expression's terms are remembered, and given again for the very same object: a
+    diagnosis asks for an answer's in several steps. They are only to be read.
+
     >>> x, y = sympy.symbols("x y")
     >>> expand_terms((x + y) ** 2 / 2 + sympy.sin(2 * (x + 1)))
     {x**2: 1/2, x*y: 1, y**2: 1/2, sin(2*x + 2): 1}
     """
+    last = _last_expansion.get("last")
+    if last is not None and last[0] is expr:
+        return last[1]
     try:
         expansion, _ = _expanded(expr)
+        collected = {shape: coefficient for shape, coefficient in expansion.items() if coefficient != 0}
     except _TooMany:
-        return None
-    return {shape: coefficient for shape, coefficient in expansion.items() if coefficient != 0}
+        collected = None
+    _last_expansion["last"] = (expr, collected)
+    return collected
+
+
+_last_expansion: dict = {}
 
 
 EXPANSION_LIMIT = 4 * MAX_TERMS  # past this many terms (or products of terms) the names say nothing
@@ -566,6 +577,12 @@ def describe_term(
 
 def _shown(expr, setting: Setting) -> str:
     """``expr`` (in plain symbols) as a sentence shows it: ω² sin(θ), sin(2θ)."""
+    if isinstance(expr, _TRIG) and expr.args[0] in setting.angles:
+        # sin θ, cos(θ₁ − θ₂): the problem's own, named in answer after answer, and printing one
+        # costs sympy a millisecond of rebuilding and sorting: each is said once per problem
+        if expr not in setting.said:
+            setting.said[expr] = in_sentence(to_text(setting.as_typed(expr)))
+        return setting.said[expr]
     return in_sentence(to_text(setting.as_typed(expr)))
 
 

@@ -330,10 +330,13 @@ def diagnose_difference(
     deadline.check()
     cache_key = ("approximations", key)
     if cache_key not in expected.cache:
-        expected.cache[cache_key] = approximate(e)
-    for number, form in enumerate(expected.cache[cache_key]):
-        if form.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo):
-            continue  # the approximation does not exist here (a Taylor expansion through a pole)
+        expected.cache[cache_key] = [
+            (number, form)
+            for number, form in enumerate(approximate(e))
+            # not one that does not exist here (a Taylor expansion through a pole)
+            if not form.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo)
+        ]
+    for number, form in expected.cache[cache_key]:
         same, form_pairs = same_values(expected, form, s, deadline, key=f"{key}, small angle {number}")
         if same or (expected.option("up_to_constant") and constant_difference(form_pairs)):
             return Outcome("not_equivalent", 0.0, "small_angle")  # with another zero level too
@@ -400,22 +403,19 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     )
     difference, scale = s_values - e_values, np.maximum(e_scales, s_scales)
 
-    def multiples(candidates: list, name: str) -> list:
+    def multiples(candidates: Callable[[], list], name: str) -> list:
         found = []
-        for number, (shape, coefficient) in enumerate(candidates):
-            if not shape.free_symbols:
-                continue  # any constant difference is a multiple of a number: the numbers cannot say which
-            term = expected.compiled(f"{key}, {name} {number}{' varying' if varying else ''}", coefficient * shape)
+        for shape, term in _term_evaluators(expected, key, name, varying, candidates):
             t_values, t_scales = term.many(points)
             multiple = _multiple_of(difference, t_values, np.maximum(scale, t_scales), varying is not None)
             if multiple is not None:
                 found.append((shape, multiple))
         return found
 
-    found = multiples(list(shapes.items()), "term")
+    found = multiples(lambda: list(shapes.items()), "term")
     if not found:
         # k(r − l₀) with the wrong sign is two expanded terms off, but one term as the answer is written
-        found = multiples(_written_terms(e, shapes, varying), "written term")
+        found = multiples(lambda: _written_terms(e, shapes, varying), "written term")
     if len(found) != 1:
         return None
     (shape, multiple), setting = found[0], expected.setting
@@ -438,6 +438,20 @@ def single_term_change(expected: Expected, key: str, e, s, varying: set | None =
     if shape in shapes:
         named = told_apart(shape, named, list(shapes), setting, own=True)
     return "term_differs", f"{named} {how}"
+
+
+def _term_evaluators(expected: Expected, key: str, name: str, varying: set | None, candidates) -> list:
+    """(shape, the term compiled) for each of ``candidates()``, the (shape, coefficient) of terms of
+    the expected answer: made once, not for every answer (each product is a new object to sympy)."""
+    cache_key = ("term evaluators", key, name, varying is not None)
+    if cache_key not in expected.cache:
+        expected.cache[cache_key] = [
+            (shape, expected.compiled(f"{key}, {name} {number}{' varying' if varying else ''}", coefficient * shape))
+            for number, (shape, coefficient) in enumerate(candidates())
+            # any constant difference is a multiple of a number: the numbers cannot say which
+            if shape.free_symbols
+        ]
+    return expected.cache[cache_key]
 
 
 def _written_in_state(shape, s, setting) -> bool:

@@ -69,9 +69,9 @@ FEEDBACK: dict[str, str] = {
     " will check which you meant.",
     "label_for_a_person": "Your answer is labelled {label}, but the quantity asked for is {name}. Read as {name},"
     " it is right; a person will check which you meant.",
-    "constant_said_for_a_person": "Your answer ends `{said}`, which says the quantity is conserved: that is not"
+    "constant_said_for_a_person": "Your answer ends `{said}`, which says the quantity is constant: that is not"
     " asked here. Its formula was graded and is right; a person will check this answer.",
-    "constant_said": "Read without `{said}`, which says the quantity is conserved: its formula was graded.",
+    "constant_said": "Read without `{said}`, which says the quantity is constant: its formula was graded.",
     "label_other": "Your answer is labelled {label}, but the quantity asked for is {name}.",
     "statement_for_a_person": "Your answer says `{statement}` on the way to its value, which is not what {label}"
     " is. Its value was graded and is right; a person will check this answer.",
@@ -198,6 +198,12 @@ FEEDBACK: dict[str, str] = {
     "choice_wrong": "Not the right choice.",
     "choice_conflict": "Your label {label} and your words `{words}` name different options: give one of them.",
     "choice_read": "Read as the option you wrote out: {labels}.",
+    "choice_read_remark": "Read as the option you wrote out: {labels}; what follows it (`{rest}`) is not graded.",
+    "choice_remark": "Graded your choice, {labels}; what follows it (`{rest}`) is not graded.",
+    "choice_hedged": "One option is asked for here, and your answer {typed} offers another, or doubts or denies the"
+    " one it names: give the one you mean.",
+    "choices_hedged": "Your answer {typed} offers another option, or doubts or denies one it names: give just the"
+    " options you mean.",
     "text_review": "A person will read this answer; the rubric found {found} of its {total} ideas.",
     "text_review_discounted": "A person will read this answer; the rubric found {found} of its {total} ideas. It did"
     " not count {discounted} more that your answer negates, doubts or says of something else.",

@@ -41,6 +41,7 @@ whatever the state.
 from __future__ import annotations
 
 import enum
+import functools
 import itertools
 import math
 from collections.abc import Sequence
@@ -95,6 +96,15 @@ def _equations(value) -> tuple:
     return tuple(_as_zero(item) for item in (value if isinstance(value, tuple) else (value,)))
 
 
+def _expected_equations(expected: Expected) -> tuple[tuple, tuple[tuple[str, ...], ...]]:
+    """The expected answer's equations (each as an expression = 0), and the coordinates whose
+    accelerations each holds: built once, not for every answer (lhs − rhs is a new sum to sympy)."""
+    if "equations as zero" not in expected.cache:
+        equations = _equations(expected.value)
+        expected.cache["equations as zero"] = equations, tuple(tuple(accelerations_in(f, expected)) for f in equations)
+    return expected.cache["equations as zero"]
+
+
 class _Rows:
     """Coefficient rows (c₁…cₙ, b) of equations at one state, and whether they are linear in q̈.
 
@@ -113,7 +123,7 @@ class _Rows:
             (b, *stepped, probed), (b_scale, *stepped_scales, probe_scale) = values, scales
             c = [(value - b) / step for value in stepped]
             c_scales = [max(scale, b_scale) / step for scale in stepped_scales]
-            probe = [type(step)(p) for p in _probe(len(c))]  # fractions for exact rows
+            probe = _probe_as(type(step), len(c))  # fractions for exact rows
             predicted = b + sum(ck * pk for ck, pk in zip(c, probe, strict=True))
             noise = max(probe_scale, b_scale + sum(s * abs(p) for s, p in zip(c_scales, probe, strict=True)))
             self.linear_each.append(closeness(probed, predicted, noise, precise=precise))
@@ -152,6 +162,12 @@ class _Rows:
 
 def _probe(n: int) -> list[float]:
     return [_PROBE[k % len(_PROBE)] * (1 + k // len(_PROBE)) for k in range(n)]
+
+
+@functools.cache
+def _probe_as(number: type, n: int) -> tuple:
+    """:func:`_probe` in the number type of the rows, made once: every row of every state reads it."""
+    return tuple(number(p) for p in _probe(n))
 
 
 def _settings(n: int, step: float = 1.0) -> list[list[float]]:
@@ -195,8 +211,10 @@ def _steps(expected: Expected, reference: Sequence[Compiled]) -> tuple[float, ..
 
 
 def _worst(a: Closeness, b: Closeness) -> Closeness:
-    order = (Closeness.EQUAL, Closeness.UNSURE, Closeness.DIFFERENT)
-    return max(a, b, key=order.index)
+    return max(a, b, key=_BADNESS.__getitem__)
+
+
+_BADNESS = {Closeness.EQUAL: 0, Closeness.UNSURE: 1, Closeness.DIFFERENT: 2}
 
 
 def _positions(expected: Expected) -> list[int]:
@@ -207,7 +225,7 @@ def _positions(expected: Expected) -> list[int]:
 def accelerations_in(expr, expected: Expected) -> list[str]:
     """The coordinates whose acceleration occurs in ``expr`` (as parsed, or in plain symbols)."""
     setting = expected.setting
-    present = expr.free_symbols | expr.atoms(sympy.Derivative)
+    present = expr.atoms(sympy.Symbol, sympy.Derivative)  # one walk: q̈ as a plain symbol, or as parsed
     return [q for q in setting.coords if setting.acceleration(q) in present or setting.node(q, 2) in present]
 
 
@@ -255,11 +273,16 @@ def _float_rows(
     None where it is undefined.
 
     A ``reference`` system is compiled from the expected answer and kept in its cache (so
-    its identity is stable): its rows are the same for every submission and kept too.
+    its identity is stable): its rows are the same for every submission and kept too. A
+    submitted system's last rows are kept with the system itself (only the very same objects
+    reuse them): the vanishing-factor search and the linearity test read them again.
     """
     key = ("rows", tuple(id(f) for f in system), steps)
     if reference and key in expected.cache:
         return expected.cache[key]
+    last = None if reference else expected.cache.get("last rows")
+    if last is not None and last[:2] == (tuple(system), steps):  # a Compiled equals only itself
+        return last[2]
     batch = _accelerated_states(expected, steps)
     width = len(_positions(expected)) + 2
     evaluated = []
@@ -273,6 +296,8 @@ def _float_rows(
         rows.append(_Rows(samples, precise=False, step=step) if defined else None)
     if reference:
         expected.cache[key] = rows
+    else:
+        expected.cache["last rows"] = (tuple(system), steps, rows)
     return rows
 
 
@@ -392,12 +417,12 @@ def _decided(results: list[Closeness]) -> bool | None:
 
 
 def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    (f,) = _equations(expected.value)
+    (f,), (accelerations,) = _expected_equations(expected)
     (g,) = _equations(answer.value)
-    if not accelerations_in(f, expected):
+    if not accelerations:
         return _check_relation(expected, f, expected.setting.plain(g), deadline)
     if not accelerations_in(g, expected):
-        names = ", ".join(unicode_name(q, 2) for q in accelerations_in(f, expected))
+        names = ", ".join(unicode_name(q, 2) for q in accelerations)
         return Outcome("not_equivalent", 0.0, "not_equation_of_motion", {"accelerations": names}, "accelerations")
     expected_f = expected.compiled("equation", f)
     submitted_g = expected.compile(g)
@@ -430,7 +455,7 @@ def check_equation(expected: Expected, answer: ParsedAnswer, deadline: Deadline)
         # right wherever states are drawn, wrong at rest or at the origin: a vanishing factor
         return Outcome("not_equivalent", 0.0, "vanishing_factor", method="accelerations")
     if _nonlinear(expected, [expected_f], [submitted_g]) == [True]:
-        names = ", ".join(unicode_name(q, 2) for q in accelerations_in(f, expected))
+        names = ", ".join(unicode_name(q, 2) for q in accelerations)
         return Outcome("not_equivalent", 0.0, "not_linear", {"accelerations": names}, "accelerations")
     return _diagnose_motion(expected, f, expected.setting.plain(g), deadline)
 
@@ -1117,7 +1142,7 @@ class _State:
 
 
 def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
-    theirs, references = _equations(answer.value), _equations(expected.value)
+    theirs, (references, _) = _equations(answer.value), _expected_equations(expected)
     expected_fs = [expected.compiled(f"equations {i}", f) for i, f in enumerate(references)]
     submitted_gs = [expected.compile(g) for g in theirs]
     numbered = _states(expected, expected_fs, submitted_gs, deadline)
@@ -1209,9 +1234,10 @@ def _terms_named(expected: Expected, references: Sequence, g, position: int, dea
     so near: the student combined or solved the equations, and the terms they wrote are not
     the expected ones."""
     named, accelerations, plain = [], set(accelerations_in(g, expected)), None
+    _, of_references = _expected_equations(expected)
     # the one in the same place first: of two equally near, min keeps the first
     for i, f in sorted(enumerate(references), key=lambda item: item[0] != position):
-        if not accelerations or set(accelerations_in(f, expected)) != accelerations:
+        if not accelerations or set(of_references[i]) != accelerations:
             continue  # θ̈₁ = … solved is no term or two away from an equation in θ̈₁ and θ̈₂
         plain = plain if plain is not None else expected.setting.plain(g)  # built only when compared
         outcome = _diagnose_motion(expected, f, plain, deadline, key=f"equations {i}, normalized")
@@ -1240,7 +1266,7 @@ def _state_agrees(state: _State) -> bool:
 def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: Deadline) -> bool:
     """Whether the submitted system is the expected one linearized about q = q̇ = 0."""
     if "equations, linearized" not in expected.cache:
-        linear = [taylor(f, expected.setting, 1) for f in _equations(expected.value)]
+        linear = [taylor(f, expected.setting, 1) for f in _expected_equations(expected)[0]]
         finite = not any(f.has(sympy.nan, sympy.zoo) for f in linear)
         expected.cache["equations, linearized"] = (
             [expected.compiled(f"equations, linearized {i}", f) for i, f in enumerate(linear)] if finite else None

@@ -188,13 +188,13 @@ def _read_number(
     if re.search(_UNEQUAL_SIGN, text):
         return prepared, None, notes  # 6 ≠ 9 = 3·3: the chain's last side is what the answer is not
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
-    pieces, after_step = _sides(bare)
+    pieces, runs = _sides(bare)
     last = len(pieces) - 1
     # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
     # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last,
     # nor before anything but a name, where the last side may take it back (6 − 4 = 2? no, 4) or be another
     # number (3 − 2 = 1 or 2, 3 − 2 = 1 x 2)
-    first = (0,) if last == 1 and not after_step and _is_name(pieces[1]) else ()
+    first = (0,) if last == 1 and len(runs) == 1 and _is_name(pieces[1]) else ()
     for index in dict.fromkeys((last, *first)):
         for before, typed, rest in _number_in(pieces[index], names):
             if count and _COUNT_THEN_BRACKET.fullmatch(typed):
@@ -210,15 +210,15 @@ def _read_number(
             if said and _other_values(pieces[:last], answer, *numbers):
                 # 6 − 4 = 2, so also 4: words beside a value the working does not come to may offer a second
                 return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
-            if before:
+            # 4 − 1 = 2, 3·5 = 16 → 15: working that does not hold, a slip or a value not worked out
+            working = _false_working(pieces, runs, _last_side(answer), numbers) if last and index == last else None
+            if working:
+                notes += (("working_false_for_a_person", {"value": typed, "working": _shown(working)}),)
+            elif before:
                 notes += (("number_in_sentence", {"value": typed}),)
             elif rest:
                 rest = rest.lstrip(",:;–—- ")
                 notes += (("remark_ignored", {"value": typed, "rest": _shown(rest)}),)
-            elif last == index and len(pieces) <= _SIDES and _other_values(pieces[after_step:last], answer, *numbers):
-                # 4 − 1 = 2: working that does not come to the value graded, a slip or a value not worked out
-                working = " = ".join(pieces[after_step:])
-                notes += (("working_false_for_a_person", {"value": typed, "working": _shown(working)}),)
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
             elif last:
@@ -254,12 +254,12 @@ def _worked_over_lines(
     if sum(len(pieces) for pieces, _ in sides) > _SIDES:
         return None
     values, false = [], None  # each line's last; the first line whose sides do not come to it
-    for line, (pieces, after_step) in zip(working, sides, strict=True):
+    for line, (pieces, runs) in zip(working, sides, strict=True):
         read = [reads(_spelled(piece, decimal_comma, unit)[0]) for piece in pieces] if len(pieces) > 1 else [None]
         if None in read:
             return None
         values.append(_last_side(read[-1]))
-        if false is None and not all(_agree(_last_side(side), values[-1], count) for side in read[after_step:-1]):
+        if false is None and _false_working(pieces, runs, values[-1], (reads, decimal_comma, unit, count)):
             false = line
     prepared, answer, notes = _read_number(
         final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
@@ -304,20 +304,30 @@ _ROUNDED = 0.05  # a measured value rounded (2π√(1/9.81) = 2.006 s, then 2.0 
 
 def _agree(value, other, count: bool) -> bool:
     """Whether two values of working say the same: a count's the same number; a measured value's the
-    same to within its rounding."""
+    same to within its rounding, in SI units (2.006 s = 2006 ms), where a side without a unit may be in
+    SI units or in the other side's (2π√(1/9.81) = 2006 ms, 2006 = 2006 ms); never two sides in units
+    of different dimensions (2.006 kg = 2.006 s)."""
     if value == other:
         return True
     if count:
         return False
-    measured = in_units(value), in_units(other)
-    if None not in measured and measured[0][2] == measured[1][2]:  # 2.006 s = 2006 ms: in SI units
-        value, other = (number * sympy.Rational(size) for number, size, _ in measured)
+    first, second = in_units(value), in_units(other)
+    if first is None or second is None:
+        return False  # a value with a name in it: not said to agree
+    (number, size, powers), (other_number, other_size, other_powers) = first, second
+    in_si = (number * sympy.Rational(size), other_number * sympy.Rational(other_size))
+    if powers == other_powers:
+        return _near(*in_si)
+    if any(powers) and any(other_powers):
+        return False
+    return _near(*in_si) or _near(number, other_number)
+
+
+def _near(value, other) -> bool:
     try:
-        ratio = value / other
-        # in its unit or not (2π√(1/9.81) = 2.006 s): reads reads no symbol but a unit
-        ratio = complex(ratio.subs({symbol: 1 for symbol in ratio.free_symbols}).evalf(15))
+        ratio = complex((value / other).evalf(15))
     except (TypeError, ValueError, ArithmeticError):
-        return False  # a value with no number, or 0: not said to agree
+        return False  # 0: not said to agree
     return abs(ratio - 1) <= _ROUNDED
 
 
@@ -478,21 +488,46 @@ def _value_of(answer: ParsedAnswer | None):
     return value if value.is_number else None
 
 
-def _sides(text: str) -> tuple[list[str], int]:
+def _sides(text: str) -> tuple[list[str], tuple[int, ...]]:
     """The sides of a chain of working (``6 − 4 = 2 → 4``: 6 − 4, 2 and 4), split where an equals sign
-    or a step stands outside brackets (``2 (so two angles)`` is one side); and the index of the first
-    side after the last step (0 where no step stands): the sides from it on claim to be equal."""
+    or a step stands outside brackets (``2 (so two angles)`` is one side); and where each run of sides
+    joined by equals signs alone begins, the runs a step separates (``(0, 2)``; ``(0,)`` where no step
+    stands): the sides of a run claim to be equal, and a step claims nothing."""
     marks = [(found, False) for found in _EQUALS.finditer(text)] + [(found, True) for found in _STEPS.finditer(text)]
     marks.sort(key=lambda mark: mark[0].start())
     depth = [0] * (len(text) + 1)
     for index, character in enumerate(text):
         depth[index + 1] = depth[index] + (character in "([{") - (character in ")]}")
-    pieces, start, after_step = [], 0, 0
+    pieces, start, runs = [], 0, [0]
     for found, step in marks:
         if found.start() >= start and depth[found.start()] == 0:
             pieces.append(text[start : found.start()].strip())
-            start, after_step = found.end(), len(pieces) if step else after_step
-    return [*pieces, text[start:].strip()], after_step
+            start = found.end()
+            if step:
+                runs.append(len(pieces))
+    return [*pieces, text[start:].strip()], tuple(runs)
+
+
+def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str | None:
+    """The first run of working (``pieces`` and ``runs``, as :func:`_sides` gives them) whose sides are
+    not equal, as typed; None where each holds. ``final`` is the value of the last side as graded, and
+    ``numbers`` how sides are read (``reads``, ``decimal_comma``, ``unit``, ``count``). A run is checked
+    from its last side back to the first side that is no number: in ``ω = √(9.81) = 3.13, T = 2π/3.13 =
+    2.006 s`` the sides after ``3.13, T``, which ends one statement and begins the next."""
+    reads, decimal_comma, unit, count = numbers
+    if len(pieces) > _SIDES:
+        return None
+    for start, end in zip(runs, [*runs[1:], len(pieces)], strict=True):
+        run = pieces[start:end]
+        values = [final] if end == len(pieces) else []
+        for side in reversed(run[:-1] if values else run):
+            read = reads(_spelled(side, decimal_comma, unit)[0]) if side else None
+            if read is None:
+                break
+            values.append(_last_side(read))
+        if not all(_agree(value, values[0], count) for value in values[1:]):
+            return " = ".join(run).rstrip(",;: ")  # 3·5 = 16, so 15: the comma is the step's
+    return None
 
 
 # a count, then brackets and nothing after them: 2 (6 − 4), 1 (2), 15 (5 particles), two (2)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import sympy
 
@@ -105,7 +105,11 @@ class Setting:
             return tuple(self.plain(item) for item in value)
         if isinstance(value, sympy.Eq):  # rebuilding an Eq would make sympy try to decide it
             return sympy.Eq(self.plain(value.lhs), self.plain(value.rhs), evaluate=False)
-        return value.xreplace(self._replacements)
+        return value.xreplace(self._plain_rule)
+
+    @cached_property
+    def _plain_rule(self) -> dict:
+        return self._replacements | _angle_functions(self.coords)
 
     def as_typed(self, value):
         """The reverse of :meth:`plain`: plain symbols back to q(t), q̇, q̈…, which print as θ, θ̇, θ̈."""
@@ -137,6 +141,18 @@ class Setting:
     def is_state(self, symbol: sympy.Symbol) -> bool:
         """Coordinates, their derivatives, given names (a momentum), and time: what varies along a motion."""
         return symbol == TIME or symbol in self.varying
+
+    @cached_property
+    def angles(self) -> frozenset:
+        """The plain symbols of the coordinates, and the difference of each two (θ₁ − θ₂ and θ₂ − θ₁)."""
+        coordinates = [self.state[(name, 0)] for name in self.coords]
+        return frozenset(coordinates) | {a - b for a in coordinates for b in coordinates if a != b}
+
+    @cached_property
+    def said(self) -> dict:
+        """The problem's own functions of :attr:`angles` as feedback words them, kept for the next
+        answer (see :mod:`grader.judge.diagnose`)."""
+        return {}
 
     @cached_property
     def varying(self) -> frozenset:
@@ -175,6 +191,18 @@ class Setting:
     def describe(self, names: Iterable[str]) -> str:
         """Names as a student reads them: ``m, l, g, θ``."""
         return ", ".join(unicode_name(name) for name in names)
+
+
+@lru_cache(maxsize=256)
+def _angle_functions(coords: tuple[str, ...]) -> dict:
+    """sin and cos of each coordinate, and of the difference of each two (θ₁ − θ₂), as parsed → in plain
+    symbols, as :meth:`Setting.plain` would rebuild them: a function of a new argument is evaluated
+    afresh, and with sympy's cache emptied cos(θ₁ − θ₂) costs a millisecond. Most answers have some."""
+    plain = {sympy.Function(name, real=True)(TIME): sympy.Symbol(name) for name in coords}
+    angles = [*plain, *(a - b for a in plain for b in plain if a != b)]
+    typed = [function(angle) for function in (sympy.sin, sympy.cos) for angle in angles]
+    # sin(θ₂ − θ₁) is −sin(θ₁ − θ₂), a product: only the functions themselves are whole subtrees to match
+    return {f: f.xreplace(plain) for f in typed if isinstance(f, sympy.sin | sympy.cos)}
 
 
 def _signs(draw: int, count: int, draws: int) -> list[int]:

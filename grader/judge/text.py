@@ -16,16 +16,24 @@ credit for a statement turned round.
   uniform ("doesn't" is "does not", "cannot" is "can not"). ``…`` in a phrasing stands for
   any words of one clause: ``not … explicitly`` is found in "does not contain t explicitly".
 * It does not count where it is negated: a negation (not, no, never, none, nothing, neither,
-  nor, without) among the six words before it in its clause or in its ``…``, or a negating
-  prefix on its first word (non-, un, in, im, ir: ``conserved`` in "non-conserved",
-  ``dependent`` in "independent"). A negation among the phrasing's own words is its meaning.
+  nor, without, ≠; pas, nicht, kein…) among the six words before it in its clause or in its
+  ``…``, a "≠" just after it ("T + V ≠ H"), or a negating prefix on its first word (non-, un,
+  in, im, ir: ``conserved`` in "non-conserved", ``dependent`` in "independent"). A negation
+  among the phrasing's own words is its meaning.
 * Nor where it is taken back: later in its sentence ("…, which is false", "— not true in
-  general", "(wrong)"), by the next sentence ("That is not true."), or by a denial before its
-  "that" ("it is not true that …", "I do not think that …").
-* Nor where it is doubted: after maybe, perhaps, possibly, probably or "I guess" as a negation
-  would stand, before "I'm not sure" in its sentence, in a question not answered yes ("…
-  conserved? No."; a why or how question takes its statement for granted), or offered with "or"
-  beside a phrasing of the rival idea, no term named between ("time dependent or time independent").
+  general", "(wrong)", "but they are wrong"), by the next sentence ("That is not true.", "Not
+  really.", "Nope.", "The opposite is true."), by a remark on all said before it ("None of this
+  is true.", "Both statements are false.", "I am joking."), or by a denial before its "that"
+  ("it is not true that …", "I do not think that …"), which a "that" joined to it shares ("…
+  that A and that B").
+* Nor where it is doubted: after maybe, perhaps, possibly, probably, "I guess" or what others
+  say ("some say", "you might think", "a common mistake is to think") as a negation would stand,
+  before "I'm not sure" or "I think" ending its sentence, in a question not answered yes ("…
+  conserved? No."; a why or how question takes its statement for granted), offered with "or"
+  beside a phrasing of the rival idea, no term named between ("time dependent or time
+  independent"), or with "or" right beside another claim of its own shape, which turns it round
+  or repeats one of its words ("conserved or not", "sin θ ≈ θ or sin θ ≈ 1"), unless the rubric
+  credits that one too ("proportional to θ or to the angle").
 * An idea with ``about`` terms counts only where it is said of one of them. It is said of the
   nearest term (of ``about`` or ``not_about``) named before it in its clause, else after it in
   its clause; else the same in its sentence; else of the last term named before it; else, with
@@ -34,6 +42,11 @@ credit for a statement turned round.
   describes it ("a conserved momentum"). With "respectively", a list of terms pairs with its
   descriptions in order ("A and B are X and Y, respectively"), or where they are too few to
   follow, with neither.
+* An ellipsis that ends a clause said of the idea's term ("… and scleronomic if it does not",
+  "rheonomic ones do") stands for the last claim a rival idea counted in its sentence or the one
+  before, read with "not" where it says not and without the claim's own "not" where it does not:
+  "rheonomic if time appears explicitly, and scleronomic if it does not" finds ``not …
+  explicitly`` for scleronomic.
 * A term does not stand for itself when it is denied ("H is not equal to T + V when …"),
   negated by a prefix ("non-holonomic" for holonomic), inside a longer term, set against the
   subject ("unlike Newton's method"), listed with a rival ("Newton's and Lagrange's methods
@@ -65,8 +78,16 @@ GAP = "..."  # "…" after NFKC: in a phrasing, any words of the same clause
 
 # apostrophes a keyboard or a word processor may give "doesn't"
 _APOSTROPHES = str.maketrans({"’": "'", "‘": "'", "ʼ": "'", "´": "'", "`": "'"})
-# "not only" affirms: "it not only uses scalar energies but also…"
-_NEGATION = re.compile(r"\b(?:not(?! only\b| just\b)|no|never|none|nothing|neither|nor|without)\b")
+# "not only" affirms: "it not only uses scalar energies but also…"; "≠" denies what it relates,
+# so "t + v" in "H ≠ T + V" is negated, as in "H is not T + V"
+_UNEQUAL = r"≠|!=|=/=|\\neq?\b"
+# the negations of languages students mix in: "la force n'est pas proportionnelle", "nicht konstant"
+_FOREIGN_NEGATION = r"pas|jamais|nicht|kein|keine|keinen|nie|niet|nunca"
+_NEGATION = re.compile(
+    rf"\b(?:not(?! only\b| just\b)|no|never|none|nothing|neither|nor|without|{_FOREIGN_NEGATION})\b|{_UNEQUAL}"
+)
+# and what stands just before it: "T + V ≠ H"
+_UNEQUAL_AFTER = re.compile(rf"\s*(?:{_UNEQUAL})")
 # "doesn't" and "cannot" read as "does not" and "can not", so the phrasing "not be written" is
 # found in "can't be written", and one negation word serves them all
 _CONTRACTED = re.compile(r"n't\b|(?<=\bcan)not\b")
@@ -86,30 +107,75 @@ _CONTRAST = re.compile(
 _LETTER_NAME = r"(?<![^\W\d_]|\.){}(?![^\W\d_]|[\u0300-\u036f]|\.[^\W\d_]|'(?!s\b))"
 # an aside in brackets negates nothing outside it: "the momentum (p_k, not q̇_k) is conserved"
 _ASIDE = re.compile(r"\([^()]*\)|\[[^\[\]]*\]")
-_SENTENCE_END = re.compile(r"[;!?]|\.(?=\s|$)")
+_SENTENCE_END = re.compile(r"[;?]|!(?!=)|\.(?=\s|$)")  # "!=" is a relation, not a cry
 # not "or": a negation reaches across it ("does not use energies or generalized coordinates")
 _CLAUSE_END = re.compile(
     r"[,:]|\b(?:and|but|while|whereas|so|then|hence|thus|therefore|since|because|if|when|whenever|"
     r"although|though|unlike|which|that|whose|where)\b"
 )
 # what says a statement is not so (or doubts it) after it, "…, which is false", "That is not
-# true.", "I'm not sure", ending its clause or giving a reason: "not true for the energy" takes
-# back nothing said before it
+# true.", "Not really.", "The opposite is true.", "I'm not sure", "…, I think.", ending its clause
+# or giving a reason: "not true for the energy" takes back nothing said before it, nor does the
+# "no" that answers the next question ("Yes, H is conserved. No, H ≠ E.")
 _FALSE = (
-    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain)|false|wrong|incorrect|untrue|unsure|guess)"
-    r"(?:\s+(?:in general|at all|here|either|though))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
+    r"(?:(?:totally|completely|entirely|simply|just|all|very|obviously|of course) )?"
+    r"(?:not (?:true|correct|right|valid|the case|so|sure|certain|really|quite|exactly|at all)|false|wrong"
+    r"|incorrect|untrue|unsure|nonsense|a lie|lies|guess|think|believe|suppose|maybe|perhaps|probably|possibly"
+    r"|do not know|no idea|or (?:maybe |perhaps |probably )?not|or is it"
+    r"|no,? wait|wait,? no|(?:lol|haha),? no|scratch that|never mind|(?:just )?(?:joking|kidding)|jk|a joke"
+    r"|(?:the )?(?:opposite|reverse|other way (?:round|around))(?: is (?:true|the case))?"
+    r"|(?:none|neither)(?: of (?:this|these|that|those|them|it|the two))?(?: statements?| claims?)?"
+    r" (?:is|are) (?:true|correct|right|so))"
+    r"(?:\s+(?:in general|at all|here|either|though|so))?(?=\s*(?:[—–),.;:!?]|$|\b(?:because|since|as|but|and)\b))"
 )
+# and "Not!", "No." or "Nope." on their own: "… when they are not." stands for the claim before it
+_BARE_DENIAL = r"(?:(?:of course|obviously|certainly|definitely) )?(?:not|no|nope)(?=\s*(?:[.!?;)]|$))"
 _FALSITY_REMARK = re.compile(
-    rf"\W*(?:(?:this|it|that|which|i|the (?:statement|claim))\W+)?(?:(?:is|was|are|s|am|m|would be) )?{_FALSE}"
+    rf"\W*(?:{_BARE_DENIAL}|(?:(?:actually|in fact|really),? )?"
+    r"(?:(?:this|it|that|which|i|they|these|those|the (?:statement|claim))\W+)?"
+    rf"(?:(?:is|was|are|s|am|m|re|would be) )?{_FALSE})"
 )
-# a doubt before a statement, as a negation would stand: "maybe time independent"
-_DOUBT = re.compile(r"\b(?:maybe|perhaps|possibly|probably|i guess)\b")
-_DASHED_FALSITY = re.compile(rf"(?:[—–(]| - | -- )\W*{_FALSE}")
+# a doubt before a statement, as a negation would stand: "maybe time independent"; what others say
+# or think is not what the student says ("some say", "a common mistake is to think")
+_SOME_SAY = (
+    r"(?:some|many|most) (?:people |students |books )?(?:say|claim|think|believe)"
+    r"|people (?:often |usually |commonly )?(?:say|claim|think|believe)|you (?:might|may|could|would) (?:think|say)"
+    r"|(?:it is|it's) (?:often |commonly |widely |sometimes )?(?:said|claimed|believed|thought)"
+    r"|(?:mistake|misconception|myth|error) (?:is )?to (?:say|think|believe|claim)"
+)
+_DOUBT = re.compile(rf"\b(?:maybe|perhaps|possibly|probably|i guess|{_SOME_SAY})\b")
+_DASHED_FALSITY = re.compile(
+    rf"(?:[—–(]| - | -- )\W*(?:{_BARE_DENIAL}|(?:(?:both|all|i)\W+(?:(?:are|am|m) )?)?{_FALSE})"
+)
+# a remark that takes back all said before it, not only its sentence: "None of this is true.",
+# "Both statements are false.", "My answer is wrong.", "I am joking.", "Ignore the above."
+_ALL_OF_IT = (
+    r"(?:all|both|everything(?: above| i (?:said|wrote))?|all (?:of )?(?:this|these|that|those|them|it|the above)"
+    r"|both of (?:these|them|those)|the above|(?:all|both) (?:of )?(?:the |my |these |those )?"
+    r"(?:statements|claims|sentences|answers)|(?:this|my|the above) answer)(?: above)?"
+)
+_RETRACTION = re.compile(
+    r"(?:^|[.;:!?,(—–]|\s--?\s|\b(?:but|and|though|however)\b)\W{0,4}(?P<remark>"
+    r"none of (?:this|these|that|those|it|them|the above|what i (?:said|wrote))(?: above)?"
+    r" (?:is|are|was|were) (?:true|correct|right|valid|so)"
+    rf"|{_ALL_OF_IT}(?: (?:is|are|was|were))?(?: all)?"
+    r" (?:(?:totally|completely|entirely) )?(?:false|wrong|incorrect|untrue|nonsense|not (?:true|correct|so))"
+    r"|(?:i am|i'm|im|just) (?:just )?(?:joking|kidding)|jk|(?:this|it) (?:is|was) (?:all )?a joke"
+    r"|(?:i am|i'm) not sure (?:about|of) (?:any|all) of (?:this|it|that|these)"
+    r"|(?:please )?(?:ignore|disregard) (?:all of |everything )?(?:this|that|the above|above|everything))"
+    r"(?=\s*(?:[—–),.;:!?]|$))"
+)
 # a question states nothing unless answered yes; one asking why or how takes its statement for granted
 _WHY = re.compile(r"\W*(?:why|how)\b")
 _YES = re.compile(r"\W*(?:yes|yeah|yep|indeed|correct|true)\b")
 # a denial before "that" ("it is not true that …", "I do not think that …", "a misconception that …")
-_DENIAL = re.compile(r"\b(?:not(?! only\b)|never|no|false|wrong|incorrect|untrue|myth|misconception|mistake)\b")
+_DENIAL = re.compile(
+    r"\b(?:not(?! only\b| doubt)|never(?! doubt)|no(?! doubt)|false|wrong|incorrect|untrue|myth|misconception"
+    rf"|mistake|{_SOME_SAY})\b"
+)
+# what joins a "that" to an earlier one, whose denial it shares: "it is false that A and that B"
+_JOINED = re.compile(r"(?:\band|\bor|\bnor|,)\s*$")
+_THAT = re.compile(r"\bthat\b")
 # "A and B are X and Y, respectively": the word, and what parts the terms of such a list (the rest
 # of a term's word, as "scleronom" names "scleronomic", and a noun such as "constraints")
 _RESPECTIVELY = re.compile(r"\brespectively\b|\bresp\b\.?")
@@ -123,6 +189,19 @@ _APPOSITION = re.compile(r"[^\W\d_]*\s+")  # and the name right after it: "a cyc
 # between a phrasing and the term it stands before as an adjective: "a conserved (generalized) momentum"
 _ATTRIBUTE = re.compile(r"\s+(?:(?:generalized|generalised|canonical|conjugate|angular|linear)\s+)?")
 _OR = re.compile(r"\bor\b")
+# a clause that ends on its verb, which stands for the claim before it: "scleronomic if it does not",
+# "rheonomic when it does"; and a negation that begins a claim, which it turns round
+_ELLIPSIS = re.compile(
+    r"\b(?:it|they|one|ones|this|that|these|those)\s+(?:does|do|did|is|are|was|were|has|have)(?P<not>\s+not)?"
+    r"(?:\s+(?:so|too))?(?=\s*(?:$|[—–(),.;:!?]))"
+)
+_LEADING_NEGATION = re.compile(r"^(?:not|no|never)\s+")
+# a phrasing offered beside another of its own shape: "sin θ ≈ θ or sin θ ≈ 1", "proportional to θ or to
+# 1", "conserved or not", "not conserved or it is conserved"
+_OR_AFTER = re.compile(r"\s+or\s+")
+_OR_BEFORE = re.compile(r"(?<![^\W\d_])or\s+(?:(?:it|they|this|that)(?: is| are| was|'s|'re)\s+)?$")
+_OR_TURNED = re.compile(r"\W*(?:not|no|never|(?:it|they|this|that)(?: is| are| was| does| do| has| can|'s|'re))\b")
+_LINKING_WORDS = frozenset(("the", "a", "an", "is", "are", "be", "it", "its", "of", "in", "and", "not", "no", "never"))
 # what follows a list of terms of which a phrasing is said together: "A and B constraints", "A and B both"
 _LIST_TAIL = re.compile(r"[^\W\d_]*(?:'s)?\s+(?:(?:constraints|methods|ones|formulations|approaches)\b|both\b)")
 # a full stop after these is no sentence's end: "e.g. a pendulum", "i.e. scleronomic", "q_1, ..., q_n"
@@ -161,6 +240,8 @@ class _Reading:
         self.clauses, self.sentences = _boundaries(text)
         self.clause_ends = [start for start, _ in self.clauses]
         self.sentence_ends = [start for start, _ in self.sentences]
+        # where the last remark that takes back all before it stands ("None of this is true.")
+        self.retracted = max((match.start("remark") for match in _RETRACTION.finditer(text)), default=-1)
 
     def clause(self, start: int, end: int) -> tuple[int, int]:
         return _around(self.clauses, self.clause_ends, start, end, len(self.text))
@@ -220,7 +301,7 @@ def _occurrences(reading: _Reading, phrasing: str):
             negated = negated or bool(_NEGATION.search(text, end, found))
             end = found + len(piece)
         else:
-            yield start, end, negated or _taken_back(reading, end)
+            yield start, end, negated or bool(_UNEQUAL_AFTER.match(text, end)) or _taken_back(reading, end)
         start = text.find(first, start + 1)
 
 
@@ -235,10 +316,30 @@ def _negated_before(reading: _Reading, low: int, start: int, phrasing: str) -> b
     window = " ".join(before.split()[-NEGATION_REACH:])
     if _NEGATION.search(window) or _DOUBT.search(window):
         return True
-    if text[max(0, low - 4) : low] != "that":
-        return False
-    denial, _ = reading.clause(low - 4, low - 4)
-    return bool(_DENIAL.search(" ".join(text[denial : low - 4].split()[-3:])))
+    return _denied_that(reading, low - 4)
+
+
+def _denied_that(reading: _Reading, that: int) -> bool:
+    """Whether the "that" at ``that`` follows a denial ("it is not true that …"), its own or, where
+    it is joined to an earlier one by "and" or "or", that one's: "it is false that A and that B"."""
+    text = reading.text
+    sentence, _ = reading.sentence(that, that)
+    for _ in range(NEGATION_REACH):  # how many "that"s a denial reaches
+        if text[max(0, that) : that + 4] != "that":
+            return False
+        denial, _ = reading.clause(that, that)
+        words = text[denial:that].split()
+        # three words hold a denial ("it is not true that"), six one by others ("a common
+        # misconception is to think that")
+        if _DENIAL.search(" ".join(words[-3:])) or _DOUBT.search(" ".join(words[-NEGATION_REACH:])):
+            return True
+        if not _JOINED.search(text, max(sentence, that - 6), that):
+            return False
+        earlier = [match.start() for match in _THAT.finditer(text, sentence, that - 1)]
+        if not earlier:
+            return False
+        that = earlier[-1]
+    return False
 
 
 def _taken_back(reading: _Reading, end: int) -> bool:
@@ -246,6 +347,8 @@ def _taken_back(reading: _Reading, end: int) -> bool:
     sentence ("which is false", "— not true in general", "I'm not sure"), by the next sentence
     ("That is wrong."), or in a question not answered yes ("… is conserved? No.")."""
     text = reading.text
+    if end <= reading.retracted:
+        return True
     _, high = reading.sentence(end, end)
     if _DASHED_FALSITY.search(text, end, high):
         return True
@@ -403,6 +506,38 @@ def _hedged(reading: _Reading, starts, start: int, end: int, alternatives) -> bo
     return False
 
 
+def _words(text: str) -> list[str]:
+    """The words that give a piece its shape: of two letters or more, neither a number, a linking word
+    nor a negation, which is not a shape but a meaning."""
+    words = (word.strip(".,;:!?()[]{}\"'") for word in text.split())
+    return [word for word in words if len(word) > 1 and word not in _LINKING_WORDS and not word.isdigit()]
+
+
+def _alternative(reading: _Reading, start: int, end: int, credited) -> bool:
+    """Whether the phrasing at ``start:end`` is offered with "or" beside another claim of its own shape,
+    in its clause: the other side turns it round ("conserved or not", "… or it is conserved") or
+    repeats one of its words ("sin θ ≈ θ or sin θ ≈ 1", "proportional to θ or to 1"); unless what it
+    offers, read in the phrasing's place, is credited too (``credited(piece)``: "proportional to θ
+    or to the angle", "linear in θ or proportional to θ")."""
+    text = reading.text
+    low, high = reading.clause(start, end)
+    after = _OR_AFTER.match(text, end, high)
+    if after:
+        other = text[after.end() : high]
+    else:
+        before = _OR_BEFORE.search(text, max(low, start - 20), start)
+        if not before:
+            return False
+        other = text[low : before.start()]
+    own = _words(text[start:end])
+    if not (_OR_TURNED.match(other) or set(own).intersection(_words(other))):
+        return False
+    if after and other.split() and other.split()[0] in own:  # "to θ or to the angle": "to the angle" in its place
+        phrase = text[start:end]
+        other = phrase[: phrase.find(other.split()[0])] + other
+    return not credited(other)
+
+
 def rubric_score(text: str, rubric) -> RubricReading:
     """What ``rubric`` makes of ``text``: the points proposed, the ideas found and missed.
 
@@ -421,9 +556,15 @@ def rubric_score(text: str, rubric) -> RubricReading:
     >>> rubric_score("Scleronomic ones depend on t and rheonomic ones are time independent", scleronomic).points
     0.0
     """
-    reading = _Reading(_normal(text[:MAX_TEXT_LENGTH]))
-    found, missing, discounted, points = [], [], [], 0.0
     ideas = [(idea, worth, phrasings, *(*binding, (), ())[:2]) for idea, worth, phrasings, *binding in rubric]
+    return _score(_Reading(_normal(text[:MAX_TEXT_LENGTH])), ideas, alternatives=True)
+
+
+def _score(reading: _Reading, ideas, *, alternatives: bool) -> RubricReading:
+    """``rubric_score`` of a text read; with ``alternatives``, a phrasing offered with "or" beside
+    another of its shape counts only where the other is credited too (read with no such check, so
+    "a or a or a …" is read once more, not once for each "or")."""
+    found, missing, discounted, points = [], [], [], 0.0
     # the subjects the question asks about: two (scleronomic and rheonomic) where one idea's rival is
     # another's own; then a phrasing said of no term is said of neither
     subjects = {_normal(term) for *_, about, _ in ideas for term in about}
@@ -434,26 +575,70 @@ def rubric_score(text: str, rubric) -> RubricReading:
             places[index] = list(_found(reading, ideas[index][2]))
         return places[index]
 
-    for index, (idea, worth, _, about, not_about) in enumerate(ideas):
-        rival_terms = {_normal(term) for term in not_about} & subjects
-        rival_ideas = [
-            other
-            for other, (*_, other_about, _) in enumerate(ideas)
-            if other != index and rival_terms & {_normal(term) for term in other_about}
-        ]
-        mentions, starts = _mentions(reading, about, not_about) if about else ([], [])
+    def credited(rival_ideas):
+        others = [idea for other, idea in enumerate(ideas) if other not in rival_ideas]
+        return lambda piece: bool(_score(_Reading(piece), others, alternatives=False).found)
+
+    contexts: dict[int, tuple] = {}
+
+    def context(index: int):
+        """An idea's rival terms, rival ideas, and the places its terms are named."""
+        if index not in contexts:
+            *_, about, not_about = ideas[index]
+            rival_terms = {_normal(term) for term in not_about} & subjects
+            rival_ideas = [
+                other
+                for other, (*_, other_about, _) in enumerate(ideas)
+                if other != index and rival_terms & {_normal(term) for term in other_about}
+            ]
+            contexts[index] = (rival_terms, rival_ideas, *(_mentions(reading, about, not_about) if about else ([], [])))
+        return contexts[index]
+
+    def counts(index: int, start: int, end: int, negated: bool) -> bool:
+        rival_terms, rival_ideas, mentions, starts = context(index)
+        return (
+            not negated
+            and (not ideas[index][3] or _said_of_own(reading, mentions, starts, start, end, rivals=bool(rival_terms)))
+            # what a rival idea says of the same subject, offered as an alternative: "time
+            # dependent or time independent"
+            and not any(_hedged(reading, starts, start, end, found_places(other)) for other in rival_ideas)
+            # or beside another claim of its own shape: "sin θ ≈ θ or sin θ ≈ 1"
+            and not (alternatives and _alternative(reading, start, end, credited(rival_ideas)))
+        )
+
+    def elided(index: int) -> bool:
+        """Whether an ellipsis said of the idea's term stands for a rival's claim turned round:
+        "rheonomic if time appears explicitly, and scleronomic if it does not"."""
+        _, rival_ideas, mentions, starts = context(index)
+        for match in _ELLIPSIS.finditer(reading.text):
+            if not _said_of_own(reading, mentions, starts, match.start(), match.end(), rivals=True):
+                continue
+            low, _ = reading.sentence(match.start(), match.start())
+            if low:  # or the sentence before: "Rheonomic ones contain t explicitly. Scleronomic ones do not."
+                low, _ = reading.sentence(low - 1, low - 1)
+            before = [
+                (start, end)
+                for other in rival_ideas
+                for start, end, negated in found_places(other)
+                if low <= start and end <= match.start() and counts(other, start, end, negated)
+            ]
+            if before:
+                start, end = max(before)
+                claim = _LEADING_NEGATION.sub("", reading.text[start:end])  # "not contain t explicitly": "contain …"
+                claim = "not " + claim if match.group("not") else claim
+                if any(not negated for *_, negated in _found(_Reading(claim), ideas[index][2])):
+                    return True
+        return False
+
+    for index, (idea, worth, _, about, _) in enumerate(ideas):
         seen = counted = False
         for start, end, negated in _found(reading, ideas[index][2]):
             seen = True
-            counted = (
-                not negated
-                and (not about or _said_of_own(reading, mentions, starts, start, end, rivals=bool(rival_terms)))
-                # what a rival idea says of the same subject, offered as an alternative: "time
-                # dependent or time independent"
-                and not any(_hedged(reading, starts, start, end, found_places(other)) for other in rival_ideas)
-            )
+            counted = counts(index, start, end, negated)
             if counted:
                 break
+        if not counted and about and context(index)[1] and _ELLIPSIS.search(reading.text):
+            counted = elided(index)
         if counted:
             found.append(idea)
             points += worth

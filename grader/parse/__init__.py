@@ -24,7 +24,16 @@ from functools import cached_property
 
 import sympy
 
-from grader.parse.grammar import ANSWER, TIME, Context, own_rates, parse_tokens, too_many_digits, within_diff_budget
+from grader.parse.grammar import (
+    ANSWER,
+    TIME,
+    Context,
+    holds_any,
+    own_rates,
+    parse_tokens,
+    too_many_digits,
+    within_diff_budget,
+)
 from grader.parse.messages import ParseFailure, Refusal, refusal
 from grader.parse.readback import to_latex, to_mathml, to_text
 from grader.parse.tokens import LIMITS, tokenize, visible
@@ -144,4 +153,7 @@ def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = (), dead
 
 def _has_undefined(value) -> bool:
     items = value if isinstance(value, tuple) else (value,)
-    return any(item.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo) for item in items)
+    return any(holds_any(item, _UNDEFINED) for item in items)
+
+
+_UNDEFINED = frozenset({sympy.zoo, sympy.nan, sympy.oo, -sympy.oo})

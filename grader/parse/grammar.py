@@ -32,6 +32,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 from sympy.core.function import AppliedUndef
+from sympy.core.traversal import iterargs
 
 from grader.parse.functions import COMPLEX, SYMPY
 from grader.parse.messages import ParseFailure
@@ -49,7 +50,7 @@ from grader.parse.names import (
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
-__all__ = ["ANSWER", "TIME", "Context", "parse_tokens", "too_many_digits"]
+__all__ = ["ANSWER", "TIME", "Context", "holds_any", "parse_tokens", "too_many_digits"]
 
 TIME = sympy.Symbol("t", real=True)
 # The name an expression followed by the definitions of its names stands under: ``½ m v², v = l θ̇``
@@ -88,6 +89,7 @@ class Context:
     coords: dict[str, sympy.Expr] = field(default_factory=dict)
     known: dict[str, sympy.Symbol] = field(default_factory=dict)
     _derivatives: dict = field(default_factory=dict, repr=False, compare=False)
+    _applied: dict = field(default_factory=dict, repr=False, compare=False)
 
     @classmethod
     def build(cls, coords: Iterable = (), known: Iterable = ()) -> Context:
@@ -126,6 +128,24 @@ class Context:
         if key not in self._derivatives:
             self._derivatives[key] = sympy.Derivative(coordinate, (TIME, order))
         return self._derivatives[key]
+
+    def applied(self, name: str, argument) -> sympy.Expr:
+        """The function ``name`` of ``argument``, built once for the problem where the argument is a
+        coordinate or the difference of two (sin θ, cos(θ₁ − θ₂)), as :meth:`derivative` is: sympy
+        evaluates a function of a new argument afresh, asking that argument's assumptions, and with
+        its cache emptied cos(θ₁ − θ₂) takes a millisecond. Most answers of a problem have one."""
+        if argument not in self.angles:
+            return SYMPY[name](argument)
+        key = (name, argument)
+        if key not in self._applied:
+            self._applied[key] = SYMPY[name](argument)
+        return self._applied[key]
+
+    @cached_property
+    def angles(self) -> frozenset:
+        """The coordinates, and the difference of each two (θ₁ − θ₂ and θ₂ − θ₁)."""
+        coordinates = list(self.coords.values())
+        return frozenset(coordinates) | {a - b for a in coordinates for b in coordinates if a != b}
 
     def describe_coords(self) -> str:
         """The coordinates as a student writes them: θ₁, θ₂, not theta_1, theta_2."""
@@ -678,7 +698,7 @@ class _Parser:
         if bare:  # a bracketed argument counts its own level
             self.deeper(token)
         argument, after = self.function_argument(token)
-        value = _apply(name, argument, token)
+        value = _apply(name, argument, token, self.context)
         if bare:
             self.depth -= 1
         value = value if power is None else _power(value, sympy.Integer(power), token)
@@ -916,12 +936,12 @@ class _Parser:
         piece = pieces[i]
         if isinstance(piece, str):  # a function name
             if i + 2 < len(pieces) and isinstance(pieces[i + 1], sympy.Integer) and not isinstance(pieces[i + 2], str):
-                return _apply(piece, pieces[i + 1] * pieces[i + 2], token), i + 3  # sin2θ is sin(2θ)
+                return _apply(piece, pieces[i + 1] * pieces[i + 2], token, self.context), i + 3  # sin2θ is sin(2θ)
             if i + 1 < len(pieces):
                 argument, j = self.chain(pieces, i + 1, token)
-                return _apply(piece, argument, token), j
+                return _apply(piece, argument, token, self.context), j
             argument, after = self.function_argument(token, piece)
-            value = _apply(piece, argument, token)
+            value = _apply(piece, argument, token, self.context)
             return (value if after is sympy.S.One else value * after), i + 1
         return piece, i + 1
 
@@ -1356,15 +1376,25 @@ def _closing(tokens: list[Token], i: int) -> int | None:
     return None
 
 
-def _apply(name: str, argument, token: Token):
+def _apply(name: str, argument, token: Token, context: Context):
     # sympy evaluates sin, abs or log of a constant numerically, and needs precision in
     # proportion to its size: sin(exp(exp(100))) would never return.
     if argument.is_number and not _magnitude(argument) <= _MAX_MAGNITUDE:
         raise ParseFailure("value_too_large", token.start, token.end)
-    value = SYMPY[name](argument)
-    if value.has(sympy.zoo, sympy.nan):
+    value = context.applied(name, argument)
+    if holds_any(value, _NOT_A_NUMBER):
         raise ParseFailure("undefined_value", token.start, token.end)
     return value
+
+
+_NOT_A_NUMBER = frozenset({sympy.zoo, sympy.nan})
+
+
+def holds_any(value, atoms: frozenset) -> bool:
+    """Whether any node of ``value`` is one of ``atoms`` (zoo, nan…). One walk, hashing atoms only:
+    ``value.has(*atoms)`` hashes every node, then walks once more for each atom to match it, and a
+    new answer's value is new to its cache."""
+    return any(node.is_Atom and node in atoms for node in iterargs(value))
 
 
 def _quotient(numerator, denominator, token: Token):

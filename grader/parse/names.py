@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from functools import lru_cache
 
 __all__ = [
     "CONSTANT_WORDS",
@@ -129,6 +130,7 @@ _PREFIXED = re.compile(r"^(?P<ds>dd?)(?P<base>[A-Za-z]+(?:_[0-9]+)?)$")
 _VARIANT = re.compile(r"(?:^|(?<=_))var(?=(?:phi|theta|epsilon|rho|sigma)(?:$|[_0-9]|d))")  # p_varphi too
 
 
+@lru_cache(maxsize=4096)  # every name of every answer, and each piece of a glued one: the same few recur
 def canonical_name(raw: str) -> str:
     """The one spelling of a name, with Greek letters spelled out in ASCII.
 

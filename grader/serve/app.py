@@ -35,11 +35,11 @@ from typing import ClassVar
 
 from grader.bank import Assignment, Problem
 from grader.errors import GraderError
-from grader.grade.part import setting_of
+from grader.grade.part import setting_of, symbol_meanings
 from grader.grade.selfcheck import SYMBOLS, WORDS, CheckResult, find_part
 from grader.judge import DEFAULT_TIMEOUT
+from grader.judge.choice import chosen
 from grader.judge.deadline import CheckTimeout, Deadline
-from grader.judge.scalar import chosen
 from grader.parse import parse_answer
 from grader.serve.page import MATH_KINDS, problem_views, render_page
 from grader.serve.workers import OVERRUN, CheckPool, PoolBusy
@@ -183,7 +183,7 @@ def make_server(
         raise
 
 
-def _chosen(choices: Mapping[str, str], answer: str, *, multiple: bool = False) -> str:
+def _chosen(choices: Mapping[str, str], answer: str, *, multiple: bool = False, meanings=()) -> str:
     """The options an answer names, as ``label) text``, read as the checker reads them (``b
     (rheonomic)`` is b); otherwise word by word, where a label that is no option stays as typed.
 
@@ -193,7 +193,7 @@ def _chosen(choices: Mapping[str, str], answer: str, *, multiple: bool = False) 
     'b) rheonomic'
     """
     labels = {label.casefold(): label for label in choices}
-    read = chosen(answer, tuple(choices.items()), multiple=multiple)
+    read = chosen(answer, tuple(choices.items()), multiple=multiple, meanings=meanings)
     named = read if read and all(label in labels for label in read) else [w for w in re.split(r"[\s,;]+", answer) if w]
     return "; ".join(
         f"{labels[word.casefold()]}) {' '.join(str(choices[labels[word.casefold()]]).split())}"
@@ -272,7 +272,8 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
         answer = request["answer"]
         if part.kind == "choice":  # the options chosen, by label and text
             multiple = bool(part.options.get("multiple"))
-            self._send_json({"ok": True, "mathml": "", "text": _chosen(part.choices, answer, multiple=multiple)})
+            text = _chosen(part.choices, answer, multiple=multiple, meanings=symbol_meanings(problem))
+            self._send_json({"ok": True, "mathml": "", "text": text})
             return
         if part.kind not in MATH_KINDS:  # words and numbers are shown as typed
             self._send_json({"ok": True, "mathml": "", "text": answer.strip()})
