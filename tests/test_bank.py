@@ -44,7 +44,9 @@ BROKEN_MESSAGES = [
     ("derive_from_not_lagrangian", "derive_from_not_lagrangian", "motion",
      "line 25: derive_from is 'energy'; it must name a lagrangian part of this problem (lagrangian)"),
     ("option_not_for_kind", "option_not_for_kind", "energy",
-     "line 22: option 'rtol' does not apply to kind 'expression' (its options: name, up_to_constant)"),
+     "line 22: option 'rtol' does not apply to kind 'expression' (its options: asks_more, h_is_energy, name,"
+     " up_to_constant)"),
+    ("option_not_yes_or_no", "option_not_yes_or_no", "energy", "line 22: h_is_energy is true or false, not 'no'"),
     ("name_not_a_name", "name_not_a_name", "energy",
      "line 22: name is the quantity's name, or a list of names, as p_phi or [V, U]"),
     ("choice_answer_not_in_choices", "choice_answer_not_in_choices", "cyclic",

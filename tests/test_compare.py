@@ -18,6 +18,7 @@ from sympy.core.cache import clear_cache
 
 from grader import KINDS, AuthorError, ReferenceAnswerError, Verdict, compare, parse_answer
 from grader.judge import words
+from grader.judge.euler_lagrange import euler_lagrange
 from grader.judge.expected import prepare
 from grader.judge.lagrangian import equations_of_motion
 
@@ -1034,6 +1035,9 @@ def _for_a_person(words):
          (_words("for small oscillations"),)),
         ("sqrt(g/l)", r"\omega = \sqrt{g/l} \quad \mbox{for oscillations of a small amplitude, about the bottom}",
          "expression", "equivalent", (_words("for oscillations of a small amplitude, about the bottom"),)),
+        # the quantity asked, named (another goes to a person)
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ, the Lagrangian", "lagrangian", "equivalent",
+         (_words(", the Lagrangian"),)),
         # words of arithmetic, or its signs: refused as typed
         ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),
@@ -1345,6 +1349,9 @@ def _before(words):
         ("sqrt(g/l)", "The angular frequency is √(g/l)", "expression", "equivalent",
          (_before("The angular frequency is"),)),
         ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),
+        # a method's name before an equation names no quantity the part asks for
+        (EOM_PENDULUM, "From energy conservation, θ̈ + (g/l) sin θ = 0", "equation", "equivalent",
+         (_before("From energy conservation,"),)),
         (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² − m g l cos θ", "lagrangian", "not_equivalent",
          (_before("The Lagrangian is"),)),  # the formula judged, the mistake named
         # words before and a remark after: before, the remark was left out and the words kept, undefined
@@ -1364,6 +1371,11 @@ def _before(words):
          (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0:"),)),
         (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get θ̈ = −(g/l) θ", "equation", "not_equivalent",
          (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get"),)),
+        # q for any coordinate; and a wrong equation is wrong, whatever the operator before it
+        (EOM_PENDULUM, "Using d/dt(∂L/∂q̇) − ∂L/∂q = 0 we get m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
+         (_before("Using d/dt(∂L/∂q̇) − ∂L/∂q = 0 we get"),)),
+        (EOM_PENDULUM, "Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get m l² θ̈ − m g l sin θ = 0", "equation",
+         "not_equivalent", (_before("Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get"),)),
     ],
 )  # fmt: skip
 def test_words_before_a_formula_are_read_past_and_said_so(expected, submitted, kind, status, notes):
@@ -1386,6 +1398,114 @@ def test_words_before_a_formula_that_may_be_part_of_it_are_not_read_past(submitt
     verdict = compare("sqrt(g/l)", submitted, **PENDULUM)
     assert verdict.status != "equivalent"
     assert not verdict.notes
+
+
+EOM_TYPED = "m l² θ̈ + m g l sin θ = 0"
+
+
+def _operator(operator):
+    return (
+        f"Your answer says `{operator} = 0` on the way to its equation, which is not Lagrange's equation. The"
+        " equation was graded and is right; a person will check this answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # another operator than Lagrange's, read past: before, Correct
+        (f"Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂V/∂θ̇) − ∂V/∂θ"), _before("Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get"))),
+        (f"Using d/dt(∂H/∂θ̇) − ∂H/∂θ = 0 we get {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂H/∂θ̇) − ∂H/∂θ"), _before("Using d/dt(∂H/∂θ̇) − ∂H/∂θ = 0 we get"))),
+        (f"Using d/dt(∂T/∂θ̇) − ∂T/∂θ = 0 we get {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂T/∂θ̇) − ∂T/∂θ"), _before("Using d/dt(∂T/∂θ̇) − ∂T/∂θ = 0 we get"))),
+        (f"Applying d/dt(∂L/∂θ) − ∂L/∂θ̇ = 0: {EOM_TYPED}", "undecided",  # θ and θ̇ swapped
+         (_operator("d/dt(∂L/∂θ) − ∂L/∂θ̇"), _before("Applying d/dt(∂L/∂θ) − ∂L/∂θ̇ = 0:"))),
+        # a plus between the terms: before, refused for its colon, or for ∂ outside a name
+        (f"Applying d/dt(∂L/∂θ̇) + ∂L/∂θ = 0: {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂L/∂θ̇) + ∂L/∂θ"), _before("Applying d/dt(∂L/∂θ̇) + ∂L/∂θ = 0:"))),
+        (f"d/dt(∂L/∂θ̇) + ∂L/∂θ = {EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂L/∂θ̇) + ∂L/∂θ"), _before("d/dt(∂L/∂θ̇) + ∂L/∂θ ="))),
+        # as the parser reads it before the equation it comes to: before, Correct
+        (f"d/dt(∂L/∂θ) − ∂L/∂θ̇ = {EOM_TYPED}", "undecided", (_operator("d/dt(∂L/∂θ) − ∂L/∂θ̇"),)),
+        # the true operator in other spellings and orders: before, refused for their colon or comma
+        ("Applying d/dt(dL/dthetadot) - dL/dtheta = 0: m l^2 thetaddot + m g l sin(theta) = 0", "equivalent",
+         ("Correct.", _before("Applying d/dt(dL/dthetadot) - dL/dtheta = 0:"))),
+        (f"Applying ∂L/∂θ − d/dt(∂L/∂θ̇) = 0: {EOM_TYPED}", "equivalent",
+         ("Correct.", _before("Applying ∂L/∂θ − d/dt(∂L/∂θ̇) = 0:"))),
+        (f"d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, {EOM_TYPED}", "equivalent",
+         ("Correct.", _before("d/dt(∂L/∂θ̇) − ∂L/∂θ = 0,"))),
+        # a method in words that hands over, or with a unit's name in it: before, refused
+        ("From the Euler-Lagrange equation, it follows that m l^2 thetaddot + m g l sin(theta) = 0", "equivalent",
+         ("Correct.", _before("From the Euler-Lagrange equation, it follows that"))),
+        ("From Newton's second law, m l θ̈ = −m g sin θ", "equivalent",
+         ("Correct.", _before("From Newton's second law,"))),
+    ],
+)  # fmt: skip
+def test_lagranges_equation_before_an_equation_is_read_past_only_when_it_is_the_true_one(submitted, status, feedback):
+    verdict = compare(EOM_PENDULUM, submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, 1.0, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("operator", "coords", "judged"),
+    [
+        ("d/dt(∂L/∂θ̇) − ∂L/∂θ", ["theta"], True),
+        ("-d/dt(∂L/∂θ̇) + ∂L/∂θ", ["theta"], True),  # either sign
+        (r"\frac{d}{dt}\left(\frac{\partial L}{\partial\dot\theta}\right) - \frac{\partial L}{\partial\theta}",
+         ["theta"], True),
+        ("d/dt(dL/dθ̇) − dL/dθ", ["theta"], True),
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ", ["x"], True),  # Rayleigh's dissipation function
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ", ["x"], False),
+        ("d/dt(∂L/∂φ̇) − ∂L/∂φ", ["theta"], False),  # not a coordinate of the problem
+        ("d/dt(∂L/∂θ̇) − ∂L/∂θ̇", ["theta"], False),
+        ("d/dt(∂L/∂θ̇) − ∂V/∂θ", ["theta"], False),
+        # not of Lagrange's shape: a momentum, a conserved momentum's rate, a product
+        ("∂L/∂θ̇", ["theta"], None),
+        ("d/dt(∂L/∂φ̇)", ["phi"], None),
+        ("d/dt(∂L/∂θ̇) ∂L/∂θ", ["theta"], None),
+        ("m l² θ̈", ["theta"], None),
+    ],
+)  # fmt: skip
+def test_the_euler_lagrange_operator_is_told_from_another_of_its_shape(operator, coords, judged):
+    assert euler_lagrange(operator, coords) is judged
+
+
+L_RIGHT = "L = ½ m l² θ̇² + m g l cos θ"
+EOM_RIGHT = "m l^2 thetaddot + m g l sin(theta) = 0"
+FROM_EULER_LAGRANGE = "From the Euler-Lagrange equation,"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "feedback"),
+    [
+        # words that say the formula is false, or a slip: before, each of these was Correct
+        (L_PENDULUM, f"{L_RIGHT}, which is false", (_for_a_person(", which is false"),)),
+        (L_PENDULUM, f"{L_RIGHT} (false)", (_for_a_person("(false)"),)),
+        (L_PENDULUM, f"{L_RIGHT}, which is incorrect", (_for_a_person(", which is incorrect"),)),
+        (L_PENDULUM, f"{L_RIGHT}, which is invalid", (_for_a_person(", which is invalid"),)),
+        (L_PENDULUM, f"{L_RIGHT} (sign error)", (_for_a_person("(sign error)"),)),
+        (L_PENDULUM, f"{L_RIGHT}, but the sign is off", (_for_a_person(", but the sign is off"),)),
+        (L_PENDULUM, f"{L_RIGHT} (I copied this)", (_for_a_person("(I copied this)"),)),
+        # words that say it is another quantity than the one asked
+        (L_PENDULUM, f"{L_RIGHT}, which is the Hamiltonian", (_for_a_person(", which is the Hamiltonian"),)),
+        (L_PENDULUM, f"{L_RIGHT}, i.e. the Hamiltonian", (_for_a_person(", i.e. the Hamiltonian"),)),
+        (L_PENDULUM, f"{L_RIGHT}, which is the total energy", (_for_a_person(", which is the total energy"),)),
+        (L_PENDULUM, "The Hamiltonian is ½ m l² θ̇² + m g l cos θ", (_for_a_person("The Hamiltonian is"),)),
+        (L_PENDULUM, "The energy is ½ m l² θ̇² + m g l cos θ", (_for_a_person("The energy is"),)),
+        # after a sentence that leads to the formula, and after a zero side, as anywhere
+        (EOM_PENDULUM, f"{EOM_RIGHT}, which is false", (_for_a_person(", which is false"),)),
+        (EOM_PENDULUM, f"{FROM_EULER_LAGRANGE} {EOM_RIGHT}, which is false",
+         (_for_a_person(", which is false"), _before(FROM_EULER_LAGRANGE))),
+        (EOM_PENDULUM, f"{FROM_EULER_LAGRANGE} {EOM_RIGHT} is wrong",  # before, `0 · is · wrong` was 0
+         (_for_a_person("is wrong"), _before(FROM_EULER_LAGRANGE))),
+    ],
+)  # fmt: skip
+def test_words_that_disown_a_formula_or_name_another_quantity_send_it_to_a_person(expected, submitted, feedback):
+    kind = "lagrangian" if expected == L_PENDULUM else "equation"
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict
 
 
 H_PENDULUM = "1/2 m l^2 thetadot^2 - m g l cos(theta)"
@@ -4340,6 +4460,9 @@ def test_a_chain_that_says_l_is_t_plus_v_of_its_value_too_is_told_once(submitted
 L_TYPED = "1/2 m l^2 θ̇^2 + m g l cos θ"
 SPHERICAL_H_TYPED = "1/2 m l^2 (θ̇^2 + sin^2θ φ̇^2) - m g l cos θ"
 SPHERICAL_P_PHI = "m l^2 sin(theta)^2 phidot"
+# on a rotating hoop T = T₂ + T₀, so H = T₂ − T₀ + V, not the energy T + V; the part says so
+HOOP_NOT_ENERGY = {"coords": ["theta"], "known": ["m", "R", "g", "omega"], "name": "H", "h_is_energy": False}
+HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
 
 
 def _misstated(statement: str, label: str) -> str:
@@ -4401,6 +4524,8 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
         (SPHERICAL_H, f"H = Σ p q̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (SPHERICAL_H, rf"H = \sum_j p_j \dot q_j - L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (SPHERICAL_H, f"H = E = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
+        (SPHERICAL_H, f"H = T + V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),  # the energy, where it is
+        (HOOP_H, f"H = Σ p q̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY),  # where it is not too
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
         (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it
     ],
@@ -4411,6 +4536,27 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
 
 def _chain(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        # before, each of these was Correct
+        (f"H = T + V = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"),)),
+        (f"H = E = {HOOP_H_TYPED}", (_misstated("H = E", "H"),)),
+        (f"Since H = T + V, H = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"), _chain("Since", "H = T + V"))),
+        (f"The Hamiltonian H = T + V is {HOOP_H_TYPED}",
+         (_misstated("H = T + V", "H"), _chain("The Hamiltonian … is", "H = T + V"))),
+        (f"H = T + V ⇒ H = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"),)),
+        # the energies as the label: not H's here
+        (f"T + V = {HOOP_H_TYPED}",
+         ("Your answer is labelled T + V, but the quantity asked for is H. Read as H, it is right; a person will"
+          " check which you meant.",)),
+    ],
+)  # fmt: skip
+def test_where_the_part_says_h_is_not_the_energy_h_said_to_be_t_plus_v_goes_to_a_person(submitted, feedback):
+    verdict = compare(HOOP_H, submitted, **HOOP_NOT_ENERGY)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict
 
 
 P_THETA = {**PENDULUM, "name": "p_theta"}
@@ -4466,6 +4612,30 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+L_TEX = r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "score", "feedback"),
+    [
+        # TeX's inline mathematics in the sentence: before, `Since` was S·i·n·c·e, and T and V undefined
+        (f"Since $L = T - V$, $L = {L_TEX}$", "equivalent", 1.0, ("Correct.", _chain("Since", "L = T - V"))),
+        (f"Since $L = T - V$, L = {L_TYPED}", "equivalent", 1.0, ("Correct.", _chain("Since", "L = T - V"))),
+        (f"Since L = T - V, $L = {L_TEX}$", "equivalent", 1.0, ("Correct.", _chain("Since", "L = T - V"))),
+        (f"Since $L = T - V$, $L = {L_TEX.replace('+', '-')}$", "not_equivalent", 0.0,
+         ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _chain("Since", "L = T - V"))),
+        # a wrong definition, in \(…\): before, `\(` was refused
+        (rf"Since \(L = T + V\), \(L = {L_TEX}\)", "undecided", 1.0,
+         (_misstated("L = T + V", "L"), _chain("Since", "L = T + V"))),
+    ],
+)  # fmt: skip
+def test_a_sentence_with_its_mathematics_set_apart_in_tex_is_read_as_without_the_signs(
+    submitted, status, score, feedback
+):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "found", "status", "first"),
     [
@@ -4486,8 +4656,6 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
         ("thetaddot = -(g/l) theta", "If θ is small, θ̈ = −(g/l) θ", False, "invalid",  # a condition: as before
          "The first item of your answer has no `=`."),
         (EOM_PENDULUM, "Applying ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", False, "invalid",  # not Lagrange's equation
-         "`:` is not something an answer can contain."),
-        (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) + ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0", False, "invalid",
          "`:` is not something an answer can contain."),
         # found, but not read so: a definition we cannot judge, or two values for L (which is the answer?)
         (L_PENDULUM, f"Since L = 1/2 m l^2 θ̇^2 + m g l cos θ, L = {L_TYPED}", True, "not_equivalent",

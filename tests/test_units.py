@@ -499,8 +499,56 @@ def test_a_lagrangians_multiple_that_is_no_energy_says_so_and_keeps_its_credit(s
     assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.5, feedback), verdict
 
 
-@pytest.mark.parametrize("submitted", ["−m g l sin θ, the generalized force", "−m g l sin θ (the torque of gravity)"])
-def test_words_that_name_the_quantity_are_read_past(submitted):
-    # not a claim of its dimensions alone: what the formula is, in words, as before
+# a part whose prompt asks for more than the formula: "Compute Q_θ. What are its dimensions?"
+ASKS_MORE = {**PENDULUM, "name": "Q_theta", "asks_more": True}
+Q_TYPED = "Q_θ = −m g l sin θ"
+
+
+def _words_for_a_person(words):
+    return (
+        f"Your answer says `{words}` beside the formula. The formula was graded on its own; a person will read"
+        " the words against it.",
+    )
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "score", "feedback"),
+    [
+        # any words beside the formula, whatever they say: before, each of these was Correct
+        (f"{Q_TYPED}, measured in newtons", "undecided", 1.0, _words_for_a_person(", measured in newtons")),
+        (f"{Q_TYPED}, expressed in N", "undecided", 1.0, _words_for_a_person(", expressed in N")),
+        (f"{Q_TYPED}, given in newtons", "undecided", 1.0, _words_for_a_person(", given in newtons")),
+        (f"{Q_TYPED}, Newtons", "undecided", 1.0, _words_for_a_person(", Newtons")),
+        (f"{Q_TYPED}, SI unit: N", "undecided", 1.0, _words_for_a_person(", SI unit: N")),
+        (f"{Q_TYPED}, in the same units as work", "undecided", 1.0,
+         _words_for_a_person(", in the same units as work")),
+        # words before it, which the parser read past as the line's label
+        (f"Dimension of force: {Q_TYPED}", "undecided", 1.0, _words_for_a_person("Dimension of force")),
+        # a unit typed is checked, as after the formula: in the label's brackets too (before, read past)
+        ("Q_θ [N] = −m g l sin θ", "not_equivalent", 0.0,
+         ("Your answer is in kg·m/s², which is not how the quantity asked for is measured: check its dimensions.",)),
+        ("Q_θ [N m] = −m g l sin θ", "equivalent", 1.0, ("Correct.", LEFT_OUT.format("N·m"))),
+    ],
+)  # fmt: skip
+def test_where_a_part_asks_for_more_than_the_formula_words_beside_it_go_to_a_person(submitted, status, score, feedback):
+    verdict = compare(TORQUE, submitted, **ASKS_MORE)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("submitted", "words"),
+    [
+        ("−m g l sin θ, the generalized force", ", the generalized force"),
+        ("−m g l sin θ (the torque of gravity)", "(the torque of gravity)"),
+    ],
+)
+def test_words_that_name_a_quantity_after_a_formula_are_for_a_person_to_read(submitted, words):
+    # what the formula is, in words: right here, but the checker cannot tell them from "the Hamiltonian"
+    # beside a Lagrangian, nor "a force" beside a torque where the prompt asks for its dimensions (before,
+    # read past as Correct)
     verdict = compare(TORQUE, submitted, **PENDULUM)
-    assert verdict.status == "equivalent", verdict
+    feedback = (
+        f"Your answer says `{words}` beside the formula. The formula was graded on its own; a person will read"
+        " the words against it.",
+    )
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict

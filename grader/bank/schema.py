@@ -45,12 +45,13 @@ PART_KINDS: dict[str, frozenset[str]] = {
     "integer": frozenset(),
     "number": frozenset({"rtol", "atol", "unit"}),
     "choice": frozenset({"multiple"}),
-    "expression": frozenset({"up_to_constant", "name"}),
+    "expression": frozenset({"up_to_constant", "name", "h_is_energy", "asks_more"}),
     "equation": frozenset(),
     "equations": frozenset(),
     "lagrangian": frozenset({"factor_credit", "name"}),
     "text": frozenset(),
 }
+_YES_OR_NO = frozenset({"h_is_energy", "asks_more"})  # options that are true or false, checked so when the bank loads
 SEED_ID = re.compile(r"[SLAE][0-9]{1,2}")
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(_[A-Za-z0-9]+)?")  # p_phi, Q_theta, omega_0
@@ -354,6 +355,9 @@ def _part(reader: _Reader, raw, location: tuple, taken: set[str]) -> Part:
             reader.fail(
                 (*location, "options", key), f"option {key!r} does not apply to kind {kind!r} (its options: {allowed})"
             )
+    for key in sorted(_YES_OR_NO & options.keys()):
+        if not isinstance(options[key], bool):
+            reader.fail((*location, "options", key), f"{key} is true or false, not {options[key]!r}")
     name = options.get("name")
     if name is not None and not _names(name):
         reader.fail(

@@ -28,6 +28,7 @@ from grader.errors import AuthorError
 from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
+from grader.judge.euler_lagrange import euler_lagrange
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression
 from grader.judge.feedback import say
@@ -52,12 +53,16 @@ from grader.judge.units import (
 from grader.judge.verdict import Verdict
 from grader.judge.words import (
     definition_then_formula,
+    euler_lagrange_then_formula,
     formula_then_approximation,
     formula_then_convention,
     formula_then_small_angle_form,
     formula_then_words,
+    quantities_named,
     says_otherwise,
+    tex_math_as_words,
     text_as_words,
+    words_in,
     words_then_formula,
 )
 from grader.parse import (
@@ -101,7 +106,12 @@ class Kind:
 KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
-        Kind("expression", check_expression, {"up_to_constant": False, "name": None}, shape="expression"),
+        Kind(
+            "expression",
+            check_expression,
+            {"up_to_constant": False, "name": None, "h_is_energy": True, "asks_more": False},
+            shape="expression",
+        ),
         Kind("equation", check_equation, shape="equation"),
         Kind("equations", check_equations, shape="equations"),
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
@@ -133,7 +143,7 @@ def compare(
             positive), ``dimensions`` (``{"l": "length", "g": "acceleration"}``: a wrong
             answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
-            (seconds, default 2), and the kind's own options (``up_to_constant``,
+            (seconds, default 2), and the kind's own options (``up_to_constant``, ``h_is_energy``, ``asks_more``,
             ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs,
             and ``meanings``, the problem's symbols with what they mean…).
 
@@ -209,6 +219,11 @@ def compare(
         sentence = say("statement_for_a_person", statement=said[1], label=said[0])
         feedback = (sentence, *(line for line in verdict.feedback if line != "Correct."))
         return replace(verdict, status="undecided", diagnosis="statement_for_a_person", feedback=feedback)
+    operator = _operator_said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
+    if operator is not None:  # Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …: right, but not from Lagrange's equation
+        sentence = say("operator_for_a_person", statement=operator)
+        feedback = (sentence, *(line for line in verdict.feedback if line != "Correct."))
+        return replace(verdict, status="undecided", diagnosis="operator_for_a_person", feedback=feedback)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
@@ -498,6 +513,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 unread = not answer.ok or read_notes or _undefined(answer, names)
                 unit_said = not answer.ok or (_IN_UNIT.search(submitted) and unread)
                 split = _unit_tail(submitted, spec, expected) if formula and unit_said else None
+                if split is None and formula and answer.ok and "[" in submitted:
+                    split = _unit_in_label(submitted, spec, expected)  # Q_θ [N] = …: the label's unit
                 if split is not None:  # −m g r sin θ, N·m: the comma sets a unit apart, and is no list
                     answer, unit, found = split
                     early, note = _unit_said(unit, found, spec, expected)
@@ -708,10 +725,23 @@ def _said_wrong(submitted: str, expected: Expected) -> tuple[str, str] | None:
     the reading of the formula leaves out and :func:`_misstated` cannot see; as said, or None."""
     if _DEFINING_LETTERS & expected.names:
         return None  # a tension T, an energy E of the problem's own: the letters mean something else
-    for label, pattern in _SAID_WRONG:
+    patterns = _SAID_WRONG if _energy_sums(expected) is _ENERGY_SUMS else (*_SAID_WRONG, *_SAID_NOT_ENERGY)
+    for label, pattern in patterns:
         found = pattern.search(submitted)
         if found:
             return label, re.sub(r"\s+", " ", found.group().strip()).replace("−", "-")
+    return None
+
+
+def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
+    """The Euler–Lagrange operator an answer applies on its way to the equation it gives, in words
+    (``Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …``) or as the parser reads it before the equation
+    (``d/dt(∂L/∂θ) − ∂L/∂θ̇ = … = 0``), where it is not the true one; as typed, or None."""
+    coords = expected.setting.coords
+    for _, operator, _ in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
+        if euler_lagrange(operator, coords, expected.names) is False:
+            return re.sub(r"\s+", " ", operator) + " = 0"
+        return None
     return None
 
 
@@ -722,6 +752,11 @@ _SAID_WRONG = (
     ("L", re.compile(rf"(?<![\w\\])L\s*=\s*(?:[TK]\s*\+\s*[VU]|[VU]\s*\+\s*[TK]|[VU]\s*[-−]\s*[TK]|[EH]){_ENDS}")),
     ("H", re.compile(rf"(?<![\w\\])H\s*=\s*(?:[TK]\s*[-−]\s*[VU]|L){_ENDS}")),
     ("E", re.compile(rf"(?<![\w\\])E\s*=\s*(?:[TK]\s*[-−]\s*[VU]|L){_ENDS}")),
+)
+# where H is not the energy (the option h_is_energy: a rotating hoop), H = T + V and H = E say it is
+_SAID_NOT_ENERGY = (
+    ("H", re.compile(rf"(?<![\w\\])H\s*=\s*(?:[TK]\s*\+\s*[VU]|[VU]\s*\+\s*[TK]|E){_ENDS}")),
+    ("E", re.compile(rf"(?<![\w\\])E\s*=\s*H{_ENDS}")),
 )
 _DEFINING_LETTERS = frozenset("TVUKEHL")
 _SUMS = frozenset({"Sigma", "sum"})  # Σ and TeX's \sum, as the parser names them in a chain's definition
@@ -741,14 +776,15 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
     or the problem names the quantity."""
     if not isinstance(label, sympy.Symbol) or label.name in expected.names:
         return None
-    name = label.name
+    name, sums = label.name, _energy_sums(expected)
     if name in _ENERGY_SUMS:
         if _KINETIC_K.name not in expected.names:
             side = side.xreplace({_KINETIC_K: _KINETIC})
         if _in_energies(side, expected.names):
-            return _energy_multiple(side, [name]) == 1
+            return _energy_multiple(side, [name], sums) == 1  # where H is not the energy, no sum of T and V is H
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
-            return not ("L" in {name, side.name} and name != side.name)  # L = E, L = H, H = L
+            # L = E, L = H, H = L are wrong; H = E is right where H is the energy
+            return name == side.name or (name in sums and sums[name] == sums.get(side.name))
         lagrangian = sympy.Symbol("L")
         if name == "H" and any(symbol.name in _SUMS for symbol in side.free_symbols) and side.has(lagrangian):
             rest = side - side.coeff(lagrangian) * lagrangian
@@ -787,7 +823,7 @@ def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tup
     if not stated or len(stated) == len(items):
         return answer, ()
     rest = tuple(item for item in items if item not in stated)
-    right = [item for item in stated if _energy_multiple(item.rhs, [item.lhs.name]) == 1]
+    right = [item for item in stated if _energy_multiple(item.rhs, [item.lhs.name], _energy_sums(expected)) == 1]
     notes = (("definition_left_out", {"line": to_text(right[0])}),) if right else ()
     if len(rest) == 1:
         return ParsedAnswer(answer.text, rest[0], "equation"), notes
@@ -1100,7 +1136,7 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     if scaled is not None:  # 2L = m l² θ̇² + …, ω² = g/l: the name's value
         return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
     energies = _in_energies(value.lhs, expected.names)
-    multiple = _energy_multiple(value.lhs, expected.option("name")) if energies else None
+    multiple = _energy_multiple(value.lhs, expected.option("name"), _energy_sums(expected)) if energies else None
     if multiple is not None:  # V − T = −L, 2(T − V) = 2L: L's value
         return ParsedAnswer(answer.text, value.rhs / multiple, "expression")
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
@@ -1119,7 +1155,8 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     if not names or unwrapped is named or not isinstance(named.value, sympy.Eq) or named.value.lhs == ANSWER:
         return None
     side = named.value.lhs
-    if _in_energies(side, expected.names) and _energy_multiple(side, names) is None:  # T + V = … where L is asked
+    if _in_energies(side, expected.names) and _energy_multiple(side, names, _energy_sums(expected)) is None:
+        # T + V = … where L is asked, or where H is and is not the energy
         return ("label_for_a_person", {"label": to_text(side), "name": expected.setting.describe(names[:1])})
     lhs = _label_of(side)
     if not isinstance(lhs, sympy.Symbol | AppliedUndef):
@@ -1140,6 +1177,13 @@ _MOMENTUM_DEFINED = re.compile(r"dL_d(\w+?)_?dot")  # the name ∂L/∂φ̇ is r
 _KINETIC, _POTENTIAL, _POTENTIAL_U = sympy.symbols("T V U")
 _ENERGIES = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
 _ENERGY_SUMS = {"L": _KINETIC - _POTENTIAL, "H": _KINETIC + _POTENTIAL, "E": _KINETIC + _POTENTIAL}
+# where the part says H is not the energy (the option h_is_energy: H = T₂ − T₀ + V on a rotating hoop)
+_NOT_ENERGY_SUMS = {name: value for name, value in _ENERGY_SUMS.items() if name != "H"}
+
+
+def _energy_sums(expected: Expected) -> Mapping:
+    """The sums of the energies that name a quantity here: H is T + V unless the part says it is not."""
+    return _ENERGY_SUMS if expected.option("h_is_energy", True) else _NOT_ENERGY_SUMS
 
 
 def _in_energies(side, defined: set[str]) -> bool:
@@ -1149,12 +1193,12 @@ def _in_energies(side, defined: set[str]) -> bool:
     return not side.is_Symbol and bool(names) and names <= _ENERGIES and not {name.name for name in names} & defined
 
 
-def _energy_multiple(side, names) -> sympy.Expr | None:
-    """The number c where a side in the energies is c times the sum one of ``names`` is
+def _energy_multiple(side, names, sums: Mapping = _ENERGY_SUMS) -> sympy.Expr | None:
+    """The number c where a side in the energies is c times the sum one of ``names`` is, of ``sums``
     (``V − T`` is −1 times L's); None where it is none of them (``T + V`` where L is asked)."""
     side = side.xreplace({_POTENTIAL_U: _POTENTIAL})
     for name in names or ():
-        ratio = sympy.cancel(side / _ENERGY_SUMS[name]) if name in _ENERGY_SUMS else None
+        ratio = sympy.cancel(side / sums[name]) if name in sums else None
         if ratio is not None and ratio.is_number and ratio != 0:
             return ratio
     return None
@@ -1264,8 +1308,9 @@ _FOR_A_PERSON = {
 }
 
 
-# the diagnoses of a value that is right as read, where how it was read is for a person to confirm
-READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON)
+# the diagnoses of a value that is right as read, where how it was read is for a person to confirm (a wrong
+# Euler–Lagrange operator before it too, which compare finds once the value is judged)
+READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {"operator_for_a_person"}
 
 
 def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
@@ -1345,7 +1390,11 @@ def _read(
             # only where it splits a glued name: xdot, where x = l sin θ, is the rate of x as read
             if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
                 answer = again
-        return _without_words(answer, submitted, expected, names, deadline)
+        answer, notes = _without_words(answer, submitted, expected, names, deadline)
+        said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
+        if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
+            notes = (("words_for_a_person", {"words": _shown(said)}),)
+        return answer, notes
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = spec.name == "number" and bool(expected.option("unit"))
     measured = spec.name == "number"  # a count has no decimal comma, nor an uncertainty
@@ -1406,31 +1455,45 @@ def _without_words(
         return (kept if kept.ok and _undefined(kept, names) else answer), ()
     coords = expected.setting.coords
     submitted = text_as_words(submitted, names, coords)  # … = 0 \text{(damped)}: TeX's text is words too
+    submitted = tex_math_as_words(submitted)  # Since $L = T − V$, $L = …$: the sentence, without its $s
     # the formula before words, where it leaves a name undefined (Since L = T − V, L = … (taking V = 0 at
     # the pivot)), is said as read only where no reading of words before it leaves none
     without = _formula_before_words(submitted, expected, names, deadline)
     if without is not None and not _undefined(without[0], names):
         return without
     for words, formula in words_then_formula(submitted, names, coords):
-        before = (_words_note("words_before_left_out", words), {"words": _shown(words)})
+        before = (_words_note("words_before_left_out", words, expected), {"words": _shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
-        if read.ok and not _undefined(read, names):
+        zero = _ZERO_THEN_WORDS.search(formula)  # … = 0 is wrong: 0 times the words is 0, as at the top
+        if read.ok and not _undefined(read, names) and zero is None:
             return read, (before,)
         after = _formula_before_words(formula, expected, names, deadline)
         if after is not None and not _undefined(after[0], names):
             return after[0], (before, *after[1])
+        if read.ok and not _undefined(read, names):
+            return read, (before,)
+    for words, _, equation in euler_lagrange_then_formula(submitted, names, coords):
+        # Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …, the operator read past (compare judges it)
+        read, after = _read_with_remark(equation, expected, names, deadline)
+        if read.ok and read.kind == "equation":
+            return read, ((_words_note("words_before_left_out", words, expected), {"words": _shown(words)}), *after)
     for words, definition, chain in definition_then_formula(submitted, names, coords):
-        read, after = parse_answer(chain, coords=coords, known=names, deadline=deadline), ()
-        if _unknown_in_chain(read, names):  # …, L = ½ m l² θ̇² + … (taking V = 0 at the pivot)
-            remark = _formula_before_words(chain, expected, names, deadline)
-            if remark is not None and not _unknown_in_chain(remark[0], names):
-                read, after = remark
-        if definition is None and read.ok and read.kind == "equation":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …
-            return read, ((_words_note("words_before_left_out", words), {"words": _shown(words)}), *after)
-        if definition is not None and _states_one_definition(read, expected):
+        read, after = _read_with_remark(chain, expected, names, deadline)
+        if _states_one_definition(read, expected):
             chained = {"words": _shown(words), "chain": f"{definition} = …"}
-            return read, ((_words_note("definition_in_words", words), chained), *after)
+            return read, ((_words_note("definition_in_words", words, expected), chained), *after)
     return without if without is not None else (answer, ())
+
+
+def _read_with_remark(text: str, expected: Expected, names: list, deadline) -> tuple[ParsedAnswer | Refusal, tuple]:
+    """``text`` read, or without a remark after it where as typed it cannot be read or leaves a name
+    unknown (``…, L = ½ m l² θ̇² + … (taking V = 0 at the pivot)``); and the notes on the remark."""
+    read = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
+    if _unknown_in_chain(read, names):
+        remark = _formula_before_words(text, expected, names, deadline)
+        if remark is not None and not _unknown_in_chain(remark[0], names):
+            return remark
+    return read, ()
 
 
 def _unknown_in_chain(read: ParsedAnswer | Refusal, names: list) -> bool:
@@ -1464,19 +1527,30 @@ def _formula_before_words(text: str, expected: Expected, names: list, deadline) 
     for formula, words in formula_then_words(text, names, expected.setting.coords):
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
-            return read, ((_words_note("words_left_out", words), {"words": _shown(words)}),)
+            return read, ((_words_note("words_left_out", words, expected), {"words": _shown(words)}),)
     convention = formula_then_convention(text, names)  # … (taking V = 0 at the pivot): the zero, stated
     if convention is not None:
         formula, remark = convention
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:
-            return read, ((_words_note("words_left_out", remark), {"words": _shown(remark)}),)
+            return read, ((_words_note("words_left_out", remark, expected), {"words": _shown(remark)}),)
     return None
 
 
-def _words_note(key: str, words: str) -> str:
-    """The note on words read past: for a person to read first where they may say otherwise."""
-    return "words_for_a_person" if says_otherwise(words) else key
+def _words_note(key: str, words: str, expected: Expected) -> str:
+    """The note on words read past: for a person to read first where the part asks for more than the
+    formula (the option ``asks_more``: its dimensions, say), where they may say otherwise
+    (:func:`~grader.judge.words.says_otherwise`), or name a quantity other than the one the part names
+    (the option ``name``; L where a Lagrangian is asked). After the formula, any quantity named says what
+    it is (``…, which is the Hamiltonian``); before it, a sentence names what follows (``The Lagrangian
+    is …``), and only the Lagrangian, the Hamiltonian or the energy, where the part names its own, is
+    held against it (``The Hamiltonian is …`` where L is asked)."""
+    if says_otherwise(words) or expected.option("asks_more"):
+        return "words_for_a_person"  # where the prompt asks for more than the formula, words may be the more
+    named, asked = quantities_named(words), set(expected.option("name") or ())
+    if key != "words_left_out":
+        named = named & _ENERGY_SUMS.keys() if asked else set()
+    return "words_for_a_person" if named - asked else key
 
 
 def _shown(words: str) -> str:
@@ -1618,6 +1692,34 @@ def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outc
         return Outcome("not_equivalent", 0.0, "formula_unit_differs", {"theirs": si(found[2])}, method="units"), None
     key = "unit_left_out" if _same_counts(unit, expected) else "unit_for_a_person"
     return None, (key, {"unit": in_sentence(to_text(unit), times="·")})  # N·m, kg·m²/s²
+
+
+def _unit_in_label(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, sympy.Expr, tuple] | None:
+    """``Q_θ [N] = −m g r sin θ``, ``L [J] = …``: the formula, and the unit its label is said to be in, in
+    square brackets, as :func:`_unit_tail` returns them (a unit only, every word a unit's name, in SI
+    units); None for any other text. As read, the unit was a factor of the label, and left out with it."""
+    found = _LABEL_UNIT.match(text) if len(text) <= _UNIT_TAIL_LENGTH else None
+    if found is None or not _UNIT_TEXT.fullmatch(found["unit"]):
+        return None
+    if not all(word in SI_UNITS for word in _UNIT_WORD.findall(found["unit"])):
+        return None
+    unit = parse_answer(found["unit"])
+    if not unit.ok or unit.kind != "expression" or not unit.symbols:
+        return None
+    size = in_units(unit.value)
+    if size is None or size[:2] != (1, 1):
+        return None
+    formula = parse_answer(
+        f"{found['label']} = {found['rest']}", coords=expected.setting.coords, known=sorted(expected.names)
+    )
+    formula = _unwrap_named(formula, spec, expected) if formula.ok else formula
+    if not formula.ok or formula.kind != "expression" or _undefined_symbols(formula, expected):
+        return None
+    return formula, unit.value, size
+
+
+# a label, its unit in square brackets, and the formula: Q_θ [N m] = …
+_LABEL_UNIT = re.compile(r"\s*(?P<label>[^\s\[\]=]+)\s*\[(?P<unit>[^\[\]=]+)\]\s*=(?![=>])(?P<rest>.+)", re.S)
 
 
 def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, sympy.Expr, tuple] | None:

@@ -76,6 +76,8 @@ FEEDBACK: dict[str, str] = {
     "statement_for_a_person": "Your answer says `{statement}` on the way to its value, which is not what {label}"
     " is. Its value was graded and is right; a person will check this answer.",
     "statement_wrong": "Your answer says `{statement}` on the way to its value, which is not what {label} is.",
+    "operator_for_a_person": "Your answer says `{statement}` on the way to its equation, which is not Lagrange's"
+    " equation. The equation was graded and is right; a person will check this answer.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "working_false_for_a_person": "Your final value, `{value}`, was graded and is right, but your working,"

@@ -2,14 +2,20 @@
 
 Contents:
     is_prose(words, names)                     whether words are about the answer, not more of it
+    says_otherwise(words)                      whether they may say the formula is other than written
+    quantities_named(words)                    the quantities they name: ``the Hamiltonian`` is H
     formula_then_words(text, names, coords)    ``θ̈ = −(g/l) θ for small angles``: the formula and its words
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
     definition_then_formula(text, names, coords)
                                                ``Since L = T − V, L = …``: the words, the definition, the chain
+    euler_lagrange_then_formula(text, names, coords)
+                                               ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: …``: words, operator, equation
     formula_then_convention(text, names)       ``L = … (taking V = 0 at the pivot)``: the formula and its remark
     formula_then_small_angle_form(text, names, coords)
                                                ``θ̈ = … sin θ, which for small θ gives θ̈ = … θ``: both formulas
     text_as_words(text, names, coords)         ``… = 0 \\text{(damped)}`` as ``… = 0 (damped)``: TeX's text, as words
+    tex_math_as_words(text)                    ``Since $L = T − V$, $L = …$`` as the sentence without its ``$``s
+    words_in(text, names, coords)              the words of prose anywhere in the text
 
 On paper an answer comes with words: ``θ̈ = −(g/l) θ for small angles``, ``m l² sin²θ φ̇ is
 conserved``, ``a = g (m₁ − m₂)/(m₁ + m₂), with m₁ going down``. A person grades the formula and
@@ -17,9 +23,10 @@ reads the words. So it is with a sentence that leads to the formula: ``The angul
 √(g/l)``. The checker does the same, and says which words it did not grade, but only
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have. Words that may say
-the formula is other than written (``… upward``, ``… inverted``), or doubt it (``… (not sure about
-the sign)``), are read past too, but :func:`says_otherwise` marks them for a person to read before
-a right formula earns its credit.
+the formula is other than written (``… upward``, ``… inverted``), doubt it (``… (not sure about
+the sign)``) or judge it (``…, which is false``), are read past too, but :func:`says_otherwise` marks
+them for a person to read before a right formula earns its credit; so are words that name a quantity
+(:func:`quantities_named`: ``…, which is the Hamiltonian``) other than the one the part asks for.
 
 A remark in brackets after a formula may state where the potential energy is zero, ``(taking V = 0
 at the pivot)``: words, and ``V = 0`` (or ``U = 0``) in a name the problem does not have. It says how
@@ -29,10 +36,11 @@ other ``=`` in a remark may be more of the answer: it is read as typed.
 A sentence may state what the quantity is on the way to its value: ``Since L = T − V, L = ½ m l² θ̇²
 + …``, ``The Lagrangian L = T − V is …``, ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + … = 0``. That is
 the chain ``L = T − V = …`` the parser reads (or the Euler–Lagrange operator before the equation it gives),
-written with words: :func:`definition_then_formula` finds it, and ``compare`` judges the definition as the
-chain's. Only words that begin such a sentence (``Since``, ``Using``, ``The``…) and hand over to the value
-(``,``, ``:``, ``we have``, ``is``) are read past; a condition (``If``), ``not`` or a word in the definition
-leaves the answer as typed.
+written with words: :func:`definition_then_formula` (or :func:`euler_lagrange_then_formula`, in any spelling
+of the operator) finds it, and ``compare`` judges the definition as the chain's (or the operator, by
+:func:`~grader.judge.euler_lagrange.euler_lagrange`). Only words that begin such a sentence (``Since``,
+``Using``, ``The``…) and hand over to the value (``,``, ``:``, ``we have``, ``is``) are read past; a condition
+(``If``), ``not`` or a word in the definition leaves the answer as typed.
 
 Words between two formulas may say the second is the first's small-angle form: ``θ̈ = −(g/l) sin θ,
 which for small θ gives θ̈ = −(g/l) θ``. Which of the two is the answer depends on what was asked;
@@ -44,19 +52,24 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
+from grader.judge.euler_lagrange import euler_lagrange
 from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = [
     "definition_then_formula",
+    "euler_lagrange_then_formula",
     "formula_then_approximation",
     "formula_then_convention",
     "formula_then_small_angle_form",
     "formula_then_words",
     "is_prose",
+    "quantities_named",
     "says_otherwise",
+    "tex_math_as_words",
     "text_as_words",
+    "words_in",
     "words_then_formula",
 ]
 
@@ -85,6 +98,19 @@ _OTHERWISE = re.compile(
     r"replace|wrong|mistake|typo|actually|should|meant|dimension|dimensions|dimensionless|units?\s+of)\b(?!\s+to\b)",
     re.I,
 )
+# words that judge the formula beside them, or say it is a slip ("…, which is false", "(sign error)", "but the
+# sign is off", "(I copied this)"): a formula its student disowns is read by a person, whatever it is
+_JUDGED = re.compile(
+    r"\b(?:false|untrue|incorrect|invalid|error|errors|erroneous|off|bogus|nonsense|copied|sign|signs)\b", re.I
+)
+# words that name a quantity of mechanics, which say what the formula beside them is ("…, which is the
+# Hamiltonian", "(the total energy)", "the torque of gravity"): the Lagrangian and the Hamiltonian by the names
+# a part may ask for (the option ``name``), any other by its word
+_QUANTITY = re.compile(
+    r"\b(?:lagrangian|hamiltonian|routhian|energ(?:y|ies)|force|torque|momentum|momenta|work|action|impulse)s?\b",
+    re.I,
+)
+_QUANTITY_NAMES = {"lagrangian": "L", "hamiltonian": "H", "energy": "E"}
 # words that only say what kind of quantity the formula is ("…, it is a force", "(torque)", "an
 # angle"): a statement of its dimensions in other words, which a prompt may ask for
 _A_QUANTITY = re.compile(
@@ -137,9 +163,28 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
 
 def says_otherwise(words: str) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
-    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or says what
-    kind of quantity it is (``it is a force``): a person must read it before the formula earns credit."""
-    return bool(_OTHERWISE.search(words) or _DOUBT.search(words) or _A_QUANTITY.match(words) or _dimensions(words))
+    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or judges it
+    (``which is false``, ``sign error``), or says what kind of quantity it is (``it is a force``): a
+    person must read it before the formula earns credit."""
+    return bool(
+        _OTHERWISE.search(words)
+        or _DOUBT.search(words)
+        or _JUDGED.search(words)
+        or _A_QUANTITY.match(words)
+        or _dimensions(words)
+    )
+
+
+def quantities_named(words: str) -> frozenset[str]:
+    """The quantities ``words`` name: ``L``, ``H`` or ``E`` for the Lagrangian, the Hamiltonian or the
+    energy, any other by its word in lower case (``torque``).
+
+    >>> sorted(quantities_named(", which is the total energy, not a force"))
+    ['E', 'force']
+    """
+    found = (word.lower() for word in _QUANTITY.findall(words))
+    found = ("energy" if word.startswith("energ") else word.removesuffix("s") for word in found)
+    return frozenset(_QUANTITY_NAMES.get(word, word) for word in found)
 
 
 def _dimensions(words: str) -> bool:
@@ -192,8 +237,14 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
     if first[0].lower() in _METHOD:  # From the Euler–Lagrange equation, m l² θ̈ + … = 0
         said, end = _words_from(text, first.start(), names, coords)
         if text[end:].lstrip().startswith(","):
-            words, formula = text[: text.index(",", end) + 1].strip(), text[text.index(",", end) + 1 :].strip()
-            if formula and is_prose(" ".join(said), names, doubt=True):
+            comma = text.index(",", end) + 1
+            # …, it follows that m l² θ̈ + … = 0: words that hand over to the formula after the comma
+            between, after = _words_from(text, comma, names, coords, handing=True)
+            lowered = set(map(str.lower, between))
+            if not between or between[-1].lower() not in _HANDS_OVER_TO_VALUE or lowered - _BETWEEN:
+                between, after = [], comma
+            words, formula = text[:after].strip(), text[after:].strip()
+            if formula and is_prose(" ".join((*said, *between)), names, doubt=True):
                 yield words, formula
 
 
@@ -205,8 +256,9 @@ _METHOD = frozenset({"from", "using", "applying", "by"})
 _STATING = _METHOD | {"since", "as", "because", "with", "given", "here", "the", "our", "this"}
 # words that hand over from a definition to the value: "…, we have L = …", "…, so L = …"; the words
 # between are these alone (not "…, the Hamiltonian is …", which may say the value is another quantity's)
-_HANDS_OVER_TO_VALUE = _HANDING_OVER | IMPLYING_WORDS | {"then"}
-_BETWEEN = _HANDS_OVER_TO_VALUE | {"we", "this", "which", "it", "and", "one"}
+_HANDS_OVER_TO_VALUE = _HANDING_OVER | IMPLYING_WORDS | {"then", "that"}
+_BETWEEN = _HANDS_OVER_TO_VALUE | {"we", "this", "which", "it", "and", "one", "follows"}
+_BEFORE_A_WORD = re.compile(r"[ \t]+[A-Za-z]{2}")
 # a word of prose as a sentence has it: Lagrange's, and Euler–Lagrange with any dash (not T−V: capitals after)
 _PROSE_WORD = re.compile(r"(?<![\w\\])(?:Euler\s?[-–‐‑]\s?Lagrange|[A-Za-z]{2,}(?:['’]s)?)(?![\w'’])")
 _EULER_LAGRANGE = re.compile(r"\bEuler\s?[-–‐‑]\s?Lagrange\b")
@@ -214,16 +266,14 @@ _EULER_LAGRANGE = re.compile(r"\bEuler\s?[-–‐‑]\s?Lagrange\b")
 
 def definition_then_formula(
     text: str, names: Collection[str], coords: Collection[str]
-) -> Iterator[tuple[str, str | None, str]]:
+) -> Iterator[tuple[str, str, str]]:
     """``Since L = T − V, L = ½ m l² θ̇² + …``: the ways to read ``text`` as (the words, the definition
     as typed, the chain it states with the value: ``L = T − V = ½ m l² θ̇² + …``, as the parser reads
     it). The sentence begins with a word that states (``Since``, ``Using``, ``With``, ``The``…), and
     perhaps more words (``the Lagrangian``), then the definition: a name, ``=`` and a side without
     words; then ``,``, ``;`` or ``:``, or words that end in one that hands over (``we have``, ``is``,
     ``so``), or the chain's next ``=``; then the value, after the name again unless words or a colon
-    hand over to it. The Euler–Lagrange operator ``= 0`` (``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: …``) is
-    read past as the parser reads it before the equation it gives: (all before the equation, None, the
-    equation). The words must be prose (:func:`is_prose`). Neither the definition nor the value is
+    hand over to it. The words must be prose (:func:`is_prose`). Neither the definition nor the value is
     checked here."""
     first = _PROSE_WORD.match(text, len(text) - len(text.lstrip()))
     if len(text) > _LENGTH or first is None or first[0].lower() not in _STATING:
@@ -252,10 +302,6 @@ def definition_then_formula(
     said = re.sub(r"\s+", " ", said)
     value = text[after:].strip()
     value_equals = _first_equals(value)
-    if _is_euler_lagrange(left, names, coords):
-        if side == "0" and value_equals is not None and text[stop] != "=":
-            yield re.sub(r"\s+", " ", text[:after].strip()), None, value  # the operator, read past as the parser does
-        return
     name = _name(left, names, coords)
     if name is None or not value:
         return
@@ -268,6 +314,53 @@ def definition_then_formula(
         yield said, f"{left} = {side}", f"{left} = {side} = {value}"
 
 
+def euler_lagrange_then_formula(
+    text: str, names: Collection[str], coords: Collection[str]
+) -> Iterator[tuple[str, str, str]]:
+    """``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0``: the ways to read ``text`` as (all
+    before the equation, the Euler–Lagrange operator as typed, the equation it gives). Words that state
+    may begin it (``Applying``, ``Using``, ``From``…); after the operator's ``= 0``, a ``,``, ``;`` or
+    ``:``, or words that hand over (``we get``), lead to the equation; or the equation is what the
+    operator comes to, after its ``=`` (``d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0``). The operator is any
+    of Lagrange's shape (:func:`~grader.judge.euler_lagrange.euler_lagrange`): whether it is the true one
+    is for the caller to judge. The words must be prose (:func:`is_prose`); the equation is not checked."""
+    if len(text) > _LENGTH or "dt" not in text:
+        return  # as nearly every answer: no operator
+    starts = [len(text) - len(text.lstrip())]
+    first = _PROSE_WORD.match(text, starts[0])
+    if first is not None:
+        if first[0].lower() not in _STATING:
+            return
+        lead, _ = _words_from(text, 0, names, coords)
+        # the longest run of words first; dL of dL/dθ is a word too, as read alone
+        starts = [found.end() for found in _PROSE_WORD.finditer(text)][: len(lead)][::-1]
+    for start in starts:
+        equals = _first_equals(text[start:])
+        if equals is None:
+            return
+        equals += start
+        operator = text[start:equals].strip()
+        if euler_lagrange(operator, coords, names) is not None:
+            break
+    else:
+        return
+    stop = _stop(text, equals + 1, names, coords)
+    side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
+    between: list[str] = []
+    if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
+        after = equals + 1
+    elif stop is None or text[stop] == "=":
+        return
+    else:
+        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
+            return  # …, not …: words that do not hand over to the equation
+    equation = text[after:].strip(" ,;:")
+    words = " ".join((*_PROSE_WORD.findall(text[:start]), *between))
+    if equation and _first_equals(equation) is not None and (not words or is_prose(words, names, doubt=True)):
+        yield re.sub(r"\s+", " ", text[:after].strip()), operator, equation
+
+
 def _words_from(
     text: str, start: int, names: Collection[str], coords: Collection[str], *, handing: bool = False
 ) -> tuple[list[str], int]:
@@ -278,7 +371,9 @@ def _words_from(
         if text[end : found.start()].strip():
             break
         word = _EULER_LAGRANGE.sub("EulerLagrange", re.sub(r"['’]s$", "", found[0]))
-        if not (_is_word(word, names, coords) or (handing and word.lower() in IMPLYING_WORDS)):
+        # a unit's name spelled out before another word is prose too: Newton's second law
+        spelled = len(word) > 3 and word in SI_UNITS and _BEFORE_A_WORD.match(text, found.end()) is not None
+        if not (_is_word(word, names, coords) or spelled or (handing and word.lower() in IMPLYING_WORDS)):
             break
         words.append(found[0])
         end = found.end()
@@ -325,15 +420,6 @@ def _name(text: str, names: Collection[str], coords: Collection[str]) -> str | N
 
 
 _ARGUMENTS = re.compile(r"\s*\([^()]*\)\s*$")  # L(θ, θ̇): what a quantity is a function of
-
-
-def _is_euler_lagrange(text: str, names: Collection[str], coords: Collection[str]) -> bool:
-    """Whether ``text`` is the Euler–Lagrange operator, ``d/dt(∂L/∂θ̇) − ∂L/∂θ``, as the parser reads it
-    before an equation (and reads past); not ``∂L/∂θ``, the name of one derivative."""
-    if "∂" not in text and "\\partial" not in text:
-        return False
-    read = parse_answer(f"{text} = 0", coords=coords, known=names)
-    return read.ok and read.kind == "expression" and read.value == 0
 
 
 # words that say what follows is a small-angle form: "which for small θ gives", "linearized:"
@@ -464,6 +550,29 @@ def text_as_words(text: str, names: Collection[str], coords: Collection[str]) ->
     return text
 
 
+def tex_math_as_words(text: str) -> str:
+    """``Since $L = T − V$, $L = \\frac12 m l^2 \\dot\\theta^2 + …$`` as ``Since L = T − V, L = \\frac12 …``:
+    TeX's inline mathematics (``$…$``, ``$$…$$``, ``\\(…\\)``) in a sentence, without the signs that set it
+    apart from the words, so the sentence reads as one typed without them. The text as typed where it
+    holds no such mathematics, a ``$`` left unpaired, or no word outside the mathematics.
+
+    >>> tex_math_as_words("Since $L = T - V$, $L = m$")
+    'Since L = T - V, L = m'
+    """
+    if len(text) > _LENGTH or ("$" not in text and "\\(" not in text):
+        return text  # as nearly every answer: no mathematics set apart
+    outside = _TEX_MATH.sub(" ", text)
+    if "$" in outside or "\\(" in outside or "\\)" in outside:
+        return text  # a sign left unpaired: not read apart
+    if not _PROSE_WORD.search(outside):
+        return text  # mathematics alone, which the parser reads
+    return _TEX_MATH.sub(lambda found: found[1] if found[1] is not None else found[2], text)
+
+
+# TeX's inline mathematics set apart from words: $…$, $$…$$ or \(…\)
+_TEX_MATH = re.compile(r"\$\$?([^$]+?)\$\$?|\\\((.+?)\\\)", re.S)
+
+
 def _without_tex_spaces(text: str) -> str:
     """``text`` without the spaces it ends in, TeX's (``\\,``, ``\\quad``, ``~``) too."""
     while True:
@@ -472,6 +581,20 @@ def _without_tex_spaces(text: str) -> str:
         if space is None:
             return text
         text = text[: -len(space)]
+
+
+def words_in(text: str, names: Collection[str], coords: Collection[str]) -> str:
+    """The words of prose anywhere in ``text``, from the first to the last, as typed; ``""`` where there
+    are none. A word is as :func:`_is_word` has it: ``Dimension of force`` of ``Dimension of force: Q_θ = …``,
+    but not ``So``, ``sin`` or a unit's name.
+
+    >>> words_in("Dimension of force: Q_θ = −m g r sin θ", ["g", "m", "r", "theta"], ["r", "theta"])
+    'Dimension of force'
+    """
+    if len(text) > _LENGTH:
+        return ""
+    found = [word for word in _WORD.finditer(text) if _is_word(word[0], names, coords)]
+    return text[found[0].start() : found[-1].end()] if found else ""
 
 
 def _is_word(word: str, names: Collection[str], coords: Collection[str]) -> bool:

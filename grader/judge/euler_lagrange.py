@@ -1,0 +1,162 @@
+"""Lagrange's equation as a student writes it on the way to an equation of motion.
+
+Contents:
+    euler_lagrange(text, coords, names)   whether ``text`` is d/dt(∂L/∂q̇) − ∂L/∂q: True, False, or None
+
+``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0``: the operator says how the equation was
+found, and is read past before it (:func:`grader.judge.words.euler_lagrange_then_formula`). Only the true
+one may be: d/dt(∂L/∂q̇) − ∂L/∂q for a coordinate q of the problem (or q, q_j in general), with either
+sign, its two terms in either order, written with ∂ or d, in plain notation or TeX's, and Rayleigh's
+``+ ∂F/∂q̇`` where there is friction. ∂V, ∂H or ∂T for ∂L, q and q̇ swapped, or a plus between the two
+terms is another operator: it states what is not Lagrange's equation, which a person reads.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Collection
+from typing import NamedTuple
+
+from grader.parse.messages import ParseFailure
+from grader.parse.names import canonical_name
+from grader.parse.tokens import Token, tokenize
+
+__all__ = ["euler_lagrange"]
+
+_LENGTH = 200  # characters: an operator is short; anything longer is not read as one
+_DISSIPATION = frozenset({"F", "R", "D"})  # Rayleigh's function, as texts name it (TeX's \mathcal{F} is F)
+_GENERIC = re.compile(r"q(?:_?[a-z0-9]+)?")  # q, q_j, q_k: a coordinate in general
+_BRACKETS = {"(": ")", "[": "]", "{": "}"}
+
+
+class _Term(NamedTuple):
+    sign: int
+    rate: bool  # d/dt of the quotient
+    top: str  # L of ∂L/∂θ̇
+    bottom: str  # thetadot of ∂L/∂θ̇, as the parser names a velocity
+
+
+def euler_lagrange(text: str, coords: Collection[str], names: Collection[str] = ()) -> bool | None:
+    """Whether ``text`` is the Euler–Lagrange operator of a coordinate of the problem (``coords``): True
+    for the true one, False for another of its shape (a rate d/dt(∂·/∂·) and a derivative ∂·/∂·, and
+    nothing else), None for a text of any other shape (``∂L/∂θ̇``, a momentum's name; ``d/dt(∂L/∂φ̇)``,
+    a conserved momentum's rate; or no derivative at all). A generic q may be named where the problem
+    has no q of its own (``names``).
+
+    >>> euler_lagrange("d/dt(∂L/∂θ̇) − ∂L/∂θ", ["theta"]), euler_lagrange("∂L/∂θ − d/dt(dL/dthetadot)", ["theta"])
+    (True, True)
+    >>> euler_lagrange("d/dt(∂V/∂θ̇) − ∂V/∂θ", ["theta"]), euler_lagrange("d/dt(∂L/∂θ) − ∂L/∂θ̇", ["theta"])
+    (False, False)
+    >>> euler_lagrange("∂L/∂θ̇", ["theta"]) is None
+    True
+    """
+    if len(text) > _LENGTH or "dt" not in text:
+        return None  # as nearly every text: no d/dt
+    try:
+        tokens = tokenize(text)
+    except ParseFailure:
+        return None
+    terms = _terms(tokens)
+    if terms is None or all(term.rate for term in terms) or not any(term.rate for term in terms):
+        return None
+    return _true(terms, coords, names)
+
+
+def _true(terms: list[_Term], coords: Collection[str], names: Collection[str]) -> bool:
+    """Whether ``terms`` are d/dt(∂L/∂q̇) − ∂L/∂q (either sign), and perhaps + ∂F/∂q̇, of one coordinate."""
+    rates = [term for term in terms if term.rate]
+    forces = [term for term in terms if not term.rate and not term.bottom.endswith("dot")]
+    if len(rates) != 1 or len(forces) != 1:
+        return False
+    rate, force = rates[0], forces[0]
+    coordinate = force.bottom
+    known = coordinate in coords or (_GENERIC.fullmatch(coordinate) is not None and coordinate not in names)
+    if not known or (rate.top, force.top, rate.bottom) != ("L", "L", f"{coordinate}dot") or rate.sign == force.sign:
+        return False
+    dissipation = [term for term in terms if term not in (rate, force)]
+    return all(
+        term.top in _DISSIPATION and term.bottom == rate.bottom and term.sign == rate.sign for term in dissipation
+    )
+
+
+def _terms(tokens: list[Token]) -> list[_Term] | None:
+    """The signed terms of ``tokens``, each d/dt of a partial derivative or one alone; None where
+    they are anything else."""
+    terms, i = [], 0
+    while True:
+        sign = 1
+        if tokens[i].is_op("+", "-"):
+            sign = -1 if tokens[i].is_op("-") else 1
+            i += 1
+        elif terms:
+            return None  # two terms side by side: a product
+        found = _rate(tokens, i) or _quotient(tokens, i)
+        if found is None:
+            return None
+        i, rate, top, bottom = found
+        terms.append(_Term(sign, rate, top, bottom))
+        if tokens[i].kind == "end":
+            return terms
+
+
+def _rate(tokens: list[Token], i: int) -> tuple[int, bool, str, str] | None:
+    """``d/dt(∂L/∂θ̇)``, ``d/dt ∂L/∂θ̇`` or TeX's ``\\frac{d}{dt}\\left(…\\right)`` at ``i``: (the position
+    after it, True, the quotient's top and bottom); None where there is none."""
+    if _is_name(tokens[i], "d") and tokens[i + 1].is_op("/") and _is_name(tokens[i + 2], "dt"):
+        i += 3
+    elif (
+        tokens[i].kind == "frac"
+        and [token.value for token in tokens[i + 1 : i + 7] if token.kind == "op"] == ["{", "}", "{", "}"]
+        and _is_name(tokens[i + 2], "d")
+        and _is_name(tokens[i + 5], "dt")
+    ):
+        i += 7
+    else:
+        return None
+    closer = _BRACKETS.get(tokens[i].value) if tokens[i].kind == "op" else None
+    found = _quotient(tokens, i + 1 if closer else i)
+    if found is None:
+        return None
+    j, _, top, bottom = found
+    if closer:
+        if not tokens[j].is_op(closer):
+            return None
+        j += 1
+    return j, True, top, bottom
+
+
+def _quotient(tokens: list[Token], i: int) -> tuple[int, bool, str, str] | None:
+    """``∂L/∂θ``, ``dL/dθ``, ``d L/d θ`` or TeX's ``\\frac{\\partial L}{\\partial \\theta}`` at ``i``: (the
+    position after it, False, its top and bottom, as ``L`` and ``theta``); None where there is none."""
+    if tokens[i].kind == "frac" and tokens[i + 1].is_op("{"):
+        top = _differential(tokens, i + 2)
+        if top is None or not tokens[top[0]].is_op("}") or not tokens[top[0] + 1].is_op("{"):
+            return None
+        bottom = _differential(tokens, top[0] + 2)
+        if bottom is None or not tokens[bottom[0]].is_op("}"):
+            return None
+        return bottom[0] + 1, False, top[1], bottom[1]
+    top = _differential(tokens, i)
+    if top is None or not tokens[top[0]].is_op("/"):
+        return None
+    bottom = _differential(tokens, top[0] + 1)
+    return None if bottom is None else (bottom[0], False, top[1], bottom[1])
+
+
+def _differential(tokens: list[Token], i: int) -> tuple[int, str] | None:
+    """``∂L``, ``dL``, ``d L`` or ``∂θ̇`` at ``i``: (the position after it, the name differentiated, as
+    the parser names it: ``thetadot``); None where there is none."""
+    token = tokens[i]
+    if (token.kind == "partial" or _is_name(token, "d")) and tokens[i + 1].kind == "name":
+        return i + 2, _named(tokens[i + 1].value.raw, tokens[i + 1])
+    if token.kind == "name" and token.value.raw.startswith("d") and len(token.value.raw) > 1:
+        return i + 1, _named(token.value.raw[1:], token)  # dL, dthetadot: one name as typed
+    return None
+
+
+def _named(raw: str, token: Token) -> str:
+    return canonical_name(raw) + "dot" * (token.value.dots + token.value.primes)
+
+
+def _is_name(token: Token, raw: str) -> bool:
+    return token.kind == "name" and token.value.raw == raw and not token.value.dots and not token.value.primes
