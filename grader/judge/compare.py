@@ -737,6 +737,8 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
     """The Euler–Lagrange operator an answer applies on its way to the equation it gives, in words
     (``Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …``) or as the parser reads it before the equation
     (``d/dt(∂L/∂θ) − ∂L/∂θ̇ = … = 0``), where it is not the true one; as typed, or None."""
+    if "dt" not in submitted:
+        return None  # as nearly every answer: no d/dt, no operator
     coords = expected.setting.coords
     for _, operator, _ in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
         if euler_lagrange(operator, coords, expected.names) is False:
