@@ -205,5 +205,8 @@ def test_equations_from_the_students_own_lagrangian_on_the_page_earn_the_method_
     hints = [li.text for li in result.find_elements(By.CSS_SELECTOR, "ul.hints li")]
     assert hints == ["Your equations follow correctly from your own Lagrangian, which is not right: method credit."]
     _type(browser, "", KEY)  # no Lagrangian typed: the equations alone, wrong
-    result = _check(browser, "not_equivalent", MOTION)
-    assert result.find_element(By.CSS_SELECTOR, ".verdict").text == "✘\nnot right"
+    _check(browser, "not_equivalent", MOTION)
+    # the verdict before was not_equivalent too, and stays shown until the new one comes: wait for its words
+    verdict = f'article.part[data-part="{MOTION}"] .result.not_equivalent .verdict'
+    alone = "✘\nnot right"
+    WebDriverWait(browser, 20).until(lambda driver: driver.find_element(By.CSS_SELECTOR, verdict).text == alone)
