@@ -155,13 +155,14 @@ def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str,
     alone was, and a labelled one lost its equations their credit)."""
     setting = setting_of(problem)
     source = problem.part(part.derive_from)
+    reference = expected_answer(problem, source)
     # judged against the reference alone: a listed mistake's hint would hide what the verdict says of its units
     arguments = {"kind": source.kind, **setting, **part_options(source)}
-    graded = compare(expected_answer(problem, source), lagrangian, **arguments, timeout=deadline.remaining())
+    graded = compare(reference, lagrangian, **arguments, timeout=deadline.remaining())
     read = graded.answer
     if read is None or not read.ok or read.kind != "expression" or deadline.remaining() <= 0:
         return None
-    if graded.diagnosis in _NOT_AN_ENERGY or not _as_full(read.value, expected_answer(problem, source), setting):
+    if graded.diagnosis in _NOT_AN_ENERGY or not _as_full(read.value, reference, setting):
         return None  # ẋ², or ½ (m₁ + m₂) ẋ² with no potential: equations easier than those asked earn nothing
     try:
         with time_limit(deadline.remaining()):
