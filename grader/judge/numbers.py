@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Collection
+from functools import lru_cache
 
 import sympy
 
@@ -118,6 +119,8 @@ def read_number(
     2``), send the answer to a person, with a note that says so: which is the answer is not for the checker
     to say.
     """
+    # a side of working is read again: for the final value, for working that does not hold, and beside words
+    reads = lru_cache(maxsize=None)(reads)
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
     )
