@@ -216,14 +216,10 @@ def compare(
             verdict = by_lines
     said = _said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
     if said is not None:  # Using L = T + V, we get L = …: right as a value, not as what it says L is
-        sentence = say("statement_for_a_person", statement=said[1], label=said[0])
-        feedback = (sentence, *(line for line in verdict.feedback if line != "Correct."))
-        return replace(verdict, status="undecided", diagnosis="statement_for_a_person", feedback=feedback)
+        return _right_but_said(verdict, "statement_for_a_person", statement=said[1], label=said[0])
     operator = _operator_said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
     if operator is not None:  # Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …: right, but not from Lagrange's equation
-        sentence = say("operator_for_a_person", statement=operator)
-        feedback = (sentence, *(line for line in verdict.feedback if line != "Correct."))
-        return replace(verdict, status="undecided", diagnosis="operator_for_a_person", feedback=feedback)
+        return _right_but_said(verdict, "operator_for_a_person", statement=operator)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
@@ -231,6 +227,12 @@ def compare(
     if _judge(spec, prepared, listed, left, values).status != "equivalent":
         return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+def _right_but_said(verdict: Verdict, key: str, **details) -> Verdict:
+    """A right ``verdict`` that goes to a person for what the answer says on its way (``key``)."""
+    feedback = (say(key, **details), *(line for line in verdict.feedback if line != "Correct."))
+    return replace(verdict, status="undecided", diagnosis=key, feedback=feedback)
 
 
 # what a formula is told where the other form is asked: a small-angle form where the full one is, and back
