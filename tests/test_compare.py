@@ -740,6 +740,10 @@ def test_partial_credit_for_a_rescaled_lagrangian_is_the_parts_option():
         L_PENDULUM + " + d/dt(θ^6)",
         L_PENDULUM + " + 10^6 θ̇ θ^2",
         "L = " + L_PENDULUM,
+        # the constant in words, as TeX writes a word: \text{const} is \mathrm{const}
+        r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta + \text{const}",
+        r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta + \text{const.}",
+        r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta + \mbox{ constant }",
     ],
 )
 def test_a_lagrangian_is_right_up_to_a_constant_or_a_total_derivative(submitted):

@@ -40,6 +40,7 @@ from typing import NamedTuple
 
 from grader.parse.messages import ParseFailure
 from grader.parse.names import (
+    CONSTANT_WORDS,
     FUNCTION_NAMES,
     GREEK_BY_LETTER,
     IMPLYING_WORDS,
@@ -195,6 +196,8 @@ _SIZES = {f"{size}{side}" for size in ("big", "Big", "bigg", "Bigg") for side in
 _LATEX_IGNORED = {"left", "right", "middle", "displaystyle", "textstyle", "limits", "nonumber", "notag", *_SIZES}
 # bold type, which says vector; our answers are scalars, so \boldsymbol{\theta} is θ
 _BOLD = {"mathbf", "boldsymbol", "bm"}
+# L + \text{const.}: the word for any constant, as \mathrm{const} is read, its full stop an abbreviation's
+_CONSTANT_WORD = re.compile(r"\s*\{\s*(" + "|".join(CONSTANT_WORDS) + r")\.?\s*\}")
 _WORD_BEFORE_EQUALS = re.compile(r"\s*\{\s*([A-Za-z]+)\s*\}(?=\s*=)")  # \text{L} = …: the quantity's name
 # \overset{.}{\theta}, \overset{..}{\theta}, \overset{\cdot\cdot}{\theta}: dots set over a name, as \dot, \ddot
 _OVERSET_DOTS = re.compile(r"\s*\{\s*((?:(?:\.|\\cdot(?![A-Za-z]))\s*){1,2})\}")
@@ -1068,6 +1071,9 @@ class _Tokenizer:
             self._finish_name(start, "".join(raw), 0)
         elif command in _BOLD:
             pass  # \boldsymbol{\theta}, \bm\theta: what follows is read as it would be in plain type
+        elif command in ("text", "textrm", "mbox") and (word := _CONSTANT_WORD.match(text, self.pos)):
+            self.pos = word.end()
+            self._finish_name(start, word[1], 0)
         elif command in ("text", "textrm", "mbox") and (word := _WORD_BEFORE_EQUALS.match(text, self.pos)):
             self.pos = word.end()  # \text{L} = …, as \mathrm{L} = …: the name of what the answer writes out
             self._finish_name(start, word[1], 0)
