@@ -66,6 +66,21 @@ def test_a_malformed_expected_answer_raises_for_the_author():
 
 
 @pytest.mark.parametrize(
+    ("expected", "message"),
+    [
+        ("x +", "The expected answer 'x +' cannot be read: it ends too early: something is missing after `+`."),
+        ("", "The expected answer '' cannot be read: it is empty."),
+        ("log(0)", "The expected answer 'log(0)' cannot be read: it contains a value that is undefined"),
+    ],
+)
+def test_a_malformed_expected_answer_is_described_to_its_author_not_to_a_student(expected, message):
+    with pytest.raises(ReferenceAnswerError) as raised:
+        compare(expected, "x")
+    assert str(raised.value).startswith(message)
+    assert "your answer" not in str(raised.value).lower()
+
+
+@pytest.mark.parametrize(
     ("call", "message"),
     [
         (lambda: compare("x", "x", kind="vector"), "unknown answer kind 'vector'"),

@@ -12,6 +12,7 @@ per part; the kind checkers add what they derive to ``Expected.cache``.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -165,7 +166,14 @@ def _prepare(text, kind, coords, known, domains, options, parsed, dimensions) ->
     answer = parse_answer(text, coords=setting.coords, known=setting.known)
     if not answer.ok:
         raise ReferenceAnswerError(
-            f"The expected answer {text!r} cannot be read: {answer.message}\n{answer.pointer}", refusal=answer
+            f"The expected answer {text!r} cannot be read: {_said_of_it(answer.message)}\n{answer.pointer}",
+            refusal=answer,
         )
     names = frozenset(setting.coords) | frozenset(setting.known) | {s.name for s in answer.symbols} | {TIME.name}
     return Expected(text, kind, setting, answer, setting.plain(answer.value), names, dict(options))
+
+
+def _said_of_it(message: str) -> str:
+    """A parser's message, which speaks to a student ("Your answer ends too early"), said of the
+    expected answer the author is told about: "it ends too early"."""
+    return re.sub(r"^Your answer\b", "it", message)
