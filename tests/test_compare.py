@@ -4690,3 +4690,49 @@ def test_a_sentence_that_may_change_the_definition_leaves_it_as_typed(expected, 
     verdict = compare(expected, submitted, kind=kind, **PENDULUM)
     assert verdict.status == status, verdict
     assert verdict.feedback[0].startswith(first), verdict
+
+
+ROD = "1/6 m l^2 thetadot^2 + 1/2 m g l cos(theta)"  # a uniform rod pivoted at one end: I = m l²/3
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "feedback"),
+    [
+        (ROD, "0.1667 m l^2 thetadot^2 + 0.5 m g l cos(theta)", "lagrangian",
+         "Your answer would be right with `0.1667` written exactly: it is a rounded decimal where an exact number"
+         " belongs (a fraction, or one with π or a root)."),
+        (ROD, "0.17 m l^2 thetadot^2 + 0.5 m g l cos(theta)", "lagrangian", "`0.17`"),  # rounded to two digits
+        (ROD, "0.166 m l^2 thetadot^2 + 0.5 m g l cos(theta)", "lagrangian", "`0.166`"),  # or cut off
+        ("pi/2 m g l", "1.57 m g l", "expression", "`1.57`"),
+        ("sqrt(2)/2 m g l", "0.707 m g l", "expression", "`0.707`"),
+        ("thetaddot = -(2/3) (g/l) sin(theta)", "thetaddot = -0.667 g sin(theta)/l", "equation", "`0.667`"),
+        ("1/3 m l^2 thetadot^2 + 2/3 m g l", "0.33 m l^2 thetadot^2 + 0.67 m g l", "expression",
+         "Your answer would be right with `0.33` and `0.67` written exactly: they are rounded decimals where exact"
+         " numbers belong (fractions, or ones with π or roots)."),
+    ],
+)  # fmt: skip
+def test_a_formula_right_but_for_a_rounded_decimal_is_told_so(expected, submitted, kind, feedback):
+    # 0.1667 is not 1/6, as STACK holds too; but the physics is right, and that is what to say
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.diagnosis[:15]) == ("not_equivalent", 0.0, "rounded_decimal"), (
+        verdict
+    )
+    assert feedback in verdict.feedback[0]
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status"),
+    [
+        (ROD, "0.5 m l^2 thetadot^2 + 0.5 m g l cos(theta)", "not_equivalent"),  # 0.5 is exact: no rounding of 1/6
+        (ROD, "0.2 m l^2 thetadot^2 + 0.5 m g l cos(theta)", "not_equivalent"),  # one digit says too little
+        (ROD, "0.1667 m l thetadot^2 + 0.5 m g l cos(theta)", "not_equivalent"),  # wrong but for the rounding too
+        (ROD, "0.1667 m l^2 thetadot^2 - 0.5 m g l cos(theta)", "not_equivalent"),
+        (ROD, "0.19 m l^2 thetadot^2 + 0.5 m g l cos(theta)", "not_equivalent"),  # 3/16, no rounding of 1/6
+        ("m g l", "1.5e-3 m g l", "not_equivalent"),  # a power of ten's decimal is no rounding
+        (L_PENDULUM, "0.5 m l^2 thetadot^2 + 1.0 m g l cos(theta)", "equivalent"),  # exact decimals as before
+    ],
+)
+def test_only_a_decimal_that_rounds_the_exact_number_is_told_it_is_rounded(expected, submitted, status):
+    verdict = compare(expected, submitted, kind="lagrangian" if "thetadot" in expected else "expression", **PENDULUM)
+    assert verdict.status == status, verdict
+    assert "rounded" not in (verdict.diagnosis or "")

@@ -304,3 +304,17 @@ def test_the_formula_finder_finds_a_formula():
     options = {"kind": part.kind, **setting_of(problem), **part_options(part)}
     assert any(compare(expected_answer(problem, part), f, **options).equivalent for f in formulas)
     assert re.search(r"1/2 m l² θ̇² \+ m g l cos θ", " | ".join(formulas))
+
+
+@pytest.mark.parametrize(
+    ("answer", "hint"),
+    [
+        ("6.28 sqrt(l/g)", "That is the period of the oscillation, 2π/ω; the angular frequency ω is asked."),
+        ("0.159 sqrt(g/l)", "That is the frequency f = ω/(2π), in cycles per second; the angular frequency ω is"),
+    ],
+)
+def test_a_listed_mistake_with_its_numbers_rounded_gets_the_mistakes_hint(answer, hint):
+    # 2π as 6.28 and 1/(2π) as 0.159: the mistake is the same, and so is what the student needs to hear
+    result = check("plane-pendulum.frequency", answer)
+    assert result.status == "not_equivalent"
+    assert result.hints[0].startswith(hint)

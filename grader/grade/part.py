@@ -18,7 +18,7 @@ from functools import lru_cache
 from grader.bank import Part, Problem
 from grader.errors import AuthorError
 from grader.judge import DEFAULT_TIMEOUT, Verdict, compare
-from grader.judge.compare import READINGS_FOR_A_PERSON
+from grader.judge.compare import READINGS_FOR_A_PERSON, ROUNDED
 from grader.judge.deadline import CheckTimeout, Deadline, time_limit
 from grader.judge.lagrangian import equations_of_motion
 from grader.judge.setting import Setting
@@ -129,8 +129,12 @@ def _matches(verdict: Verdict) -> bool:
     """Whether the answer is a mistake's, by value: what goes to a person only when the value is right,
     a label naming another quantity (``f = …`` where ω is asked), working that does not come to the
     value (``6 − 4 = 3``), words beside it (``…, which is a force``), is said in the verdict's notes
-    already."""
-    return verdict.equivalent or (verdict.status == "undecided" and verdict.diagnosis in READINGS_FOR_A_PERSON)
+    already. The mistake's with its numbers rounded (6.28 for 2π) is the mistake too."""
+    return (
+        verdict.equivalent
+        or (verdict.status == "undecided" and verdict.diagnosis in READINGS_FOR_A_PERSON)
+        or verdict.diagnosis in ROUNDED
+    )
 
 
 def _with_method_credit(

@@ -37,6 +37,7 @@ from grader.judge.lagrangian import check_lagrangian
 from grader.judge.motion import accelerations_in, check_equation, check_equations
 from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
+from grader.judge.rounded import exact_readings
 from grader.judge.scalar import check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import (
@@ -79,7 +80,7 @@ from grader.parse import (
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
-__all__ = ["DEFAULT_TIMEOUT", "KINDS", "READINGS_FOR_A_PERSON", "Kind", "compare"]
+__all__ = ["DEFAULT_TIMEOUT", "KINDS", "READINGS_FOR_A_PERSON", "ROUNDED", "Kind", "compare"]
 
 DEFAULT_TIMEOUT = 2.0
 
@@ -220,6 +221,10 @@ def compare(
     operator = _operator_said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
     if operator is not None:  # Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …: right, but not from Lagrange's equation
         return _right_but_said(verdict, "operator_for_a_person", statement=operator)
+    left = timeout - (time.monotonic() - started)
+    rounded = _rounded(spec, prepared, submitted, left, values) if verdict.status == "not_equivalent" else None
+    if rounded is not None:  # 0.333 m l² θ̇²: right with the decimal written as the 1/3 it rounds
+        return _verdict(rounded, verdict.answer)
     listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
@@ -227,6 +232,25 @@ def compare(
     if _judge(spec, prepared, listed, left, values).status != "equivalent":
         return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+def _rounded(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple) -> Outcome | None:
+    """A wrong formula that is right with its decimals written as the exact numbers they round
+    (:func:`~grader.judge.rounded.exact_readings`): still wrong, as 0.333 is not 1/3, and told it is the
+    rounding; None for any other answer, or where time runs out."""
+    if not (spec.parsed and spec.shape) or not isinstance(submitted, str) or len(submitted) > LIMITS.length:
+        return None
+    started = time.monotonic()
+    for reading, decimals in exact_readings(submitted):
+        left = timeout - (time.monotonic() - started)
+        if left <= 0:
+            return None
+        if _judge(spec, expected, reading, left, given).equivalent:
+            quoted = [f"`{decimal}`" for decimal in decimals]
+            shown = quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " and " + quoted[-1]
+            key = "rounded_decimal" if len(decimals) == 1 else "rounded_decimals"
+            return Outcome("not_equivalent", 0.0, key, {"decimals": shown}, method="rounded")
+    return None
 
 
 def _right_but_said(verdict: Verdict, key: str, **details) -> Verdict:
@@ -1315,6 +1339,8 @@ _FOR_A_PERSON = {
 # the diagnoses of a value that is right as read, where how it was read is for a person to confirm (a wrong
 # Euler–Lagrange operator before it too, which compare finds once the value is judged)
 READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {"operator_for_a_person"}
+# the diagnoses of a value that is wrong only for the decimals that round its exact numbers (6.28 for 2π)
+ROUNDED = frozenset({"rounded_decimal", "rounded_decimals"})
 
 
 def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:

@@ -185,6 +185,10 @@ FEEDBACK: dict[str, str] = {
     " depends on each.",
     "factor_lacks": "Your answer does not depend on {names}, and the right answer does.",
     "factor_extra": "The right answer does not depend on {names}.",
+    "rounded_decimal": "Your answer would be right with {decimals} written exactly: it is a rounded decimal where"
+    " an exact number belongs (a fraction, or one with π or a root).",
+    "rounded_decimals": "Your answer would be right with {decimals} written exactly: they are rounded decimals"
+    " where exact numbers belong (fractions, or ones with π or roots).",
     "number_for_formula": "A formula in the problem's symbols is asked for here; your answer is a number.",
     "factor_depends_how": "Your answer depends on {others} as the right answer does, but on {names} in another way:"
     " check how your answer depends on {names}.",
