@@ -352,6 +352,42 @@ def test_the_wrong_equation_of_a_system_has_its_terms_named(submitted, feedback)
     assert verdict.feedback == feedback
 
 
+# the double pendulum solved for each acceleration (θ̈₁ = …, θ̈₂ = …): derived from EOM_DOUBLE by Cramer's rule
+SOLVED_1 = (
+    "theta1ddot = (-g (2 m1 + m2) sin(theta1) - m2 g sin(theta1 - 2 theta2) - 2 sin(theta1 - theta2) m2"
+    " (theta2dot^2 l2 + theta1dot^2 l1 cos(theta1 - theta2))) / (l1 (2 m1 + m2 - m2 cos(2 theta1 - 2 theta2)))"
+)
+SOLVED_2 = (
+    "theta2ddot = (2 sin(theta1 - theta2) (theta1dot^2 l1 (m1 + m2) + g (m1 + m2) cos(theta1)"
+    " + theta2dot^2 l2 m2 cos(theta1 - theta2))) / (l2 (2 m1 + m2 - m2 cos(2 theta1 - 2 theta2)))"
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "first"),
+    [
+        (f"{SOLVED_1}; {SOLVED_2}", None),
+        (f"{SOLVED_2}; {SOLVED_1}", None),
+        # the coordinate whose acceleration the right equation fixes is not the one said to be wrong
+        (f"{SOLVED_1}; {SOLVED_2.replace('+ g (m1 + m2)', '- g (m1 + m2)')}",
+         "Your equation for θ₂ is not right; equation 1 is right."),
+        (f"{SOLVED_1.replace('- m2 g sin', '+ m2 g sin')}; {SOLVED_2}",
+         "Your equation for θ₁ is not right; equation 2 is right."),
+        (f"{SOLVED_2.replace('+ g (m1 + m2)', '- g (m1 + m2)')}; {SOLVED_1}",
+         "Your equation for θ₂ is not right; equation 2 is right."),
+        # an Euler–Lagrange equation holds both accelerations: the θ₁ one right says nothing of θ̈₁ alone
+        (f"{EOM_DOUBLE_1}; {SOLVED_2.replace('+ g (m1 + m2)', '- g (m1 + m2)')}",
+         "Your equation for θ₂ is not right; equation 1 is right."),
+    ],
+)  # fmt: skip
+def test_a_system_solved_for_its_accelerations_names_the_wrong_ones_coordinate(submitted, first):
+    verdict = compare(EOM_DOUBLE, submitted, kind="equations", **DOUBLE)
+    if first is None:
+        assert verdict.status == "equivalent", verdict
+    else:
+        assert (verdict.status, verdict.feedback[0]) == ("not_equivalent", first), verdict
+
+
 def test_a_wrong_equation_is_named_against_equations_derived_from_a_lagrangian():
     # derived, the θ₁ equation has (m₁ + m₂) l₁² θ̈₁ multiplied out into two terms; the student's
     # (m₁ + m₂) l₁ θ̈₁ has one l₁ less: both are solved for θ̈₁ alike, and their terms agree

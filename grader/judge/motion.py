@@ -1140,6 +1140,14 @@ class _State:
         Only feedback on a wrong system asks, so it is worked out only then."""
         return [_in_span(self.good, row) for row in self.reference]
 
+    @cached_property
+    def fixed(self) -> list[bool]:
+        """Per coordinate: whether the right submitted equations alone fix its acceleration, as
+        θ̈₁ = … solved for it does, where its Euler–Lagrange equation, which holds θ̈₂ too, is not spanned."""
+        n = len(self.reference[0]) - 1 if self.reference else 0
+        rows = [row[:n] for row in self.good]
+        return [_in_span(rows, [int(i == k) for i in range(n)]) for k in range(n)]
+
 
 def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline) -> Outcome:
     theirs, (references, _) = _equations(answer.value), _expected_equations(expected)
@@ -1341,9 +1349,10 @@ def _system_outcome(expected: Expected, states: list[_State], theirs: Sequence) 
     if any(right) and unspanned:
         right_ones = [str(j + 1) for j, ok in enumerate(right) if ok]
         rest = f"equation {right_ones[0]} is right" if len(right_ones) == 1 else "the others are right"
-        return Outcome(
-            "not_equivalent", 0.0, "wrong_equation", {"coords": _or(unspanned, describe), "right": rest}, method
-        )
+        # θ̈₁ = … right and θ̈₂ = … wrong: θ₁'s acceleration is right, so the wrong one is θ₂'s
+        fixed = {q for i, q in enumerate(coords) if all(state.fixed[i] for state in states)}
+        off = [q for q in unspanned if q not in fixed] or unspanned
+        return Outcome("not_equivalent", 0.0, "wrong_equation", {"coords": _or(off, describe), "right": rest}, method)
     return Outcome("not_equivalent", 0.0, "wrong_equations", {"coords": describe(coords)}, method)
 
 
