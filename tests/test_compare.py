@@ -3025,6 +3025,91 @@ def test_what_follows_an_option_is_read_past_and_said(options, expected, submitt
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+@pytest.mark.parametrize(
+    ("options", "expected", "submitted", "status", "feedback"),
+    [
+        # a label closed by a bracket, as lists are written, then a remark
+        (HOLONOMY_CHOICE, "b", "b) it is an inequality", "equivalent", ("Correct.", _past("b", "it is an inequality"))),
+        (TIME_CHOICE, "b", "b) the hoop turns", "equivalent", ("Correct.", _past("b", "the hoop turns"))),
+        (TIME_CHOICE, "b", "a) nothing moves", "not_equivalent",
+         ("Not the right choice.", _past("a", "nothing moves"))),
+        # a label said to be the answer, then a reason
+        (TIME_CHOICE, "b", "b is correct, since the hoop turns", "equivalent",
+         ("Correct.", _past("b", "since the hoop turns"))),
+        (TIME_CHOICE, "b", "The answer is b, because l = l(t)", "equivalent",
+         ("Correct.", _past("b", "because l = l(t)"))),
+        (TIME_CHOICE, "b", "a is correct, since nothing moves", "not_equivalent",
+         ("Not the right choice.", _past("a", "since nothing moves"))),
+        (TIME_CHOICE, "b", "b is correct, or a", "invalid", (_hedged("b is correct, or a"),)),
+        (TIME_CHOICE, "b", "b is correct, maybe", "invalid", (_hedged("b is correct, maybe"),)),
+    ],
+)  # fmt: skip
+def test_a_label_with_a_remark_as_students_write_it(options, expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+FALSE_CHOICE = {
+    "kind": "choice",
+    "options": (
+        ("a", "It works with two scalar functions, the kinetic and the potential energy."),
+        ("b", "Lagrange's equations have the same form in every set of generalized coordinates."),
+        ("c", "It gives the forces of constraint directly, with no extra work."),
+        ("d", "Ideal forces of constraint do not appear in Lagrange's equations."),
+    ),
+    "asks_false": True,  # "Which statement is false?"
+}
+
+
+def _not_an_option(typed):
+    return f"`{typed}` is not one of the options (a, b, c, d)."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # the option said to be false, which is what is asked
+        ("c is false", "equivalent", ("Correct.",)),
+        ("C is false.", "equivalent", ("Correct.",)),
+        ("c is wrong", "equivalent", ("Correct.",)),
+        ("c is incorrect", "equivalent", ("Correct.",)),
+        ("c is not true", "equivalent", ("Correct.",)),
+        ("(c) is false", "equivalent", ("Correct.",)),
+        ("c is the false statement", "equivalent", ("Correct.",)),
+        ("Statement c is false", "equivalent", ("Correct.",)),
+        ("statement c", "equivalent", ("Correct.",)),
+        ("The false statement is c", "equivalent", ("Correct.",)),
+        ("the false one is c", "equivalent", ("Correct.",)),
+        ("c is the correct answer", "equivalent", ("Correct.",)),
+        ("c) false", "equivalent", ("Correct.", _past("c", "false"))),
+        ("c (false)", "equivalent", ("Correct.", _past("c", "(false)"))),
+        ("c is false, because the constraint forces need multipliers", "equivalent",
+         ("Correct.", _past("c", "because the constraint forces need multipliers"))),
+        ("a is false", "not_equivalent", ("Not the right choice.",)),
+        ("d is wrong", "not_equivalent", ("Not the right choice.",)),
+        # true, correct or right of the option: the opposite claim, or no answer
+        ("c (true)", "invalid", (_hedged("c (true)"),)),
+        ("c) correct", "invalid", (_hedged("c) correct"),)),
+        ("c is correct", "invalid", (_not_an_option("c is correct"),)),
+        ("c is true", "invalid", (_not_an_option("c is true"),)),
+        ("the correct statement is c", "invalid", (_not_an_option("the correct statement is c"),)),
+        # hedges stay hedges
+        ("c is false, but maybe d", "invalid", (_hedged("c is false, but maybe d"),)),
+        ("c (or d) is false", "invalid", (_not_an_option("c (or d) is false"),)),
+        ("maybe c is false", "invalid", (_not_an_option("maybe c is false"),)),
+    ],
+)  # fmt: skip
+def test_where_the_false_option_is_asked_for_saying_it_is_false_names_it(submitted, status, feedback):
+    verdict = compare("c", submitted, **FALSE_CHOICE)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+@pytest.mark.parametrize("submitted", ["c is false", "c) false", "The false statement is c"])
+def test_where_the_right_option_is_asked_for_saying_it_is_false_denies_it(submitted):
+    verdict = compare("c", submitted, **{**FALSE_CHOICE, "asks_false": False})
+    assert (verdict.status, verdict.score) == ("invalid", 0.0)
+
+
 SEVERAL_CHOICE = {
     "kind": "choice",
     "multiple": True,

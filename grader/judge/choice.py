@@ -8,7 +8,8 @@ Contents:
 An answer is read by its labels, by an option's words or formula (also said in a sentence, or by what
 the problem says a symbol means), or by a label with words after it; what follows the option is read
 past and said. Words that hedge, doubt or deny it, or a remark that names another option or takes it
-back, make it no one answer (:func:`_hedges`).
+back, make it no one answer (:func:`_hedges`). Where the question asks which option is false
+(``asks_false``), saying an option is false names it, and saying it is true or correct doubts it.
 """
 
 from __future__ import annotations
@@ -48,7 +49,8 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     texts = _option_texts(expected.option("options") or ())
     options = list(texts)
     multiple = bool(expected.option("multiple"))
-    reading = _read_choice(submitted, texts, multiple=multiple, meanings=expected.option("meanings") or ())
+    meanings, asks_false = expected.option("meanings") or (), bool(expected.option("asks_false"))
+    reading = _read_choice(submitted, texts, multiple=multiple, meanings=meanings, asks_false=asks_false)
     if reading.conflict:
         details = {"label": reading.conflict[0], "words": reading.conflict[1]}
         return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
@@ -94,10 +96,11 @@ def _reading_notes(reading: _Reading) -> tuple:
 _SHOWN = 60  # characters of a remark repeated back to the student
 
 
-def chosen(submitted: str, options, *, multiple: bool = False, meanings=()) -> list[str] | None:
+def chosen(submitted: str, options, *, multiple: bool = False, meanings=(), asks_false=False) -> list[str] | None:
     """The labels a choice answer names, as the checker reads them (``b (rheonomic)`` is b), or
     None where it names no option's label or words, names two options at once, or hedges."""
-    reading = _read_choice(submitted, _option_texts(options), multiple=multiple, meanings=meanings)
+    texts = _option_texts(options)
+    reading = _read_choice(submitted, texts, multiple=multiple, meanings=meanings, asks_false=asks_false)
     return None if reading.conflict or reading.hedged else reading.labels
 
 
@@ -113,20 +116,29 @@ class _Reading(NamedTuple):
     hedged: bool = False
 
 
-def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=()) -> _Reading:
+def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(), asks_false=False) -> _Reading:
     """How ``submitted`` reads as a choice among ``texts`` (label → the option's words), where the
-    problem's symbols mean ``meanings`` ((name, meaning) pairs)."""
+    problem's symbols mean ``meanings`` ((name, meaning) pairs), and the question asks for the false
+    option where ``asks_false``."""
     submitted = visible(submitted).strip() if isinstance(submitted, str) else submitted  # b​, ｂ: b
     given = choice_labels(submitted) if isinstance(submitted, str) else None
     if not isinstance(submitted, str) or (given is not None and all(label in texts for label in given)):
         return _Reading(given)
     if len(submitted) > MAX_CHOICE_LENGTH:
         return _Reading(given)
-    core = _SAID_AFTER.sub("", _SAID_BEFORE.sub("", submitted, count=1), count=1)
+    before, after = (_FALSE_BEFORE, _FALSE_AFTER) if asks_false else (_SAID_BEFORE, _SAID_AFTER)
+    core = after.sub("", before.sub("", submitted, count=1), count=1)
     said = choice_labels(core)
     if said and all(label in texts for label in said):
         return _Reading(said)  # the answer is b, I choose b, option b, b is correct
     readings = _readings(texts, meanings)
+    claim, _ = _claim(submitted)
+    core_of_claim = after.sub("", before.sub("", claim, count=1), count=1)
+    said = choice_labels(core_of_claim) if core_of_claim != claim else None
+    if said and all(label in texts for label in said):  # b is correct, since …; c is false, because …
+        remark = submitted[len(claim) :]
+        hedged = _hedges(submitted, said, remark, readings, texts, asks_false=asks_false)
+        return _Reading(hedged=True) if hedged else _Reading(said, None, remark)
     said = _named(core, readings) if core != submitted else None
     if said:
         return _Reading([said], [said])  # I choose rheonomic
@@ -141,19 +153,30 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
             return _Reading(given, conflict=labelled[:2])
         found = ([labelled[0]], labelled[2]) if labelled else None
     labels, remark = found or (None, "")
-    if _hedges(submitted, labels, remark, readings, texts):
+    if _hedges(submitted, labels, remark, readings, texts, asks_false=asks_false):
         return _Reading(hedged=True)
     return _Reading(labels or given, words, remark)
 
 
 # words that say a label is the answer, before or after it: "the answer is b", "I choose b", "b is correct"
-_SAID_BEFORE = re.compile(
-    r"\A\s*(?:(?:(?:my|the)\s+)?(?:(?:final|correct|right)\s+)?(?:answer|option|choice)(?:\s+is\b|\s*:|\b)"
-    r"|I\s+(?:choose|chose|pick|picked|select|selected|go\s+with|say)\b)\s*",
-    re.I,
+_SAID = (
+    r"(?:(?:my|the)\s+)?(?:(?:final|correct|right)\s+)?(?:answer|option|choice)(?:\s+is\b|\s*:|\b)"
+    r"|I\s+(?:choose|chose|pick|picked|select|selected|go\s+with|say)\b"
 )
+_SAID_BEFORE = re.compile(rf"\A\s*(?:{_SAID})\s*", re.I)
 _SAID_AFTER = re.compile(
     r"\s+is\s+(?:the\s+|my\s+)?(?:(?:correct|right)(?:\s+(?:answer|option|choice|one))?|answer)\s*[.!]?\s*$", re.I
+)
+# the same where the question asks which option is false: "c is false", "the false statement is c";
+# a bare "c is correct" may say that c is true, the opposite, and is no such claim
+_FALSE_WORDS = r"(?:false|wrong|incorrect|untrue)"
+_FALSE_BEFORE = re.compile(
+    rf"\A\s*(?:{_SAID}|(?:the\s+)?(?:{_FALSE_WORDS}\s+(?:one|statement)|statement)(?:\s+is\b|\s*:|\b))\s*", re.I
+)
+_FALSE_AFTER = re.compile(
+    r"\s+is\s+(?:(?:the\s+|my\s+)?(?:(?:correct|right)\s+(?:answer|option|choice)|answer)"
+    rf"|(?:the\s+)?(?:{_FALSE_WORDS}|not\s+true)(?:\s+(?:one|statement))?)\s*[.!]?\s*$",
+    re.I,
 )
 
 
@@ -371,7 +394,8 @@ def _labelled(submitted: str, texts: dict[str, str], readings: dict[str, str | N
     if labels and all(len(other) <= 2 for other in labels) and not doubted:
         return None  # a, e: labels, one of them no option
     bracketed = match["words"].startswith("(") and match["words"].endswith(")")  # b (the hoop rotates)
-    if match["mark"].strip() or bracketed or _REASON.match(" " + words):
+    closed = submitted[match.end("label") : match.end("label") + 1] == ")"  # b) the hoop rotates: a list's mark
+    if match["mark"].strip() or closed or bracketed or _REASON.match(" " + words):
         return label, "", match["words"]
     return None
 
@@ -383,15 +407,21 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
 
 
-def _hedges(submitted: str, labels, remark: str, readings: dict[str, str | None], texts: dict[str, str]) -> bool:
+def _hedges(
+    submitted: str, labels, remark: str, readings: dict[str, str | None], texts: dict[str, str], *, asks_false=False
+) -> bool:
     """Whether an answer is no one answer: it doubts or denies an option, or offers another, in words
     that are not the named options' own (``rheonomic (maybe scleronomic)``, ``b (false)``, ``φ is cyclic
     (θ too)``, ``rheonomic, unless …``, ``b?``); or what was read past after the option names another
     or takes it back (``rheonomic (scleronomic)``, ``φ, θ``, ``b (no)``, ``φ (not φ)``), where it is no
     reason (``φ, because θ appears in L``: a reason may name another option, to say why not). Where no
-    option was read, whether the answer names one, and doubts it or names another too (``b or a``)."""
+    option was read, whether the answer names one, and doubts it or names another too (``b or a``).
+    Where the question asks which option is false, ``false`` names it and ``true`` doubts it (``c (true)``)."""
     own = " ".join(texts[label] for label in (labels or texts) if label in texts).lower()  # d) both: no hedge
-    doubts = (found[0].lower() for found in _DOUBT.finditer(submitted))
+    doubts = [found[0].lower() for found in _DOUBT.finditer(submitted)]
+    if asks_false:  # c) false: the claim asked for; c (true), c (correct): it is no answer, or the opposite one
+        own += " false wrong incorrect untrue"
+        doubts += [found[0].lower() for found in _TRUE.finditer(submitted)]
     doubted = any(not re.search(rf"(?<!\w){re.escape(doubt)}(?!\w)", own) for doubt in doubts)
     if labels is None:
         named, _ = _mentioned(submitted, readings, texts)
@@ -411,6 +441,9 @@ _DOUBT = re.compile(
     r"|[?？¿‽⁇⁈⁉؟⸮]|\d\s*%|\b50\s*[/:-]\s*50\b",
     re.I,
 )
+
+
+_TRUE = re.compile(r"\b(?:true|correct|right)\b", re.I)
 
 
 def _remark_pieces(remark: str) -> list[str]:

@@ -117,7 +117,12 @@ KINDS: dict[str, Kind] = {
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
         Kind("integer", check_integer, shape="expression"),
         Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None}, shape="expression"),
-        Kind("choice", check_choice, {"options": (), "multiple": False, "meanings": ()}, parsed=False),
+        Kind(
+            "choice",
+            check_choice,
+            {"options": (), "multiple": False, "meanings": (), "asks_false": False},
+            parsed=False,
+        ),
         Kind("text", check_text, {"rubric": ()}, parsed=False),
     )
 }
