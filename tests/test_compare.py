@@ -2639,6 +2639,12 @@ CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $
         ("b", "not holonomic", "equivalent", "b"),
         ("b", "The constraint is not holonomic.", "equivalent", "b"),
         ("a", "not non-holonomic", "invalid", None),
+        # the kind with the noun it qualifies
+        ("b", "non-holonomic constraint", "equivalent", "b"),
+        ("b", "Nonholonomic constraints", "equivalent", "b"),
+        ("b", "It is a non-holonomic constraint", "equivalent", "b"),
+        ("b", "anholonomic constraint", "equivalent", "b"),
+        ("b", "a non-holonomic constraint", "equivalent", "b"),  # the article, not a label: a constraint
     ],
 )
 def test_a_choice_may_be_written_as_the_options_words(expected, submitted, status, read):

@@ -564,10 +564,12 @@ _DENIES = re.compile(r"\b(?:not|no|or)\b|n't\b", re.I)
 
 def _plain(text: str) -> str:
     """An option's words as compared: no TeX, markup, case, spaces or a word's hyphens; Greek letters by
-    name; and the textbooks' other names for a kind of constraint as ours."""
+    name; the textbooks' other names for a kind of constraint as ours; and a kind of constraint with
+    the noun after it (``holonomic constraints``, ``a rheonomic constraint``) as the kind."""
     text = "".join(GREEK_BY_LETTER.get(c, c) for c in text)
     text = _WORD_HYPHEN.sub("", text)  # non-holonomic; a minus is kept: −∂V/∂q_j is not ∂V/∂q_j
-    return _SAME_KIND.sub(lambda found: _SAME_KINDS[found[0]], re.sub(r"[\s$\\{}*_.]", "", text).lower())
+    text = _SAME_KIND.sub(lambda found: _SAME_KINDS[found[0]], re.sub(r"[\s$\\{}*_.]", "", text).lower())
+    return _KIND_NOUN.sub(r"\g<kind>", text)
 
 
 _WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])\s*[-\u2010\u2011]\s*(?=[^\W\d_])")  # non-holonomic, non - holonomic
@@ -576,3 +578,5 @@ _WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])\s*[-\u2010\u2011]\s*(?=[^\W\d_])")  # 
 # Goldstein's scleronomous and rheonomous, and anholonomic, are scleronomic, rheonomic, nonholonomic
 _SAME_KINDS = {"scleronomous": "scleronomic", "rheonomous": "rheonomic", "anholonomic": "nonholonomic"}
 _SAME_KIND = re.compile("|".join(_SAME_KINDS))
+# (a) holonomic, scleronomic, rheonomic constraint(s): the article goes only with the noun, where it is no label
+_KIND_NOUN = re.compile(r"^(?:an?|the)?(?P<kind>(?:non)?holonomic|scleronomic|rheonomic)constraints?$")
