@@ -2723,6 +2723,11 @@ CYCLIC_CHOICE = {"kind": "choice", "options": (("a", r"$\theta$"), ("b", r"$\phi
         ("the azimuthal angle φ", "equivalent", "b"),
         ("The azimuthal angle $\\varphi$ is cyclic", "equivalent", "b"),
         ("the polar angle θ", "not_equivalent", "a"),
+        # the one option, said to be the only one
+        ("φ only", "equivalent", "b"),
+        ("only phi", "equivalent", "b"),
+        ("Only φ is cyclic", "equivalent", "b"),
+        ("just θ", "not_equivalent", "a"),
         # denied, hedged, or naming two options: which is meant is for the student to say
         ("θ is not cyclic", "invalid", None),
         ("θ isn't cyclic", "invalid", None),

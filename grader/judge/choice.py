@@ -285,7 +285,10 @@ def _named(text: str, readings: dict[str, str | None]) -> str | None:
     """The label of the one option that ``text`` names, by its words or as its formula, or by a
     coordinate's description and its letter (``the azimuthal angle φ``); ``not holonomic`` names the
     option that says so in one word, ``non-holonomic``, where there is one, and never ``holonomic``;
-    or None."""
+    ``θ only`` and ``only θ`` name θ, where no option's own words say "only"; or None."""
+    only = _ONLY.fullmatch(text)
+    if only and not _keys(text) & readings.keys():  # conservative systems only: an option's own words
+        return _named(only["after"] or only["before"], readings)
     keys = _keys(text)
     described = _DESCRIBED.fullmatch(text)
     if described:  # the azimuthal angle φ: the letter, and the words where the problem says what they mean
@@ -297,6 +300,8 @@ def _named(text: str, readings: dict[str, str | None]) -> str | None:
         found = {readings.get(_plain("non" + denied["words"]))} - {None}
     return found.pop() if len(found) == 1 else None
 
+
+_ONLY = re.compile(r"\s*(?:only|just)\s+(?P<after>\S.*?)\s*|\s*(?P<before>\S.*?)\s+only\s*", re.I | re.S)
 
 # the words a hedge starts with: φ, or θ; rheonomic, maybe …; b; not b
 _HEDGES = "or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no"
