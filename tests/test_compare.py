@@ -3712,6 +3712,11 @@ PENDULUM_PERIOD = {**PERIOD_PART, "known": ["m", "g", "l"], "coords": ["theta"]}
         (PERIOD, "2.006 s for l = 1.00 m", PENDULUM_PERIOD, "equivalent", (_remark("2.006 s", "for l = 1.00 m"),)),
         ("1", "1, since k = 2", {}, "equivalent", (_remark(1, "since k = 2"),)),
         ("1", "2, since k = 1", {}, "not_equivalent", (_remark(2, "since k = 1"),)),
+        # after a named count, too: the values are no other count of the answer's, even where they are the last
+        ("2", "n = 2 since k = 4 and 3N = 6", {}, "equivalent", (_remark("n = 2", "since k = 4 and 3N = 6"),)),
+        ("4", "n = 2 since k = 4 and 3N = 6", {}, "not_equivalent", (_remark("n = 2", "since k = 4 and 3N = 6"),)),
+        ("2", "n = 3N − k = 6 − 4 = 2, k = 4", {}, "equivalent", (_final(2), _remark(2, "k = 4"))),  # k: in the working
+        ("4", "n = 3N − k = 6 − 4 = 2, k = 4", {}, "not_equivalent", (_final(2), _remark(2, "k = 4"))),
         # after a formula: the values are put in its names, the problem's or the student's own
         (PERIOD, "T = 2π√(l/g), where l = 1, g = 9.81", PENDULUM_PERIOD, "equivalent", ()),
         (PERIOD, "2π√(l/g), where l = 2, g = 9.81", PENDULUM_PERIOD, "not_equivalent", ()),
