@@ -2638,6 +2638,8 @@ CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $
         # "not holonomic" is the option that says so in one word, never holonomic
         ("b", "not holonomic", "equivalent", "b"),
         ("b", "The constraint is not holonomic.", "equivalent", "b"),
+        ("b", "it's non-holonomic", "equivalent", "b"),
+        ("b", "It’s not holonomic", "equivalent", "b"),
         ("a", "not non-holonomic", "invalid", None),
         # the kind with the noun it qualifies
         ("b", "non-holonomic constraint", "equivalent", "b"),
@@ -3021,6 +3023,9 @@ def test_a_hedge_is_refused_whichever_option_it_names_first(options, submitted):
         (TIME_CHOICE, "b", "I choose b", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "option b", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "b is correct", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "Ans: b", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "ans. (b)", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "Ans b", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "b is the answer", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "I choose rheonomic", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         (TIME_CHOICE, "b", "(rheonomic)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),

@@ -160,7 +160,7 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
 
 # words that say a label is the answer, before or after it: "the answer is b", "I choose b", "b is correct"
 _SAID = (
-    r"(?:(?:my|the)\s+)?(?:(?:final|correct|right)\s+)?(?:answer|option|choice)(?:\s+is\b|\s*:|\b)"
+    r"(?:(?:my|the)\s+)?(?:(?:final|correct|right)\s+)?(?:answer|ans\.?|option|choice)(?:\s+is\b|\s*:|\b|(?<=\.))"
     r"|I\s+(?:choose|chose|pick|picked|select|selected|go\s+with|say)\b"
 )
 _SAID_BEFORE = re.compile(rf"\A\s*(?:{_SAID})\s*", re.I)
@@ -563,7 +563,7 @@ def _said_of(claim: str, readings: dict[str, str | None]) -> str | None:
 
 
 # where a sentence says what its subject is, and the words that deny it or hedge
-_IS = re.compile(r"\s+(?:is|are)\s+", re.I)
+_IS = re.compile(r"\s+(?:is|are)\s+|['’]s\s+", re.I)  # it is, it's
 _DENIES = re.compile(r"\b(?:not|no|or)\b|n't\b", re.I)
 
 
