@@ -3047,6 +3047,9 @@ def test_what_follows_an_option_is_read_past_and_said(options, expected, submitt
         # a label closed by a bracket, as lists are written, then a remark
         (HOLONOMY_CHOICE, "b", "b) it is an inequality", "equivalent", ("Correct.", _past("b", "it is an inequality"))),
         (TIME_CHOICE, "b", "b) the hoop turns", "equivalent", ("Correct.", _past("b", "the hoop turns"))),
+        (TIME_CHOICE, "b", "b: rheonomic, because l = l(t)", "equivalent",
+         ("Correct.", _past("b", "because l = l(t)"))),  # the bracket of l(t) is the remark's own
+        (TIME_CHOICE, "b", "b - rheonomic since l = l(t)", "equivalent", ("Correct.", _past("b", "since l = l(t)"))),
         (TIME_CHOICE, "b", "a) nothing moves", "not_equivalent",
          ("Not the right choice.", _past("a", "nothing moves"))),
         # a label said to be the answer, then a reason

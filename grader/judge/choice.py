@@ -390,7 +390,7 @@ def _labelled(submitted: str, texts: dict[str, str], readings: dict[str, str | N
     match = _LABELLED.fullmatch(submitted)
     if match is None or match["label"].lower() not in texts:
         return None
-    label, words = match["label"].lower(), match["words"].strip(" ()[].")
+    label, words = match["label"].lower(), _unbracketed(match["words"])
     named = _by_text(words, readings, multiple=False)
     if named:
         return (label, "", named[1]) if named[0] == [label] else (label, words, "")
@@ -403,6 +403,15 @@ def _labelled(submitted: str, texts: dict[str, str], readings: dict[str, str | N
     if match["mark"].strip() or closed or bracketed or _REASON.match(" " + words):
         return label, "", match["words"]
     return None
+
+
+def _unbracketed(words: str) -> str:
+    """Words after a label without the brackets around them, or a bracket left open or closed by the
+    label's (``b (rheonomic)``, ``b (rheonomic``): not the bracket that closes the words' own ``l(t)``."""
+    words = words.strip(" .[(")
+    while words[-1:] in (")", "]") and not _balanced(words.replace("[", "(").replace("]", ")")):
+        words = words[:-1].rstrip(" .")
+    return words
 
 
 # a label, then words: b (rheonomic), (b) rheonomic, b. rheonomic, b - since …
