@@ -3068,6 +3068,30 @@ def test_a_label_with_a_remark_as_students_write_it(options, expected, submitted
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+def _beside(labels, rest):
+    return f"Read as the option you wrote out: {labels}; the words beside it (`{rest}`) are not graded."
+
+
+@pytest.mark.parametrize(
+    ("options", "submitted", "status", "feedback"),
+    [
+        # a constraint classified both ways, where one way is asked: the other is read past, and said
+        (TIME_CHOICE, "rheonomic and holonomic", "equivalent", ("Correct.", _read_past("b", "and holonomic"))),
+        (TIME_CHOICE, "holonomic and rheonomic", "equivalent", ("Correct.", _beside("b", "holonomic"))),
+        (TIME_CHOICE, "Holonomic & rheonomic, since l = l(t)", "equivalent",
+         ("Correct.", _beside("b", "Holonomic … since l = l(t)"))),
+        (TIME_CHOICE, "holonomic and scleronomic", "not_equivalent",
+         ("Not the right choice.", _beside("a", "holonomic"))),
+        (HOLONOMY_CHOICE, "non-holonomic and scleronomic", "equivalent",
+         ("Correct.", _read_past("b", "and scleronomic"))),
+        (CYCLIC_CHOICE, "φ and not θ", "equivalent", ("Correct.", _read_past("b", "and not θ"))),  # not: confirms
+    ],
+)  # fmt: skip
+def test_an_option_and_a_claim_that_names_no_other_is_the_option(options, submitted, status, feedback):
+    verdict = compare("b", submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
 FALSE_CHOICE = {
     "kind": "choice",
     "options": (

@@ -86,8 +86,12 @@ def _typed(submitted) -> str:
 def _reading_notes(reading: _Reading) -> tuple:
     """How the answer was read: the option its words name, and what was read past after it."""
     rest = reading.remark.strip().lstrip(",;:–—- ").strip()
-    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
     labels = ", ".join(reading.words or reading.labels)
+    if reading.before:  # holonomic and rheonomic: the words on both sides of the option, which were not graded
+        rest = " … ".join(words for words in (reading.before, rest) if words)
+        rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+        return (("choice_read_beside", {"labels": labels, "rest": rest}),)
+    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
     if not rest:
         return (("choice_read", {"labels": labels}),) if reading.words else ()
     return (("choice_read_remark" if reading.words else "choice_remark", {"labels": labels, "rest": rest}),)
@@ -107,13 +111,15 @@ def chosen(submitted: str, options, *, multiple: bool = False, meanings=(), asks
 class _Reading(NamedTuple):
     """A choice answer as read: the labels it names (or None); those read from an option's words (or
     None); what was read past after the option (a remark, a reason); a label with words that name
-    another option (or None); and whether it hedges, doubts or takes back what it names."""
+    another option (or None); whether it hedges, doubts or takes back what it names; and a claim read past
+    before the option (``holonomic`` of "holonomic and rheonomic")."""
 
     labels: list[str] | None = None
     words: list[str] | None = None
     remark: str = ""
     conflict: tuple[str, str] | None = None
     hedged: bool = False
+    before: str = ""
 
 
 def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(), asks_false=False) -> _Reading:
@@ -152,10 +158,39 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
         if labelled and labelled[1]:
             return _Reading(given, conflict=labelled[:2])
         found = ([labelled[0]], labelled[2]) if labelled else None
+    joined = _joined(submitted, readings, texts) if found is None and not multiple else None
+    if joined:  # holonomic and rheonomic, where rheonomic or scleronomic is asked
+        label, before_it, remark = joined
+        if _hedges(submitted, [label], remark, readings, texts, asks_false=asks_false):
+            return _Reading(hedged=True)
+        return _Reading([label], [label], remark, before=before_it)
     labels, remark = found or (None, "")
     if _hedges(submitted, labels, remark, readings, texts, asks_false=asks_false):
         return _Reading(hedged=True)
     return _Reading(labels or given, words, remark)
+
+
+def _joined(submitted: str, readings: dict[str, str | None], texts: dict[str, str]) -> tuple[str, str, str] | None:
+    """``rheonomic and holonomic``, ``holonomic and rheonomic, since l = l(t)``: two claims joined by
+    "and" (a constraint classified both ways where one way is asked), one of which names an option
+    and the other no other, nor takes it back (``θ and not r``): that option's label, the claim
+    before it ("" where it comes first) and what follows it. None for any other answer."""
+    pieces = _AND.split(submitted, maxsplit=1)
+    if len(pieces) != 2:
+        return None
+    first, second = (_by_text(piece, readings, multiple=False) for piece in pieces)
+    if bool(first) == bool(second):
+        return None
+    labels, remark = first or second
+    other = pieces[1] if first else pieces[0]
+    if _takes_another(other, set(labels), readings, texts):
+        return None
+    if first:
+        return labels[0], "", remark + submitted[len(pieces[0]) :]
+    return labels[0], other.strip(" ,;:"), remark
+
+
+_AND = re.compile(r"\s+(?:and|&)\s+", re.I)
 
 
 # words that say a label is the answer, before or after it: "the answer is b", "I choose b", "b is correct"
