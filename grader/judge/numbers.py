@@ -510,15 +510,19 @@ def _listed(text: str, pieces: list[str], reads, names, decimal_comma: bool, uni
         return None
     name = found[1]
     before = " = ".join(pieces[: last - 1])
-    said = list(re.finditer(rf",\s*{re.escape(name)}\s*(?:[=≈≃]|\\approx|\\simeq)", text))
-    if said and re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before):
-        head, rest = text[: said[-1].start()], text[said[-1].start() + 1 :].strip()
+    said = list(_NAME_SAID.finditer(text))
+    # one such value: more, and the head is read again for each, each time read whole (a hostile answer's cost)
+    if len(said) == 1 and said[0][1] == name and re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before):
+        head, rest = text[: said[0].start()], text[said[0].start() + 1 :].strip()
         prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
         if answer is None:
             return None
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
         return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": _shown(rest)}))
     return None
+
+
+_NAME_SAID = re.compile(r",\s*([^\W\d_][\w₀-₉']*)\s*(?:[=≈≃]|\\approx|\\simeq)")  # …, k = 4
 
 
 def _sides(text: str) -> tuple[list[str], tuple[int, ...]]:
