@@ -3055,6 +3055,7 @@ def test_what_follows_an_option_is_read_past_and_said(options, expected, submitt
         # a label said to be the answer, then a reason
         (TIME_CHOICE, "b", "b is correct, since the hoop turns", "equivalent",
          ("Correct.", _past("b", "since the hoop turns"))),
+        (TIME_CHOICE, "b", "b is correct (the hoop turns)", "equivalent", ("Correct.", _past("b", "(the hoop turns)"))),
         (TIME_CHOICE, "b", "The answer is b, because l = l(t)", "equivalent",
          ("Correct.", _past("b", "because l = l(t)"))),
         (TIME_CHOICE, "b", "a is correct, since nothing moves", "not_equivalent",
@@ -3117,6 +3118,7 @@ def _not_an_option(typed):
         ("c is wrong", "equivalent", ("Correct.",)),
         ("c is incorrect", "equivalent", ("Correct.",)),
         ("c is not true", "equivalent", ("Correct.",)),
+        ("c isn't true", "equivalent", ("Correct.",)),
         ("(c) is false", "equivalent", ("Correct.",)),
         ("c is the false statement", "equivalent", ("Correct.",)),
         ("Statement c is false", "equivalent", ("Correct.",)),
@@ -3128,6 +3130,7 @@ def _not_an_option(typed):
         ("c (false)", "equivalent", ("Correct.", _past("c", "(false)"))),
         ("c is false, because the constraint forces need multipliers", "equivalent",
          ("Correct.", _past("c", "because the constraint forces need multipliers"))),
+        ("c is wrong (it needs multipliers)", "equivalent", ("Correct.", _past("c", "(it needs multipliers)"))),
         ("a is false", "not_equivalent", ("Not the right choice.",)),
         ("d is wrong", "not_equivalent", ("Not the right choice.",)),
         # true, correct or right of the option: the opposite claim, or no answer
@@ -3139,6 +3142,7 @@ def _not_an_option(typed):
         # hedges stay hedges
         ("c is false, but maybe d", "invalid", (_hedged("c is false, but maybe d"),)),
         ("c (or d) is false", "invalid", (_not_an_option("c (or d) is false"),)),
+        ("c is false (or d)", "invalid", (_hedged("c is false (or d)"),)),
         ("maybe c is false", "invalid", (_not_an_option("maybe c is false"),)),
     ],
 )  # fmt: skip

@@ -139,6 +139,8 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
         return _Reading(said)  # the answer is b, I choose b, option b, b is correct
     readings = _readings(texts, meanings)
     claim, _ = _claim(submitted)
+    remarked = _REMARK.fullmatch(claim)  # c is false (it needs multipliers): the claim, then a remark
+    claim = remarked["claim"] if remarked and _balanced(remarked["remark"]) else claim
     core_of_claim = after.sub("", before.sub("", claim, count=1), count=1)
     said = choice_labels(core_of_claim) if core_of_claim != claim else None
     if said and all(label in texts for label in said):  # b is correct, since …; c is false, because …
@@ -209,8 +211,8 @@ _FALSE_BEFORE = re.compile(
     rf"\A\s*(?:{_SAID}|(?:the\s+)?(?:{_FALSE_WORDS}\s+(?:one|statement)|statement)(?:\s+is\b|\s*:|\b))\s*", re.I
 )
 _FALSE_AFTER = re.compile(
-    r"\s+is\s+(?:(?:the\s+|my\s+)?(?:(?:correct|right)\s+(?:answer|option|choice)|answer)"
-    rf"|(?:the\s+)?(?:{_FALSE_WORDS}|not\s+true)(?:\s+(?:one|statement))?)\s*[.!]?\s*$",
+    r"\s+(?:is\s+(?:(?:the\s+|my\s+)?(?:(?:correct|right)\s+(?:answer|option|choice)|answer)"
+    rf"|(?:the\s+)?(?:{_FALSE_WORDS}|not\s+true)(?:\s+(?:one|statement))?)|is\s*n['’]t\s+true)\s*[.!]?\s*$",
     re.I,
 )
 
