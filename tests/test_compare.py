@@ -3753,6 +3753,7 @@ PENDULUM_PERIOD = {**PERIOD_PART, "known": ["m", "g", "l"], "coords": ["theta"]}
         ("4", "n = 2 since k = 4 and 3N = 6", {}, "not_equivalent", (_remark("n = 2", "since k = 4 and 3N = 6"),)),
         ("2", "n = 3N − k = 6 − 4 = 2, k = 4", {}, "equivalent", (_final(2), _remark(2, "k = 4"))),  # k: in the working
         ("4", "n = 3N − k = 6 − 4 = 2, k = 4", {}, "not_equivalent", (_final(2), _remark(2, "k = 4"))),
+        ("2", "n = 2, n = 4", {}, "not_equivalent", (_final(4),)),  # the name of the answer, not of a value given
         # after a formula: the values are put in its names, the problem's or the student's own
         (PERIOD, "T = 2π√(l/g), where l = 1, g = 9.81", PENDULUM_PERIOD, "equivalent", ()),
         (PERIOD, "2π√(l/g), where l = 2, g = 9.81", PENDULUM_PERIOD, "not_equivalent", ()),

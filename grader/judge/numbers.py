@@ -509,7 +509,8 @@ def _listed(text: str, pieces: list[str], reads, names, decimal_comma: bool, uni
     if found is None:
         return None
     name = found[1]
-    before = " = ".join(pieces[: last - 1])
+    start = 1 if _QUANTITY.fullmatch(pieces[0]) else 0  # the working, not its label: n = 2, n = 4 is two values of n
+    before = " = ".join(pieces[start : last - 1])
     said = list(_NAME_SAID.finditer(text))
     # one such value: more, and the head is read again for each, each time read whole (a hostile answer's cost)
     if len(said) == 1 and said[0][1] == name and re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before):
