@@ -862,6 +862,26 @@ def test_a_multiple_of_a_name_in_a_count_is_working_not_the_counts_name(expected
     assert compare(expected, submitted, kind="integer").status == status
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status"),
+    [
+        # where the part names the count (n = 3N − k), a list of values gives n's, first or last
+        ("2", "n = 2, k = 4", "equivalent"),
+        ("4", "n = 2, k = 4", "not_equivalent"),
+        ("2", "n = 2; k = 4", "equivalent"),
+        ("2", "k = 4, n = 2", "equivalent"),
+        ("2", "n = 3N − k = 2, N = 2, k = 4", "equivalent"),
+        ("2", "n = 2, n = 4", "not_equivalent"),  # two values of n: the last word, as without the name
+        # and the count's label is no other quantity: right as read, as without the name
+        ("2", "DOF = 2", "equivalent"),
+        ("2", "s = 2", "equivalent"),
+    ],
+)
+def test_a_count_the_part_names_is_read_at_its_name(expected, submitted, status):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
+
+
 DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}
 
 

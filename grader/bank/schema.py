@@ -42,7 +42,7 @@ SCHEMA_VERSION = 1
 # The kinds a part may have, and the options each takes (grader.judge.KINDS has the same
 # answer kinds; a test keeps the two in step, since the bank may not import the checker).
 PART_KINDS: dict[str, frozenset[str]] = {
-    "integer": frozenset(),
+    "integer": frozenset({"name"}),
     "number": frozenset({"rtol", "atol", "unit"}),
     "choice": frozenset({"multiple", "asks_false"}),
     "expression": frozenset({"up_to_constant", "name", "h_is_energy", "asks_more"}),
