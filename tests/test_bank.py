@@ -47,6 +47,8 @@ BROKEN_MESSAGES = [
      "line 22: option 'rtol' does not apply to kind 'expression' (its options: asks_more, h_is_energy, name,"
      " up_to_constant)"),
     ("option_not_yes_or_no", "option_not_yes_or_no", "energy", "line 22: h_is_energy is true or false, not 'no'"),
+    ("asks_false_not_yes_or_no", "asks_false_not_yes_or_no", "false-statement",
+     "line 10: asks_false is true or false, not 'yes'"),
     ("name_not_a_name", "name_not_a_name", "energy",
      "line 22: name is the quantity's name, or a list of names, as p_phi or [V, U]"),
     ("choice_answer_not_in_choices", "choice_answer_not_in_choices", "cyclic",

@@ -917,6 +917,26 @@ def test_a_multiple_of_a_name_in_a_count_is_working_not_the_counts_name(expected
     assert compare(expected, submitted, kind="integer").status == status
 
 
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status"),
+    [
+        # where the part names the count (n = 3N − k), a list of values gives n's, first or last
+        ("2", "n = 2, k = 4", "equivalent"),
+        ("4", "n = 2, k = 4", "not_equivalent"),
+        ("2", "n = 2; k = 4", "equivalent"),
+        ("2", "k = 4, n = 2", "equivalent"),
+        ("2", "n = 3N − k = 2, N = 2, k = 4", "equivalent"),
+        ("2", "n = 2, n = 4", "not_equivalent"),  # two values of n: the last word, as without the name
+        # and the count's label is no other quantity: right as read, as without the name
+        ("2", "DOF = 2", "equivalent"),
+        ("2", "s = 2", "equivalent"),
+    ],
+)
+def test_a_count_the_part_names_is_read_at_its_name(expected, submitted, status):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
+
+
 DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}
 
 
@@ -2693,7 +2713,15 @@ CONSTRAINT = (("a", "holonomic"), ("b", "non-holonomic"), ("c", r"$\theta$ and $
         # "not holonomic" is the option that says so in one word, never holonomic
         ("b", "not holonomic", "equivalent", "b"),
         ("b", "The constraint is not holonomic.", "equivalent", "b"),
+        ("b", "it's non-holonomic", "equivalent", "b"),
+        ("b", "It’s not holonomic", "equivalent", "b"),
         ("a", "not non-holonomic", "invalid", None),
+        # the kind with the noun it qualifies
+        ("b", "non-holonomic constraint", "equivalent", "b"),
+        ("b", "Nonholonomic constraints", "equivalent", "b"),
+        ("b", "It is a non-holonomic constraint", "equivalent", "b"),
+        ("b", "anholonomic constraint", "equivalent", "b"),
+        ("b", "a non-holonomic constraint", "equivalent", "b"),  # the article, not a label: a constraint
     ],
 )
 def test_a_choice_may_be_written_as_the_options_words(expected, submitted, status, read):
@@ -2772,6 +2800,11 @@ CYCLIC_CHOICE = {"kind": "choice", "options": (("a", r"$\theta$"), ("b", r"$\phi
         ("the azimuthal angle φ", "equivalent", "b"),
         ("The azimuthal angle $\\varphi$ is cyclic", "equivalent", "b"),
         ("the polar angle θ", "not_equivalent", "a"),
+        # the one option, said to be the only one
+        ("φ only", "equivalent", "b"),
+        ("only phi", "equivalent", "b"),
+        ("Only φ is cyclic", "equivalent", "b"),
+        ("just θ", "not_equivalent", "a"),
         # denied, hedged, or naming two options: which is meant is for the student to say
         ("θ is not cyclic", "invalid", None),
         ("θ isn't cyclic", "invalid", None),
@@ -3065,6 +3098,9 @@ def test_a_hedge_is_refused_whichever_option_it_names_first(options, submitted):
         (TIME_CHOICE, "b", "I choose b", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "option b", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "b is correct", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "Ans: b", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "ans. (b)", "equivalent", ("Correct.",)),
+        (TIME_CHOICE, "b", "Ans b", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "b is the answer", "equivalent", ("Correct.",)),
         (TIME_CHOICE, "b", "I choose rheonomic", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
         (TIME_CHOICE, "b", "(rheonomic)", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
@@ -3078,6 +3114,122 @@ def test_a_hedge_is_refused_whichever_option_it_names_first(options, submitted):
 def test_what_follows_an_option_is_read_past_and_said(options, expected, submitted, status, feedback):
     verdict = compare(expected, submitted, **options)
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+@pytest.mark.parametrize(
+    ("options", "expected", "submitted", "status", "feedback"),
+    [
+        # a label closed by a bracket, as lists are written, then a remark
+        (HOLONOMY_CHOICE, "b", "b) it is an inequality", "equivalent", ("Correct.", _past("b", "it is an inequality"))),
+        (TIME_CHOICE, "b", "b) the hoop turns", "equivalent", ("Correct.", _past("b", "the hoop turns"))),
+        (TIME_CHOICE, "b", "b: rheonomic, because l = l(t)", "equivalent",
+         ("Correct.", _past("b", "because l = l(t)"))),  # the bracket of l(t) is the remark's own
+        (TIME_CHOICE, "b", "b - rheonomic since l = l(t)", "equivalent", ("Correct.", _past("b", "since l = l(t)"))),
+        (TIME_CHOICE, "b", "a) nothing moves", "not_equivalent",
+         ("Not the right choice.", _past("a", "nothing moves"))),
+        # a label said to be the answer, then a reason
+        (TIME_CHOICE, "b", "b is correct, since the hoop turns", "equivalent",
+         ("Correct.", _past("b", "since the hoop turns"))),
+        (TIME_CHOICE, "b", "b is correct (the hoop turns)", "equivalent", ("Correct.", _past("b", "(the hoop turns)"))),
+        (TIME_CHOICE, "b", "The answer is b, because l = l(t)", "equivalent",
+         ("Correct.", _past("b", "because l = l(t)"))),
+        (TIME_CHOICE, "b", "a is correct, since nothing moves", "not_equivalent",
+         ("Not the right choice.", _past("a", "since nothing moves"))),
+        (TIME_CHOICE, "b", "b is correct, or a", "invalid", (_hedged("b is correct, or a"),)),
+        (TIME_CHOICE, "b", "b is correct, maybe", "invalid", (_hedged("b is correct, maybe"),)),
+    ],
+)  # fmt: skip
+def test_a_label_with_a_remark_as_students_write_it(options, expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+def _beside(labels, rest):
+    return f"Read as the option you wrote out: {labels}; the words beside it (`{rest}`) are not graded."
+
+
+@pytest.mark.parametrize(
+    ("options", "submitted", "status", "feedback"),
+    [
+        # a constraint classified both ways, where one way is asked: the other is read past, and said
+        (TIME_CHOICE, "rheonomic and holonomic", "equivalent", ("Correct.", _read_past("b", "and holonomic"))),
+        (TIME_CHOICE, "holonomic and rheonomic", "equivalent", ("Correct.", _beside("b", "holonomic"))),
+        (TIME_CHOICE, "Holonomic & rheonomic, since l = l(t)", "equivalent",
+         ("Correct.", _beside("b", "Holonomic … since l = l(t)"))),
+        (TIME_CHOICE, "holonomic and scleronomic", "not_equivalent",
+         ("Not the right choice.", _beside("a", "holonomic"))),
+        (HOLONOMY_CHOICE, "non-holonomic and scleronomic", "equivalent",
+         ("Correct.", _read_past("b", "and scleronomic"))),
+        (CYCLIC_CHOICE, "φ and not θ", "equivalent", ("Correct.", _read_past("b", "and not θ"))),  # not: confirms
+    ],
+)  # fmt: skip
+def test_an_option_and_a_claim_that_names_no_other_is_the_option(options, submitted, status, feedback):
+    verdict = compare("b", submitted, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+FALSE_CHOICE = {
+    "kind": "choice",
+    "options": (
+        ("a", "It works with two scalar functions, the kinetic and the potential energy."),
+        ("b", "Lagrange's equations have the same form in every set of generalized coordinates."),
+        ("c", "It gives the forces of constraint directly, with no extra work."),
+        ("d", "Ideal forces of constraint do not appear in Lagrange's equations."),
+    ),
+    "asks_false": True,  # "Which statement is false?"
+}
+
+
+def _not_an_option(typed):
+    return f"`{typed}` is not one of the options (a, b, c, d)."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # the option said to be false, which is what is asked
+        ("c is false", "equivalent", ("Correct.",)),
+        ("C is false.", "equivalent", ("Correct.",)),
+        ("c is wrong", "equivalent", ("Correct.",)),
+        ("c is incorrect", "equivalent", ("Correct.",)),
+        ("c is not true", "equivalent", ("Correct.",)),
+        ("c isn't true", "equivalent", ("Correct.",)),
+        ("(c) is false", "equivalent", ("Correct.",)),
+        ("c is the false statement", "equivalent", ("Correct.",)),
+        ("Statement c is false", "equivalent", ("Correct.",)),
+        ("statement c", "equivalent", ("Correct.",)),
+        ("The false statement is c", "equivalent", ("Correct.",)),
+        ("the false one is c", "equivalent", ("Correct.",)),
+        ("c is the correct answer", "equivalent", ("Correct.",)),
+        ("c) false", "equivalent", ("Correct.", _past("c", "false"))),
+        ("c (false)", "equivalent", ("Correct.", _past("c", "(false)"))),
+        ("c is false, because the constraint forces need multipliers", "equivalent",
+         ("Correct.", _past("c", "because the constraint forces need multipliers"))),
+        ("c is wrong (it needs multipliers)", "equivalent", ("Correct.", _past("c", "(it needs multipliers)"))),
+        ("a is false", "not_equivalent", ("Not the right choice.",)),
+        ("d is wrong", "not_equivalent", ("Not the right choice.",)),
+        # true, correct or right of the option: the opposite claim, or no answer
+        ("c (true)", "invalid", (_hedged("c (true)"),)),
+        ("c) correct", "invalid", (_hedged("c) correct"),)),
+        ("c is correct", "invalid", (_not_an_option("c is correct"),)),
+        ("c is true", "invalid", (_not_an_option("c is true"),)),
+        ("the correct statement is c", "invalid", (_not_an_option("the correct statement is c"),)),
+        # hedges stay hedges
+        ("c is false, but maybe d", "invalid", (_hedged("c is false, but maybe d"),)),
+        ("c (or d) is false", "invalid", (_not_an_option("c (or d) is false"),)),
+        ("c is false (or d)", "invalid", (_hedged("c is false (or d)"),)),
+        ("maybe c is false", "invalid", (_not_an_option("maybe c is false"),)),
+    ],
+)  # fmt: skip
+def test_where_the_false_option_is_asked_for_saying_it_is_false_names_it(submitted, status, feedback):
+    verdict = compare("c", submitted, **FALSE_CHOICE)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+@pytest.mark.parametrize("submitted", ["c is false", "c) false", "The false statement is c"])
+def test_where_the_right_option_is_asked_for_saying_it_is_false_denies_it(submitted):
+    verdict = compare("c", submitted, **{**FALSE_CHOICE, "asks_false": False})
+    assert (verdict.status, verdict.score) == ("invalid", 0.0)
 
 
 SEVERAL_CHOICE = {
@@ -3671,6 +3823,12 @@ PENDULUM_PERIOD = {**PERIOD_PART, "known": ["m", "g", "l"], "coords": ["theta"]}
         (PERIOD, "2.006 s for l = 1.00 m", PENDULUM_PERIOD, "equivalent", (_remark("2.006 s", "for l = 1.00 m"),)),
         ("1", "1, since k = 2", {}, "equivalent", (_remark(1, "since k = 2"),)),
         ("1", "2, since k = 1", {}, "not_equivalent", (_remark(2, "since k = 1"),)),
+        # after a named count, too: the values are no other count of the answer's, even where they are the last
+        ("2", "n = 2 since k = 4 and 3N = 6", {}, "equivalent", (_remark("n = 2", "since k = 4 and 3N = 6"),)),
+        ("4", "n = 2 since k = 4 and 3N = 6", {}, "not_equivalent", (_remark("n = 2", "since k = 4 and 3N = 6"),)),
+        ("2", "n = 3N − k = 6 − 4 = 2, k = 4", {}, "equivalent", (_final(2), _remark(2, "k = 4"))),  # k: in the working
+        ("4", "n = 3N − k = 6 − 4 = 2, k = 4", {}, "not_equivalent", (_final(2), _remark(2, "k = 4"))),
+        ("2", "n = 2, n = 4", {}, "not_equivalent", (_final(4),)),  # the name of the answer, not of a value given
         # after a formula: the values are put in its names, the problem's or the student's own
         (PERIOD, "T = 2π√(l/g), where l = 1, g = 9.81", PENDULUM_PERIOD, "equivalent", ()),
         (PERIOD, "2π√(l/g), where l = 2, g = 9.81", PENDULUM_PERIOD, "not_equivalent", ()),

@@ -8,6 +8,7 @@ through the server in test_serve.py.
 from __future__ import annotations
 
 import os
+import signal
 import threading
 import time
 
@@ -71,6 +72,18 @@ def test_a_worker_that_dies_is_replaced():
         assert pool.check(LAGRANGIAN, "x").status == "equivalent"
     finally:
         pool.close()
+
+
+def test_ctrl_c_in_a_terminal_is_the_servers_to_handle_not_its_workers():
+    pool = CheckPool(BANK, timeout=1.0, workers=1, run=_stuck)
+    try:
+        worker = _pid(pool.check(LAGRANGIAN, "x"))
+        os.kill(worker, signal.SIGINT)  # a terminal sends Ctrl-C to every process of the server's group
+        time.sleep(0.3)
+        after = pool.check(LAGRANGIAN, "x")
+    finally:
+        pool.close()
+    assert after is not None and _pid(after) == worker
 
 
 def test_workers_are_recycled(monkeypatch):

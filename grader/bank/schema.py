@@ -42,16 +42,17 @@ SCHEMA_VERSION = 1
 # The kinds a part may have, and the options each takes (grader.judge.KINDS has the same
 # answer kinds; a test keeps the two in step, since the bank may not import the checker).
 PART_KINDS: dict[str, frozenset[str]] = {
-    "integer": frozenset(),
+    "integer": frozenset({"name"}),
     "number": frozenset({"rtol", "atol", "unit"}),
-    "choice": frozenset({"multiple"}),
+    "choice": frozenset({"multiple", "asks_false"}),
     "expression": frozenset({"up_to_constant", "name", "h_is_energy", "asks_more"}),
     "equation": frozenset(),
     "equations": frozenset(),
     "lagrangian": frozenset({"factor_credit", "name"}),
     "text": frozenset(),
 }
-_YES_OR_NO = frozenset({"h_is_energy", "asks_more"})  # options that are true or false, checked so when the bank loads
+# options that are true or false, checked so when the bank loads
+_YES_OR_NO = frozenset({"h_is_energy", "asks_more", "asks_false"})
 SEED_ID = re.compile(r"[SLAE][0-9]{1,2}")
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(_[A-Za-z0-9]+)?")  # p_phi, Q_theta, omega_0

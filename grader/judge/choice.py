@@ -8,7 +8,8 @@ Contents:
 An answer is read by its labels, by an option's words or formula (also said in a sentence, or by what
 the problem says a symbol means), or by a label with words after it; what follows the option is read
 past and said. Words that hedge, doubt or deny it, or a remark that names another option or takes it
-back, make it no one answer (:func:`_hedges`).
+back, make it no one answer (:func:`_hedges`). Where the question asks which option is false
+(``asks_false``), saying an option is false names it, and saying it is true or correct doubts it.
 """
 
 from __future__ import annotations
@@ -48,7 +49,8 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     texts = _option_texts(expected.option("options") or ())
     options = list(texts)
     multiple = bool(expected.option("multiple"))
-    reading = _read_choice(submitted, texts, multiple=multiple, meanings=expected.option("meanings") or ())
+    meanings, asks_false = expected.option("meanings") or (), bool(expected.option("asks_false"))
+    reading = _read_choice(submitted, texts, multiple=multiple, meanings=meanings, asks_false=asks_false)
     if reading.conflict:
         details = {"label": reading.conflict[0], "words": reading.conflict[1]}
         return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
@@ -84,8 +86,12 @@ def _typed(submitted) -> str:
 def _reading_notes(reading: _Reading) -> tuple:
     """How the answer was read: the option its words name, and what was read past after it."""
     rest = reading.remark.strip().lstrip(",;:–—- ").strip()
-    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
     labels = ", ".join(reading.words or reading.labels)
+    if reading.before:  # holonomic and rheonomic: the words on both sides of the option, which were not graded
+        rest = " … ".join(words for words in (reading.before, rest) if words)
+        rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+        return (("choice_read_beside", {"labels": labels, "rest": rest}),)
+    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
     if not rest:
         return (("choice_read", {"labels": labels}),) if reading.words else ()
     return (("choice_read_remark" if reading.words else "choice_remark", {"labels": labels, "rest": rest}),)
@@ -94,39 +100,53 @@ def _reading_notes(reading: _Reading) -> tuple:
 _SHOWN = 60  # characters of a remark repeated back to the student
 
 
-def chosen(submitted: str, options, *, multiple: bool = False, meanings=()) -> list[str] | None:
+def chosen(submitted: str, options, *, multiple: bool = False, meanings=(), asks_false=False) -> list[str] | None:
     """The labels a choice answer names, as the checker reads them (``b (rheonomic)`` is b), or
     None where it names no option's label or words, names two options at once, or hedges."""
-    reading = _read_choice(submitted, _option_texts(options), multiple=multiple, meanings=meanings)
+    texts = _option_texts(options)
+    reading = _read_choice(submitted, texts, multiple=multiple, meanings=meanings, asks_false=asks_false)
     return None if reading.conflict or reading.hedged else reading.labels
 
 
 class _Reading(NamedTuple):
     """A choice answer as read: the labels it names (or None); those read from an option's words (or
     None); what was read past after the option (a remark, a reason); a label with words that name
-    another option (or None); and whether it hedges, doubts or takes back what it names."""
+    another option (or None); whether it hedges, doubts or takes back what it names; and a claim read past
+    before the option (``holonomic`` of "holonomic and rheonomic")."""
 
     labels: list[str] | None = None
     words: list[str] | None = None
     remark: str = ""
     conflict: tuple[str, str] | None = None
     hedged: bool = False
+    before: str = ""
 
 
-def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=()) -> _Reading:
+def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(), asks_false=False) -> _Reading:
     """How ``submitted`` reads as a choice among ``texts`` (label → the option's words), where the
-    problem's symbols mean ``meanings`` ((name, meaning) pairs)."""
+    problem's symbols mean ``meanings`` ((name, meaning) pairs), and the question asks for the false
+    option where ``asks_false``."""
     submitted = visible(submitted).strip() if isinstance(submitted, str) else submitted  # b​, ｂ: b
     given = choice_labels(submitted) if isinstance(submitted, str) else None
     if not isinstance(submitted, str) or (given is not None and all(label in texts for label in given)):
         return _Reading(given)
     if len(submitted) > MAX_CHOICE_LENGTH:
         return _Reading(given)
-    core = _SAID_AFTER.sub("", _SAID_BEFORE.sub("", submitted, count=1), count=1)
+    before, after = (_FALSE_BEFORE, _FALSE_AFTER) if asks_false else (_SAID_BEFORE, _SAID_AFTER)
+    core = after.sub("", before.sub("", submitted, count=1), count=1)
     said = choice_labels(core)
     if said and all(label in texts for label in said):
         return _Reading(said)  # the answer is b, I choose b, option b, b is correct
     readings = _readings(texts, meanings)
+    claim, _ = _claim(submitted)
+    remarked = _REMARK.fullmatch(claim)  # c is false (it needs multipliers): the claim, then a remark
+    claim = remarked["claim"] if remarked and _balanced(remarked["remark"]) else claim
+    core_of_claim = after.sub("", before.sub("", claim, count=1), count=1)
+    said = choice_labels(core_of_claim) if core_of_claim != claim else None
+    if said and all(label in texts for label in said):  # b is correct, since …; c is false, because …
+        remark = submitted[len(claim) :]
+        hedged = _hedges(submitted, said, remark, readings, texts, asks_false=asks_false)
+        return _Reading(hedged=True) if hedged else _Reading(said, None, remark)
     said = _named(core, readings) if core != submitted else None
     if said:
         return _Reading([said], [said])  # I choose rheonomic
@@ -140,20 +160,60 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
         if labelled and labelled[1]:
             return _Reading(given, conflict=labelled[:2])
         found = ([labelled[0]], labelled[2]) if labelled else None
+    joined = _joined(submitted, readings, texts) if found is None and not multiple else None
+    if joined:  # holonomic and rheonomic, where rheonomic or scleronomic is asked
+        label, before_it, remark = joined
+        if _hedges(submitted, [label], remark, readings, texts, asks_false=asks_false):
+            return _Reading(hedged=True)
+        return _Reading([label], [label], remark, before=before_it)
     labels, remark = found or (None, "")
-    if _hedges(submitted, labels, remark, readings, texts):
+    if _hedges(submitted, labels, remark, readings, texts, asks_false=asks_false):
         return _Reading(hedged=True)
     return _Reading(labels or given, words, remark)
 
 
+def _joined(submitted: str, readings: dict[str, str | None], texts: dict[str, str]) -> tuple[str, str, str] | None:
+    """``rheonomic and holonomic``, ``holonomic and rheonomic, since l = l(t)``: two claims joined by
+    "and" (a constraint classified both ways where one way is asked), one of which names an option
+    and the other no other, nor takes it back (``θ and not r``): that option's label, the claim
+    before it ("" where it comes first) and what follows it. None for any other answer."""
+    pieces = _AND.split(submitted, maxsplit=1)
+    if len(pieces) != 2:
+        return None
+    first, second = (_by_text(piece, readings, multiple=False) for piece in pieces)
+    if bool(first) == bool(second):
+        return None
+    labels, remark = first or second
+    other = pieces[1] if first else pieces[0]
+    if _takes_another(other, set(labels), readings, texts):
+        return None
+    if first:
+        return labels[0], "", remark + submitted[len(pieces[0]) :]
+    return labels[0], other.strip(" ,;:"), remark
+
+
+_AND = re.compile(r"\s+(?:and|&)\s+", re.I)
+
+
 # words that say a label is the answer, before or after it: "the answer is b", "I choose b", "b is correct"
-_SAID_BEFORE = re.compile(
-    r"\A\s*(?:(?:(?:my|the)\s+)?(?:(?:final|correct|right)\s+)?(?:answer|option|choice)(?:\s+is\b|\s*:|\b)"
-    r"|I\s+(?:choose|chose|pick|picked|select|selected|go\s+with|say)\b)\s*",
-    re.I,
+_SAID = (
+    r"(?:(?:my|the)\s+)?(?:(?:final|correct|right)\s+)?(?:answer|ans\.?|option|choice)(?:\s+is\b|\s*:|\b|(?<=\.))"
+    r"|I\s+(?:choose|chose|pick|picked|select|selected|go\s+with|say)\b"
 )
+_SAID_BEFORE = re.compile(rf"\A\s*(?:{_SAID})\s*", re.I)
 _SAID_AFTER = re.compile(
     r"\s+is\s+(?:the\s+|my\s+)?(?:(?:correct|right)(?:\s+(?:answer|option|choice|one))?|answer)\s*[.!]?\s*$", re.I
+)
+# the same where the question asks which option is false: "c is false", "the false statement is c";
+# a bare "c is correct" may say that c is true, the opposite, and is no such claim
+_FALSE_WORDS = r"(?:false|wrong|incorrect|untrue)"
+_FALSE_BEFORE = re.compile(
+    rf"\A\s*(?:{_SAID}|(?:the\s+)?(?:{_FALSE_WORDS}\s+(?:one|statement)|statement)(?:\s+is\b|\s*:|\b))\s*", re.I
+)
+_FALSE_AFTER = re.compile(
+    r"\s+(?:is\s+(?:(?:the\s+|my\s+)?(?:(?:correct|right)\s+(?:answer|option|choice)|answer)"
+    rf"|(?:the\s+)?(?:{_FALSE_WORDS}|not\s+true)(?:\s+(?:one|statement))?)|is\s*n['’]t\s+true)\s*[.!]?\s*$",
+    re.I,
 )
 
 
@@ -262,7 +322,10 @@ def _named(text: str, readings: dict[str, str | None]) -> str | None:
     """The label of the one option that ``text`` names, by its words or as its formula, or by a
     coordinate's description and its letter (``the azimuthal angle φ``); ``not holonomic`` names the
     option that says so in one word, ``non-holonomic``, where there is one, and never ``holonomic``;
-    or None."""
+    ``θ only`` and ``only θ`` name θ, where no option's own words say "only"; or None."""
+    only = _ONLY.fullmatch(text)
+    if only and not _keys(text) & readings.keys():  # conservative systems only: an option's own words
+        return _named(only["after"] or only["before"], readings)
     keys = _keys(text)
     described = _DESCRIBED.fullmatch(text)
     if described:  # the azimuthal angle φ: the letter, and the words where the problem says what they mean
@@ -274,6 +337,8 @@ def _named(text: str, readings: dict[str, str | None]) -> str | None:
         found = {readings.get(_plain("non" + denied["words"]))} - {None}
     return found.pop() if len(found) == 1 else None
 
+
+_ONLY = re.compile(r"\s*(?:only|just)\s+(?P<after>\S.*?)\s*|\s*(?P<before>\S.*?)\s+only\s*", re.I | re.S)
 
 # the words a hedge starts with: φ, or θ; rheonomic, maybe …; b; not b
 _HEDGES = "or|nor|maybe|perhaps|possibly|probably|both|neither|either|not|no"
@@ -362,7 +427,7 @@ def _labelled(submitted: str, texts: dict[str, str], readings: dict[str, str | N
     match = _LABELLED.fullmatch(submitted)
     if match is None or match["label"].lower() not in texts:
         return None
-    label, words = match["label"].lower(), match["words"].strip(" ()[].")
+    label, words = match["label"].lower(), _unbracketed(match["words"])
     named = _by_text(words, readings, multiple=False)
     if named:
         return (label, "", named[1]) if named[0] == [label] else (label, words, "")
@@ -371,9 +436,19 @@ def _labelled(submitted: str, texts: dict[str, str], readings: dict[str, str | N
     if labels and all(len(other) <= 2 for other in labels) and not doubted:
         return None  # a, e: labels, one of them no option
     bracketed = match["words"].startswith("(") and match["words"].endswith(")")  # b (the hoop rotates)
-    if match["mark"].strip() or bracketed or _REASON.match(" " + words):
+    closed = submitted[match.end("label") : match.end("label") + 1] == ")"  # b) the hoop rotates: a list's mark
+    if match["mark"].strip() or closed or bracketed or _REASON.match(" " + words):
         return label, "", match["words"]
     return None
+
+
+def _unbracketed(words: str) -> str:
+    """Words after a label without the brackets around them, or a bracket left open or closed by the
+    label's (``b (rheonomic)``, ``b (rheonomic``): not the bracket that closes the words' own ``l(t)``."""
+    words = words.strip(" .[(")
+    while words[-1:] in (")", "]") and not _balanced(words.replace("[", "(").replace("]", ")")):
+        words = words[:-1].rstrip(" .")
+    return words
 
 
 # a label, then words: b (rheonomic), (b) rheonomic, b. rheonomic, b - since …
@@ -383,15 +458,21 @@ _LABELLED = re.compile(r"\s*\(?(?P<label>[A-Za-z0-9]{1,3})\)?(?P<mark>\s*[).:,;�
 _REASON = re.compile(r",|;|:|\s+(?:since|because)\s+")
 
 
-def _hedges(submitted: str, labels, remark: str, readings: dict[str, str | None], texts: dict[str, str]) -> bool:
+def _hedges(
+    submitted: str, labels, remark: str, readings: dict[str, str | None], texts: dict[str, str], *, asks_false=False
+) -> bool:
     """Whether an answer is no one answer: it doubts or denies an option, or offers another, in words
     that are not the named options' own (``rheonomic (maybe scleronomic)``, ``b (false)``, ``φ is cyclic
     (θ too)``, ``rheonomic, unless …``, ``b?``); or what was read past after the option names another
     or takes it back (``rheonomic (scleronomic)``, ``φ, θ``, ``b (no)``, ``φ (not φ)``), where it is no
     reason (``φ, because θ appears in L``: a reason may name another option, to say why not). Where no
-    option was read, whether the answer names one, and doubts it or names another too (``b or a``)."""
+    option was read, whether the answer names one, and doubts it or names another too (``b or a``).
+    Where the question asks which option is false, ``false`` names it and ``true`` doubts it (``c (true)``)."""
     own = " ".join(texts[label] for label in (labels or texts) if label in texts).lower()  # d) both: no hedge
-    doubts = (found[0].lower() for found in _DOUBT.finditer(submitted))
+    doubts = [found[0].lower() for found in _DOUBT.finditer(submitted)]
+    if asks_false:  # c) false: the claim asked for; c (true), c (correct): it is no answer, or the opposite one
+        own += " false wrong incorrect untrue"
+        doubts += [found[0].lower() for found in _TRUE.finditer(submitted)]
     doubted = any(not re.search(rf"(?<!\w){re.escape(doubt)}(?!\w)", own) for doubt in doubts)
     if labels is None:
         named, _ = _mentioned(submitted, readings, texts)
@@ -411,6 +492,9 @@ _DOUBT = re.compile(
     r"|[?？¿‽⁇⁈⁉؟⸮]|\d\s*%|\b50\s*[/:-]\s*50\b",
     re.I,
 )
+
+
+_TRUE = re.compile(r"\b(?:true|correct|right)\b", re.I)
 
 
 def _remark_pieces(remark: str) -> list[str]:
@@ -525,16 +609,18 @@ def _said_of(claim: str, readings: dict[str, str | None]) -> str | None:
 
 
 # where a sentence says what its subject is, and the words that deny it or hedge
-_IS = re.compile(r"\s+(?:is|are)\s+", re.I)
+_IS = re.compile(r"\s+(?:is|are)\s+|['’]s\s+", re.I)  # it is, it's
 _DENIES = re.compile(r"\b(?:not|no|or)\b|n't\b", re.I)
 
 
 def _plain(text: str) -> str:
     """An option's words as compared: no TeX, markup, case, spaces or a word's hyphens; Greek letters by
-    name; and the textbooks' other names for a kind of constraint as ours."""
+    name; the textbooks' other names for a kind of constraint as ours; and a kind of constraint with
+    the noun after it (``holonomic constraints``, ``a rheonomic constraint``) as the kind."""
     text = "".join(GREEK_BY_LETTER.get(c, c) for c in text)
     text = _WORD_HYPHEN.sub("", text)  # non-holonomic; a minus is kept: −∂V/∂q_j is not ∂V/∂q_j
-    return _SAME_KIND.sub(lambda found: _SAME_KINDS[found[0]], re.sub(r"[\s$\\{}*_.]", "", text).lower())
+    text = _SAME_KIND.sub(lambda found: _SAME_KINDS[found[0]], re.sub(r"[\s$\\{}*_.]", "", text).lower())
+    return _KIND_NOUN.sub(r"\g<kind>", text)
 
 
 _WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])\s*[-\u2010\u2011]\s*(?=[^\W\d_])")  # non-holonomic, non - holonomic
@@ -543,3 +629,5 @@ _WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])\s*[-\u2010\u2011]\s*(?=[^\W\d_])")  # 
 # Goldstein's scleronomous and rheonomous, and anholonomic, are scleronomic, rheonomic, nonholonomic
 _SAME_KINDS = {"scleronomous": "scleronomic", "rheonomous": "rheonomic", "anholonomic": "nonholonomic"}
 _SAME_KIND = re.compile("|".join(_SAME_KINDS))
+# (a) holonomic, scleronomic, rheonomic constraint(s): the article goes only with the noun, where it is no label
+_KIND_NOUN = re.compile(r"^(?:an?|the)?(?P<kind>(?:non)?holonomic|scleronomic|rheonomic)constraints?$")

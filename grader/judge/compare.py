@@ -116,9 +116,14 @@ KINDS: dict[str, Kind] = {
         Kind("equation", check_equation, shape="equation"),
         Kind("equations", check_equations, shape="equations"),
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
-        Kind("integer", check_integer, shape="expression"),
+        Kind("integer", check_integer, {"name": None}, shape="expression"),
         Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None}, shape="expression"),
-        Kind("choice", check_choice, {"options": (), "multiple": False, "meanings": ()}, parsed=False),
+        Kind(
+            "choice",
+            check_choice,
+            {"options": (), "multiple": False, "meanings": (), "asks_false": False},
+            parsed=False,
+        ),
         Kind("text", check_text, {"rubric": ()}, parsed=False),
     )
 }
@@ -566,7 +571,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += said
                 answer = _name_on_the_left(answer, spec, expected)
                 named, answer = answer, _unwrap_named(answer, spec, expected)
-                label = _another_name(named, answer, expected)
+                # a count's label is no other quantity to confuse it with: DOF = 2, or s = 2 as Landau writes it
+                label = _another_name(named, answer, expected) if spec.name != "integer" else None
                 read_notes += (label,) if label else ()
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 with_constant, (answer, constant) = answer, _without_constant_terms(answer, spec, expected)
@@ -1597,7 +1603,8 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
     answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
     if not answer.ok:
         return None
-    answer = _with_definitions(_with_values(_final_of_working(answer)), expected, deadline)  # n = 3N − k; N = 1; k = 2
+    final = _final_of_working(answer, expected.option("name") or ())
+    answer = _with_definitions(_with_values(final), expected, deadline)  # n = 3N − k; N = 1; k = 2
     value = _unwrap_named(answer, spec, expected).value
     if not isinstance(value, sympy.Expr):
         return None
@@ -1606,15 +1613,19 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
     return None
 
 
-def _final_of_working(answer: ParsedAnswer) -> ParsedAnswer:
+def _final_of_working(answer: ParsedAnswer, asked: tuple = ()) -> ParsedAnswer:
     """``3N = 3, k = 2, n = 1``: working where a number is asked for, every item a number and one of
     them worked out (3N): the value of the last name that no other item uses (n; not N, which 3N
     uses: ``3N = 15, N = 5`` gives the value it was worked out with), else of the last item that
     is working (3N = 15; ``3N = 6, 3N − k = 2`` gives 2, as ``6 − 2 = 4, 6 − 4 = 2`` does: the last
-    word). As it was read where that is not so."""
+    word). Where the part names the quantity (``asked``, the option ``name``), the value of the one
+    item of that name, wherever it stands (``n = 2, k = 4``). As it was read where that is not so."""
     if answer.kind != "equations" or not all(item.rhs.is_number and item.lhs != ANSWER for item in answer.value):
         return answer  # 1, since k = 2: a number and words, read as such (numbers.read_number)
     items = answer.value
+    named_asked = [item for item in items if item.lhs.is_Symbol and asked and item.lhs.name in asked]
+    if len(named_asked) == 1:
+        return ParsedAnswer(answer.text, named_asked[0].rhs, "expression")
     if all(item.lhs.is_Symbol for item in items):
         return answer  # n = 2; m = 3: no working, two values, and which is meant is for the student to say
     used = [set().union(*(other.lhs.free_symbols for other in items if other is not item)) for item in items]

@@ -203,6 +203,7 @@ FEEDBACK: dict[str, str] = {
     "choice_conflict": "Your label {label} and your words `{words}` name different options: give one of them.",
     "choice_read": "Read as the option you wrote out: {labels}.",
     "choice_read_remark": "Read as the option you wrote out: {labels}; what follows it (`{rest}`) is not graded.",
+    "choice_read_beside": "Read as the option you wrote out: {labels}; the words beside it (`{rest}`) are not graded.",
     "choice_remark": "Graded your choice, {labels}; what follows it (`{rest}`) is not graded.",
     "choice_hedged": "One option is asked for here, and your answer {typed} offers another, or doubts or denies the"
     " one it names: give the one you mean.",

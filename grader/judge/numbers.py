@@ -58,6 +58,7 @@ _STEPS = re.compile(
 )
 
 _SEPARATED = re.compile(r"[;\n]|\\\\")
+_LISTED_NAME = re.compile(r",\s*([^\W\d_][\w₀-₉']*)\s*$")  # the "2, k" of n = 2, k = 4: a new name after a value
 # a quantity's name before its value, which is no working: T, T_0, τ, ω₀
 _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
 # a quantity's name after its value, which the value may stand before (2.01 s = T, 2 = n, 2 = DOF, 2 = d.o.f.,
@@ -181,11 +182,14 @@ def _read_number(
         worked = _worked_over_lines(text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
         if worked is not None:
             return worked
+    # n = 2 since k = 4: read as typed, a list whose last new name, k, would be taken for the answer
+    given = _given(text, reads, names, decimal_comma, unit, count) if len(text) <= _LENGTH else None
+    if given is not None and given[1] is not None:
+        return given
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
         return prepared, answer, notes  # x = 1; y = 2 is a system, not working
-    given = _given(text, reads, names, decimal_comma, unit, count)
     if given is not None:
         return given
     if re.search(_UNEQUAL_SIGN, text):
@@ -193,6 +197,9 @@ def _read_number(
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
     pieces, runs = _sides(bare)
     last = len(pieces) - 1
+    listed = _listed(text, pieces, reads, names, decimal_comma, unit, count)
+    if listed is not None:
+        return listed
     # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
     # whose first side is no answer (6 − 4 = 2 = 4θ), nor across a step (6 − 4 → n), which says what comes last,
     # nor before anything but a name, where the last side may take it back (6 − 4 = 2? no, 4) or be another
@@ -489,6 +496,34 @@ def _value_of(answer: ParsedAnswer | None):
         return None
     value = answer.value.rhs if answer.kind == "equation" else answer.value
     return value if value.is_number else None
+
+
+def _listed(text: str, pieces: list[str], reads, names, decimal_comma: bool, unit: bool, count: bool):
+    """``n = 3N − k = 6 − 4 = 2, k = 4``: statements joined by a comma, the last a name's value with no
+    working, where that name was used in the working before it. It is a value the working was done
+    with, not the answer: the statement before it is graded, with a note that the value was not (as
+    ``2, since k = 4`` is). None for any other text, whose last statement is graded (``ω = √9.81 =
+    3.13, T = 2π/3.13 = 2.006 s``, and ``n = 2, k = 4``, where which name is asked is not known)."""
+    last = len(pieces) - 1
+    found = _LISTED_NAME.search(pieces[last - 1]) if last >= 2 else None
+    if found is None:
+        return None
+    name = found[1]
+    start = 1 if _QUANTITY.fullmatch(pieces[0]) else 0  # the working, not its label: n = 2, n = 4 is two values of n
+    before = " = ".join(pieces[start : last - 1])
+    said = list(_NAME_SAID.finditer(text))
+    # one such value: more, and the head is read again for each, each time read whole (a hostile answer's cost)
+    if len(said) == 1 and said[0][1] == name and re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before):
+        head, rest = text[: said[0].start()], text[said[0].start() + 1 :].strip()
+        prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+        if answer is None:
+            return None
+        value = next((details["value"] for _, details in notes if "value" in details), head.strip())
+        return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": _shown(rest)}))
+    return None
+
+
+_NAME_SAID = re.compile(r",\s*([^\W\d_][\w₀-₉']*)\s*(?:[=≈≃]|\\approx|\\simeq)")  # …, k = 4
 
 
 def _sides(text: str) -> tuple[list[str], tuple[int, ...]]:

@@ -183,7 +183,9 @@ def make_server(
         raise
 
 
-def _chosen(choices: Mapping[str, str], answer: str, *, multiple: bool = False, meanings=()) -> str:
+def _chosen(
+    choices: Mapping[str, str], answer: str, *, multiple: bool = False, meanings=(), asks_false: bool = False
+) -> str:
     """The options an answer names, as ``label) text``, read as the checker reads them (``b
     (rheonomic)`` is b); otherwise word by word, where a label that is no option stays as typed.
 
@@ -191,9 +193,11 @@ def _chosen(choices: Mapping[str, str], answer: str, *, multiple: bool = False, 
     'b) non-holonomic; c'
     >>> _chosen({"a": "scleronomic", "b": "rheonomic"}, "b (rheonomic)")
     'b) rheonomic'
+    >>> _chosen({"a": "L = T - V", "b": "L = T + V"}, "b is false", asks_false=True)
+    'b) L = T + V'
     """
     labels = {label.casefold(): label for label in choices}
-    read = chosen(answer, tuple(choices.items()), multiple=multiple, meanings=meanings)
+    read = chosen(answer, tuple(choices.items()), multiple=multiple, meanings=meanings, asks_false=asks_false)
     named = read if read and all(label in labels for label in read) else [w for w in re.split(r"[\s,;]+", answer) if w]
     return "; ".join(
         f"{labels[word.casefold()]}) {' '.join(str(choices[labels[word.casefold()]]).split())}"
@@ -271,8 +275,9 @@ class SelfCheckHandler(BaseHTTPRequestHandler):
         problem, part = self._part(request)
         answer = request["answer"]
         if part.kind == "choice":  # the options chosen, by label and text
-            multiple = bool(part.options.get("multiple"))
-            text = _chosen(part.choices, answer, multiple=multiple, meanings=symbol_meanings(problem))
+            multiple, asks_false = bool(part.options.get("multiple")), bool(part.options.get("asks_false"))
+            meanings = symbol_meanings(problem)
+            text = _chosen(part.choices, answer, multiple=multiple, meanings=meanings, asks_false=asks_false)
             self._send_json({"ok": True, "mathml": "", "text": text})
             return
         if part.kind not in MATH_KINDS:  # words and numbers are shown as typed

@@ -24,6 +24,7 @@ import contextlib
 import multiprocessing
 import os
 import queue
+import signal
 import sys
 import threading
 from collections.abc import Callable, Mapping
@@ -59,6 +60,9 @@ def _serve(
 ) -> None:
     """A worker: prepares the parts ``keys`` names, says it is ready, then checks each
     (key, answer, the student's other answers) it receives until its pipe closes."""
+    # A terminal's Ctrl-C reaches every process of its group: a worker's KeyboardInterrupt would
+    # print a traceback and lose the check it held, while the server, which owns the shutdown, kills it.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     limit_memory()
     for key in keys:
         problem, part = find_part(key, bank)
