@@ -2858,6 +2858,14 @@ DOTS_CHOICE = {
         (FORCE_CHOICE, "a", r"$-\partial V / \partial q_j$", "equivalent", "a"),
         (FORCE_CHOICE, "a", "Q_j = -∂V/∂q_j", "equivalent", "a"),  # the value after the asked quantity's name
         (FORCE_CHOICE, "a", "−∂V/∂q_j, by the chain rule", "equivalent", "a"),
+        # a fraction of one name over one name, ∂ before each perhaps, in TeX's \frac as inline
+        (FORCE_CHOICE, "a", r"-\frac{\partial V}{\partial q_j}", "equivalent", "a"),
+        (FORCE_CHOICE, "a", r"Q_j = -\frac{\partial V}{\partial q_j}", "equivalent", "a"),
+        (FORCE_CHOICE, "a", r"\frac{\partial V}{\partial q_j}", "not_equivalent", "b"),
+        (FORCE_CHOICE, "a", r"-\frac{\partial V}{\partial \dot q_j}", "not_equivalent", "c"),
+        (FORCE_CHOICE, "a", "-d/dt(∂V/∂q̇_j)", "not_equivalent", "d"),
+        (FORCE_CHOICE, "a", r"-\frac{\partial V}{\partial q_j \partial q_j}", "invalid", None),
+        (FORCE_CHOICE, "a", r"-\frac{\partial V}{2 \partial q_j}", "invalid", None),
         (FORCE_CHOICE, "a", "∂V/∂q_j", "not_equivalent", "b"),
         (FORCE_CHOICE, "a", "Q_j = ∂V/∂q_j", "not_equivalent", "b"),
         (FORCE_CHOICE, "a", "-∂V/∂q̇_j", "not_equivalent", "c"),
@@ -2878,6 +2886,7 @@ DOTS_CHOICE = {
         (INSTANT_CHOICE, "b", "dt", "invalid", None),  # a formula inside the option's words is no option
         (DOTS_CHOICE, "a", "∂r_i/∂q_j", "equivalent", "a"),
         (DOTS_CHOICE, "a", r"\partial \mathbf{r}_i / \partial q_j", "equivalent", "a"),
+        (DOTS_CHOICE, "a", r"\frac{\partial \mathbf{r}_i}{\partial q_j}", "equivalent", "a"),
         (DOTS_CHOICE, "a", "0", "not_equivalent", "b"),
         (DOTS_CHOICE, "a", "∂ṙ_i/∂q_j", "invalid", None),
         # a letter, in any of its spellings

@@ -370,13 +370,40 @@ def _formulas(text: str) -> frozenset[str]:
         tokens = [token for token in tokenize(_TYPEFACE.sub(lambda found: found[1] or "", text)) if token.kind != "end"]
     except ParseFailure:
         return frozenset()
-    spelled = [_spelled(token) for token in tokens]
+    spelled = _inline_fractions(tokens, [_spelled(token) for token in tokens])
     formulas = {"".join(spelled)}
     named = len(tokens) > 2 and tokens[0].kind == "name" and tokens[1].is_op("=")
     named = named and not tokens[0].value.dots and _QUANTITY.fullmatch(tokens[0].value.raw)
     if named and not any(token.is_op("=") for token in tokens[2:]):  # not ∂V/∂q_j = −∂V/∂q_j
         formulas.add("".join(spelled[2:]))
     return frozenset(formulas)
+
+
+def _inline_fractions(tokens: list, spelled: list[str]) -> list[str]:
+    """``\\frac{\\partial V}{\\partial q_j}`` spelled as ``∂V/∂q_j`` and ``\\frac{d}{dt}`` as ``d/dt``, as options
+    and students write them inline: a fraction of two groups that are each one name or number, after
+    a ∂ perhaps. A longer group keeps its \\frac: ``m g/2 l`` is no reading of ``\\frac{m g}{2 l}``."""
+    inline, i = [], 0
+    while i < len(tokens):
+        top = _one_name_group(tokens, i + 1) if tokens[i].kind == "frac" else None
+        bottom = _one_name_group(tokens, top) if top is not None else None
+        if bottom is not None:
+            inline += [*spelled[i + 2 : top - 1], "/", *spelled[top + 1 : bottom - 1]]
+            i = bottom
+        else:
+            inline.append(spelled[i])
+            i += 1
+    return inline
+
+
+def _one_name_group(tokens: list, start: int) -> int | None:
+    """Where the group ``{name}`` or ``{∂ name}`` (a number for a name too) that opens at ``start`` ends,
+    just after its ``}``; None where none opens there."""
+    kinds = [token.kind if token.kind != "op" else token.value for token in tokens[start : start + 4]]
+    for shape in (["{", "partial", "name", "}"], ["{", "name", "}"], ["{", "num", "}"]):
+        if kinds[: len(shape)] == shape:
+            return start + len(shape)
+    return None
 
 
 def _spelled(token) -> str:
