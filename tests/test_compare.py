@@ -4507,6 +4507,13 @@ def _misstated(statement: str, label: str) -> str:
          _misstated("p_φ = ∂L/∂φ", "p_φ")),
         ("m l^2 thetadot", "Since p_θ = ∂L/∂θ, p_θ = m l² θ̇", "expression", {**PENDULUM, "name": "p_theta"},
          _misstated("p_θ = ∂L/∂θ", "p_θ")),
+        # Σ p q̇ − L written out, with a coordinate's term left out or + L: before, each was Correct
+        (SPHERICAL_H, f"H = p_φ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = -L + p_φ*φ̇", "H")),
+        (SPHERICAL_H, f"H = p_θ θ̇ + p_φ φ̇ + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = L + p_φ*φ̇ + p_θ*θ̇", "H")),
+        (HOOP_H, f"Since H = p_θ θ̇ + L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = L + p_θ*θ̇", "H")),
     ],
 )  # fmt: skip
 def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
@@ -4590,6 +4597,13 @@ P_THETA = {**PENDULUM, "name": "p_theta"}
          ("Correct.", _chain("Since", "p_φ = ∂L/∂φ̇"))),
         ("m l^2 thetadot", "Since p_θ = ∂L/∂θ̇, p_θ = m l² θ̇", "expression", P_THETA, "equivalent",
          ("Correct.", _chain("Since", "p_θ = ∂L/∂θ̇"))),
+        # Σ p q̇ − L written out over the coordinates: before, wrong, `Since` and L undefined
+        (HOOP_H, f"Since H = p_θ θ̇ − L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, "equivalent",
+         ("Correct.", _chain("Since", "H = p_θ θ̇ − L"))),
+        (HOOP_H, f"Using H = θ̇ p_θ − L, we have H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, "equivalent",
+         ("Correct.", _chain("Using … we have", "H = θ̇ p_θ − L"))),
+        (SPHERICAL_H, f"Since H = p_θ θ̇ + p_φ φ̇ − L, H = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         "equivalent", ("Correct.", _chain("Since", "H = p_θ θ̇ + p_φ φ̇ − L"))),
         # a wrong value after a right definition: the value's own feedback, never `Since` undefined
         (L_PENDULUM, "Since L = T − V, L = 1/2 m l^2 θ̇^2 − m g l cos θ", "lagrangian", PENDULUM, "not_equivalent",
          ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _chain("Since", "L = T − V"))),

@@ -796,6 +796,8 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
                 return False  # H = Σ p q̇ + L, H = L − Σ p q̇
             coefficient, term = rest.as_coeff_Mul()
             return True if coefficient == 1 and term.is_Mul and not term.has(lagrangian) else None  # H = Σ p q̇ − L
+        if name == "H" and side.has(lagrangian):
+            return _sum_written_out(side, lagrangian, expected)
         return None
     momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
     derivative = re.fullmatch(r"d[LT]_d(\w+)", side.name) if side.is_Symbol else None
@@ -803,6 +805,27 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
         return None
     wanted = momentum[1].replace("_", "") + "dot"  # p_θ₁ is ∂L/∂θ̇₁: dL_dtheta_1dot
     return derivative[1].replace("_", "") == wanted
+
+
+def _sum_written_out(side, lagrangian: sympy.Symbol, expected: Expected) -> bool | None:
+    """Whether ``H = p_θ θ̇ + p_φ φ̇ − L``, Σ p q̇ − L written out over the problem's coordinates, is
+    right: each coordinate's momentum times its velocity once, then − L. A term left out or + L is
+    wrong; a side that is no such sum (``H = p_θ θ̇ − L + V``) is None."""
+    coords = {name.replace("_", "") for name in expected.setting.coords}
+    rest = side - side.coeff(lagrangian) * lagrangian
+    found = []
+    for term in sympy.Add.make_args(rest):
+        momentum, velocity = term.as_independent(sympy.Derivative, as_Add=False)
+        named = re.fullmatch(r"p_?(\w*)", momentum.name) if momentum.is_Symbol else None
+        if named is None or not isinstance(velocity, sympy.Derivative) or velocity.derivative_count != 1:
+            return None
+        coordinate = velocity.expr.func.__name__.replace("_", "")
+        if named[1].replace("_", "") not in (coordinate, "" if len(coords) == 1 else coordinate):
+            return None
+        found.append(coordinate)
+    if sorted(found) != sorted(set(found)) or not set(found) <= coords or not found:
+        return None
+    return side.coeff(lagrangian) == -1 and set(found) == coords
 
 
 def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
