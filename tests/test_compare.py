@@ -4626,6 +4626,34 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+_P_PHI_WORKED = "½ m l² sin²θ · 2φ̇"
+_H_WORKED = "m l² θ̇² + m l² sin²θ φ̇² − ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "feedback"),
+    [
+        # a definition the parser reads only in a chain, then the working: before, each was refused
+        (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ̇ = {_P_PHI_WORKED} = m l² sin²θ φ̇", "equivalent",
+         ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
+        (SPHERICAL_H, f"H = Σ p q̇ − L = {_H_WORKED} = {SPHERICAL_H_TYPED}", "equivalent",
+         ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
+        # the working's sides are numbered as written, the definition first
+        (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = ½ m l² sin²θ φ̇ = m l² sin²θ φ̇", "undecided",
+         ("Your last side is right, but side 2 does not say the same: a person will decide which is your answer.",)),
+        (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ̇ = {_P_PHI_WORKED} = m l² φ̇", "not_equivalent",
+         ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+          " on θ.", "Your answer has 3 sides after the name; the last was graded as your answer.")),
+        (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ = {_P_PHI_WORKED} = m l² sin²θ φ̇", "undecided",
+         (_misstated("p_φ = ∂L/∂φ", "p_φ"),
+          "Your answer has 3 sides after the name; the last was graded as your answer.")),
+    ],
+)  # fmt: skip
+def test_a_definition_then_working_then_the_value_is_graded_by_the_last_side(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="expression", **SPHERICAL)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 L_TEX = r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta"
 
 

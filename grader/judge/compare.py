@@ -431,12 +431,19 @@ def _judge_lines(
     ``parts="side"``, a chain ``L = … = …`` (each given as ``L = side``). Where each reads alone as
     the thing asked for, the last is graded; where it is right but an earlier one is not the same,
     which is the answer is for a person to say. Otherwise the whole, as it was."""
-    verdicts = []
-    for line in lines:
+    verdicts, definition = [], None
+    for number, line in enumerate(lines):
         started = time.monotonic()
         if timeout <= 0:
             return whole
+        if definition is not None:  # p_φ = ∂L/∂φ̇ = … = …: each side read after the definition, as the chain has it
+            line = f"{definition} = {line.split('=', 1)[1].strip()}"
         verdict = _judge(spec, expected, line, timeout, given)
+        if verdict.status == "invalid" and parts == "side" and number == 0 and len(lines) > 2:
+            # ∂L/∂φ̇ or Σ p q̇ − L alone is no value the parser reads, only a chain's definition
+            definition = line
+            timeout -= time.monotonic() - started
+            continue
         if verdict.status == "invalid" or verdict.diagnosis in (*_ONE_THING_ASKED, "expected_equation"):
             return whole
         verdicts.append(verdict)
@@ -447,7 +454,7 @@ def _judge_lines(
     # L = T − V = …: a side in names of the answer's own is its definition, not a step to check
     wrong = [
         str(number)
-        for number, verdict in enumerate(earlier, start=1)
+        for number, verdict in enumerate(earlier, start=1 + (definition is not None))
         if verdict.status != "equivalent" and not (parts == "side" and verdict.diagnosis == "undefined_symbol")
     ]
     count = {"count": len(lines), "parts": f"{parts}s" + (" after the name" if parts == "side" else "")}
