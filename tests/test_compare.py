@@ -839,6 +839,32 @@ def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, s
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
 
 
+_L_AND_K = (
+    "Your answer uses `L` and `k`, which this problem does not define (it uses g, l, m, θ). Write your answer in"
+    " those, or say what each stands for: …, where L = …."
+)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "feedback"),
+    [
+        # the name times a factor of the student's own: L is the side over k, not the side. Before, Correct
+        (L_PENDULUM, f"k L = {L_PENDULUM}", "lagrangian", _L_AND_K),
+        (L_PENDULUM, f"L k = {L_PENDULUM}", "lagrangian", _L_AND_K),
+        (L_PENDULUM, f"L/k = {L_PENDULUM}", "lagrangian", _L_AND_K),
+        (L_PENDULUM, f"m L = {L_PENDULUM}", "lagrangian",
+         "Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+         " or say what it stands for: …, where L = …."),
+        ("m l^2 thetadot", "k p_θ = m l² θ̇", "expression",
+         "Your answer uses `k` and `p_θ`, which this problem does not define (it uses g, l, m, θ). Write your answer"
+         " in those, or say what each stands for: …, where k = …."),
+    ],
+)  # fmt: skip
+def test_the_name_asked_for_times_a_name_of_the_students_own_is_no_label(expected, submitted, kind, feedback):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.0, (feedback,)), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "status"),
     [

@@ -1173,9 +1173,15 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     multiple = _energy_multiple(value.lhs, expected.option("name"), _energy_sums(expected)) if energies else None
     if multiple is not None:  # V − T = −L, 2(T − V) = 2L: L's value
         return ParsedAnswer(answer.text, value.rhs / multiple, "expression")
-    if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
+    # k L = …: the name times a factor of the student's own is no label, and L is not the value
+    scaled_by_name = value.lhs.is_Mul and len(value.lhs.free_symbols) > 1
+    if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef) and not scaled_by_name):
         return ParsedAnswer(answer.text, value.rhs, "expression")
-    if undefined & _DEFINING and not {symbol.name for symbol in value.rhs.free_symbols} - expected.names:
+    if (
+        undefined & _DEFINING
+        and not scaled_by_name
+        and not {symbol.name for symbol in value.rhs.free_symbols} - expected.names
+    ):
         return ParsedAnswer(answer.text, value.rhs, "expression")  # p_θ θ̇ − L = …: the definition, worked
     return answer
 
