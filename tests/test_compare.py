@@ -866,6 +866,16 @@ def test_the_name_asked_for_times_a_name_of_the_students_own_is_no_label(expecte
 
 
 @pytest.mark.parametrize(
+    "submitted",
+    [f"The Lagrangian is L = {L_PENDULUM}", f"The Lagrangian is L = {L_PENDULUM}.", f"Our Lagrangian L = {L_PENDULUM}"],
+)
+def test_a_sentence_before_the_name_is_no_factor_of_it(submitted):
+    # a guard, not a fix: read as the product The·Lagrangian·is·L, the sentence is words, not k in k L
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score) == ("equivalent", 1.0), verdict
+
+
+@pytest.mark.parametrize(
     ("expected", "submitted", "status"),
     [
         # where a count is asked, 3N = 3 is the count 3N worked out, not N = 1

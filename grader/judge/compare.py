@@ -1173,8 +1173,9 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     multiple = _energy_multiple(value.lhs, expected.option("name"), _energy_sums(expected)) if energies else None
     if multiple is not None:  # V − T = −L, 2(T − V) = 2L: L's value
         return ParsedAnswer(answer.text, value.rhs / multiple, "expression")
-    # k L = …: the name times a factor of the student's own is no label, and L is not the value
-    scaled_by_name = value.lhs.is_Mul and len(value.lhs.free_symbols) > 1
+    # k L = …: the name times a factor of the student's own is no label, and L is not the value. A
+    # sentence read as a product (The Lagrangian is L = …) holds words, and is one
+    scaled_by_name = value.lhs.is_Mul and len(value.lhs.free_symbols) > 1 and not undefined & _words(value.lhs)
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef) and not scaled_by_name):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     if (
@@ -1242,6 +1243,11 @@ def _energy_multiple(side, names, sums: Mapping = _ENERGY_SUMS) -> sympy.Expr | 
         if ratio is not None and ratio.is_number and ratio != 0:
             return ratio
     return None
+
+
+def _words(side) -> set[str]:
+    """The names in ``side`` that are words, two letters or more (``The``, ``is``): not a symbol's name (k, p_φ)."""
+    return {symbol.name for symbol in side.free_symbols if re.fullmatch(r"[A-Za-z]{2,}", symbol.name)}
 
 
 _DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines one by the other
