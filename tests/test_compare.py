@@ -1393,6 +1393,13 @@ def _before(words):
         # words before and a remark after: before, the remark was left out and the words kept, undefined
         (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)", "lagrangian",
          "equivalent", (_before("The Lagrangian is"), _words("(taking V = 0 at the pivot)"))),
+        # words before a labelled formula and after it: before, refused for the comma, the label undefined
+        (L_PENDULUM, "The Lagrangian is L = ½ m l² θ̇² + m g l cos θ, as asked", "lagrangian", "equivalent",
+         (_before("The Lagrangian is"), _words(", as asked"))),
+        ("m l^2 thetadot", "The momentum is p_θ = m l² θ̇, which is conserved.", "expression", "equivalent",
+         (_before("The momentum is"), _words(", which is conserved."))),
+        ("m l^2 thetadot", "The momentum is p_θ = m l θ̇, which is conserved.", "expression", "not_equivalent",
+         (_before("The momentum is"), _words(", which is conserved."))),
         # a method in words, then a comma: before, the words were a list's first item, with no `=`
         (EOM_PENDULUM, "From the Euler–Lagrange equation, m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
          (_before("From the Euler–Lagrange equation,"),)),

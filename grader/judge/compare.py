@@ -1514,7 +1514,8 @@ def _without_words(
         if read.ok and not _undefined(read, names) and zero is None:
             return read, (before,)
         after = _formula_before_words(formula, expected, names, deadline)
-        if after is not None and not _undefined(after[0], names):
+        # The Hamiltonian is H = …, the total energy: the label H is named by the sentence, not undefined
+        if after is not None and not _undefined(_without_label(after[0]), names):
             return after[0], (before, *after[1])
         if read.ok and not _undefined(read, names):
             return read, (before,)
@@ -1605,6 +1606,14 @@ def _shown(words: str) -> str:
 
 def _undefined(answer: ParsedAnswer, names: list) -> bool:
     return any(symbol.name not in names for symbol in answer.symbols)
+
+
+def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
+    """``H = …`` as its value, where the left side is a name alone; any other answer as it is."""
+    value = answer.value
+    if answer.kind == "equation" and value.lhs.is_Symbol and value.lhs != TIME:
+        return ParsedAnswer(answer.text, value.rhs, "expression")
+    return answer
 
 
 def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadline) -> ParsedAnswer | None:
