@@ -1328,10 +1328,18 @@ def test_the_opposite_sign_with_words_that_may_turn_it_goes_to_a_person(submitte
          (_for_a_person("(not sure about the sign)"),)),
         ("Not sure, but the equation of motion is θ̈ = −(g/l) sin θ", "undecided",
          (_for_a_person("Not sure, but the equation of motion is"),)),
+        # words that deny, with no "or" nor arithmetic: before, read as typed, `not` undefined and the answer wrong
+        ("θ̈ = −(g/l) sin θ (not small angles)", "undecided", (_for_a_person("(not small angles)"),)),
+        ("θ̈ = −(g/l) sin θ, not linearized", "undecided", (_for_a_person(", not linearized"),)),
+        ("m l² θ̈ + m g l sin θ = 0 (friction is not included)", "undecided",
+         (_for_a_person("(friction is not included)"),)),
         # a wrong formula is graded as written, and the words said to be read past
         ("m l² θ̈ − m g l sin θ = 0 (not sure about the sign)", "not_equivalent",
          ("A term differs: the term in sin(θ) has the wrong sign.",
           "Read without the words `(not sure about the sign)`: the formula is what is graded.")),
+        ("θ̈ + (g/l) θ = 0 (not small angles)", "not_equivalent",
+         ("You used the small-angle approximation, but the full answer is asked for here.",
+          "Read without the words `(not small angles)`: the formula is what is graded.")),
     ],
 )  # fmt: skip
 def test_words_that_doubt_a_formula_send_it_to_a_person(submitted, status, feedback):

@@ -24,7 +24,8 @@ reads the words. So it is with a sentence that leads to the formula: ``The angul
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have. Words that may say
 the formula is other than written (``… upward``, ``… inverted``), doubt it (``… (not sure about
-the sign)``) or judge it (``…, which is false``), are read past too, but :func:`says_otherwise` marks
+the sign)``), deny (``… (friction is not in L)``: "not", and no "or" nor arithmetic) or judge it
+(``…, which is false``), are read past too, but :func:`says_otherwise` marks
 them for a person to read before a right formula earns its credit; so are words that name a quantity
 (:func:`quantities_named`: ``…, which is the Hamiltonian``) other than the one the part asks for.
 
@@ -145,13 +146,14 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     """Whether ``words`` are about an answer, not more of it: no sign or word of arithmetic, no
     number in digits, no "or" or "not"; and they cannot be read, or use a name that is neither
     the problem's (``names``) nor a unit. With ``doubt``, words that doubt the answer (``not sure
-    about the sign, maybe minus``) may say "or", "not" and arithmetic in words: they are for a
-    person to read (:func:`says_otherwise`), beside a formula; not beside a number, where they
-    may offer another."""
+    about the sign, maybe minus``) may say "or", "not" and arithmetic in words, and words that deny
+    (``friction is not in L``) "not": they are for a person to read (:func:`says_otherwise`), beside a
+    formula; not beside a number, where they may offer another."""
     words = _EULER_LAGRANGE.sub("EulerLagrange", words)  # a name's hyphen, not a minus sign
     if not words or _MATH_SIGNS & set(words) or _NUMBER.search(words):
         return False
-    if not (doubt and _DOUBT.search(words)) and (_MATH_WORDS.search(words) or _HEDGE.search(words)):
+    doubted = doubt and (_DOUBT.search(words) or _denies_only(words))
+    if not doubted and (_MATH_WORDS.search(words) or _HEDGE.search(words)):
         return False
     if _APPLIED.search(words):
         return False
@@ -161,14 +163,25 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
 
 
+def _denies_only(words: str) -> bool:
+    """``(friction is not in L)``: words that say "not" and no "or" nor arithmetic; beside a formula they
+    are no second formula, and a person reads what they deny (:func:`says_otherwise`)."""
+    return bool(_NOT.search(words)) and not _OR.search(words) and not _MATH_WORDS.search(words)
+
+
+_NOT = re.compile(r"\b(?:not|never|isn't)\b", re.I)
+_OR = re.compile(r"\bor\b", re.I)
+
+
 def says_otherwise(words: str) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
-    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or judges it
+    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``) or denies, or judges it
     (``which is false``, ``sign error``), or says what kind of quantity it is (``it is a force``): a
     person must read it before the formula earns credit."""
     return bool(
         _OTHERWISE.search(words)
         or _DOUBT.search(words)
+        or _NOT.search(words)
         or _JUDGED.search(words)
         or _A_QUANTITY.match(words)
         or _dimensions(words)
