@@ -1074,6 +1074,11 @@ def _for_a_person(words):
         # the quantity asked, named (another goes to a person)
         (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ, the Lagrangian", "lagrangian", "equivalent",
          (_words(", the Lagrangian"),)),
+        # two words joined by a hyphen: before, a minus sign, the words read as typed and the answer wrong
+        ("thetaddot = -(g/l) theta", "θ̈ + (g/l) θ = 0 (small-angle approximation)", "equation", "equivalent",
+         (_words("(small-angle approximation)"),)),
+        (EOM_PENDULUM, "θ̈ + (g/l) sin θ = 0, a non-linear equation", "equation", "equivalent",
+         (_words(", a non-linear equation"),)),
         # words of arithmetic, or its signs: refused as typed
         ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),

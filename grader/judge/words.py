@@ -150,6 +150,7 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     (``friction is not in L``) "not": they are for a person to read (:func:`says_otherwise`), beside a
     formula; not beside a number, where they may offer another."""
     words = _EULER_LAGRANGE.sub("EulerLagrange", words)  # a name's hyphen, not a minus sign
+    words = _WORD_HYPHEN.sub(lambda found: _joined(found, names), words)  # small-angle: no minus sign either
     if not words or _MATH_SIGNS & set(words) or _NUMBER.search(words):
         return False
     doubted = doubt and (_DOUBT.search(words) or _denies_only(words))
@@ -161,6 +162,17 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     if not read.ok:
         return True
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
+
+
+# two words of prose joined by a hyphen: small-angle, time-independent, non-linear (not θ-φ, g-l or theta-phi)
+_WORD_HYPHEN = re.compile(r"(?<![\w\\])([A-Za-z]{3,})-([A-Za-z]{3,})(?!\w)")
+
+
+def _joined(found: re.Match, names: Collection[str]) -> str:
+    """``small-angle`` as one word, where both are words of prose; else as typed, a minus sign between names."""
+    if all(_is_word(word, names, ()) for word in found.groups()):
+        return found[1] + found[2]
+    return found[0]
 
 
 def _denies_only(words: str) -> bool:
