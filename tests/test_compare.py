@@ -4694,6 +4694,12 @@ _H_WORKED = "m l² θ̇² + m l² sin²θ φ̇² − ½ m l² (θ̇² + sin²θ 
          ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
         (SPHERICAL_H, f"H = Σ p q̇ − L = {_H_WORKED} = {SPHERICAL_H_TYPED}", "equivalent",
          ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
+        # the momentum named by its definition, then the working: before, refused
+        (SPHERICAL_P_PHI, f"∂L/∂φ̇ = {_P_PHI_WORKED} = m l² sin²θ φ̇", "equivalent",
+         ("Correct.", "Your answer has 2 sides after the name, each the same; the last was graded.")),
+        (SPHERICAL_P_PHI, f"∂L/∂φ̇ = {_P_PHI_WORKED} = m l² φ̇", "not_equivalent",
+         ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+          " on θ.", "Your answer has 2 sides after the name; the last was graded as your answer.")),
         # the working's sides are numbered as written, the definition first
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = ½ m l² sin²θ φ̇ = m l² sin²θ φ̇", "undecided",
          ("Your last side is right, but side 2 does not say the same: a person will decide which is your answer.",)),

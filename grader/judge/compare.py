@@ -406,13 +406,17 @@ def _cut(text: str, at: Callable[[int, int], bool]) -> list[str]:
 _EQUALS = re.compile(r"(?<![=<>:!])=(?![=>])")
 
 
+# a chain's label: a name (L, p_φ, L(θ, θ̇)), or a momentum by its definition (∂L/∂φ̇)
+_SIDES_LABEL = re.compile(r"\s*(?:[^\W\d][\w\s(),'̇]*|∂\s*[A-Za-z]\w*\s*/\s*∂\s*[^\W\d]\w*̇\s*)")
+
+
 def _sides(text: str) -> list[str] | None:
     """``L = ½ m (l θ̇)² + … = ½ m l² θ̇² + …`` on one line: ``L = `` with each side after it, where
     the first is a name (a label) and there are two to six sides after it; else None."""
     if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip():
         return None
     label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
-    if not re.fullmatch(r"\s*[^\W\d][\w\s(),'̇]*", label) or not 2 <= len(sides) <= _MAX_LINES:
+    if not _SIDES_LABEL.fullmatch(label) or not 2 <= len(sides) <= _MAX_LINES:
         return None
     sides = [side.strip() for side in sides]
     if not all(sides):
