@@ -1342,6 +1342,10 @@ def test_the_opposite_sign_with_words_that_may_turn_it_goes_to_a_person(submitte
         ("m l² θ̈ − m g l sin θ = 0 (not sure about the sign)", "not_equivalent",
          ("A term differs: the term in sin(θ) has the wrong sign.",
           "Read without the words `(not sure about the sign)`: the formula is what is graded.")),
+        # a remark in brackets that denies a formula: before, read as typed, T, V and `not` undefined
+        ("θ̈ = −(g/l) sin θ (not −(g/l) θ)", "undecided", (_for_a_person("(not −(g/l) θ)"),)),
+        ("m l² θ̈ + m g l sin θ = 0 (not m l² θ̈ − m g l sin θ = 0)", "undecided",
+         (_for_a_person("(not m l² θ̈ − m g l sin θ = 0)"),)),
         ("θ̈ + (g/l) θ = 0 (not small angles)", "not_equivalent",
          ("You used the small-angle approximation, but the full answer is asked for here.",
           "Read without the words `(not small angles)`: the formula is what is graded.")),
@@ -4599,6 +4603,21 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
 
 def _chain(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # that H is not T + V here, said beside it: before, read as typed, T, V and `not` undefined, wrong
+        (f"H = {HOOP_H_TYPED} (not T + V)", "undecided", (_for_a_person("(not T + V)"),)),
+        ("H = 1/2 m R^2 θ̇^2 + 1/2 m R^2 ω^2 sin^2θ − m g R cos θ (not T + V)", "not_equivalent",
+         ("A term differs: the term in sin(θ) has the wrong sign.",
+          "Read without the words `(not T + V)`: the formula is what is graded.")),
+    ],
+)  # fmt: skip
+def test_a_remark_in_brackets_that_h_is_not_t_plus_v_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(HOOP_H, submitted, **HOOP_NOT_ENERGY)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
 
 
 @pytest.mark.parametrize(

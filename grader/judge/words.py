@@ -175,6 +175,23 @@ def _joined(found: re.Match, names: Collection[str]) -> str:
     return found[0]
 
 
+def _denied(remark: str) -> bool:
+    """``(not T + V)``: a remark in brackets that ends the answer and denies what follows "not", a formula
+    as well as words. It says what the answer is not; a person reads it (:func:`says_otherwise`)."""
+    found = _DENIED.match(remark)
+    if found is None or "\n" in remark:
+        return False
+    depth = 0
+    for i, character in enumerate(remark):
+        depth += (character == "(") - (character == ")")
+        if depth == 0:  # where the bracket closes: nothing but marks of punctuation after it
+            return not remark[i + 1 :].strip(" .;!")
+    return False
+
+
+_DENIED = re.compile(r"\(\s*(?:not|never|isn't)\b", re.I)
+
+
 def _denies_only(words: str) -> bool:
     """``(friction is not in L)``: words that say "not" and no "or" nor arithmetic; beside a formula they
     are no second formula, and a person reads what they deny (:func:`says_otherwise`)."""
@@ -220,7 +237,8 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     """``θ̈ = −(g/l) θ for small angles``: the ways to read ``text`` as (a formula, prose after it).
     The prose begins at the first word that is none of the problem's names, spellings or
     functions, or at the mark of punctuation before it (``…, a nonlinear equation``), and must be
-    prose (:func:`is_prose`). The formula is not checked here: the caller reads each in turn."""
+    prose (:func:`is_prose`), or a remark in brackets that ends the text and denies (``(not T + V)``).
+    The formula is not checked here: the caller reads each in turn."""
     if len(text) > _LENGTH:
         return
     word = next((found for found in _WORD.finditer(text) if _is_word(found[0], names, coords)), None)
@@ -234,7 +252,7 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     for start in dict.fromkeys((cut, mark if mark > line else -1)):
         formula, rest = text[:start].rstrip(), text[start:].strip()
         remark = rest.lstrip(_OPENS)
-        if start > 0 and formula and (is_prose(remark, names, doubt=True) or _dimensions(remark)):
+        if start > 0 and formula and (is_prose(remark, names, doubt=True) or _dimensions(remark) or _denied(rest)):
             yield formula, rest
 
 
