@@ -4735,6 +4735,27 @@ def test_a_definition_then_working_then_the_value_is_graded_by_the_last_side(exp
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # before, the name at the end was graded as the value, undefined and wrong
+        ("p_φ = m l² sin²θ φ̇ = L_z", "undecided",
+         ("Your answer is labelled L_z, but the quantity asked for is p_φ. Read as p_φ, it is right; a person will"
+          " check which you meant.", "Your answer has 2 sides after the name; the last was graded as your answer.")),
+        ("p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇ = L_z", "undecided",
+         ("Your answer is labelled L_z, but the quantity asked for is p_φ. Read as p_φ, it is right; a person will"
+          " check which you meant.", "Your answer has 3 sides after the name; the last was graded as your answer.")),
+        ("p_φ = m l² φ̇ = L_z", "not_equivalent",
+         ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+          " on θ.", "Your answer is labelled L_z, but the quantity asked for is p_φ.",
+          "Your answer has 2 sides after the name; the last was graded as your answer.")),
+    ],
+)  # fmt: skip
+def test_a_chain_that_ends_in_a_name_of_its_own_names_the_value_again(submitted, status, feedback):
+    verdict = compare(SPHERICAL_P_PHI, submitted, kind="expression", **SPHERICAL, name="p_phi")
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 L_TEX = r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta"
 
 

@@ -410,6 +410,9 @@ _EQUALS = re.compile(r"(?<![=<>:!])=(?![=>])")
 _SIDES_LABEL = re.compile(r"\s*(?:[^\W\d][\w\s(),'̇]*|∂\s*[A-Za-z]\w*\s*/\s*∂\s*[^\W\d]\w*̇\s*)")
 
 
+_ONE_NAME = re.compile(r"[^\W\d]\w*")  # L_z, p_z, E: a name alone, no product (m l²) nor call (L(θ))
+
+
 def _sides(text: str) -> list[str] | None:
     """``L = ½ m (l θ̇)² + … = ½ m l² θ̇² + …`` on one line: ``L = `` with each side after it, where
     the first is a name (a label) and there are two to six sides after it; else None."""
@@ -424,6 +427,8 @@ def _sides(text: str) -> list[str] | None:
     lines = [f"{label.strip()} = {side}" for side in sides]
     if is_arbitrary_constant(canonical_name(sides[-1])):  # ẍ = … = const: the value before it is said constant
         lines[-1] = f"{sides[-2]} = {sides[-1]}"
+    elif _ONE_NAME.fullmatch(sides[-1]) and not _ONE_NAME.fullmatch(sides[-2]):
+        lines[-1] = f"{sides[-1]} = {sides[-2]}"  # p_φ = m l² sin²θ φ̇ = L_z: the value named again, not a value
     return lines
 
 
@@ -440,8 +445,9 @@ def _judge_lines(
         started = time.monotonic()
         if timeout <= 0:
             return whole
-        if definition is not None:  # p_φ = ∂L/∂φ̇ = … = …: each side read after the definition, as the chain has it
-            line = f"{definition} = {line.split('=', 1)[1].strip()}"
+        label, _, side = line.partition("=")
+        if definition is not None and label.strip() == definition.partition("=")[0].strip():
+            line = f"{definition} = {side.strip()}"  # p_φ = ∂L/∂φ̇ = … = …: each side after the definition, as typed
         verdict = _judge(spec, expected, line, timeout, given)
         if verdict.status == "invalid" and parts == "side" and number == 0 and len(lines) > 2:
             # ∂L/∂φ̇ or Σ p q̇ − L alone is no value the parser reads, only a chain's definition
