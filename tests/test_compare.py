@@ -1079,6 +1079,8 @@ def _for_a_person(words):
          (_words("(small-angle approximation)"),)),
         (EOM_PENDULUM, "θ̈ + (g/l) sin θ = 0, a non-linear equation", "equation", "equivalent",
          (_words(", a non-linear equation"),)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ (y-axis vertical)", "lagrangian", "equivalent",
+         (_words("(y-axis vertical)"),)),
         # words of arithmetic, or its signs: refused as typed
         ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),

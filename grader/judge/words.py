@@ -164,8 +164,8 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
 
 
-# two words of prose joined by a hyphen: small-angle, time-independent, non-linear (not θ-φ, g-l or theta-phi)
-_WORD_HYPHEN = re.compile(r"(?<![\w\\])([A-Za-z]{3,})-([A-Za-z]{3,})(?!\w)")
+# two words of prose joined by a hyphen: small-angle, time-independent, z-component (not θ-φ, g-l or theta-phi)
+_WORD_HYPHEN = re.compile(r"(?<![\w\\])([A-Za-z]+)-([A-Za-z]{3,})(?!\w)")
 
 
 def _joined(found: re.Match, names: Collection[str]) -> str:
