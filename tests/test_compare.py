@@ -1741,6 +1741,11 @@ CHAIN = "Your 2 lines, each `H = …`, were read as one chain, H = … = …: it
         # the definition in generic names, then the value: before, refused (q is no coordinate here)
         ("H = Σ p q̇ − L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", (CHAIN,)),
         ("H = Σ p q̇ − L; H = ½ m l²(θ̇² + sin²θ φ̇²) + m g l cos θ", "not_equivalent", (CHAIN,)),
+        # the sum written out: before, read as typed, H's value put into the first line, and L undefined
+        ("H = p_θ θ̇ + p_φ φ̇ − L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", (CHAIN,)),
+        ("H = p_θ θ̇ + p_φ φ̇ − L; H = ½ m l²(θ̇² + sin²θ φ̇²) + m g l cos θ", "not_equivalent", (CHAIN,)),
+        # a first line that is no definition we know: as typed, its unknown name told
+        ("H = ½ m l²(θ̇² + sin²θ φ̇²) − q\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "not_equivalent", ()),
         # as on one line
         ("H = Σ p q̇ − L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ()),
         # lines of other names, or a last line that cannot be read: refused as before

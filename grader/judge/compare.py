@@ -194,10 +194,14 @@ def compare(
     forms = _small_angle_forms(spec, prepared, submitted, left, values) if verdict.status != "equivalent" else None
     if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
         return forms
-    chain = _chained(submitted) if verdict.status == "invalid" and spec.parsed and spec.shape else None
+    # H = p_θ θ̇ − L, then H = …: read as typed, H's value is put into the first line, and L is undefined
+    unread = verdict.status == "invalid" or verdict.diagnosis == "undefined_symbol"
+    chain = _chained(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
-        if chained.status != "invalid":
+        # where the lines could be read as typed, only a definition we know makes the first line one (not L = … + q)
+        known = verdict.status == "invalid" or _defines_as_known(chain[0], prepared, values)
+        if chained.status != "invalid" and chained.diagnosis != "undefined_symbol" and known:
             # where an expression is asked, the chain is the answer; in a system, it is one of its lines
             key = "lines_as_chain" if spec.shape == "expression" else "lines_as_one_chain"
             note = say(key, count=chain[1], label=chain[2])
@@ -227,6 +231,18 @@ def compare(
     if _judge(spec, prepared, listed, left, values).status != "equivalent":
         return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+def _defines_as_known(chain: str, expected: Expected, given: tuple) -> bool:
+    """Whether ``chain`` states on its way a definition whose rightness is known (:func:`_definition_judged`:
+    ``H = p_θ θ̇ − L``, ``p_φ = ∂L/∂φ̇``), and no other."""
+    names = sorted(expected.names | {symbol.name for symbol, _ in given})
+    read = parse_answer(chain, coords=expected.setting.coords, known=names)
+    return (
+        read.ok
+        and bool(read.stated)
+        and all(_definition_judged(stated.lhs, stated.rhs, expected) is not None for stated in read.stated)
+    )
 
 
 def _right_but_said(verdict: Verdict, key: str, **details) -> Verdict:
