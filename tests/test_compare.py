@@ -1412,6 +1412,14 @@ def _before(words):
         # words before and a remark after: before, the remark was left out and the words kept, undefined
         (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)", "lagrangian",
          "equivalent", (_before("The Lagrangian is"), _words("(taking V = 0 at the pivot)"))),
+        # a labelled formula after a sentence that names one of the problem's names: before, all read as one
+        # product, the label with the words, and marked wrong
+        ("m l^2 thetadot", "The momentum conjugate to θ is p_θ = m l² θ̇", "expression", "equivalent",
+         (_before("The momentum conjugate to θ is"),)),
+        ("m l^2 thetadot", "The momentum conjugate to θ is p_θ = m l θ̇", "expression", "not_equivalent",
+         (_before("The momentum conjugate to θ is"),)),
+        # another quantity named before the label, for a person to read: before, Correct, the words a factor of L
+        (L_PENDULUM, "The Hamiltonian is L = ½ m l² θ̇² + m g l cos θ", "lagrangian", "undecided", ()),
         # words before a labelled formula and after it: before, refused for the comma, the label undefined
         (L_PENDULUM, "The Lagrangian is L = ½ m l² θ̇² + m g l cos θ, as asked", "lagrangian", "equivalent",
          (_before("The Lagrangian is"), _words(", as asked"))),

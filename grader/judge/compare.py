@@ -1537,7 +1537,8 @@ def _without_words(
         before = (_words_note("words_before_left_out", words, expected), {"words": _shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
         zero = _ZERO_THEN_WORDS.search(formula)  # … = 0 is wrong: 0 times the words is 0, as at the top
-        if read.ok and not _undefined(read, names) and zero is None:
+        # The generalized force along r is Q_r = …: a label the sentence names is no undefined name
+        if read.ok and not _undefined(_without_label(read), names) and zero is None:
             return read, (before,)
         after = _formula_before_words(formula, expected, names, deadline)
         # The Hamiltonian is H = …, the total energy: the label H is named by the sentence, not undefined
