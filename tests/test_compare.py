@@ -2343,6 +2343,12 @@ def test_a_defined_name_before_brackets_is_a_product_not_a_name():
         (L_PENDULUM, L_PENDULUM + " + C₁", {"kind": "lagrangian"}, "equivalent"),
         (L_PENDULUM, r"\frac12 m l^2 \dot\theta^2 + mgl\cos\theta + const", {"kind": "lagrangian"}, "equivalent"),
         ("-m g l cos(theta)", "-m g l cos θ + C", {"up_to_constant": True}, "equivalent"),
+        # the quantity's own name at its zero, V₀, and the potential's in a Lagrangian: before, undefined names
+        ("-m g l cos(theta)", "V = -m g l cos θ + V_0", {"up_to_constant": True, "name": ["V", "U"]}, "equivalent"),
+        ("-m g l cos(theta)", "U = -m g l cos θ + U₀", {"up_to_constant": True, "name": ["V", "U"]}, "equivalent"),
+        (L_PENDULUM, L_PENDULUM + " - V_0", {"kind": "lagrangian"}, "equivalent"),
+        (L_PENDULUM, L_PENDULUM + " + L₀", {"kind": "lagrangian"}, "equivalent"),
+        ("-m g l cos(theta)", "-m g l cos θ + V_0 θ", {"up_to_constant": True, "name": ["V", "U"]}, "not_equivalent"),
         # not a constant term of its own, or no constant allowed: C is a name the problem lacks
         (L_PENDULUM, "1/2 m l^2 θ̇^2 + C m g l cos θ", {"kind": "lagrangian"}, "not_equivalent"),
         (L_PENDULUM, L_PENDULUM + " + C^2", {"kind": "lagrangian"}, "not_equivalent"),

@@ -1306,7 +1306,13 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
     value = answer.value
     if not allowed or answer.kind != "expression":
         return answer
-    present = {symbol.name for symbol in value.free_symbols if is_arbitrary_constant(symbol.name)}
+    # V₀ for a potential, L₀ for a Lagrangian: the quantity's own name for its value at the zero chosen, and
+    # in a Lagrangian the potential's (L = T − V, with V's zero anywhere)
+    named = (*(expected.option("name") or ()), *(("V", "U") if spec.name == "lagrangian" else ()))
+    zeros = {f"{name}_0" for name in named}
+    present = {
+        symbol.name for symbol in value.free_symbols if is_arbitrary_constant(symbol.name) or symbol.name in zeros
+    }
     for name in sorted(present - expected.names):
         constant = sympy.Symbol(name)
         rest, term = value.as_independent(constant, as_Add=True)
