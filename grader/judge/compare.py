@@ -1539,12 +1539,15 @@ def _without_words(
     without = _formula_before_words(submitted, expected, names, deadline)
     if without is not None and not _undefined(without[0], names):
         return without
+    # Dimension of force: Q_θ = …, a line's label the parser read past: no sentence before its own label
+    labelled = answer.ok and not _undefined(_without_label(answer), names)
     for words, formula in words_then_formula(submitted, names, coords):
         before = (_words_note("words_before_left_out", words, expected), {"words": _shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
         zero = _ZERO_THEN_WORDS.search(formula)  # … = 0 is wrong: 0 times the words is 0, as at the top
         # The generalized force along r is Q_r = …: a label the sentence names is no undefined name
-        if read.ok and not _undefined(_without_label(read), names) and zero is None:
+        undefined = _undefined(read if labelled else _without_label(read), names) if read.ok else True
+        if not undefined and zero is None:
             return read, (before,)
         after = _formula_before_words(formula, expected, names, deadline)
         # The Hamiltonian is H = …, the total energy: the label H is named by the sentence, not undefined
