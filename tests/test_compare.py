@@ -852,6 +852,9 @@ _L_AND_K = (
         (L_PENDULUM, f"k L = {L_PENDULUM}", "lagrangian", _L_AND_K),
         (L_PENDULUM, f"L k = {L_PENDULUM}", "lagrangian", _L_AND_K),
         (L_PENDULUM, f"L/k = {L_PENDULUM}", "lagrangian", _L_AND_K),
+        (L_PENDULUM, f"The Lagrangian is k L = {L_PENDULUM}", "lagrangian",
+         "Your answer uses `L`, `Lagrangian`, `The`, `is` and `k`, which this problem does not define (it uses g, l,"
+         " m, θ). Write your answer in those, or say what each stands for: …, where L = …."),
         (L_PENDULUM, f"m L = {L_PENDULUM}", "lagrangian",
          "Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
          " or say what it stands for: …, where L = …."),

@@ -1200,8 +1200,9 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     if multiple is not None:  # V − T = −L, 2(T − V) = 2L: L's value
         return ParsedAnswer(answer.text, value.rhs / multiple, "expression")
     # k L = …: the name times a factor of the student's own is no label, and L is not the value. A
-    # sentence read as a product (The Lagrangian is L = …) holds words, and is one
-    scaled_by_name = value.lhs.is_Mul and len(value.lhs.free_symbols) > 1 and not undefined & _words(value.lhs)
+    # sentence read as a product (The Lagrangian is L = …) holds words, which are no factors
+    factors = {symbol.name for symbol in value.lhs.free_symbols} - (undefined & _words(value.lhs))
+    scaled_by_name = value.lhs.is_Mul and len(factors) > 1
     if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef) and not scaled_by_name):
         return ParsedAnswer(answer.text, value.rhs, "expression")
     if (
