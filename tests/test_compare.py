@@ -4549,6 +4549,9 @@ HOOP_NOT_ENERGY = {"coords": ["theta"], "known": ["m", "R", "g", "omega"], "name
 HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
 
 
+ELASTIC = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"]}  # the elastic pendulum's polar coordinates
+
+
 def _misstated(statement: str, label: str) -> str:
     return (
         f"Your answer says `{statement}` on the way to its value, which is not what {label} is. Its value was"
@@ -4591,6 +4594,11 @@ def _misstated(statement: str, label: str) -> str:
          _misstated("p_φ = ∂L/∂φ", "p_φ")),
         ("m l^2 thetadot", "Since p_θ = ∂L/∂θ, p_θ = m l² θ̇", "expression", {**PENDULUM, "name": "p_theta"},
          _misstated("p_θ = ∂L/∂θ", "p_θ")),
+        # a generalized force as +∂V/∂r, or by another coordinate's derivative: before, Correct
+        ("m g cos(theta) - k (r - l0)", "Q_r = ∂V/∂r = m g cos θ − k (r − l0)", "expression", ELASTIC,
+         _misstated("Q_r = ∂V/∂r", "Q_r")),
+        ("m g cos(theta) - k (r - l0)", "Q_r = −∂V/∂θ = m g cos θ − k (r − l0)", "expression", ELASTIC,
+         _misstated("Q_r = -∂V/∂θ", "Q_r")),
         # Σ p q̇ − L written out, with a coordinate's term left out or + L: before, each was Correct
         (SPHERICAL_H, f"H = p_φ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
          _misstated("H = -L + p_φ*φ̇", "H")),
@@ -4619,6 +4627,14 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
         (HOOP_H, f"H = Σ p q̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY),  # where it is not too
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
         (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it
+        # a generalized force by its potential, as the prompt defines it: before, refused for its minus sign
+        ("m g cos(theta) - k (r - l0)", "Q_r = −∂V/∂r = m g cos θ − k (r − l0)", "expression", ELASTIC),
+        (
+            "-m g r sin(theta)",
+            r"Q_\theta = -\frac{\partial V}{\partial \theta} = -mgr\sin\theta",
+            "expression",
+            ELASTIC,
+        ),
     ],
 )
 def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, options):

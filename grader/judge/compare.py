@@ -742,7 +742,7 @@ def _shown_statement(statement: sympy.Eq) -> str:
     product of its sum's symbol."""
     replacements = {}
     for symbol in statement.rhs.free_symbols:
-        found = re.fullmatch(r"d([LT])_d(\w+?)(dot)?", symbol.name)
+        found = re.fullmatch(r"d([LTVU])_d(\w+?)(dot)?", symbol.name)
         if found:
             replacements[symbol] = sympy.Symbol(f"∂{found[1]}/∂{unicode_name(found[2], 1 if found[3] else 0)}")
     terms = []
@@ -832,6 +832,13 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
         if name == "H" and side.has(lagrangian):
             return _sum_written_out(side, lagrangian, expected)
         return None
+    force = re.fullmatch(r"Q_?([A-Za-z]\w*)", name)
+    if force is not None:  # Q_r = −∂V/∂r; ∂V/∂r, or ∂V/∂θ for Q_r, is wrong
+        coefficient, quotient = side.as_coeff_Mul()
+        gradient = re.fullmatch(r"d[VU]_d(\w+)", quotient.name) if quotient.is_Symbol else None
+        if gradient is None or coefficient not in (1, -1):
+            return None
+        return coefficient == -1 and gradient[1].replace("_", "") == force[1].replace("_", "")
     momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
     derivative = re.fullmatch(r"d[LT]_d(\w+)", side.name) if side.is_Symbol else None
     if not momentum or not derivative:
