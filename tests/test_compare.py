@@ -894,6 +894,45 @@ def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, s
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
 
 
+_L_AND_K = (
+    "Your answer uses `L` and `k`, which this problem does not define (it uses g, l, m, θ). Write your answer in"
+    " those, or say what each stands for: …, where L = …."
+)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "feedback"),
+    [
+        # the name times a factor of the student's own: L is the side over k, not the side. Before, Correct
+        (L_PENDULUM, f"k L = {L_PENDULUM}", "lagrangian", _L_AND_K),
+        (L_PENDULUM, f"L k = {L_PENDULUM}", "lagrangian", _L_AND_K),
+        (L_PENDULUM, f"L/k = {L_PENDULUM}", "lagrangian", _L_AND_K),
+        (L_PENDULUM, f"The Lagrangian is k L = {L_PENDULUM}", "lagrangian",
+         "Your answer uses `L`, `Lagrangian`, `The`, `is` and `k`, which this problem does not define (it uses g, l,"
+         " m, θ). Write your answer in those, or say what each stands for: …, where L = …."),
+        (L_PENDULUM, f"m L = {L_PENDULUM}", "lagrangian",
+         "Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+         " or say what it stands for: …, where L = …."),
+        ("m l^2 thetadot", "k p_θ = m l² θ̇", "expression",
+         "Your answer uses `k` and `p_θ`, which this problem does not define (it uses g, l, m, θ). Write your answer"
+         " in those, or say what each stands for: …, where k = …."),
+    ],
+)  # fmt: skip
+def test_the_name_asked_for_times_a_name_of_the_students_own_is_no_label(expected, submitted, kind, feedback):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.0, (feedback,)), verdict
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [f"The Lagrangian is L = {L_PENDULUM}", f"The Lagrangian is L = {L_PENDULUM}.", f"Our Lagrangian L = {L_PENDULUM}"],
+)
+def test_a_sentence_before_the_name_is_no_factor_of_it(submitted):
+    # a guard, not a fix: read as the product The·Lagrangian·is·L, the sentence is words, not k in k L
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score) == ("equivalent", 1.0), verdict
+
+
 @pytest.mark.parametrize(
     ("expected", "submitted", "status"),
     [
@@ -1113,6 +1152,13 @@ def _for_a_person(words):
         # the quantity asked, named (another goes to a person)
         (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ, the Lagrangian", "lagrangian", "equivalent",
          (_words(", the Lagrangian"),)),
+        # two words joined by a hyphen: before, a minus sign, the words read as typed and the answer wrong
+        ("thetaddot = -(g/l) theta", "θ̈ + (g/l) θ = 0 (small-angle approximation)", "equation", "equivalent",
+         (_words("(small-angle approximation)"),)),
+        (EOM_PENDULUM, "θ̈ + (g/l) sin θ = 0, a non-linear equation", "equation", "equivalent",
+         (_words(", a non-linear equation"),)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ (y-axis vertical)", "lagrangian", "equivalent",
+         (_words("(y-axis vertical)"),)),
         # words of arithmetic, or its signs: refused as typed
         ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
         (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),
@@ -1367,10 +1413,22 @@ def test_the_opposite_sign_with_words_that_may_turn_it_goes_to_a_person(submitte
          (_for_a_person("(not sure about the sign)"),)),
         ("Not sure, but the equation of motion is θ̈ = −(g/l) sin θ", "undecided",
          (_for_a_person("Not sure, but the equation of motion is"),)),
+        # words that deny, with no "or" nor arithmetic: before, read as typed, `not` undefined and the answer wrong
+        ("θ̈ = −(g/l) sin θ (not small angles)", "undecided", (_for_a_person("(not small angles)"),)),
+        ("θ̈ = −(g/l) sin θ, not linearized", "undecided", (_for_a_person(", not linearized"),)),
+        ("m l² θ̈ + m g l sin θ = 0 (friction is not included)", "undecided",
+         (_for_a_person("(friction is not included)"),)),
         # a wrong formula is graded as written, and the words said to be read past
         ("m l² θ̈ − m g l sin θ = 0 (not sure about the sign)", "not_equivalent",
          ("A term differs: the term in sin(θ) has the wrong sign.",
           "Read without the words `(not sure about the sign)`: the formula is what is graded.")),
+        # a remark in brackets that denies a formula: before, read as typed, T, V and `not` undefined
+        ("θ̈ = −(g/l) sin θ (not −(g/l) θ)", "undecided", (_for_a_person("(not −(g/l) θ)"),)),
+        ("m l² θ̈ + m g l sin θ = 0 (not m l² θ̈ − m g l sin θ = 0)", "undecided",
+         (_for_a_person("(not m l² θ̈ − m g l sin θ = 0)"),)),
+        ("θ̈ + (g/l) θ = 0 (not small angles)", "not_equivalent",
+         ("You used the small-angle approximation, but the full answer is asked for here.",
+          "Read without the words `(not small angles)`: the formula is what is graded.")),
     ],
 )  # fmt: skip
 def test_words_that_doubt_a_formula_send_it_to_a_person(submitted, status, feedback):
@@ -1432,6 +1490,21 @@ def _before(words):
         # words before and a remark after: before, the remark was left out and the words kept, undefined
         (L_PENDULUM, "The Lagrangian is ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)", "lagrangian",
          "equivalent", (_before("The Lagrangian is"), _words("(taking V = 0 at the pivot)"))),
+        # a labelled formula after a sentence that names one of the problem's names: before, all read as one
+        # product, the label with the words, and marked wrong
+        ("m l^2 thetadot", "The momentum conjugate to θ is p_θ = m l² θ̇", "expression", "equivalent",
+         (_before("The momentum conjugate to θ is"),)),
+        ("m l^2 thetadot", "The momentum conjugate to θ is p_θ = m l θ̇", "expression", "not_equivalent",
+         (_before("The momentum conjugate to θ is"),)),
+        # another quantity named before the label, for a person to read: before, Correct, the words a factor of L
+        (L_PENDULUM, "The Hamiltonian is L = ½ m l² θ̇² + m g l cos θ", "lagrangian", "undecided", ()),
+        # words before a labelled formula and after it: before, refused for the comma, the label undefined
+        (L_PENDULUM, "The Lagrangian is L = ½ m l² θ̇² + m g l cos θ, as asked", "lagrangian", "equivalent",
+         (_before("The Lagrangian is"), _words(", as asked"))),
+        ("m l^2 thetadot", "The momentum is p_θ = m l² θ̇, which is conserved.", "expression", "equivalent",
+         (_before("The momentum is"), _words(", which is conserved."))),
+        ("m l^2 thetadot", "The momentum is p_θ = m l θ̇, which is conserved.", "expression", "not_equivalent",
+         (_before("The momentum is"), _words(", which is conserved."))),
         # a method in words, then a comma: before, the words were a list's first item, with no `=`
         (EOM_PENDULUM, "From the Euler–Lagrange equation, m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
          (_before("From the Euler–Lagrange equation,"),)),
@@ -1754,6 +1827,11 @@ CHAIN = "Your 2 lines, each `H = …`, were read as one chain, H = … = …: it
         # the definition in generic names, then the value: before, refused (q is no coordinate here)
         ("H = Σ p q̇ − L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", (CHAIN,)),
         ("H = Σ p q̇ − L; H = ½ m l²(θ̇² + sin²θ φ̇²) + m g l cos θ", "not_equivalent", (CHAIN,)),
+        # the sum written out: before, read as typed, H's value put into the first line, and L undefined
+        ("H = p_θ θ̇ + p_φ φ̇ − L\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", (CHAIN,)),
+        ("H = p_θ θ̇ + p_φ φ̇ − L; H = ½ m l²(θ̇² + sin²θ φ̇²) + m g l cos θ", "not_equivalent", (CHAIN,)),
+        # a first line that is no definition we know: as typed, its unknown name told
+        ("H = ½ m l²(θ̇² + sin²θ φ̇²) − q\nH = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "not_equivalent", ()),
         # as on one line
         ("H = Σ p q̇ − L = ½ m l²(θ̇² + sin²θ φ̇²) − m g l cos θ", "equivalent", ()),
         # lines of other names, or a last line that cannot be read: refused as before
@@ -2343,6 +2421,12 @@ def test_a_defined_name_before_brackets_is_a_product_not_a_name():
         (L_PENDULUM, L_PENDULUM + " + C₁", {"kind": "lagrangian"}, "equivalent"),
         (L_PENDULUM, r"\frac12 m l^2 \dot\theta^2 + mgl\cos\theta + const", {"kind": "lagrangian"}, "equivalent"),
         ("-m g l cos(theta)", "-m g l cos θ + C", {"up_to_constant": True}, "equivalent"),
+        # the quantity's own name at its zero, V₀, and the potential's in a Lagrangian: before, undefined names
+        ("-m g l cos(theta)", "V = -m g l cos θ + V_0", {"up_to_constant": True, "name": ["V", "U"]}, "equivalent"),
+        ("-m g l cos(theta)", "U = -m g l cos θ + U₀", {"up_to_constant": True, "name": ["V", "U"]}, "equivalent"),
+        (L_PENDULUM, L_PENDULUM + " - V_0", {"kind": "lagrangian"}, "equivalent"),
+        (L_PENDULUM, L_PENDULUM + " + L₀", {"kind": "lagrangian"}, "equivalent"),
+        ("-m g l cos(theta)", "-m g l cos θ + V_0 θ", {"up_to_constant": True, "name": ["V", "U"]}, "not_equivalent"),
         # not a constant term of its own, or no constant allowed: C is a name the problem lacks
         (L_PENDULUM, "1/2 m l^2 θ̇^2 + C m g l cos θ", {"kind": "lagrangian"}, "not_equivalent"),
         (L_PENDULUM, L_PENDULUM + " + C^2", {"kind": "lagrangian"}, "not_equivalent"),
@@ -4687,6 +4771,9 @@ HOOP_NOT_ENERGY = {"coords": ["theta"], "known": ["m", "R", "g", "omega"], "name
 HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
 
 
+ELASTIC = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"]}  # the elastic pendulum's polar coordinates
+
+
 def _misstated(statement: str, label: str) -> str:
     return (
         f"Your answer says `{statement}` on the way to its value, which is not what {label} is. Its value was"
@@ -4729,6 +4816,18 @@ def _misstated(statement: str, label: str) -> str:
          _misstated("p_φ = ∂L/∂φ", "p_φ")),
         ("m l^2 thetadot", "Since p_θ = ∂L/∂θ, p_θ = m l² θ̇", "expression", {**PENDULUM, "name": "p_theta"},
          _misstated("p_θ = ∂L/∂θ", "p_θ")),
+        # a generalized force as +∂V/∂r, or by another coordinate's derivative: before, Correct
+        ("m g cos(theta) - k (r - l0)", "Q_r = ∂V/∂r = m g cos θ − k (r − l0)", "expression", ELASTIC,
+         _misstated("Q_r = ∂V/∂r", "Q_r")),
+        ("m g cos(theta) - k (r - l0)", "Q_r = −∂V/∂θ = m g cos θ − k (r − l0)", "expression", ELASTIC,
+         _misstated("Q_r = -∂V/∂θ", "Q_r")),
+        # Σ p q̇ − L written out, with a coordinate's term left out or + L: before, each was Correct
+        (SPHERICAL_H, f"H = p_φ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = -L + p_φ*φ̇", "H")),
+        (SPHERICAL_H, f"H = p_θ θ̇ + p_φ φ̇ + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = L + p_φ*φ̇ + p_θ*θ̇", "H")),
+        (HOOP_H, f"Since H = p_θ θ̇ + L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = L + p_θ*θ̇", "H")),
     ],
 )  # fmt: skip
 def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
@@ -4750,6 +4849,14 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
         (HOOP_H, f"H = Σ p q̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY),  # where it is not too
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
         (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it
+        # a generalized force by its potential, as the prompt defines it: before, refused for its minus sign
+        ("m g cos(theta) - k (r - l0)", "Q_r = −∂V/∂r = m g cos θ − k (r − l0)", "expression", ELASTIC),
+        (
+            "-m g r sin(theta)",
+            r"Q_\theta = -\frac{\partial V}{\partial \theta} = -mgr\sin\theta",
+            "expression",
+            ELASTIC,
+        ),
     ],
 )
 def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, options):
@@ -4758,6 +4865,21 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
 
 def _chain(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # that H is not T + V here, said beside it: before, read as typed, T, V and `not` undefined, wrong
+        (f"H = {HOOP_H_TYPED} (not T + V)", "undecided", (_for_a_person("(not T + V)"),)),
+        ("H = 1/2 m R^2 θ̇^2 + 1/2 m R^2 ω^2 sin^2θ − m g R cos θ (not T + V)", "not_equivalent",
+         ("A term differs: the term in sin(θ) has the wrong sign.",
+          "Read without the words `(not T + V)`: the formula is what is graded.")),
+    ],
+)  # fmt: skip
+def test_a_remark_in_brackets_that_h_is_not_t_plus_v_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(HOOP_H, submitted, **HOOP_NOT_ENERGY)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
 
 
 @pytest.mark.parametrize(
@@ -4812,6 +4934,13 @@ P_THETA = {**PENDULUM, "name": "p_theta"}
          ("Correct.", _chain("Since", "p_φ = ∂L/∂φ̇"))),
         ("m l^2 thetadot", "Since p_θ = ∂L/∂θ̇, p_θ = m l² θ̇", "expression", P_THETA, "equivalent",
          ("Correct.", _chain("Since", "p_θ = ∂L/∂θ̇"))),
+        # Σ p q̇ − L written out over the coordinates: before, wrong, `Since` and L undefined
+        (HOOP_H, f"Since H = p_θ θ̇ − L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, "equivalent",
+         ("Correct.", _chain("Since", "H = p_θ θ̇ − L"))),
+        (HOOP_H, f"Using H = θ̇ p_θ − L, we have H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, "equivalent",
+         ("Correct.", _chain("Using … we have", "H = θ̇ p_θ − L"))),
+        (SPHERICAL_H, f"Since H = p_θ θ̇ + p_φ φ̇ − L, H = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         "equivalent", ("Correct.", _chain("Since", "H = p_θ θ̇ + p_φ φ̇ − L"))),
         # a wrong value after a right definition: the value's own feedback, never `Since` undefined
         (L_PENDULUM, "Since L = T − V, L = 1/2 m l^2 θ̇^2 − m g l cos θ", "lagrangian", PENDULUM, "not_equivalent",
          ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _chain("Since", "L = T − V"))),
@@ -4832,6 +4961,61 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
 ):
     verdict = compare(expected, submitted, kind=kind, **options)
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+
+
+_P_PHI_WORKED = "½ m l² sin²θ · 2φ̇"
+_H_WORKED = "m l² θ̇² + m l² sin²θ φ̇² − ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "feedback"),
+    [
+        # a definition the parser reads only in a chain, then the working: before, each was refused
+        (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ̇ = {_P_PHI_WORKED} = m l² sin²θ φ̇", "equivalent",
+         ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
+        (SPHERICAL_H, f"H = Σ p q̇ − L = {_H_WORKED} = {SPHERICAL_H_TYPED}", "equivalent",
+         ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
+        # the momentum named by its definition, then the working: before, refused
+        (SPHERICAL_P_PHI, f"∂L/∂φ̇ = {_P_PHI_WORKED} = m l² sin²θ φ̇", "equivalent",
+         ("Correct.", "Your answer has 2 sides after the name, each the same; the last was graded.")),
+        (SPHERICAL_P_PHI, f"∂L/∂φ̇ = {_P_PHI_WORKED} = m l² φ̇", "not_equivalent",
+         ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+          " on θ.", "Your answer has 2 sides after the name; the last was graded as your answer.")),
+        # the working's sides are numbered as written, the definition first
+        (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = ½ m l² sin²θ φ̇ = m l² sin²θ φ̇", "undecided",
+         ("Your last side is right, but side 2 does not say the same: a person will decide which is your answer.",)),
+        (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ̇ = {_P_PHI_WORKED} = m l² φ̇", "not_equivalent",
+         ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+          " on θ.", "Your answer has 3 sides after the name; the last was graded as your answer.")),
+        (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ = {_P_PHI_WORKED} = m l² sin²θ φ̇", "undecided",
+         (_misstated("p_φ = ∂L/∂φ", "p_φ"),
+          "Your answer has 3 sides after the name; the last was graded as your answer.")),
+    ],
+)  # fmt: skip
+def test_a_definition_then_working_then_the_value_is_graded_by_the_last_side(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="expression", **SPHERICAL)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # before, the name at the end was graded as the value, undefined and wrong
+        ("p_φ = m l² sin²θ φ̇ = L_z", "undecided",
+         ("Your answer is labelled L_z, but the quantity asked for is p_φ. Read as p_φ, it is right; a person will"
+          " check which you meant.", "Your answer has 2 sides after the name; the last was graded as your answer.")),
+        ("p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇ = L_z", "undecided",
+         ("Your answer is labelled L_z, but the quantity asked for is p_φ. Read as p_φ, it is right; a person will"
+          " check which you meant.", "Your answer has 3 sides after the name; the last was graded as your answer.")),
+        ("p_φ = m l² φ̇ = L_z", "not_equivalent",
+         ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+          " on θ.", "Your answer is labelled L_z, but the quantity asked for is p_φ.",
+          "Your answer has 2 sides after the name; the last was graded as your answer.")),
+    ],
+)  # fmt: skip
+def test_a_chain_that_ends_in_a_name_of_its_own_names_the_value_again(submitted, status, feedback):
+    verdict = compare(SPHERICAL_P_PHI, submitted, kind="expression", **SPHERICAL, name="p_phi")
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
 L_TEX = r"\frac12 m l^2 \dot\theta^2 + m g l \cos\theta"

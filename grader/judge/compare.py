@@ -200,10 +200,14 @@ def compare(
     forms = _small_angle_forms(spec, prepared, submitted, left, values) if verdict.status != "equivalent" else None
     if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
         return forms
-    chain = _chained(submitted) if verdict.status == "invalid" and spec.parsed and spec.shape else None
+    # H = p_θ θ̇ − L, then H = …: read as typed, H's value is put into the first line, and L is undefined
+    unread = verdict.status == "invalid" or verdict.diagnosis == "undefined_symbol"
+    chain = _chained(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
-        if chained.status != "invalid":
+        # where the lines could be read as typed, only a definition we know makes the first line one (not L = … + q)
+        known = verdict.status == "invalid" or _defines_as_known(chain[0], prepared, values)
+        if chained.status != "invalid" and chained.diagnosis != "undefined_symbol" and known:
             # where an expression is asked, the chain is the answer; in a system, it is one of its lines
             key = "lines_as_chain" if spec.shape == "expression" else "lines_as_one_chain"
             note = say(key, count=chain[1], label=chain[2])
@@ -256,6 +260,18 @@ def _rounded(spec: Kind, expected: Expected, submitted: str, timeout: float, giv
             key = "rounded_decimal" if len(decimals) == 1 else "rounded_decimals"
             return Outcome("not_equivalent", 0.0, key, {"decimals": shown}, method="rounded")
     return None
+
+
+def _defines_as_known(chain: str, expected: Expected, given: tuple) -> bool:
+    """Whether ``chain`` states on its way a definition whose rightness is known (:func:`_definition_judged`:
+    ``H = p_θ θ̇ − L``, ``p_φ = ∂L/∂φ̇``), and no other."""
+    names = sorted(expected.names | {symbol.name for symbol, _ in given})
+    read = parse_answer(chain, coords=expected.setting.coords, known=names)
+    return (
+        read.ok
+        and bool(read.stated)
+        and all(_definition_judged(stated.lhs, stated.rhs, expected) is not None for stated in read.stated)
+    )
 
 
 def _right_but_said(verdict: Verdict, key: str, **details) -> Verdict:
@@ -435,13 +451,20 @@ def _cut(text: str, at: Callable[[int, int], bool]) -> list[str]:
 _EQUALS = re.compile(r"(?<![=<>:!])=(?![=>])")
 
 
+# a chain's label: a name (L, p_φ, L(θ, θ̇)), or a momentum by its definition (∂L/∂φ̇)
+_SIDES_LABEL = re.compile(r"\s*(?:[^\W\d][\w\s(),'̇]*|∂\s*[A-Za-z]\w*\s*/\s*∂\s*[^\W\d]\w*̇\s*)")
+
+
+_ONE_NAME = re.compile(r"[^\W\d]\w*")  # L_z, p_z, E: a name alone, no product (m l²) nor call (L(θ))
+
+
 def _sides(text: str) -> list[str] | None:
     """``L = ½ m (l θ̇)² + … = ½ m l² θ̇² + …`` on one line: ``L = `` with each side after it, where
     the first is a name (a label) and there are two to six sides after it; else None."""
     if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip():
         return None
     label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
-    if not re.fullmatch(r"\s*[^\W\d][\w\s(),'̇]*", label) or not 2 <= len(sides) <= _MAX_LINES:
+    if not _SIDES_LABEL.fullmatch(label) or not 2 <= len(sides) <= _MAX_LINES:
         return None
     sides = [side.strip() for side in sides]
     if not all(sides):
@@ -449,6 +472,8 @@ def _sides(text: str) -> list[str] | None:
     lines = [f"{label.strip()} = {side}" for side in sides]
     if is_arbitrary_constant(canonical_name(sides[-1])):  # ẍ = … = const: the value before it is said constant
         lines[-1] = f"{sides[-2]} = {sides[-1]}"
+    elif _ONE_NAME.fullmatch(sides[-1]) and not _ONE_NAME.fullmatch(sides[-2]):
+        lines[-1] = f"{sides[-1]} = {sides[-2]}"  # p_φ = m l² sin²θ φ̇ = L_z: the value named again, not a value
     return lines
 
 
@@ -460,12 +485,20 @@ def _judge_lines(
     ``parts="side"``, a chain ``L = … = …`` (each given as ``L = side``). Where each reads alone as
     the thing asked for, the last is graded; where it is right but an earlier one is not the same,
     which is the answer is for a person to say. Otherwise the whole, as it was."""
-    verdicts = []
-    for line in lines:
+    verdicts, definition = [], None
+    for number, line in enumerate(lines):
         started = time.monotonic()
         if timeout <= 0:
             return whole
+        label, _, side = line.partition("=")
+        if definition is not None and label.strip() == definition.partition("=")[0].strip():
+            line = f"{definition} = {side.strip()}"  # p_φ = ∂L/∂φ̇ = … = …: each side after the definition, as typed
         verdict = _judge(spec, expected, line, timeout, given)
+        if verdict.status == "invalid" and parts == "side" and number == 0 and len(lines) > 2:
+            # ∂L/∂φ̇ or Σ p q̇ − L alone is no value the parser reads, only a chain's definition
+            definition = line
+            timeout -= time.monotonic() - started
+            continue
         if verdict.status == "invalid" or verdict.diagnosis in (*_ONE_THING_ASKED, "expected_equation"):
             return whole
         verdicts.append(verdict)
@@ -476,7 +509,7 @@ def _judge_lines(
     # L = T − V = …: a side in names of the answer's own is its definition, not a step to check
     wrong = [
         str(number)
-        for number, verdict in enumerate(earlier, start=1)
+        for number, verdict in enumerate(earlier, start=1 + (definition is not None))
         if verdict.status != "equivalent" and not (parts == "side" and verdict.diagnosis == "undefined_symbol")
     ]
     count = {"count": len(lines), "parts": f"{parts}s" + (" after the name" if parts == "side" else "")}
@@ -739,7 +772,7 @@ def _shown_statement(statement: sympy.Eq) -> str:
     product of its sum's symbol."""
     replacements = {}
     for symbol in statement.rhs.free_symbols:
-        found = re.fullmatch(r"d([LT])_d(\w+?)(dot)?", symbol.name)
+        found = re.fullmatch(r"d([LTVU])_d(\w+?)(dot)?", symbol.name)
         if found:
             replacements[symbol] = sympy.Symbol(f"∂{found[1]}/∂{unicode_name(found[2], 1 if found[3] else 0)}")
     terms = []
@@ -826,13 +859,43 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
                 return False  # H = Σ p q̇ + L, H = L − Σ p q̇
             coefficient, term = rest.as_coeff_Mul()
             return True if coefficient == 1 and term.is_Mul and not term.has(lagrangian) else None  # H = Σ p q̇ − L
+        if name == "H" and side.has(lagrangian):
+            return _sum_written_out(side, lagrangian, expected)
         return None
+    force = re.fullmatch(r"Q_?([A-Za-z]\w*)", name)
+    if force is not None:  # Q_r = −∂V/∂r; ∂V/∂r, or ∂V/∂θ for Q_r, is wrong
+        coefficient, quotient = side.as_coeff_Mul()
+        gradient = re.fullmatch(r"d[VU]_d(\w+)", quotient.name) if quotient.is_Symbol else None
+        if gradient is None or coefficient not in (1, -1):
+            return None
+        return coefficient == -1 and gradient[1].replace("_", "") == force[1].replace("_", "")
     momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
     derivative = re.fullmatch(r"d[LT]_d(\w+)", side.name) if side.is_Symbol else None
     if not momentum or not derivative:
         return None
     wanted = momentum[1].replace("_", "") + "dot"  # p_θ₁ is ∂L/∂θ̇₁: dL_dtheta_1dot
     return derivative[1].replace("_", "") == wanted
+
+
+def _sum_written_out(side, lagrangian: sympy.Symbol, expected: Expected) -> bool | None:
+    """Whether ``H = p_θ θ̇ + p_φ φ̇ − L``, Σ p q̇ − L written out over the problem's coordinates, is
+    right: each coordinate's momentum times its velocity once, then − L. A term left out or + L is
+    wrong; a side that is no such sum (``H = p_θ θ̇ − L + V``) is None."""
+    coords = {name.replace("_", "") for name in expected.setting.coords}
+    rest = side - side.coeff(lagrangian) * lagrangian
+    found = []
+    for term in sympy.Add.make_args(rest):
+        momentum, velocity = term.as_independent(sympy.Derivative, as_Add=False)
+        named = re.fullmatch(r"p_?(\w*)", momentum.name) if momentum.is_Symbol else None
+        if named is None or not isinstance(velocity, sympy.Derivative) or velocity.derivative_count != 1:
+            return None
+        coordinate = velocity.expr.func.__name__.replace("_", "")
+        if named[1].replace("_", "") not in (coordinate, "" if len(coords) == 1 else coordinate):
+            return None
+        found.append(coordinate)
+    if sorted(found) != sorted(set(found)) or not set(found) <= coords or not found:
+        return None
+    return side.coeff(lagrangian) == -1 and set(found) == coords
 
 
 def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tuple[ParsedAnswer, tuple]:
@@ -1173,9 +1236,17 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     multiple = _energy_multiple(value.lhs, expected.option("name"), _energy_sums(expected)) if energies else None
     if multiple is not None:  # V − T = −L, 2(T − V) = 2L: L's value
         return ParsedAnswer(answer.text, value.rhs / multiple, "expression")
-    if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef)):
+    # k L = …: the name times a factor of the student's own is no label, and L is not the value. A
+    # sentence read as a product (The Lagrangian is L = …) holds words, which are no factors
+    factors = {symbol.name for symbol in value.lhs.free_symbols} - (undefined & _words(value.lhs))
+    scaled_by_name = value.lhs.is_Mul and len(factors) > 1
+    if named or (undefined and not defined and not value.lhs.atoms(AppliedUndef) and not scaled_by_name):
         return ParsedAnswer(answer.text, value.rhs, "expression")
-    if undefined & _DEFINING and not {symbol.name for symbol in value.rhs.free_symbols} - expected.names:
+    if (
+        undefined & _DEFINING
+        and not scaled_by_name
+        and not {symbol.name for symbol in value.rhs.free_symbols} - expected.names
+    ):
         return ParsedAnswer(answer.text, value.rhs, "expression")  # p_θ θ̇ − L = …: the definition, worked
     return answer
 
@@ -1238,6 +1309,11 @@ def _energy_multiple(side, names, sums: Mapping = _ENERGY_SUMS) -> sympy.Expr | 
     return None
 
 
+def _words(side) -> set[str]:
+    """The names in ``side`` that are words, two letters or more (``The``, ``is``): not a symbol's name (k, p_φ)."""
+    return {symbol.name for symbol in side.free_symbols if re.fullmatch(r"[A-Za-z]{2,}", symbol.name)}
+
+
 _DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines one by the other
 
 
@@ -1268,7 +1344,13 @@ def _without_arbitrary_constant(answer: ParsedAnswer, spec: Kind, expected: Expe
     value = answer.value
     if not allowed or answer.kind != "expression":
         return answer
-    present = {symbol.name for symbol in value.free_symbols if is_arbitrary_constant(symbol.name)}
+    # V₀ for a potential, L₀ for a Lagrangian: the quantity's own name for its value at the zero chosen, and
+    # in a Lagrangian the potential's (L = T − V, with V's zero anywhere)
+    named = (*(expected.option("name") or ()), *(("V", "U") if spec.name == "lagrangian" else ()))
+    zeros = {f"{name}_0" for name in named}
+    present = {
+        symbol.name for symbol in value.free_symbols if is_arbitrary_constant(symbol.name) or symbol.name in zeros
+    }
     for name in sorted(present - expected.names):
         constant = sympy.Symbol(name)
         rest, term = value.as_independent(constant, as_Add=True)
@@ -1497,14 +1579,19 @@ def _without_words(
     without = _formula_before_words(submitted, expected, names, deadline)
     if without is not None and not _undefined(without[0], names):
         return without
+    # Dimension of force: Q_θ = …, a line's label the parser read past: no sentence before its own label
+    labelled = answer.ok and not _undefined(_without_label(answer), names)
     for words, formula in words_then_formula(submitted, names, coords):
         before = (_words_note("words_before_left_out", words, expected), {"words": _shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
         zero = _ZERO_THEN_WORDS.search(formula)  # … = 0 is wrong: 0 times the words is 0, as at the top
-        if read.ok and not _undefined(read, names) and zero is None:
+        # The generalized force along r is Q_r = …: a label the sentence names is no undefined name
+        undefined = _undefined(read if labelled else _without_label(read), names) if read.ok else True
+        if not undefined and zero is None:
             return read, (before,)
         after = _formula_before_words(formula, expected, names, deadline)
-        if after is not None and not _undefined(after[0], names):
+        # The Hamiltonian is H = …, the total energy: the label H is named by the sentence, not undefined
+        if after is not None and not _undefined(_without_label(after[0]), names):
             return after[0], (before, *after[1])
         if read.ok and not _undefined(read, names):
             return read, (before,)
@@ -1595,6 +1682,14 @@ def _shown(words: str) -> str:
 
 def _undefined(answer: ParsedAnswer, names: list) -> bool:
     return any(symbol.name not in names for symbol in answer.symbols)
+
+
+def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
+    """``H = …`` as its value, where the left side is a name alone; any other answer as it is."""
+    value = answer.value
+    if answer.kind == "equation" and value.lhs.is_Symbol and value.lhs != TIME:
+        return ParsedAnswer(answer.text, value.rhs, "expression")
+    return answer
 
 
 def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadline) -> ParsedAnswer | None:

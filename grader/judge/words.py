@@ -24,7 +24,8 @@ reads the words. So it is with a sentence that leads to the formula: ``The angul
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have. Words that may say
 the formula is other than written (``… upward``, ``… inverted``), doubt it (``… (not sure about
-the sign)``) or judge it (``…, which is false``), are read past too, but :func:`says_otherwise` marks
+the sign)``), deny (``… (friction is not in L)``: "not", and no "or" nor arithmetic) or judge it
+(``…, which is false``), are read past too, but :func:`says_otherwise` marks
 them for a person to read before a right formula earns its credit; so are words that name a quantity
 (:func:`quantities_named`: ``…, which is the Hamiltonian``) other than the one the part asks for.
 
@@ -145,13 +146,15 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     """Whether ``words`` are about an answer, not more of it: no sign or word of arithmetic, no
     number in digits, no "or" or "not"; and they cannot be read, or use a name that is neither
     the problem's (``names``) nor a unit. With ``doubt``, words that doubt the answer (``not sure
-    about the sign, maybe minus``) may say "or", "not" and arithmetic in words: they are for a
-    person to read (:func:`says_otherwise`), beside a formula; not beside a number, where they
-    may offer another."""
+    about the sign, maybe minus``) may say "or", "not" and arithmetic in words, and words that deny
+    (``friction is not in L``) "not": they are for a person to read (:func:`says_otherwise`), beside a
+    formula; not beside a number, where they may offer another."""
     words = _EULER_LAGRANGE.sub("EulerLagrange", words)  # a name's hyphen, not a minus sign
+    words = _WORD_HYPHEN.sub(lambda found: _joined(found, names), words)  # small-angle: no minus sign either
     if not words or _MATH_SIGNS & set(words) or _NUMBER.search(words):
         return False
-    if not (doubt and _DOUBT.search(words)) and (_MATH_WORDS.search(words) or _HEDGE.search(words)):
+    doubted = doubt and (_DOUBT.search(words) or _denies_only(words))
+    if not doubted and (_MATH_WORDS.search(words) or _HEDGE.search(words)):
         return False
     if _APPLIED.search(words):
         return False
@@ -161,14 +164,53 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
 
 
+# two words of prose joined by a hyphen: small-angle, time-independent, z-component (not θ-φ, g-l or theta-phi)
+_WORD_HYPHEN = re.compile(r"(?<![\w\\])([A-Za-z]+)-([A-Za-z]{3,})(?!\w)")
+
+
+def _joined(found: re.Match, names: Collection[str]) -> str:
+    """``small-angle`` as one word, where both are words of prose; else as typed, a minus sign between names."""
+    if all(_is_word(word, names, ()) for word in found.groups()):
+        return found[1] + found[2]
+    return found[0]
+
+
+def _denied(remark: str) -> bool:
+    """``(not T + V)``: a remark in brackets that ends the answer and denies what follows "not", a formula
+    as well as words. It says what the answer is not; a person reads it (:func:`says_otherwise`)."""
+    found = _DENIED.match(remark)
+    if found is None or "\n" in remark:
+        return False
+    depth = 0
+    for i, character in enumerate(remark):
+        depth += (character == "(") - (character == ")")
+        if depth == 0:  # where the bracket closes: nothing but marks of punctuation after it
+            return not remark[i + 1 :].strip(" .;!")
+    return False
+
+
+_DENIED = re.compile(r"\(\s*(?:not|never|isn't)\b", re.I)
+
+
+def _denies_only(words: str) -> bool:
+    """``(friction is not in L)``: words that say "not" and no "or" nor arithmetic; beside a formula they
+    are no second formula, and a person reads what they deny (:func:`says_otherwise`)."""
+    return bool(_NOT.search(words)) and not _OR.search(words) and not _MATH_WORDS.search(words)
+
+
+_NOT = re.compile(r"\b(?:not|never|isn't)\b", re.I)
+_OR = re.compile(r"\bor\b", re.I)
+
+
 def says_otherwise(words: str) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
-    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``), or judges it
+    (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``) or denies, or judges it
     (``which is false``, ``sign error``), or says what kind of quantity it is (``it is a force``): a
     person must read it before the formula earns credit."""
     return bool(
         _OTHERWISE.search(words)
         or _DOUBT.search(words)
+        or _NOT.search(words)
         or _JUDGED.search(words)
         or _A_QUANTITY.match(words)
         or _dimensions(words)
@@ -195,7 +237,8 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     """``θ̈ = −(g/l) θ for small angles``: the ways to read ``text`` as (a formula, prose after it).
     The prose begins at the first word that is none of the problem's names, spellings or
     functions, or at the mark of punctuation before it (``…, a nonlinear equation``), and must be
-    prose (:func:`is_prose`). The formula is not checked here: the caller reads each in turn."""
+    prose (:func:`is_prose`), or a remark in brackets that ends the text and denies (``(not T + V)``).
+    The formula is not checked here: the caller reads each in turn."""
     if len(text) > _LENGTH:
         return
     word = next((found for found in _WORD.finditer(text) if _is_word(found[0], names, coords)), None)
@@ -209,7 +252,7 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     for start in dict.fromkeys((cut, mark if mark > line else -1)):
         formula, rest = text[:start].rstrip(), text[start:].strip()
         remark = rest.lstrip(_OPENS)
-        if start > 0 and formula and (is_prose(remark, names, doubt=True) or _dimensions(remark)):
+        if start > 0 and formula and (is_prose(remark, names, doubt=True) or _dimensions(remark) or _denied(rest)):
             yield formula, rest
 
 

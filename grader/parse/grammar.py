@@ -428,12 +428,13 @@ class _Parser:
         return any(symbol not in defined for symbol in side.free_symbols) or bool(self.rates_in(side))
 
     def side(self, label):
-        """The next side of an equation; after a label, ∂L/∂φ̇ may be one (a definition)."""
+        """The next side of an equation; after a label, ∂L/∂φ̇ or −∂V/∂r may be one (a definition)."""
         if label is not None:
-            quotient = self._partial_quotient(self.i)
+            negated = self.token.is_op("-")  # Q_r = −∂V/∂r = …, as the prompts define a generalized force
+            quotient = self._partial_quotient(self.i + negated)
             if quotient is not None and self.tokens[quotient[0]].is_op("="):
                 self.i, name = quotient
-                return sympy.Symbol(name)
+                return -sympy.Symbol(name) if negated else sympy.Symbol(name)
         return self.over()
 
     def _euler_lagrange_operator(self, i: int) -> int | None:
