@@ -1514,7 +1514,7 @@ def _read(
             notes = (("words_for_a_person", {"words": _shown(said)}),)
         return answer, notes
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
-    unit = spec.name == "number" and bool(expected.option("unit"))
+    unit = str(expected.option("unit") or "") if spec.name == "number" else ""
     measured = spec.name == "number"  # a count has no decimal comma, nor an uncertainty
     text, answer, notes = read_number(
         submitted, reads, names, decimal_comma=measured, unit=unit, uncertainty=measured, count=not measured

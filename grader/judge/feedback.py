@@ -86,6 +86,8 @@ FEEDBACK: dict[str, str] = {
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
     "uncertainty_left_out": "Read without its uncertainty, `{error}`: the value is what is graded.",
+    "statements_left_out": "Graded `{graded}`, your value in {unit}; the rest of your answer (`{others}`) is not"
+    " graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
     "count_bracket_for_a_person": "Your count `{value}` is followed by `{rest}`, which does not come to {value}:"
