@@ -976,6 +976,27 @@ def test_a_count_the_part_names_is_read_at_its_name(expected, submitted, status)
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
 
 
+NAMED_FINAL = "Graded your final value, `{}`; the working before it is not graded."
+NAMED_REST = "Graded the number `{}`; what follows it (`{}`) is not graded."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "feedback"),
+    [
+        # before, the chain refused as a list gave the last value, k's: graded as 4, and not right
+        ("2", "n = 6 − 4 = 2, k = 4", "equivalent", ("Correct.", NAMED_FINAL.format(2), NAMED_REST.format(2, "k = 4"))),
+        ("4", "n = 6 − 4 = 2, k = 4", "not_equivalent",
+         ("Not equivalent to the expected answer.", NAMED_FINAL.format(2), NAMED_REST.format(2, "k = 4"))),
+        # and a wrong count is not graded at k's value, which here is right
+        ("2", "n = 6 − 2 = 4, k = 2", "not_equivalent",
+         ("Not equivalent to the expected answer.", NAMED_FINAL.format(4), NAMED_REST.format(4, "k = 2"))),
+    ],
+)  # fmt: skip
+def test_a_chain_the_part_names_is_read_at_its_name(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}
 
 

@@ -1517,7 +1517,14 @@ def _read(
     unit = str(expected.option("unit") or "") if spec.name == "number" else ""
     measured = spec.name == "number"  # a count has no decimal comma, nor an uncertainty
     text, answer, notes = read_number(
-        submitted, reads, names, decimal_comma=measured, unit=unit, uncertainty=measured, count=not measured
+        submitted,
+        reads,
+        names,
+        decimal_comma=measured,
+        unit=unit,
+        uncertainty=measured,
+        count=not measured,
+        asked=expected.option("name") or (),
     )
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)

@@ -106,6 +106,7 @@ def read_number(
     unit: str = "",
     uncertainty: bool = False,
     count: bool = False,
+    asked: Collection[str] = (),
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """The text to judge, its reading (None: read it as typed, and say why it fails), and notes.
 
@@ -116,7 +117,8 @@ def read_number(
     (``T = 2.006 s, f = 0.498 Hz``) grades the one in that unit; ``uncertainty`` (a measured value may
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
     ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9, as
-    is ``2 (not 4)``.
+    is ``2 (not 4)``. ``asked`` are the names of the quantity asked for, where the part gives them: of
+    ``n = 6 − 4 = 2, k = 4``, n's value is graded.
 
     Words that take a number back or doubt it (``6 − 4 = 2? no, 4``), or may make it another (``at most
     2``), send the answer to a person, with a note that says so: which is the answer is not for the checker
@@ -125,7 +127,7 @@ def read_number(
     # a side of working is read again: for the final value, for working that does not hold, and beside words
     reads = lru_cache(maxsize=None)(reads)
     prepared, answer, notes = _read_number(
-        text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+        text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
     )
     lines = _lines(text) if len(text) <= _LENGTH and _SEPARATED.search(text) else [text]
     said = lines[0] if len(lines) == 1 else text
@@ -143,14 +145,17 @@ def _read_number(
     unit: str,
     uncertainty: bool,
     count: bool,
+    asked: Collection[str] = (),
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """:func:`read_number`, but for the words around the number that a person must read."""
     unequal = _NOT_EQUAL.fullmatch(text) if count and len(text) <= _LENGTH else None
     if unequal:
-        return _unequal(unequal, reads, names)
+        return _unequal(unequal, reads, names, asked=asked)
     ruled_out = _ruled_out(text) if count else None
     if ruled_out:
-        return _unequal(ruled_out, reads, names, rest=ruled_out["rest"].lstrip(", "))  # as other remarks are
+        return _unequal(
+            ruled_out, reads, names, rest=ruled_out["rest"].lstrip(", "), asked=asked
+        )  # as other remarks are
     uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
     if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s, 2.006(1) s: the value is graded, its uncertainty is not
         if uncertain["cvalue"]:
@@ -182,13 +187,22 @@ def _read_number(
         lines = _lines(text)
         if len(lines) == 1 and lines[0] != text:  # 6 − 4 = 2; with nothing after: one line, as typed
             return _read_number(
-                lines[0], reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+                lines[0],
+                reads,
+                names,
+                decimal_comma=decimal_comma,
+                unit=unit,
+                uncertainty=uncertainty,
+                count=count,
+                asked=asked,
             )
-        worked = _worked_over_lines(text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+        worked = _worked_over_lines(
+            text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+        )
         if worked is not None:
             return worked
     # n = 2 since k = 4: read as typed, a list whose last new name, k, would be taken for the answer
-    given = _given(text, reads, names, decimal_comma, unit, count) if len(text) <= _LENGTH else None
+    given = _given(text, reads, names, decimal_comma, unit, count, asked) if len(text) <= _LENGTH else None
     if given is not None and given[1] is not None:
         return given
     prepared, notes = _spelled(text, decimal_comma, unit)
@@ -202,7 +216,7 @@ def _read_number(
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
     pieces, runs = _sides(bare)
     last = len(pieces) - 1
-    listed = _listed(text, pieces, reads, names, decimal_comma, unit, count)
+    listed = _listed(text, pieces, reads, names, decimal_comma, unit, count, asked)
     if listed is not None:
         return listed
     # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
@@ -250,7 +264,7 @@ _SIDES = 12  # sides of the lines before the last, at the most: each is read
 
 
 def _worked_over_lines(
-    text: str, reads, names, *, decimal_comma: bool, unit: str, count: bool
+    text: str, reads, names, *, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
 ) -> tuple[str, ParsedAnswer | None, tuple] | None:
     """``6 − 2 = 4; 6 − 4 = 2``, or the same on lines: working over several lines, each before the last
     a chain of numbers (``6 − 2 = 4``, ``2π√(1/9.81) = 2.006 s``), is graded at the value of the last
@@ -277,7 +291,7 @@ def _worked_over_lines(
         if false is None and _false_working(pieces, runs, values[-1], (reads, decimal_comma, unit, count)):
             false = line
     prepared, answer, notes = _read_number(
-        final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
+        final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count, asked=asked
     )  # an uncertainty in the text was read past before (see _UNCERTAINTY_INSIDE)
     if answer is None:
         return None
@@ -480,11 +494,13 @@ def _ruled_out(text: str) -> re.Match | None:
     return found
 
 
-def _unequal(found: re.Match, reads, names, rest: str | None = None) -> tuple[str, ParsedAnswer | None, tuple]:
+def _unequal(
+    found: re.Match, reads, names, rest: str | None = None, asked: Collection[str] = ()
+) -> tuple[str, ParsedAnswer | None, tuple]:
     """``9 − 3 = 6 ≠ 9``, ``2 (not 4)``: the count before ``≠`` (or the bracket), read as any count is,
     with a note that the number it rules out (``rest``, as typed; else ``≠ 9``) was not graded. As typed
     (refused, for its sign or its "not") where that count is the number it rules out, or is none."""
-    prepared, answer, notes = read_number(found["value"], reads, names, count=True)
+    prepared, answer, notes = read_number(found["value"], reads, names, count=True, asked=asked)
     other = int(NUMBER_WORDS.get(found["other"].lower(), found["other"]))
     value = _value_of(answer)
     if value is None or value == other:
@@ -503,12 +519,16 @@ def _value_of(answer: ParsedAnswer | None):
     return value if value.is_number else None
 
 
-def _listed(text: str, pieces: list[str], reads, names, decimal_comma: bool, unit: str, count: bool):
+def _listed(
+    text: str, pieces: list[str], reads, names, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
+):
     """``n = 3N − k = 6 − 4 = 2, k = 4``: statements joined by a comma, the last a name's value with no
     working, where that name was used in the working before it. It is a value the working was done
     with, not the answer: the statement before it is graded, with a note that the value was not (as
-    ``2, since k = 4`` is). None for any other text, whose last statement is graded (``ω = √9.81 =
-    3.13, T = 2π/3.13 = 2.006 s``, and ``n = 2, k = 4``, where which name is asked is not known)."""
+    ``2, since k = 4`` is). So too where the working is labelled with the name ``asked`` and the value
+    is another's (``n = 6 − 4 = 2, k = 4``, where n is asked). None for any other text, whose last
+    statement is graded (``ω = √9.81 = 3.13, T = 2π/3.13 = 2.006 s``, and ``n = 2, k = 4``, where which
+    name is asked is not known)."""
     last = len(pieces) - 1
     found = _LISTED_NAME.search(pieces[last - 1]) if last >= 2 else None
     if found is None:
@@ -518,9 +538,12 @@ def _listed(text: str, pieces: list[str], reads, names, decimal_comma: bool, uni
     before = " = ".join(pieces[start : last - 1])
     said = list(_NAME_SAID.finditer(text))
     # one such value: more, and the head is read again for each, each time read whole (a hostile answer's cost)
-    if len(said) == 1 and said[0][1] == name and re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before):
+    labelled = start and pieces[0] in asked and name not in asked
+    if len(said) == 1 and said[0][1] == name and (labelled or re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before)):
         head, rest = text[: said[0].start()], text[said[0].start() + 1 :].strip()
-        prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+        prepared, answer, notes = read_number(
+            head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+        )
         if answer is None:
             return None
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
@@ -761,7 +784,7 @@ def _counted(inside: str, names: Collection[str]) -> tuple[object, bool] | None:
 
 
 def _given(
-    text: str, reads, names, decimal_comma: bool, unit: str, count: bool
+    text: str, reads, names, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
 ) -> tuple[str, ParsedAnswer | None, tuple] | None:
     """``2.006 s, since l = 1 m``, ``n = 3N − k, where N = 1, k = 2``: a number or a formula, then the
     values it was worked out with. The number is graded, and the note says the rest was not; a
@@ -772,7 +795,9 @@ def _given(
     if found is None or not found.start():
         return None
     head, values = text[: found.start()], text[found.end() :]
-    prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+    prepared, answer, notes = read_number(
+        head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+    )
     if answer is not None:
         shown = text[found.start() :].strip(" ,")
         shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
