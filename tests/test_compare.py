@@ -894,6 +894,34 @@ def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, s
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
 
 
+SIGN_OPEN = (
+    "Your answer gives `{}`: {} leaves the sign open, and the quantity asked for may be negative. A person will"
+    " check which root you meant."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "options", "feedback", "read_as"),
+    [
+        # before, read as its positive root, m l² sin²θ |φ̇|, and told falsely that a term in sin θ was wrong
+        ("p_φ² = m² l⁴ sin⁴θ φ̇²", {}, SIGN_OPEN.format("p_φ^2", "a square"), "p_φ^2 = l^4*m^2*sin(θ)^4*φ̇^2"),
+        ("p_φ² = m² l⁴ sin⁴θ φ̇²", {"name": "p_phi"}, SIGN_OPEN.format("p_φ^2", "a square"),
+         "p_φ^2 = l^4*m^2*sin(θ)^4*φ̇^2"),
+        ("p_phi^2 = (m l^2 sin(theta)^2 phidot)^2", {}, SIGN_OPEN.format("p_φ^2", "a square"),
+         "p_φ^2 = l^4*m^2*sin(θ)^4*φ̇^2"),
+        ("p_φ⁴ = m⁴ l⁸ sin⁸θ φ̇⁴", {}, SIGN_OPEN.format("p_φ^4", "an even power"), "p_φ^4 = l^8*m^4*sin(θ)^8*φ̇^4"),
+    ],
+)  # fmt: skip
+def test_a_square_of_a_signed_quantity_right_as_a_square_goes_to_a_person(submitted, options, feedback, read_as):
+    verdict = compare(MOMENTUM_PHI, submitted, kind="expression", **SPHERICAL, **options)
+    assert (verdict.status, verdict.score, verdict.feedback, verdict.read_as) == (
+        "undecided",
+        0.0,
+        (feedback,),
+        read_as,
+    )
+
+
 _L_AND_K = (
     "Your answer uses `L` and `k`, which this problem does not define (it uses g, l, m, θ). Write your answer in"
     " those, or say what each stands for: …, where L = …."
