@@ -894,6 +894,34 @@ def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, s
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
 
 
+SIGN_OPEN = (
+    "Your answer gives `{}`: {} leaves the sign open, and the quantity asked for may be negative. A person will"
+    " check which root you meant."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "options", "feedback", "read_as"),
+    [
+        # before, read as its positive root, m l² sin²θ |φ̇|, and told falsely that a term in sin θ was wrong
+        ("p_φ² = m² l⁴ sin⁴θ φ̇²", {}, SIGN_OPEN.format("p_φ^2", "a square"), "p_φ^2 = l^4*m^2*sin(θ)^4*φ̇^2"),
+        ("p_φ² = m² l⁴ sin⁴θ φ̇²", {"name": "p_phi"}, SIGN_OPEN.format("p_φ^2", "a square"),
+         "p_φ^2 = l^4*m^2*sin(θ)^4*φ̇^2"),
+        ("p_phi^2 = (m l^2 sin(theta)^2 phidot)^2", {}, SIGN_OPEN.format("p_φ^2", "a square"),
+         "p_φ^2 = l^4*m^2*sin(θ)^4*φ̇^2"),
+        ("p_φ⁴ = m⁴ l⁸ sin⁸θ φ̇⁴", {}, SIGN_OPEN.format("p_φ^4", "an even power"), "p_φ^4 = l^8*m^4*sin(θ)^8*φ̇^4"),
+    ],
+)  # fmt: skip
+def test_a_square_of_a_signed_quantity_right_as_a_square_goes_to_a_person(submitted, options, feedback, read_as):
+    verdict = compare(MOMENTUM_PHI, submitted, kind="expression", **SPHERICAL, **options)
+    assert (verdict.status, verdict.score, verdict.feedback, verdict.read_as) == (
+        "undecided",
+        0.0,
+        (feedback,),
+        read_as,
+    )
+
+
 _L_AND_K = (
     "Your answer uses `L` and `k`, which this problem does not define (it uses g, l, m, θ). Write your answer in"
     " those, or say what each stands for: …, where L = …."
@@ -974,6 +1002,27 @@ def test_a_multiple_of_a_name_in_a_count_is_working_not_the_counts_name(expected
 def test_a_count_the_part_names_is_read_at_its_name(expected, submitted, status):
     verdict = compare(expected, submitted, kind="integer", name="n")
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
+
+
+NAMED_FINAL = "Graded your final value, `{}`; the working before it is not graded."
+NAMED_REST = "Graded the number `{}`; what follows it (`{}`) is not graded."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "feedback"),
+    [
+        # before, the chain refused as a list gave the last value, k's: graded as 4, and not right
+        ("2", "n = 6 − 4 = 2, k = 4", "equivalent", ("Correct.", NAMED_FINAL.format(2), NAMED_REST.format(2, "k = 4"))),
+        ("4", "n = 6 − 4 = 2, k = 4", "not_equivalent",
+         ("Not equivalent to the expected answer.", NAMED_FINAL.format(2), NAMED_REST.format(2, "k = 4"))),
+        # and a wrong count is not graded at k's value, which here is right
+        ("2", "n = 6 − 2 = 4, k = 2", "not_equivalent",
+         ("Not equivalent to the expected answer.", NAMED_FINAL.format(4), NAMED_REST.format(4, "k = 2"))),
+    ],
+)  # fmt: skip
+def test_a_chain_the_part_names_is_read_at_its_name(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
 DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}

@@ -213,6 +213,40 @@ def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback,
     assert (verdict.status, verdict.feedback, verdict.read_as) == (status, feedback, read_as)
 
 
+LEFT_OUT = "Graded `{}`, your value in s; the rest of your answer (`{}`) is not graded."
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback", "read_as"),
+    [
+        # before, graded at the last statement, f, and told it was in 1/s; or refused
+        ("T = 2.006 s, f = 0.498 Hz", "equivalent", ("Correct.", LEFT_OUT.format("T = 2.006 s", "f = 0.498 Hz")),
+         "2.006"),
+        ("T = 2.006 s; f = 0.498 Hz", "equivalent", ("Correct.", LEFT_OUT.format("T = 2.006 s", "f = 0.498 Hz")),
+         "2.006"),
+        ("T = 2.006 s (f = 0.498 Hz)", "equivalent", ("Correct.", LEFT_OUT.format("T = 2.006 s", "f = 0.498 Hz")),
+         "2.006"),
+        ("f = 0.498 Hz, T = 2.006 s", "equivalent", ("Correct.", LEFT_OUT.format("T = 2.006 s", "f = 0.498 Hz")),
+         "2.006"),
+        ("ω = √(9.81) = 3.13 rad/s\nT = 2π/ω = 2.006 s", "equivalent",
+         ("Correct.", LEFT_OUT.format("T = 2π/ω = 2.006 s", "ω = √(9.81) = 3.13 rad/s")), "2.006"),
+        ("T = 2π√(l/g) = 2.006 s, l = 1 m, g = 9.81 m/s^2", "equivalent",
+         ("Correct.", LEFT_OUT.format("T = 2π√(l/g) = 2.006 s", "l = 1 m, g = 9.81 m/s^2")), "2.006"),
+        # a wrong value in the unit asked stays wrong
+        ("T = 2.1 s, f = 0.498 Hz", "not_equivalent",
+         ("Not within the accepted tolerance.", LEFT_OUT.format("T = 2.1 s", "f = 0.498 Hz")), "2.1"),
+        ("f = 0.498 Hz; T = 2.1 s", "not_equivalent",
+         ("Not within the accepted tolerance.", LEFT_OUT.format("T = 2.1 s", "f = 0.498 Hz")), "2.1"),
+        # two values that may be in the unit asked: which is the answer is not for the checker to say
+        ("T = 2.006 s, T = 3 s", "not_equivalent", ("Not within the accepted tolerance.", "Graded your final value,"
+         " `3 s`; the working before it is not graded."), "3"),
+    ],
+)  # fmt: skip
+def test_of_values_stated_side_by_side_the_one_in_the_parts_unit_is_graded(submitted, status, feedback, read_as):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
+    assert (verdict.status, verdict.feedback, verdict.read_as) == (status, feedback, read_as)
+
+
 def test_a_count_has_no_uncertainty():
     assert compare("3", "3 ± 1", kind="integer").status == "invalid"
 

@@ -30,7 +30,7 @@ from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
 from grader.judge.euler_lagrange import euler_lagrange
 from grader.judge.expected import Expected, Outcome, prepare
-from grader.judge.expression import check_expression
+from grader.judge.expression import check_expression, same_values
 from grader.judge.feedback import say
 from grader.judge.given import given_values, in_given_names
 from grader.judge.lagrangian import check_lagrangian
@@ -618,6 +618,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     # as typed: 2.006 m is not read as a time; and 2 or 3 is not shown as the product 6·or
                     return _verdict(early, None if early.key == "number_hedged" else shown)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
+            squared = _square_sign_open(named, spec, expected, outcome, deadline) if spec.parsed else outcome
+            if squared is not outcome:  # shown as typed: the root it was read as is what a person decides
+                outcome, answer = squared, named
             if constant and constant[0] == "constant_unsure" and outcome.score == 0:
                 # − m₂ g y on Atwood's machine, wrong with y taken as a constant: more likely a height
                 # that moves (m₂'s), in a name the problem does not define; said so, as it was typed
@@ -1331,6 +1334,26 @@ def _scaled_name(lhs, undefined: set[str]):
     return None
 
 
+def _square_sign_open(named: ParsedAnswer, spec: Kind, expected: Expected, outcome: Outcome, deadline) -> Outcome:
+    """``p_φ² = m² l⁴ sin⁴θ φ̇²``: an even power of the quantity's name, read as its positive root (see
+    :func:`_scaled_name`), as a frequency's is. A signed quantity's value need not be that root (here
+    m l² sin²θ |φ̇|): where it is not right but the power is the right value's, which root the student
+    meant is for a person to say, and nothing is proposed. ``outcome`` as it was otherwise."""
+    value = named.value
+    if outcome.status == "equivalent" or spec.name != "expression" or not isinstance(value, sympy.Eq):
+        return outcome
+    base, exponent = value.lhs.as_base_exp()
+    if not (base.is_Symbol and base != ANSWER and base.name not in expected.names):
+        return outcome
+    if not (exponent.is_Integer and exponent > 0 and exponent.is_even):
+        return outcome
+    equal, _ = same_values(expected, expected.value**exponent, value.rhs, deadline, key=f"power {exponent}")
+    if not equal:
+        return outcome
+    details = {"label": to_text(value.lhs), "power": "a square" if exponent == 2 else "an even power"}
+    return Outcome("undecided", 0.0, "square_sign_open", details, method=outcome.method)
+
+
 def _constant_allowed(spec: Kind, expected: Expected) -> bool:
     """Whether the answer may differ by a constant: a Lagrangian, or an expression with ``up_to_constant``."""
     return spec.name == "lagrangian" or (spec.name == "expression" and bool(expected.option("up_to_constant")))
@@ -1514,10 +1537,17 @@ def _read(
             notes = (("words_for_a_person", {"words": _shown(said)}),)
         return answer, notes
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
-    unit = spec.name == "number" and bool(expected.option("unit"))
+    unit = str(expected.option("unit") or "") if spec.name == "number" else ""
     measured = spec.name == "number"  # a count has no decimal comma, nor an uncertainty
     text, answer, notes = read_number(
-        submitted, reads, names, decimal_comma=measured, unit=unit, uncertainty=measured, count=not measured
+        submitted,
+        reads,
+        names,
+        decimal_comma=measured,
+        unit=unit,
+        uncertainty=measured,
+        count=not measured,
+        asked=expected.option("name") or (),
     )
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)

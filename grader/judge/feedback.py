@@ -86,6 +86,8 @@ FEEDBACK: dict[str, str] = {
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
     "uncertainty_left_out": "Read without its uncertainty, `{error}`: the value is what is graded.",
+    "statements_left_out": "Graded `{graded}`, your value in {unit}; the rest of your answer (`{others}`) is not"
+    " graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
     "count_bracket_for_a_person": "Your count `{value}` is followed by `{rest}`, which does not come to {value}:"
@@ -114,6 +116,8 @@ FEEDBACK: dict[str, str] = {
     "potential_small_angle": "The terms of your Lagrangian with velocities are right, but the terms without are in"
     " their small-angle form, and the full form is asked for here.",
     "kinetic_wrong": "The terms of your Lagrangian without velocities are right, but not the terms with them.",
+    "square_sign_open": "Your answer gives `{label}`: {power} leaves the sign open, and the quantity asked for"
+    " may be negative. A person will check which root you meant.",
     "some_signs": "Your answer is right only for some signs of {names}, which may be negative here:"
     " remember that √(x²) is |x|, not x.",
     "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",

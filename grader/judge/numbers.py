@@ -10,7 +10,8 @@ is what the part grades, so it is found and graded, and the student is told what
 reading is tried only when the answer as typed is not a number: for a measured value, ``2 (3)`` is
 still 6. A count is the exception: after one, brackets are more often its working than a factor,
 so ``2 (6 − 4)`` is 2, and ``1 (2)``, which may be either, goes to a person. Working over several
-lines (``6 − 2 = 4; 6 − 4 = 2``) is graded at its last line, as a chain on one line is at its last side.
+lines (``6 − 2 = 4; 6 − 4 = 2``) is graded at its last line, as a chain on one line is at its last side. Of
+values stated side by side (``T = 2.006 s, f = 0.498 Hz``), the one in the unit asked for is graded.
 
 Words that take a number back or doubt it (``6 − 4 = 2? no, 4``, ``maybe 2``), or may make it another
 (``at most 2``, ``2 for each bob``, ``two hundred``, and for a count, which is exact, ``about 2``), are not
@@ -29,7 +30,7 @@ from functools import lru_cache
 
 import sympy
 
-from grader.judge.units import in_units
+from grader.judge.units import in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.names import IMPLYING_WORDS
@@ -102,19 +103,22 @@ def read_number(
     names: Collection[str],
     *,
     decimal_comma: bool = False,
-    unit: bool = False,
+    unit: str = "",
     uncertainty: bool = False,
     count: bool = False,
+    asked: Collection[str] = (),
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """The text to judge, its reading (None: read it as typed, and say why it fails), and notes.
 
     ``reads(text)`` is the reading of ``text`` if it is a number (with its unit, where the part has
     one), else None; ``names`` are the problem's, which a remark after the number does not use.
-    ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the part asks for a quantity in a unit) reads
-    2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s; ``uncertainty`` (a measured value may
+    ``decimal_comma`` reads 2,01 as 2.01; ``unit`` (the unit the part asks for a quantity in, if any) reads
+    2.006 sec as 2.006 s, and TeX's 2.006~\\text{s} as 2.006 s, and of values stated side by side
+    (``T = 2.006 s, f = 0.498 Hz``) grades the one in that unit; ``uncertainty`` (a measured value may
     have one) reads 2.006 ± 0.001 s as 2.006 s, with a note that the uncertainty was not graded.
     ``count`` (a whole number is asked for) reads ``9 − 3 = 6 ≠ 9`` as 6, a remark ruling out 9, as
-    is ``2 (not 4)``.
+    is ``2 (not 4)``. ``asked`` are the names of the quantity asked for, where the part gives them: of
+    ``n = 6 − 4 = 2, k = 4``, n's value is graded.
 
     Words that take a number back or doubt it (``6 − 4 = 2? no, 4``), or may make it another (``at most
     2``), send the answer to a person, with a note that says so: which is the answer is not for the checker
@@ -123,7 +127,7 @@ def read_number(
     # a side of working is read again: for the final value, for working that does not hold, and beside words
     reads = lru_cache(maxsize=None)(reads)
     prepared, answer, notes = _read_number(
-        text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+        text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
     )
     lines = _lines(text) if len(text) <= _LENGTH and _SEPARATED.search(text) else [text]
     said = lines[0] if len(lines) == 1 else text
@@ -138,17 +142,20 @@ def _read_number(
     names: Collection[str],
     *,
     decimal_comma: bool,
-    unit: bool,
+    unit: str,
     uncertainty: bool,
     count: bool,
+    asked: Collection[str] = (),
 ) -> tuple[str, ParsedAnswer | None, tuple]:
     """:func:`read_number`, but for the words around the number that a person must read."""
     unequal = _NOT_EQUAL.fullmatch(text) if count and len(text) <= _LENGTH else None
     if unequal:
-        return _unequal(unequal, reads, names)
+        return _unequal(unequal, reads, names, asked=asked)
     ruled_out = _ruled_out(text) if count else None
     if ruled_out:
-        return _unequal(ruled_out, reads, names, rest=ruled_out["rest"].lstrip(", "))  # as other remarks are
+        return _unequal(
+            ruled_out, reads, names, rest=ruled_out["rest"].lstrip(", "), asked=asked
+        )  # as other remarks are
     uncertain = _UNCERTAIN.fullmatch(text) if uncertainty and len(text) <= _LENGTH else None
     if uncertain:  # 2.006 ± 0.001 s, (2.006 ± 0.001) s, 2.006(1) s: the value is graded, its uncertainty is not
         if uncertain["cvalue"]:
@@ -168,6 +175,9 @@ def _read_number(
         prepared, answer, notes = read_number(rest, reads, names, decimal_comma=decimal_comma, unit=unit)
         if answer is not None:
             return prepared, answer, (*notes, ("uncertainty_left_out", {"error": inside[0].strip()}))
+    stated = _stated_in_unit(text, reads, names, decimal_comma, unit, uncertainty) if unit and not count else None
+    if stated is not None:
+        return stated
     plain = len(text) <= _LENGTH and not _SEPARATED.search(text) and not re.search(_UNEQUAL_SIGN, text)
     if count and plain:  # 2 (6 − 4), n = 2 (6 − 4): before the product as typed is read
         bracketed = _count_with_bracket(_sides(text)[0][-1], reads, names)
@@ -177,13 +187,22 @@ def _read_number(
         lines = _lines(text)
         if len(lines) == 1 and lines[0] != text:  # 6 − 4 = 2; with nothing after: one line, as typed
             return _read_number(
-                lines[0], reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count
+                lines[0],
+                reads,
+                names,
+                decimal_comma=decimal_comma,
+                unit=unit,
+                uncertainty=uncertainty,
+                count=count,
+                asked=asked,
             )
-        worked = _worked_over_lines(text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+        worked = _worked_over_lines(
+            text, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+        )
         if worked is not None:
             return worked
     # n = 2 since k = 4: read as typed, a list whose last new name, k, would be taken for the answer
-    given = _given(text, reads, names, decimal_comma, unit, count) if len(text) <= _LENGTH else None
+    given = _given(text, reads, names, decimal_comma, unit, count, asked) if len(text) <= _LENGTH else None
     if given is not None and given[1] is not None:
         return given
     prepared, notes = _spelled(text, decimal_comma, unit)
@@ -197,7 +216,7 @@ def _read_number(
     bare = _ABOUT_AFTER.sub("", _ABOUT.sub("", text, count=1))
     pieces, runs = _sides(bare)
     last = len(pieces) - 1
-    listed = _listed(text, pieces, reads, names, decimal_comma, unit, count)
+    listed = _listed(text, pieces, reads, names, decimal_comma, unit, count, asked)
     if listed is not None:
         return listed
     # the final value; else, of a value and its name alone (2.01 s = T), the first side: not of longer working,
@@ -245,7 +264,7 @@ _SIDES = 12  # sides of the lines before the last, at the most: each is read
 
 
 def _worked_over_lines(
-    text: str, reads, names, *, decimal_comma: bool, unit: bool, count: bool
+    text: str, reads, names, *, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
 ) -> tuple[str, ParsedAnswer | None, tuple] | None:
     """``6 − 2 = 4; 6 − 4 = 2``, or the same on lines: working over several lines, each before the last
     a chain of numbers (``6 − 2 = 4``, ``2π√(1/9.81) = 2.006 s``), is graded at the value of the last
@@ -272,7 +291,7 @@ def _worked_over_lines(
         if false is None and _false_working(pieces, runs, values[-1], (reads, decimal_comma, unit, count)):
             false = line
     prepared, answer, notes = _read_number(
-        final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count
+        final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count, asked=asked
     )  # an uncertainty in the text was read past before (see _UNCERTAINTY_INSIDE)
     if answer is None:
         return None
@@ -299,7 +318,7 @@ def _words_beside(text: str) -> str:
     return _shown(" ".join(said))
 
 
-def _other_values(pieces: list[str], answer: ParsedAnswer, reads, decimal_comma: bool, unit: bool, count: bool) -> bool:
+def _other_values(pieces: list[str], answer: ParsedAnswer, reads, decimal_comma: bool, unit: str, count: bool) -> bool:
     """Whether a side of working (``pieces``) that reads as a number is not the value ``answer`` says;
     and where there are too many sides to read, whether one may be."""
     if len(pieces) > _SIDES:
@@ -475,11 +494,13 @@ def _ruled_out(text: str) -> re.Match | None:
     return found
 
 
-def _unequal(found: re.Match, reads, names, rest: str | None = None) -> tuple[str, ParsedAnswer | None, tuple]:
+def _unequal(
+    found: re.Match, reads, names, rest: str | None = None, asked: Collection[str] = ()
+) -> tuple[str, ParsedAnswer | None, tuple]:
     """``9 − 3 = 6 ≠ 9``, ``2 (not 4)``: the count before ``≠`` (or the bracket), read as any count is,
     with a note that the number it rules out (``rest``, as typed; else ``≠ 9``) was not graded. As typed
     (refused, for its sign or its "not") where that count is the number it rules out, or is none."""
-    prepared, answer, notes = read_number(found["value"], reads, names, count=True)
+    prepared, answer, notes = read_number(found["value"], reads, names, count=True, asked=asked)
     other = int(NUMBER_WORDS.get(found["other"].lower(), found["other"]))
     value = _value_of(answer)
     if value is None or value == other:
@@ -498,12 +519,16 @@ def _value_of(answer: ParsedAnswer | None):
     return value if value.is_number else None
 
 
-def _listed(text: str, pieces: list[str], reads, names, decimal_comma: bool, unit: bool, count: bool):
+def _listed(
+    text: str, pieces: list[str], reads, names, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
+):
     """``n = 3N − k = 6 − 4 = 2, k = 4``: statements joined by a comma, the last a name's value with no
     working, where that name was used in the working before it. It is a value the working was done
     with, not the answer: the statement before it is graded, with a note that the value was not (as
-    ``2, since k = 4`` is). None for any other text, whose last statement is graded (``ω = √9.81 =
-    3.13, T = 2π/3.13 = 2.006 s``, and ``n = 2, k = 4``, where which name is asked is not known)."""
+    ``2, since k = 4`` is). So too where the working is labelled with the name ``asked`` and the value
+    is another's (``n = 6 − 4 = 2, k = 4``, where n is asked). None for any other text, whose last
+    statement is graded (``ω = √9.81 = 3.13, T = 2π/3.13 = 2.006 s``, and ``n = 2, k = 4``, where which
+    name is asked is not known)."""
     last = len(pieces) - 1
     found = _LISTED_NAME.search(pieces[last - 1]) if last >= 2 else None
     if found is None:
@@ -513,14 +538,98 @@ def _listed(text: str, pieces: list[str], reads, names, decimal_comma: bool, uni
     before = " = ".join(pieces[start : last - 1])
     said = list(_NAME_SAID.finditer(text))
     # one such value: more, and the head is read again for each, each time read whole (a hostile answer's cost)
-    if len(said) == 1 and said[0][1] == name and re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before):
+    labelled = start and pieces[0] in asked and name not in asked
+    if len(said) == 1 and said[0][1] == name and (labelled or re.search(rf"(?<!\w){re.escape(name)}(?!\w)", before)):
         head, rest = text[: said[0].start()], text[said[0].start() + 1 :].strip()
-        prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+        prepared, answer, notes = read_number(
+            head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+        )
         if answer is None:
             return None
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
         return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": _shown(rest)}))
     return None
+
+
+_STATEMENTS = 4  # values stated side by side, at the most: each is read
+# a statement of a value: a name, then = (not ==, <=, =>)
+_STATEMENT = re.compile(r"\s*[^\W\d_][\w₀-₉']*\s*(?:(?<![<>!=])=(?![=>])|[≈≃]|\\approx|\\simeq)")
+
+
+def _stated_in_unit(
+    text: str, reads, names, decimal_comma: bool, unit: str, uncertainty: bool
+) -> tuple[str, ParsedAnswer | None, tuple] | None:
+    """``T = 2.006 s, f = 0.498 Hz``, ``f = 0.498 Hz; T = 2.006 s``, ``T = 2.006 s (f = 0.498 Hz)``: values
+    stated side by side, each with its unit, just one of them in ``unit``, the part's: that one is
+    graded, as it would be alone, with a note that the others were not. None for any other text: where
+    two are in the part's unit (``T = 2.006 s, T = 3 s``), or one has no unit and so may be in it
+    (``T = 2.006 s, ω = 3.13``), which is the answer is not for the checker to say."""
+    statements = _statements(text) if len(text) <= _LENGTH else None
+    if statements is None or not 2 <= len(statements) <= _STATEMENTS:
+        return None
+    wanted = unit_named(unit)
+    if wanted is None:
+        return None  # the author's error, said where the part's unit is read (compare._unit)
+    read, in_unit = [], []
+    for statement in statements:
+        prepared, answer, notes = read_number(
+            statement, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty
+        )
+        value = _last_side(answer) if answer is not None else None
+        found = in_units(value) if isinstance(value, sympy.Expr) and value.free_symbols else None
+        if found is None:
+            return None  # no value, or one with no unit
+        read.append((prepared, answer, notes))
+        if found[2] == wanted[1]:
+            in_unit.append(len(read) - 1)
+    if len(in_unit) != 1:
+        return None
+    (graded,) = in_unit
+    others = ", ".join(statement for index, statement in enumerate(statements) if index != graded)
+    prepared, answer, notes = read[graded]
+    details = {"graded": _shown(statements[graded]), "unit": unit, "others": _shown(others)}
+    return prepared, answer, (*notes, ("statements_left_out", details))
+
+
+def _statements(text: str) -> list[str] | None:
+    """The statements of values in ``text`` (``T = 2.006 s``, ``f = 0.498 Hz``), as typed: cut at commas,
+    semicolons and new lines outside brackets, and a last bracket that states a value (``(f = 0.498 Hz)``).
+    After a comma, what states no value belongs to the statement before it (``T = 2,01 s``, a decimal
+    comma). None where ``text`` begins with no statement, or another mark is followed by none."""
+    depth, start, pieces, separator = 0, 0, [], ""
+    for index, character in enumerate(text):
+        if character == "(" and depth == 0 and text.rstrip(" .").endswith(")"):
+            inside = text[index + 1 : len(text.rstrip(" .")) - 1]
+            if _balanced(inside) and _STATEMENT.match(inside):
+                pieces.append((separator, text[start:index]))
+                pieces.append(("(", inside))
+                start, separator = None, ""
+                break
+        depth += (character in "([{") - (character in ")]}")
+        if depth == 0 and (character in ",;\n" or text.startswith("\\\\", index)):
+            pieces.append((separator, text[start:index]))
+            start, separator = index + 1, character
+    if start is not None:
+        pieces.append((separator, text[start:]))
+    statements: list[str] = []
+    for separator, piece in pieces:
+        piece = piece.strip(" \\\n")
+        if _STATEMENT.match(piece):
+            statements.append(piece)
+        elif statements and separator == "," and piece:
+            statements[-1] = f"{statements[-1]},{piece if piece[0].isdigit() else ' ' + piece}"
+        elif piece or separator not in ",;\n":
+            return None
+    return statements
+
+
+def _balanced(text: str) -> bool:
+    depth = 0
+    for character in text:
+        depth += (character in "([{") - (character in ")]}")
+        if depth < 0:
+            return False
+    return depth == 0
 
 
 _NAME_SAID = re.compile(r",\s*([^\W\d_][\w₀-₉']*)\s*(?:[=≈≃]|\\approx|\\simeq)")  # …, k = 4
@@ -675,7 +784,7 @@ def _counted(inside: str, names: Collection[str]) -> tuple[object, bool] | None:
 
 
 def _given(
-    text: str, reads, names, decimal_comma: bool, unit: bool, count: bool
+    text: str, reads, names, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
 ) -> tuple[str, ParsedAnswer | None, tuple] | None:
     """``2.006 s, since l = 1 m``, ``n = 3N − k, where N = 1, k = 2``: a number or a formula, then the
     values it was worked out with. The number is graded, and the note says the rest was not; a
@@ -686,7 +795,9 @@ def _given(
     if found is None or not found.start():
         return None
     head, values = text[: found.start()], text[found.end() :]
-    prepared, answer, notes = read_number(head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count)
+    prepared, answer, notes = read_number(
+        head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+    )
     if answer is not None:
         shown = text[found.start() :].strip(" ,")
         shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
@@ -716,7 +827,7 @@ _UNCERTAIN = re.compile(
 _GIVEN = re.compile(r"\s*,?\s*\b(?:where|with|since|for|given|using|as)\s+(?=[^\W\d][\w₀-₉]*\s*=)", re.I)
 
 
-def _spelled(text: str, decimal_comma: bool, unit: bool) -> tuple[str, tuple]:
+def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
     notes = ()
     if decimal_comma:
         text, comma = _decimal_point(text)
