@@ -1352,6 +1352,29 @@ def test_words_that_may_say_otherwise_send_a_right_formula_to_a_person(expected,
     assert verdict.feedback == (_for_a_person(words),)
 
 
+RAYLEIGH = {"coords": ["x"], "known": ["m", "b", "k"], "name": "F"}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # words of arithmetic beside a formula, no sign, number nor name of the problem's: before, read as its
+        # factors, each told undefined, and the right formula wrong
+        ("b ẋ²/2 (half the power dissipated)", "undecided", (_for_a_person("(half the power dissipated)"),)),
+        ("½ b ẋ² times half", "undecided", (_for_a_person("times half"),)),
+        ("½ b ẋ², the power over two", "undecided", (_for_a_person(", the power over two"),)),
+        ("√(g/l) but negative", "undecided", (_for_a_person("but negative"),)),
+        ("b ẋ² (half the power dissipated)", "not_equivalent",
+         ("Your answer is off by a constant factor: missing a factor 1/2?",
+          "Read without the words `(half the power dissipated)`: the formula is what is graded.")),
+    ],
+)  # fmt: skip
+def test_words_of_arithmetic_beside_a_formula_go_to_a_person(submitted, status, feedback):
+    expected, setting = ("sqrt(g/l)", PENDULUM) if "g/l" in submitted else ("1/2 b xdot^2", RAYLEIGH)
+    verdict = compare(expected, submitted, **setting)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status", "score"),
     [
@@ -1455,7 +1478,6 @@ def test_words_against_a_bracket_are_a_function_not_prose(submitted, status):
     [
         "√(g/l) times l",  # a word of arithmetic: the words may be part of the formula
         "√(g/l) or √(l/g)",  # a hedge
-        "√(g/l) but negative",
         "√(g/l) for angles below 10 degrees",  # a number
     ],
 )

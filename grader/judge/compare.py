@@ -1668,7 +1668,9 @@ def _words_note(key: str, words: str, expected: Expected) -> str:
     it is (``…, which is the Hamiltonian``); before it, a sentence names what follows (``The Lagrangian
     is …``), and only the Lagrangian, the Hamiltonian or the energy, where the part names its own, is
     held against it (``The Hamiltonian is …`` where L is asked)."""
-    if says_otherwise(words) or expected.option("asks_more"):
+    # words after a formula may hold arithmetic (… (half the power dissipated)); before it, the words
+    # read past may hold the definition or the operator that led to it, which are judged on their own
+    if says_otherwise(words, formula=key == "words_left_out") or expected.option("asks_more"):
         return "words_for_a_person"  # where the prompt asks for more than the formula, words may be the more
     named, asked = quantities_named(words), set(expected.option("name") or ())
     if key != "words_left_out":

@@ -24,8 +24,9 @@ reads the words. So it is with a sentence that leads to the formula: ``The angul
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have. Words that may say
 the formula is other than written (``… upward``, ``… inverted``), doubt it (``… (not sure about
-the sign)``), deny (``… (friction is not in L)``: "not", and no "or" nor arithmetic) or judge it
-(``…, which is false``), are read past too, but :func:`says_otherwise` marks
+the sign)``), deny (``… (friction is not in L)``: "not", and no "or" nor arithmetic), hold words of
+arithmetic alone (``… (half the power dissipated)``) or judge it (``…, which is false``), are read
+past too, but :func:`says_otherwise` marks
 them for a person to read before a right formula earns its credit; so are words that name a quantity
 (:func:`quantities_named`: ``…, which is the Hamiltonian``) other than the one the part asks for.
 
@@ -164,6 +165,17 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
 
 
+def _arithmetic_said(remark: str, names: Collection[str]) -> bool:
+    """``(half the power dissipated)``: a remark of words alone, some of arithmetic, none a name of the
+    problem's, and no sign, number or "or". After a formula they may change it (``… times half``), but are
+    no more of it: a person reads them (:func:`says_otherwise`). Not ``times l``, the formula's arithmetic
+    spelled out."""
+    if not _MATH_WORDS.search(remark) or _HEDGE.search(remark) or _MATH_SIGNS & set(remark):
+        return False
+    return all(_is_word(word, names, ()) for word in _TOKEN.findall(remark))
+
+
+_TOKEN = re.compile(r"[^\W_]+")  # a word, a name or a number, in any script: half, l, θ, 2
 # two words of prose joined by a hyphen: small-angle, time-independent, z-component (not θ-φ, g-l or theta-phi)
 _WORD_HYPHEN = re.compile(r"(?<![\w\\])([A-Za-z]+)-([A-Za-z]{3,})(?!\w)")
 
@@ -202,11 +214,14 @@ _NOT = re.compile(r"\b(?:not|never|isn't)\b", re.I)
 _OR = re.compile(r"\bor\b", re.I)
 
 
-def says_otherwise(words: str) -> bool:
+def says_otherwise(words: str, *, formula: bool = False) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
     (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``) or denies, or judges it
     (``which is false``, ``sign error``), or says what kind of quantity it is (``it is a force``): a
-    person must read it before the formula earns credit."""
+    person must read it before the formula earns credit. With ``formula``, words read past beside a
+    formula, so too where they hold arithmetic, in words (``half the power dissipated``) or signs and
+    numbers (``(underdamped if b² < 4mk)``): they may change it. Not beside a number, whose words
+    may count in words (``3 translations plus 3 rotations``)."""
     return bool(
         _OTHERWISE.search(words)
         or _DOUBT.search(words)
@@ -214,7 +229,24 @@ def says_otherwise(words: str) -> bool:
         or _JUDGED.search(words)
         or _A_QUANTITY.match(words)
         or _dimensions(words)
+        or (formula and _arithmetic(words))
     )
+
+
+def _arithmetic(words: str) -> bool:
+    """Whether words hold arithmetic, in words or signs, a number, "or", or a function applied; not
+    where the potential energy is zero (``taking V = 0 at the pivot``), nor a hyphen between words."""
+    words = _HYPHEN.sub("", _ZERO_OF_POTENTIAL.sub(" ", words))
+    return bool(
+        _MATH_SIGNS & set(words)
+        or _NUMBER.search(words)
+        or _MATH_WORDS.search(words)
+        or _HEDGE.search(words)
+        or _APPLIED.search(words)
+    )
+
+
+_HYPHEN = re.compile(r"(?<=[A-Za-z])[-‐‑](?=[A-Za-z])")  # small-angle, z-component
 
 
 def quantities_named(words: str) -> frozenset[str]:
@@ -252,7 +284,10 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     for start in dict.fromkeys((cut, mark if mark > line else -1)):
         formula, rest = text[:start].rstrip(), text[start:].strip()
         remark = rest.lstrip(_OPENS)
-        if start > 0 and formula and (is_prose(remark, names, doubt=True) or _dimensions(remark) or _denied(rest)):
+        if not (start > 0 and formula):
+            continue
+        prose = is_prose(remark, names, doubt=True) or _dimensions(remark) or _arithmetic_said(remark, names)
+        if prose or _denied(rest):
             yield formula, rest
 
 
