@@ -1208,9 +1208,6 @@ def _for_a_person(words):
          (_words(", a non-linear equation"),)),
         (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ (y-axis vertical)", "lagrangian", "equivalent",
          (_words("(y-axis vertical)"),)),
-        # words of arithmetic, or its signs: refused as typed
-        ("sqrt(g/l)", "√(g/l), the period over 2π", "expression", "invalid", ()),
-        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, which is T − V", "lagrangian", "invalid", ()),
     ],
 )  # fmt: skip
 def test_words_after_a_formula_are_read_past_and_said_so(expected, submitted, kind, status, notes):
@@ -1401,6 +1398,29 @@ def test_words_that_may_say_otherwise_send_a_right_formula_to_a_person(expected,
     assert verdict.feedback == (_for_a_person(words),)
 
 
+RAYLEIGH = {"coords": ["x"], "known": ["m", "b", "k"], "name": "F"}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # words of arithmetic beside a formula, no sign, number nor name of the problem's: before, read as its
+        # factors, each told undefined, and the right formula wrong
+        ("b ẋ²/2 (half the power dissipated)", "undecided", (_for_a_person("(half the power dissipated)"),)),
+        ("½ b ẋ² times half", "undecided", (_for_a_person("times half"),)),
+        ("½ b ẋ², the power over two", "undecided", (_for_a_person(", the power over two"),)),
+        ("√(g/l) but negative", "undecided", (_for_a_person("but negative"),)),
+        ("b ẋ² (half the power dissipated)", "not_equivalent",
+         ("Your answer is off by a constant factor: missing a factor 1/2?",
+          "Read without the words `(half the power dissipated)`: the formula is what is graded.")),
+    ],
+)  # fmt: skip
+def test_words_of_arithmetic_beside_a_formula_go_to_a_person(submitted, status, feedback):
+    expected, setting = ("sqrt(g/l)", PENDULUM) if "g/l" in submitted else ("1/2 b xdot^2", RAYLEIGH)
+    verdict = compare(expected, submitted, **setting)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status", "score"),
     [
@@ -1504,7 +1524,6 @@ def test_words_against_a_bracket_are_a_function_not_prose(submitted, status):
     [
         "√(g/l) times l",  # a word of arithmetic: the words may be part of the formula
         "√(g/l) or √(l/g)",  # a hedge
-        "√(g/l) but negative",
         "√(g/l) for angles below 10 degrees",  # a number
     ],
 )
@@ -4928,6 +4947,40 @@ def _chain(words: str, definition: str) -> str:
 )  # fmt: skip
 def test_a_remark_in_brackets_that_h_is_not_t_plus_v_goes_to_a_person(submitted, status, feedback):
     verdict = compare(HOOP_H, submitted, **HOOP_NOT_ENERGY)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
+
+
+DAMPED_EOM = ("m xddot + b xdot + k x = 0", {"kind": "equation", **DAMPED})
+Q_THETA = ("-m g r sin(theta)", {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_theta"})
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "feedback"),
+    [
+        # a remark that closes the answer, with commas, signs or numbers: before, refused (a comma, `<`, `>`
+        # not understood, something missing before `=`) or read as typed
+        (Q_THETA, "−m g r sin θ (a torque, N·m)", "undecided", (_for_a_person("(a torque, N·m)"),)),
+        ((HOOP_H, HOOP_NOT_ENERGY), f"{HOOP_H_TYPED} (= E, conserved)", "undecided",
+         (_for_a_person("(= E, conserved)"),)),
+        (DAMPED_EOM, "m ẍ + b ẋ + k x = 0 (underdamped if b² < 4mk)", "undecided",
+         (_for_a_person("(underdamped if b² < 4mk)"),)),
+        ((ATWOOD_A, MASSES), "(m1 − m2) g/(m1 + m2), downward for m1 when m1 > m2", "undecided",
+         (_for_a_person(", downward for m1 when m1 > m2"),)),
+        (("sqrt(g/l)", PENDULUM), "√(g/l), the period over 2π", "undecided", (_for_a_person(", the period over 2π"),)),
+        ((L_PENDULUM, {"kind": "lagrangian", **PENDULUM}), "½ m l² θ̇² + m g l cos θ, which is T − V", "undecided",
+         (_for_a_person(", which is T − V"),)),
+        # a wrong formula stays wrong, the remark said to be read past
+        ((HOOP_H, HOOP_NOT_ENERGY), "1/2 m R^2 θ̇^2 + 1/2 m R^2 ω^2 sin^2θ − m g R cos θ (= E, conserved)",
+         "not_equivalent", ("A term differs: the term in sin(θ) has the wrong sign.",
+                            "Read without the words `(= E, conserved)`: the formula is what is graded.")),
+        (DAMPED_EOM, "m ẍ + b ẋ − k x = 0 (underdamped if b² < 4mk)", "not_equivalent",
+         ("A term differs: the term in x has the wrong sign.",
+          "Read without the words `(underdamped if b² < 4mk)`: the formula is what is graded.")),
+    ],
+)  # fmt: skip
+def test_a_remark_with_commas_or_signs_that_closes_the_answer_goes_to_a_person(expected, submitted, status, feedback):
+    (answer, setting) = expected
+    verdict = compare(answer, submitted, **setting)
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "undecided"), feedback)
 
 

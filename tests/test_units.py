@@ -484,10 +484,33 @@ def test_words_that_state_dimensions_are_for_a_person_to_read(submitted):
     assert (verdict.status, verdict.diagnosis) == ("undecided", "words_for_a_person"), verdict
 
 
-def test_a_lone_letter_after_a_formula_is_still_a_name_to_define():
-    # N may be a normal force and J a moment of inertia: not set apart, they are names
-    verdict = compare(TORQUE, "−m g l sin θ J", **PENDULUM)
-    assert verdict.diagnosis == "undefined_symbol"
+def _unit_letter(name: str) -> str:
+    return (
+        f"Your answer ends in `{name}`, which this problem does not define. If it is a unit, leave it out, or write it"
+        f" in square brackets after the formula: … [{name}]. If it is a name of your own, say what it stands for: …,"
+        f" where {name} = …."
+    )
+
+
+Q_R = ("m g cos(theta) - k (r - l0)", {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_r"})
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "name"),
+    [
+        # N may be a normal force and J a moment of inertia: not set apart, they are names still, not read past;
+        # but at the end, a unit's letter is said to be one, and how to write it (before, only a name to define)
+        ((TORQUE, PENDULUM), "−m g l sin θ J", "J"),
+        (Q_R, "m g cos θ − k (r − l0) N", "N"),
+        (Q_R, "(m g cos θ − k (r − l0)) N.", "N"),
+        (Q_R, "m g cos θ − k (r − l0) W", "W"),
+    ],
+)
+def test_a_lone_unit_letter_after_a_formula_is_said_to_be_a_name_or_a_unit(expected, submitted, name):
+    answer, setting = expected
+    verdict = compare(answer, submitted, **setting)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "undefined_unit_letter")
+    assert verdict.feedback == (_unit_letter(name),)
 
 
 @pytest.mark.parametrize(

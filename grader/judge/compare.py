@@ -201,13 +201,13 @@ def compare(
     if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
         return forms
     # H = p_θ θ̇ − L, then H = …: read as typed, H's value is put into the first line, and L is undefined
-    unread = verdict.status == "invalid" or verdict.diagnosis == "undefined_symbol"
+    unread = verdict.status == "invalid" or verdict.diagnosis in _UNDEFINED
     chain = _chained(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
         # where the lines could be read as typed, only a definition we know makes the first line one (not L = … + q)
         known = verdict.status == "invalid" or _defines_as_known(chain[0], prepared, values)
-        if chained.status != "invalid" and chained.diagnosis != "undefined_symbol" and known:
+        if chained.status != "invalid" and chained.diagnosis not in _UNDEFINED and known:
             # where an expression is asked, the chain is the answer; in a system, it is one of its lines
             key = "lines_as_chain" if spec.shape == "expression" else "lines_as_one_chain"
             note = say(key, count=chain[1], label=chain[2])
@@ -330,8 +330,10 @@ def _two_forms_judged(spec: Kind, expected: Expected, forms: tuple, words: str, 
     return _one_of_two_forms(full, small, words)
 
 
+# what an answer with a name the problem does not define is told: a unit's letter at its end is one too
+_UNDEFINED = frozenset({"undefined_symbol", "undefined_unit_letter"})
 # what a formula is told where words were left in it, or it is two equations: no one formula of the two forms
-_NOT_ONE_FORMULA = frozenset({"undefined_symbol", "undefined_units", "eliminate_unknowns", "expected_one_equation"})
+_NOT_ONE_FORMULA = _UNDEFINED | {"undefined_units", "eliminate_unknowns", "expected_one_equation"}
 
 
 def _one_of_two_forms(full: Verdict, small: Verdict, words: str) -> Verdict:
@@ -510,7 +512,7 @@ def _judge_lines(
     wrong = [
         str(number)
         for number, verdict in enumerate(earlier, start=1 + (definition is not None))
-        if verdict.status != "equivalent" and not (parts == "side" and verdict.diagnosis == "undefined_symbol")
+        if verdict.status != "equivalent" and not (parts == "side" and verdict.diagnosis in _UNDEFINED)
     ]
     count = {"count": len(lines), "parts": f"{parts}s" + (" after the name" if parts == "side" else "")}
     if last.status == "equivalent" and wrong:
@@ -1698,7 +1700,9 @@ def _words_note(key: str, words: str, expected: Expected) -> str:
     it is (``…, which is the Hamiltonian``); before it, a sentence names what follows (``The Lagrangian
     is …``), and only the Lagrangian, the Hamiltonian or the energy, where the part names its own, is
     held against it (``The Hamiltonian is …`` where L is asked)."""
-    if says_otherwise(words) or expected.option("asks_more"):
+    # words after a formula may hold arithmetic (… (half the power dissipated)); before it, the words
+    # read past may hold the definition or the operator that led to it, which are judged on their own
+    if says_otherwise(words, formula=key == "words_left_out") or expected.option("asks_more"):
         return "words_for_a_person"  # where the prompt asks for more than the formula, words may be the more
     named, asked = quantities_named(words), set(expected.option("name") or ())
     if key != "words_left_out":
@@ -1982,6 +1986,10 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
     if undefined and any(len(symbol.name) > 1 for symbol in _units_named(answer, expected)):
         # 3.13 rad/s where a formula is asked for: units, not names to define
         return Outcome("not_equivalent", 0.0, "undefined_units", {"names": _listing(undefined)}, method="symbols")
+    if len(undefined) == 1 and _ends_in_unit_letter(answer.text, undefined[0]):
+        # … − k (r − l₀) N: a unit's letter, which _unit_tail does not read past (it may be a name of theirs)
+        details = {"name": unicode_name(undefined[0])}
+        return Outcome("not_equivalent", 0.0, "undefined_unit_letter", details, method="symbols")
     if undefined:
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
         return Outcome(
@@ -2006,6 +2014,13 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
 
 
 _LISTED = 6  # names a sentence lists before it counts the rest
+# the units whose symbol is one capital letter, N, J and W: seldom a name in a formula, as m, g, s or h are
+_UNIT_LETTERS = frozenset(name for name in SI_UNITS if len(name) == 1 and name.isupper())
+
+
+def _ends_in_unit_letter(text: str, name: str) -> bool:
+    """Whether ``text`` ends in ``name``, alone, and it is a unit's capital letter (``… − k (r − l₀) N``)."""
+    return name in _UNIT_LETTERS and re.search(rf"(?<![^\W_]){name}[\s.]*$", text) is not None
 
 
 def _listing(names: list[str]) -> str:

@@ -123,6 +123,9 @@ FEEDBACK: dict[str, str] = {
     "not_small_angle": "The small-angle (linearized) form is asked for here; your answer keeps the full trigonometric functions.",
     "undefined_symbol": "Your answer uses {names}, which this problem does not define (it uses {defined})."
     " Write your answer in those, or say what {which} stands for: …, where {first} = ….",
+    "undefined_unit_letter": "Your answer ends in `{name}`, which this problem does not define. If it is a unit,"
+    " leave it out, or write it in square brackets after the formula: … [{name}]. If it is a name of your own,"
+    " say what it stands for: …, where {name} = ….",
     "undefined_units": "Your answer uses {names}, which this problem does not define: units, it seems."
     " A formula in the problem's own symbols is asked for here, and its units follow from theirs.",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",

@@ -24,15 +24,17 @@ reads the words. So it is with a sentence that leads to the formula: ``The angul
 where they cannot be part of the formula: they hold no sign or word of arithmetic (``times l``),
 no number, no "or" or "not", and read as names the problem does not have. Words that may say
 the formula is other than written (``… upward``, ``… inverted``), doubt it (``… (not sure about
-the sign)``), deny (``… (friction is not in L)``: "not", and no "or" nor arithmetic) or judge it
-(``…, which is false``), are read past too, but :func:`says_otherwise` marks
+the sign)``), deny (``… (friction is not in L)``: "not", and no "or" nor arithmetic), hold words of
+arithmetic alone (``… (half the power dissipated)``), close it with signs or numbers (``… (underdamped if
+b² < 4mk)``, ``…, downward for m₁ when m₁ > m₂``) or judge it (``…, which is false``), are read past too,
+but :func:`says_otherwise` marks
 them for a person to read before a right formula earns its credit; so are words that name a quantity
 (:func:`quantities_named`: ``…, which is the Hamiltonian``) other than the one the part asks for.
 
 A remark in brackets after a formula may state where the potential energy is zero, ``(taking V = 0
 at the pivot)``: words, and ``V = 0`` (or ``U = 0``) in a name the problem does not have. It says how
 the formula was worked out, not what it is, and changes no grade; it is read past as words are. Any
-other ``=`` in a remark may be more of the answer: it is read as typed.
+other ``=`` in a remark after its words may be more of the answer: it is read as typed.
 
 A sentence may state what the quantity is on the way to its value: ``Since L = T − V, L = ½ m l² θ̇²
 + …``, ``The Lagrangian L = T − V is …``, ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + … = 0``. That is
@@ -164,6 +166,17 @@ def is_prose(words: str, names: Collection[str], *, doubt: bool = False) -> bool
     return any(symbol.name not in names and symbol.name not in SI_UNITS for symbol in read.symbols)
 
 
+def _arithmetic_said(remark: str, names: Collection[str]) -> bool:
+    """``(half the power dissipated)``: a remark of words alone, some of arithmetic, none a name of the
+    problem's, and no sign, number or "or". After a formula they may change it (``… times half``), but are
+    no more of it: a person reads them (:func:`says_otherwise`). Not ``times l``, the formula's arithmetic
+    spelled out."""
+    if not _MATH_WORDS.search(remark) or _HEDGE.search(remark) or _MATH_SIGNS & set(remark):
+        return False
+    return all(_is_word(word, names, ()) for word in _TOKEN.findall(remark))
+
+
+_TOKEN = re.compile(r"[^\W_]+")  # a word, a name or a number, in any script: half, l, θ, 2
 # two words of prose joined by a hyphen: small-angle, time-independent, z-component (not θ-φ, g-l or theta-phi)
 _WORD_HYPHEN = re.compile(r"(?<![\w\\])([A-Za-z]+)-([A-Za-z]{3,})(?!\w)")
 
@@ -192,6 +205,45 @@ def _denied(remark: str) -> bool:
 _DENIED = re.compile(r"\(\s*(?:not|never|isn't)\b", re.I)
 
 
+def _closing_remark(rest: str, names: Collection[str], coords: Collection[str]) -> bool:
+    """``(a torque, N·m)``, ``(= E, conserved)``, ``, downward for m₁ when m₁ > m₂``: a remark that closes
+    the answer, with its commas, signs and numbers: in brackets, begun by a sign that relates (``=``, ``<``)
+    and holding a word of prose, or begun by a word of prose (or an article); or after a comma, begun by a
+    word of prose. They may say the formula is other than written, or more than it (:func:`says_otherwise`,
+    beside a formula): a person reads them. Not with "or", which may offer another formula (``(or
+    minus)``), nor an ``=`` after words, which may be more of the answer (``(taking V = 0.5 at the pivot)``,
+    or the next equation of a system: ``…, θ̈ = …``)."""
+    if "\n" in rest or _OR.search(rest) or not says_otherwise(rest, formula=True):
+        return False
+    if rest.startswith("("):
+        end = _closing_bracket(rest)
+        if end is None:
+            return False
+        inside = rest[1:end]
+        if _RELATES.match(inside):
+            return any(_is_word(word[0], names, coords) for word in _WORD.finditer(inside))
+    elif rest.startswith(","):
+        inside = rest[1:]
+    else:
+        return False
+    first = _FIRST_WORD.match(inside)
+    return first is not None and _first_equals(inside) is None and _is_word(first["word"], names, coords)
+
+
+def _closing_bracket(rest: str) -> int | None:
+    """Where the bracket that opens ``rest`` closes, if nothing but marks of punctuation follow it; else None."""
+    depth = 0
+    for i, character in enumerate(rest):
+        depth += (character in "([{") - (character in ")]}")
+        if depth == 0:
+            return None if rest[i + 1 :].strip(" .;!") else i
+    return None
+
+
+_RELATES = re.compile(r"\s*(?:=|≈|~|<|>|≤|≥|≠|\\approx)")  # (= E, conserved), (≈ 0.5 J)
+_FIRST_WORD = re.compile(r"\s*(?:(?:an?|i\.e\.)\s+)?(?P<word>[A-Za-z]{2,})(?![\w(])", re.I)
+
+
 def _denies_only(words: str) -> bool:
     """``(friction is not in L)``: words that say "not" and no "or" nor arithmetic; beside a formula they
     are no second formula, and a person reads what they deny (:func:`says_otherwise`)."""
@@ -202,11 +254,14 @@ _NOT = re.compile(r"\b(?:not|never|isn't)\b", re.I)
 _OR = re.compile(r"\bor\b", re.I)
 
 
-def says_otherwise(words: str) -> bool:
+def says_otherwise(words: str, *, formula: bool = False) -> bool:
     """Whether prose read past may say the formula is other than written, or what its sign means
     (``upward``, ``inverted``, ``except …``), or doubts it (``not sure about the sign``) or denies, or judges it
     (``which is false``, ``sign error``), or says what kind of quantity it is (``it is a force``): a
-    person must read it before the formula earns credit."""
+    person must read it before the formula earns credit. With ``formula``, words read past beside a
+    formula, so too where they hold arithmetic, in words (``half the power dissipated``) or signs and
+    numbers (``(underdamped if b² < 4mk)``): they may change it. Not beside a number, whose words
+    may count in words (``3 translations plus 3 rotations``)."""
     return bool(
         _OTHERWISE.search(words)
         or _DOUBT.search(words)
@@ -214,7 +269,24 @@ def says_otherwise(words: str) -> bool:
         or _JUDGED.search(words)
         or _A_QUANTITY.match(words)
         or _dimensions(words)
+        or (formula and _arithmetic(words))
     )
+
+
+def _arithmetic(words: str) -> bool:
+    """Whether words hold arithmetic, in words or signs, a number, "or", or a function applied; not
+    where the potential energy is zero (``taking V = 0 at the pivot``), nor a hyphen between words."""
+    words = _HYPHEN.sub("", _ZERO_OF_POTENTIAL.sub(" ", words))
+    return bool(
+        _MATH_SIGNS & set(words)
+        or _NUMBER.search(words)
+        or _MATH_WORDS.search(words)
+        or _HEDGE.search(words)
+        or _APPLIED.search(words)
+    )
+
+
+_HYPHEN = re.compile(r"(?<=[A-Za-z])[-‐‑](?=[A-Za-z])")  # small-angle, z-component
 
 
 def quantities_named(words: str) -> frozenset[str]:
@@ -252,7 +324,10 @@ def formula_then_words(text: str, names: Collection[str], coords: Collection[str
     for start in dict.fromkeys((cut, mark if mark > line else -1)):
         formula, rest = text[:start].rstrip(), text[start:].strip()
         remark = rest.lstrip(_OPENS)
-        if start > 0 and formula and (is_prose(remark, names, doubt=True) or _dimensions(remark) or _denied(rest)):
+        if not (start > 0 and formula):
+            continue
+        prose = is_prose(remark, names, doubt=True) or _dimensions(remark) or _arithmetic_said(remark, names)
+        if prose or _denied(rest) or _closing_remark(rest, names, coords):
             yield formula, rest
 
 
