@@ -191,15 +191,7 @@ def _joined(found: re.Match, names: Collection[str]) -> str:
 def _denied(remark: str) -> bool:
     """``(not T + V)``: a remark in brackets that ends the answer and denies what follows "not", a formula
     as well as words. It says what the answer is not; a person reads it (:func:`says_otherwise`)."""
-    found = _DENIED.match(remark)
-    if found is None or "\n" in remark:
-        return False
-    depth = 0
-    for i, character in enumerate(remark):
-        depth += (character == "(") - (character == ")")
-        if depth == 0:  # where the bracket closes: nothing but marks of punctuation after it
-            return not remark[i + 1 :].strip(" .;!")
-    return False
+    return _DENIED.match(remark) is not None and "\n" not in remark and _closing_bracket(remark) is not None
 
 
 _DENIED = re.compile(r"\(\s*(?:not|never|isn't)\b", re.I)
