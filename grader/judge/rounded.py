@@ -42,7 +42,7 @@ def exact_readings(text: str) -> list[tuple[str, tuple[str, ...]]]:
     found = list(_DECIMAL.finditer(text))
     if not found or len(found) > _MOST_DECIMALS:
         return []
-    choices = [[(None, None), *_candidates(match[1])] for match in found]
+    choices = [[None, *_candidates(match[1])] for match in found]  # None: the decimal as typed
     readings = []
     # each decimal as typed or as one of its candidates: a student who rounds one number rounds the
     # others too, so every decimal written exactly first, each as its simplest candidate
@@ -52,7 +52,7 @@ def exact_readings(text: str) -> list[tuple[str, tuple[str, ...]]]:
             continue
         pieces, last, replaced = [], 0, []
         for match, options, pick in zip(found, choices, picks, strict=True):
-            exact = options[pick][1]
+            exact = options[pick]
             if exact is not None:
                 pieces += [text[last : match.start(1)], exact]
                 last = match.end(1)
@@ -63,7 +63,7 @@ def exact_readings(text: str) -> list[tuple[str, tuple[str, ...]]]:
     return readings
 
 
-def _candidates(decimal: str) -> list[tuple[float, str]]:
+def _candidates(decimal: str) -> list[str]:
     """Up to two simple exact numbers (a fraction, a fraction of π or 1/π, √n/q) that ``decimal`` rounds or cuts
     off at its last digit, simplest first, as text; none where it is exact itself (0.5, 0.25) or has
     fewer than two significant digits."""
@@ -83,7 +83,7 @@ def _candidates(decimal: str) -> list[tuple[float, str]]:
             near = abs(exact - value) <= within if exact is not None else abs(p * size / q - float(value)) <= within
             if p and math.gcd(p, q) == 1 and (factor or q > 1) and near:
                 found.append((rank, _written(p, q, factor)))
-    return sorted(found)[:_CANDIDATES]
+    return [exact for _, exact in sorted(found)[:_CANDIDATES]]
 
 
 def _roots(q: int) -> list[tuple[float, str, float]]:
