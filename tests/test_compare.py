@@ -569,6 +569,21 @@ def test_a_term_the_answer_does_not_have_is_not_said_to_differ():
     assert verdict.feedback == ("This equation does not say the same as the expected one.",), verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        # (m₁ + m₂) ẍ, solved for ẍ, is ẍ: not m₁ ẍ/(m₁ + m₂) + m₂ ẍ/(m₁ + m₂), two terms the student's
+        # ẍ = … has not, which left every mistake unnamed
+        ("ẍ = (m₁ − m₂) g/(m₁ + m₂) + x", "There is a term too many: a term in x."),
+        ("ẍ = (m₁ − m₂) g/(m₁ + m₂) − g", "There is a term too many: a gravity term."),
+        ("2 ẍ = (m₁ − m₂) g/(m₁ + m₂)", "A term differs: the gravity term with m₂ has the wrong factor."),
+    ],
+)
+def test_an_acceleration_whose_factor_is_a_sum_is_one_term_once_solved(submitted, feedback):
+    verdict = compare("(m1 + m2) xddot = (m1 - m2) g", submitted, kind="equation", coords=["x"], known=["m1", "m2"])
+    assert (verdict.status, verdict.feedback[0]) == ("not_equivalent", feedback), verdict
+
+
 ATWOOD_A = "(m1 - m2) g / (m1 + m2)"
 MASSES = {"coords": ["x"], "known": ["m1", "m2", "g"]}
 MOMENTUM_PHI = "m l^2 sin(theta)^2 phidot"

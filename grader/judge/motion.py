@@ -844,8 +844,11 @@ def _solved(g, acceleration):
         # each term as it does from the student's (m₁ + m₂) l₁ θ̈₁ + …, and the shapes of the two agree
         # (multiplied out again, as the expected terms are: 1/(l₁m₁ + l₁m₂) for 1/(l₁(m₁ + m₂)))
         lead = sympy.factor(sympy.Add(*coefficients))
-        quotient = expand_terms(sympy.Add(*(term / lead for term in terms)))
-        return None if quotient is None else sympy.Add(*(c * shape for shape, c in quotient.items()))
+        # the acceleration's own terms come to the acceleration alone: divided one by one, (m₁ + m₂) ẍ
+        # would stay m₁ ẍ/(m₁ + m₂) + m₂ ẍ/(m₁ + m₂), two terms no solved answer has
+        rest = [term for term in terms if not term.has(acceleration)]
+        quotient = expand_terms(sympy.Add(*(term / lead for term in rest)))
+        return None if quotient is None else acceleration + sympy.Add(*(c * shape for shape, c in quotient.items()))
     lead = sympy.diff(g, acceleration)
     return None if lead == 0 else sympy.expand(g / lead)
 
