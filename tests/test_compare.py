@@ -2379,6 +2379,29 @@ def test_one_term_in_its_small_angle_form_is_said_so_not_as_a_term_missing_and_o
     )
 
 
+SMALL_ANGLE_KEPT = [
+    # sin u → u and cos u → 1 put in, as students write for small angles: a term of third order
+    # (θ φ̇², (α − β) α̇²) stays, which the linearized equations have not
+    ("thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta)", "θ̈ = θ φ̇² − (g/l) θ", "equation", SPHERICAL),
+    ("thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta)", "θ̈ = θ (1 − θ²/2) φ̇² − (g/l) θ", "equation",
+     SPHERICAL),
+    ("sin(theta)^2 phiddot + 2 sin(theta) cos(theta) thetadot phidot = 0", "θ φ̈ + 2 θ̇ φ̇ = 0", "equation", SPHERICAL),
+    (EOM_DOUBLE_2, "l2 θ̈₂ + l1 θ̈₁ − l1 θ̇₁² (θ₁ − θ₂) + g θ₂ = 0", "equation", DOUBLE),
+    (SPHERICAL_EOM, "θ̈ = θ φ̇² − (g/l) θ; θ φ̈ + 2 θ̇ φ̇ = 0", "equations", SPHERICAL),
+    (EOM_DOUBLE, "(m1+m2) l1 θ̈₁ + m2 l2 θ̈₂ + m2 l2 θ̇₂² (θ₁ − θ₂) + (m1+m2) g θ₁ = 0;"
+     " l2 θ̈₂ + l1 θ̈₁ − l1 θ̇₁² (θ₁ − θ₂) + g θ₂ = 0", "equations", DOUBLE),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "kind", "setting"), SMALL_ANGLE_KEPT)
+def test_equations_with_sines_put_as_their_angles_are_said_to_be_small_angle_forms(expected, submitted, kind, setting):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == (
+        "not_equivalent",
+        ("You used the small-angle approximation, but the full answer is asked for here.",),
+    ), verdict
+
+
 DOUBLE_T = "1/2 (m1+m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot cos(theta1-theta2)"
 
 

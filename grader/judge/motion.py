@@ -54,7 +54,7 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import MAX_TERMS, TERM_KEYS, coefficients_differ, expand_terms, taylor, terms
+from grader.judge.diagnose import MAX_TERMS, TERM_KEYS, coefficients_differ, expand_terms, small_angle, taylor, terms
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values, term_outcome
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
@@ -776,7 +776,8 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "e
     _, pairs = same_values(expected, normal_f, normal_g, deadline, key=key)
     outcome = diagnose_difference(
         expected, normal_f, normal_g, pairs, deadline, key=key,
-        approximations=lambda expr: [taylor(expr, expected.setting, 1)],
+        # linearized, or sin u → u and cos u → 1 put in: θ̈ = θ φ̇² − (g/l) θ keeps a term of third order
+        approximations=lambda expr: [taylor(expr, expected.setting, 1), *small_angle(expr, expected.setting)],
         termwise=lambda: _solved(g, acceleration),
     )  # fmt: skip
     if outcome.key in ("sign", "factor", "wrong"):
@@ -1275,18 +1276,34 @@ def _state_agrees(state: _State) -> bool:
 
 
 def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: Deadline) -> bool:
-    """Whether the submitted system is the expected one linearized about q = q̇ = 0."""
-    if "equations, linearized" not in expected.cache:
-        linear = [taylor(f, expected.setting, 1) for f in _expected_equations(expected)[0]]
-        finite = not any(f.has(sympy.nan, sympy.zoo) for f in linear)
-        expected.cache["equations, linearized"] = (
-            [expected.compiled(f"equations, linearized {i}", f) for i, f in enumerate(linear)] if finite else None
-        )
-    linear_fs = expected.cache["equations, linearized"]
-    if linear_fs is None:
-        return False
-    states = [state for _, state in _states(expected, linear_fs, submitted_gs, deadline)]
-    return len(states) >= MIN_DEFINED and _system_outcome(expected, states, theirs).key == "equivalent"
+    """Whether the submitted system is the expected one linearized about q = q̇ = 0, or with
+    sin u → u and cos u → 1 (or 1 − u²/2) in it."""
+    if "equations, small angle" not in expected.cache:
+        expected.cache["equations, small angle"] = [
+            [expected.compiled(f"equations, small angle {number} {i}", f) for i, f in enumerate(system)]
+            for number, system in enumerate(_small_angle_systems(expected))
+        ]
+    for forms in expected.cache["equations, small angle"]:
+        deadline.check()
+        states = [state for _, state in _states(expected, forms, submitted_gs, deadline)]
+        if len(states) >= MIN_DEFINED and _system_outcome(expected, states, theirs).key == "equivalent":
+            return True
+    return False
+
+
+def _small_angle_systems(expected: Expected) -> list[list]:
+    """The expected equations linearized, and with sin u → u, cos u → 1 (or 1 − u²/2) put in each.
+
+    Linearized, the spherical pendulum's θ̈ − sin θ cos θ φ̇² + (g/l) sin θ loses its φ̇² term, a
+    third-order one; the form a student writes for small θ keeps it, as θ̈ − θ φ̇² + (g/l) θ.
+    """
+    equations = _expected_equations(expected)[0]
+    linear = [taylor(f, expected.setting, 1) for f in equations]
+    # each equation's forms, cos u → 1 then → 1 − u²/2; one without an angle's functions as it is
+    substituted = [small_angle(f, expected.setting) or [f, f] for f in equations]
+    systems = [linear, *([forms[k] for forms in substituted] for k in range(2))]
+    finite = [system for system in systems if not any(f.has(sympy.nan, sympy.zoo) for f in system)]
+    return [system for number, system in enumerate(finite) if system not in finite[:number]]
 
 
 def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
