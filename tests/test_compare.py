@@ -2402,6 +2402,28 @@ def test_equations_with_sines_put_as_their_angles_are_said_to_be_small_angle_for
     ), verdict
 
 
+SMALL_ANGLE_ONE_OF_TWO = "You used the small-angle approximation, but the full answer is asked for here."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "feedback"),
+    [
+        # one equation of the system in its small-angle form: which one, and that it is one
+        (SPHERICAL_EOM, "θ̈ = θ φ̇² − (g/l) θ; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0", SPHERICAL,
+         ("Your equation for θ is not right; equation 2 is right.", SMALL_ANGLE_ONE_OF_TWO)),
+        (EOM_DOUBLE, f"{EOM_DOUBLE_1}; l2 θ̈₂ + l1 θ̈₁ + g θ₂ = 0", DOUBLE,
+         ("Your equation for θ₂ is not right; equation 1 is right.", SMALL_ANGLE_ONE_OF_TWO)),
+        (SPHERICAL_EOM, "θ̈ = θ φ̇² − (g/l) θ; φ̈ = 0", SPHERICAL,
+         ("Your equations do not determine the right accelerations for θ, φ.",
+          "In your equation 1, you used the small-angle approximation, but the full answer is asked for here.",
+          "In your equation 2, a term is missing: a velocity-dependent term in cos(θ).")),
+    ],
+)  # fmt: skip
+def test_an_equation_of_a_system_in_its_small_angle_form_is_said_so(expected, submitted, setting, feedback):
+    verdict = compare(expected, submitted, kind="equations", **setting)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", feedback), verdict
+
+
 DOUBLE_T = "1/2 (m1+m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot cos(theta1-theta2)"
 
 

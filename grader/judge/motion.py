@@ -1253,6 +1253,8 @@ def _terms_named(expected: Expected, references: Sequence, g, position: int, dea
             continue  # θ̈₁ = … solved is no term or two away from an equation in θ̈₁ and θ̈₂
         plain = plain if plain is not None else expected.setting.plain(g)  # built only when compared
         outcome = _diagnose_motion(expected, f, plain, deadline, key=f"equations {i}, normalized")
+        if outcome.key == "small_angle":  # θ̈ = θ φ̇² − (g/l) θ beside a right φ equation
+            return (("small_angle", {}),)
         if outcome.key in TERM_KEYS:
             sentences = ((outcome.key, outcome.details), *outcome.more)
             if len(sentences) == 1:
