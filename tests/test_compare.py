@@ -2287,6 +2287,34 @@ def test_an_equation_times_a_factor_that_touches_zero_is_not_equivalent(submitte
         assert verdict.diagnosis == "vanishing_factor_between"
 
 
+FEEDBACK_SENTENCES = {
+    "vanishing_factor_between": "Your equation is right only where a factor of it is not zero: where that factor is"
+    " zero, it no longer says what the acceleration is. Divide that factor out.",
+    "vanishing_factor_system_between": "One of your equations is right only where a factor of it is not zero: where"
+    " that factor is zero, your equations no longer determine every acceleration. Divide that factor out.",
+}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "setting", "diagnosis"),
+    [
+        # the factor multiplied into every term: each term is as small as the factor where it vanishes,
+        # so the terms' own rounding could not call the equation zero there, and it was marked right
+        (EOM_PENDULUM, "θ̈ cos θ = −(g/l) sin θ cos θ", "equation", PENDULUM, "vanishing_factor_between"),
+        (EOM_PENDULUM, "θ̈ cos θ = −(g/(2 l)) sin 2θ", "equation", PENDULUM, "vanishing_factor_between"),
+        (EOM_PENDULUM, "θ̈ cos²θ + (g/l) sin θ cos²θ = 0", "equation", PENDULUM, "vanishing_factor_between"),
+        (SPHERICAL_EOM, "cos θ θ̈ − sin θ cos²θ φ̇² + (g/l) sin θ cos θ = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0",
+         "equations", SPHERICAL, "vanishing_factor_system_between"),
+        (SPHERICAL_EOM, "θ̈ − sin θ cos θ φ̇² + (g/l) sin θ = 0; cos θ sin θ φ̈ + 2 cos²θ θ̇ φ̇ = 0",
+         "equations", SPHERICAL, "vanishing_factor_system_between"),
+    ],
+)  # fmt: skip
+def test_a_vanishing_factor_multiplied_out_is_found_as_one_kept_outside(expected, submitted, kind, setting, diagnosis):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", diagnosis), verdict
+    assert verdict.feedback == (FEEDBACK_SENTENCES[diagnosis],)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status"),
     [

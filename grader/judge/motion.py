@@ -85,6 +85,10 @@ _CONSTANT = 1e-9
 # double zero's, the parabola misses zero by about h²/12 of them, h the samples' spacing: < 0.01)
 _DIP = 0.05
 _MOST_DIPS = 32  # dips narrowed at most, in one numpy pass a round
+# a factor narrowed to this part of its size along the segment has fallen to rounding there: a zero,
+# though every term of the submitted equations holds it (θ̈ cos θ + (g/l) sin θ cos θ), so that their
+# own rounding, of terms as small as the factor, cannot call their rows zero
+_VANISHED = 1e-12
 _SMOOTH = 2.0  # a pole of the expected equations grows at least 3 times over a dip's samples
 
 
@@ -543,9 +547,12 @@ def _scalings(mine: np.ndarray, theirs: np.ndarray) -> tuple[np.ndarray, np.ndar
     return factor, own.real
 
 
-def _says_less(a: _Rows, b: _Rows) -> bool:
+def _says_less(a: _Rows, b: _Rows, *, vanished: bool = False) -> bool:
     """Whether rows ``b`` leave undetermined what rows ``a`` say at their state: one equation all
-    of whose entries are within rounding of zero, or a system that no longer fixes an acceleration.
+    of whose entries are within rounding of zero, or a system that no longer fixes an acceleration;
+    with ``vanished`` (the factor from ``a`` to ``b`` has fallen to rounding), whether ``a`` says
+    anything there (of a system, fixes every acceleration: at its own singular point, as the
+    spherical pendulum's pole, the factor may vanish where ``a`` fixes no more than ``b``).
 
     What ``a`` says must be plain: an entry of it that rounding cannot tell from zero (closeness
     unsure) says nothing. At the expected equations' own singular point their coefficient may be
@@ -555,10 +562,12 @@ def _says_less(a: _Rows, b: _Rows) -> bool:
         said = any(
             closeness(x, 0, scale) is Closeness.DIFFERENT for x, scale in zip(a.rows[0], a.entry_scales[0], strict=True)
         )
-        silent = all(
+        silent = vanished or all(
             closeness(x, 0, scale) is Closeness.EQUAL for x, scale in zip(b.rows[0], b.entry_scales[0], strict=True)
         )
         return said and silent
+    if vanished and all(_determined(a, plain=True)):
+        return True
     return any(mine and not yours for mine, yours in zip(_determined(a, plain=True), _determined(b), strict=True))
 
 
@@ -595,7 +604,8 @@ def _silent_between(
         rows = [_rows_at(expected, system, nearest.tolist(), step, exact=False, floats=True) for system in systems]
     except UNDEFINED:
         return False
-    return _says_less(*rows)
+    vanished = min(abs(factors[change - 1]), abs(factors[change])) <= _VANISHED * size
+    return _says_less(*rows, vanished=vanished)
 
 
 def _touches_between(
@@ -631,6 +641,7 @@ def _touches_between(
     lows, spans = lows[owners], spans[owners]
     low, high = (dips - 1) / (_ALONG - 1), (dips + 1) / (_ALONG - 1)
     norm0, own0 = first[1][owners, dips], first[2][owners, dips]
+    size0 = np.nanmax(first[0][owners], axis=1)  # the factor's size along each dip's segment
     for _ in range(_ROUNDS):
         where = low[:, None] + along[None, :] * (high - low)[:, None]  # brackets × _ALONG fractions
         sizes, norms, owns = _factor_sizes_at(expected, systems, lows, spans, where, step)
@@ -642,13 +653,14 @@ def _touches_between(
             return False
         low, high = np.maximum(lowest - width, 0.0)[alive], np.minimum(lowest + width, 1.0)[alive]
         lows, spans, norm0, own0 = lows[alive], spans[alive], norm0[alive], own0[alive]
-    for start, span, fraction in zip(lows, spans, (low + high) / 2, strict=True):
+        least, size0 = sizes[every, at][alive], size0[alive]
+    for start, span, fraction, vanished in zip(lows, spans, (low + high) / 2, least <= _VANISHED * size0, strict=True):
         try:
             point = (start + fraction * span).tolist()
             rows = [_rows_at(expected, system, point, step, exact=False, floats=True) for system in systems]
         except UNDEFINED:
             continue
-        if _says_less(*rows):
+        if _says_less(*rows, vanished=bool(vanished)):
             return True
     return False
 
