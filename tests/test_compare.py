@@ -584,6 +584,24 @@ def test_an_acceleration_whose_factor_is_a_sum_is_one_term_once_solved(submitted
     assert (verdict.status, verdict.feedback[0]) == ("not_equivalent", feedback), verdict
 
 
+WEDGE = {"coords": ["X", "s"], "known": ["m", "M", "g", "alpha0"]}  # a block sliding s down a wedge at X
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "feedback"),
+    [
+        # the expected equation solved for Ẍ first: an answer without Ẍ was told it said nothing alike,
+        # as if it were the other coordinate's equation, where a term of it is missing
+        ("sddot + Xddot cos(alpha0) - g sin(alpha0) = 0", "s̈ = g sin α₀",
+         ("A term is missing: a term with an acceleration.",)),
+        ("(M + m) Xddot + m sddot cos(alpha0) = 0", "s̈ = 0", ("A term is missing: a term with an acceleration.",)),
+    ],
+)  # fmt: skip
+def test_an_equation_without_the_first_acceleration_is_solved_for_one_it_has(expected, submitted, feedback):
+    verdict = compare(expected, submitted, kind="equation", **WEDGE)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", feedback), verdict
+
+
 ATWOOD_A = "(m1 - m2) g / (m1 + m2)"
 MASSES = {"coords": ["x"], "known": ["m1", "m2", "g"]}
 MOMENTUM_PHI = "m l^2 sin(theta)^2 phidot"

@@ -772,8 +772,18 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "e
         expected.cache[key] = acceleration, _solved(f, acceleration)
     acceleration, normal_f = expected.cache[key]
     coefficient = _coefficient(g, acceleration)
-    if coefficient == 0:  # none of this acceleration: another coordinate's equation
-        return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+    if coefficient == 0:
+        # solved for another acceleration of the expected equation, one the answer has: s̈ = g sin α₀ for
+        # s̈ + Ẍ cos α₀ = g sin α₀ (solved for Ẍ first) lacks a term, and is no other coordinate's equation
+        others = [expected.setting.acceleration(q) for q in accelerations_in(f, expected)]
+        other = next((a for a in others if a != acceleration and _coefficient(g, a) != 0), None)
+        if other is None:  # none of the expected equation's accelerations: another coordinate's equation
+            return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+        key = f"{key}, for {other}"
+        if key not in expected.cache:
+            expected.cache[key] = other, _solved(f, other)
+        acceleration, normal_f = expected.cache[key]
+        coefficient = _coefficient(g, acceleration)
     # the same terms, off in their parameters: named in the ratio most share, or not at all, since
     # solved for an acceleration whose own factor is off, the right terms would be named instead
     scaled = _off_in_scale(expected, f, g, key)
