@@ -2425,6 +2425,24 @@ def test_one_term_in_its_small_angle_form_is_said_so_not_as_a_term_missing_and_o
     )
 
 
+SPHERICAL_FULL_L = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind"),
+    [
+        # m g l cos θ ≈ m g l − ½ m g l θ²: the terms that vary are compared, and −½ m g l θ² is its part
+        (SPHERICAL_FULL_L, "½ m l² (θ̇² + sin²θ φ̇²) − ½ m g l θ²", "lagrangian"),
+        (SPHERICAL_FULL_L, "½ m l² (θ̇² + sin²θ φ̇²) − ½ m g l θ²", "expression"),
+    ],
+)
+def test_a_potential_in_its_small_angle_form_beside_full_kinetic_terms_is_said_so(expected, submitted, kind):
+    verdict = compare(expected, submitted, kind=kind, **SPHERICAL)
+    assert verdict.feedback == (
+        "A term differs: the gravity term is in its small-angle form, and the full form is asked for.",
+    ), verdict
+
+
 SMALL_ANGLE_KEPT = [
     # sin u → u and cos u → 1 put in, as students write for small angles: a term of third order
     # (θ φ̇², (α − β) α̇²) stays, which the linearized equations have not
