@@ -455,8 +455,8 @@ def _by_form(collected: dict) -> dict:
 def _small_but_constant(lost, gained, coefficients: tuple, setting: Setting) -> bool:
     """Whether ``gained`` (times its coefficient) is what varies of ``lost``'s small-angle form: −½ m g l θ²
     for m g l cos θ, whose small-angle form m g l (1 − θ²/2) has a constant the terms compared leave out."""
-    if None in coefficients:
-        return False
+    if None in coefficients or has_angle_functions(gained, setting) or not has_angle_functions(lost, setting):
+        return False  # (checked first: sympy's expansion below costs a wrong answer milliseconds)
     moving = set(setting.state.values())
     for form in small_angle(coefficients[0] * lost, setting, second_order=True):
         varying = [term for term in sympy.Add.make_args(sympy.expand(form)) if term.free_symbols & moving]

@@ -54,7 +54,16 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import MAX_TERMS, TERM_KEYS, coefficients_differ, expand_terms, small_angle, taylor, terms
+from grader.judge.diagnose import (
+    MAX_TERMS,
+    TERM_KEYS,
+    coefficients_differ,
+    expand_terms,
+    has_angle_functions,
+    small_angle,
+    taylor,
+    terms,
+)
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values, term_outcome
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
@@ -1193,7 +1202,12 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     if outcome.key == "equivalent" and _vanishes_between(expected, expected_fs, submitted_gs):
         return Outcome("not_equivalent", 0.0, "vanishing_factor_system_between", method=outcome.method)
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
-    if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
+    # an answer that keeps sin θ or cos θ is no small-angle form: the forms are not tried, at milliseconds each
+    if (
+        wrong
+        and not any(has_angle_functions(expected.setting.plain(g), expected.setting) for g in theirs)
+        and _is_small_angle_system(expected, submitted_gs, theirs, deadline)
+    ):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
     if not wrong:
         return outcome
@@ -1301,7 +1315,7 @@ def _state_agrees(state: _State) -> bool:
 
 def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: Deadline) -> bool:
     """Whether the submitted system is the expected one linearized about q = q̇ = 0, or with
-    sin u → u and cos u → 1 (or 1 − u²/2) in it."""
+    sin u → u and cos u → 1 in it."""
     if "equations, small angle" not in expected.cache:
         expected.cache["equations, small angle"] = [
             [expected.compiled(f"equations, small angle {number} {i}", f) for i, f in enumerate(system)]
@@ -1316,17 +1330,16 @@ def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: D
 
 
 def _small_angle_systems(expected: Expected) -> list[list]:
-    """The expected equations linearized, and with sin u → u, cos u → 1 (or 1 − u²/2) put in each.
+    """The expected equations linearized, and with sin u → u, cos u → 1 put in each.
 
     Linearized, the spherical pendulum's θ̈ − sin θ cos θ φ̇² + (g/l) sin θ loses its φ̇² term, a
-    third-order one; the form a student writes for small θ keeps it, as θ̈ − θ φ̇² + (g/l) θ.
+    third-order one; the form a student writes for small θ keeps it, as θ̈ − θ φ̇² + (g/l) θ. (Not
+    cos u → 1 − u²/2 too, as for one equation: each form tried costs a wrong system milliseconds.)
     """
     equations = _expected_equations(expected)[0]
     linear = [taylor(f, expected.setting, 1) for f in equations]
-    # each equation's forms, cos u → 1 then → 1 − u²/2; one without an angle's functions as it is
-    substituted = [small_angle(f, expected.setting) or [f, f] for f in equations]
-    systems = [linear, *([forms[k] for forms in substituted] for k in range(2))]
-    finite = [system for system in systems if not any(f.has(sympy.nan, sympy.zoo) for f in system)]
+    substituted = [(small_angle(f, expected.setting) or [f])[0] for f in equations]  # no angle's function: as it is
+    finite = [system for system in (linear, substituted) if not any(f.has(sympy.nan, sympy.zoo) for f in system)]
     return [system for number, system in enumerate(finite) if system not in finite[:number]]
 
 
