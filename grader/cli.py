@@ -433,7 +433,7 @@ def _run_compare(args: argparse.Namespace) -> int:
             print(f"  {sentence}")
         if verdict.status == "invalid":
             print("\n".join(f"  {line}" for line in verdict.read_as.splitlines()))
-        else:
+        elif verdict.read_as:  # an answer the time limit stopped before it was read has no reading to show
             print(f"read as: {verdict.read_as}")
     return _EXIT_BY_STATUS[verdict.status]
 

@@ -106,6 +106,14 @@ def test_compare_explains_the_mistake_and_shows_how_the_answer_was_read(capsys):
     ]
 
 
+def test_an_answer_the_time_limit_stopped_before_it_was_read_shows_no_empty_reading(capsys):
+    assert main(["compare", "--timeout", "1e-9", "--coords", "theta", "sin(theta)", "cos(theta)"]) == 3
+    assert capsys.readouterr().out.splitlines() == [
+        "undecided (score 0, by timeout)",
+        "  This answer could not be checked automatically; it has been set aside for a person to grade.",
+    ]
+
+
 def test_compare_json_has_the_verdict_fields(capsys):
     main(["compare", "--json", "--known", "m", "2m", "m+m"])
     record = json.loads(capsys.readouterr().out)

@@ -569,6 +569,39 @@ def test_a_term_the_answer_does_not_have_is_not_said_to_differ():
     assert verdict.feedback == ("This equation does not say the same as the expected one.",), verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        # (m₁ + m₂) ẍ, solved for ẍ, is ẍ: not m₁ ẍ/(m₁ + m₂) + m₂ ẍ/(m₁ + m₂), two terms the student's
+        # ẍ = … has not, which left every mistake unnamed
+        ("ẍ = (m₁ − m₂) g/(m₁ + m₂) + x", "There is a term too many: a term in x."),
+        ("ẍ = (m₁ − m₂) g/(m₁ + m₂) − g", "There is a term too many: a gravity term."),
+        ("2 ẍ = (m₁ − m₂) g/(m₁ + m₂)", "A term differs: the gravity term with m₂ has the wrong factor."),
+    ],
+)
+def test_an_acceleration_whose_factor_is_a_sum_is_one_term_once_solved(submitted, feedback):
+    verdict = compare("(m1 + m2) xddot = (m1 - m2) g", submitted, kind="equation", coords=["x"], known=["m1", "m2"])
+    assert (verdict.status, verdict.feedback[0]) == ("not_equivalent", feedback), verdict
+
+
+WEDGE = {"coords": ["X", "s"], "known": ["m", "M", "g", "alpha0"]}  # a block sliding s down a wedge at X
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "feedback"),
+    [
+        # the expected equation solved for Ẍ first: an answer without Ẍ was told it said nothing alike,
+        # as if it were the other coordinate's equation, where a term of it is missing
+        ("sddot + Xddot cos(alpha0) - g sin(alpha0) = 0", "s̈ = g sin α₀",
+         ("A term is missing: a term with an acceleration.",)),
+        ("(M + m) Xddot + m sddot cos(alpha0) = 0", "s̈ = 0", ("A term is missing: a term with an acceleration.",)),
+    ],
+)  # fmt: skip
+def test_an_equation_without_the_first_acceleration_is_solved_for_one_it_has(expected, submitted, feedback):
+    verdict = compare(expected, submitted, kind="equation", **WEDGE)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", feedback), verdict
+
+
 ATWOOD_A = "(m1 - m2) g / (m1 + m2)"
 MASSES = {"coords": ["x"], "known": ["m1", "m2", "g"]}
 MOMENTUM_PHI = "m l^2 sin(theta)^2 phidot"
@@ -2272,6 +2305,34 @@ def test_an_equation_times_a_factor_that_touches_zero_is_not_equivalent(submitte
         assert verdict.diagnosis == "vanishing_factor_between"
 
 
+FEEDBACK_SENTENCES = {
+    "vanishing_factor_between": "Your equation is right only where a factor of it is not zero: where that factor is"
+    " zero, it no longer says what the acceleration is. Divide that factor out.",
+    "vanishing_factor_system_between": "One of your equations is right only where a factor of it is not zero: where"
+    " that factor is zero, your equations no longer determine every acceleration. Divide that factor out.",
+}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "setting", "diagnosis"),
+    [
+        # the factor multiplied into every term: each term is as small as the factor where it vanishes,
+        # so the terms' own rounding could not call the equation zero there, and it was marked right
+        (EOM_PENDULUM, "θ̈ cos θ = −(g/l) sin θ cos θ", "equation", PENDULUM, "vanishing_factor_between"),
+        (EOM_PENDULUM, "θ̈ cos θ = −(g/(2 l)) sin 2θ", "equation", PENDULUM, "vanishing_factor_between"),
+        (EOM_PENDULUM, "θ̈ cos²θ + (g/l) sin θ cos²θ = 0", "equation", PENDULUM, "vanishing_factor_between"),
+        (SPHERICAL_EOM, "cos θ θ̈ − sin θ cos²θ φ̇² + (g/l) sin θ cos θ = 0; sin θ φ̈ + 2 cos θ θ̇ φ̇ = 0",
+         "equations", SPHERICAL, "vanishing_factor_system_between"),
+        (SPHERICAL_EOM, "θ̈ − sin θ cos θ φ̇² + (g/l) sin θ = 0; cos θ sin θ φ̈ + 2 cos²θ θ̇ φ̇ = 0",
+         "equations", SPHERICAL, "vanishing_factor_system_between"),
+    ],
+)  # fmt: skip
+def test_a_vanishing_factor_multiplied_out_is_found_as_one_kept_outside(expected, submitted, kind, setting, diagnosis):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", diagnosis), verdict
+    assert verdict.feedback == (FEEDBACK_SENTENCES[diagnosis],)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status"),
     [
@@ -2362,6 +2423,69 @@ def test_one_term_in_its_small_angle_form_is_said_so_not_as_a_term_missing_and_o
         "Your equation for θ is not right; equation 2 is right.",
         "A term differs: the gravity term is in its small-angle form, and the full form is asked for.",
     )
+
+
+SPHERICAL_FULL_L = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind"),
+    [
+        # m g l cos θ ≈ m g l − ½ m g l θ²: the terms that vary are compared, and −½ m g l θ² is its part
+        (SPHERICAL_FULL_L, "½ m l² (θ̇² + sin²θ φ̇²) − ½ m g l θ²", "lagrangian"),
+        (SPHERICAL_FULL_L, "½ m l² (θ̇² + sin²θ φ̇²) − ½ m g l θ²", "expression"),
+    ],
+)
+def test_a_potential_in_its_small_angle_form_beside_full_kinetic_terms_is_said_so(expected, submitted, kind):
+    verdict = compare(expected, submitted, kind=kind, **SPHERICAL)
+    assert verdict.feedback == (
+        "A term differs: the gravity term is in its small-angle form, and the full form is asked for.",
+    ), verdict
+
+
+SMALL_ANGLE_KEPT = [
+    # sin u → u and cos u → 1 put in, as students write for small angles: a term of third order
+    # (θ φ̇², (α − β) α̇²) stays, which the linearized equations have not
+    ("thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta)", "θ̈ = θ φ̇² − (g/l) θ", "equation", SPHERICAL),
+    ("thetaddot = sin(theta) cos(theta) phidot^2 - (g/l) sin(theta)", "θ̈ = θ (1 − θ²/2) φ̇² − (g/l) θ", "equation",
+     SPHERICAL),
+    ("sin(theta)^2 phiddot + 2 sin(theta) cos(theta) thetadot phidot = 0", "θ φ̈ + 2 θ̇ φ̇ = 0", "equation", SPHERICAL),
+    (EOM_DOUBLE_2, "l2 θ̈₂ + l1 θ̈₁ − l1 θ̇₁² (θ₁ − θ₂) + g θ₂ = 0", "equation", DOUBLE),
+    (SPHERICAL_EOM, "θ̈ = θ φ̇² − (g/l) θ; θ φ̈ + 2 θ̇ φ̇ = 0", "equations", SPHERICAL),
+    (EOM_DOUBLE, "(m1+m2) l1 θ̈₁ + m2 l2 θ̈₂ + m2 l2 θ̇₂² (θ₁ − θ₂) + (m1+m2) g θ₁ = 0;"
+     " l2 θ̈₂ + l1 θ̈₁ − l1 θ̇₁² (θ₁ − θ₂) + g θ₂ = 0", "equations", DOUBLE),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "kind", "setting"), SMALL_ANGLE_KEPT)
+def test_equations_with_sines_put_as_their_angles_are_said_to_be_small_angle_forms(expected, submitted, kind, setting):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == (
+        "not_equivalent",
+        ("You used the small-angle approximation, but the full answer is asked for here.",),
+    ), verdict
+
+
+SMALL_ANGLE_ONE_OF_TWO = "You used the small-angle approximation, but the full answer is asked for here."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "setting", "feedback"),
+    [
+        # one equation of the system in its small-angle form: which one, and that it is one
+        (SPHERICAL_EOM, "θ̈ = θ φ̇² − (g/l) θ; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0", SPHERICAL,
+         ("Your equation for θ is not right; equation 2 is right.", SMALL_ANGLE_ONE_OF_TWO)),
+        (EOM_DOUBLE, f"{EOM_DOUBLE_1}; l2 θ̈₂ + l1 θ̈₁ + g θ₂ = 0", DOUBLE,
+         ("Your equation for θ₂ is not right; equation 1 is right.", SMALL_ANGLE_ONE_OF_TWO)),
+        (SPHERICAL_EOM, "θ̈ = θ φ̇² − (g/l) θ; φ̈ = 0", SPHERICAL,
+         ("Your equations do not determine the right accelerations for θ, φ.",
+          "In your equation 1, you used the small-angle approximation, but the full answer is asked for here.",
+          "In your equation 2, a term is missing: a velocity-dependent term in cos(θ).")),
+    ],
+)  # fmt: skip
+def test_an_equation_of_a_system_in_its_small_angle_form_is_said_so(expected, submitted, setting, feedback):
+    verdict = compare(expected, submitted, kind="equations", **setting)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", feedback), verdict
 
 
 DOUBLE_T = "1/2 (m1+m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot cos(theta1-theta2)"

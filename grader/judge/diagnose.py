@@ -248,7 +248,9 @@ def term_changes(expected_terms: dict | None, submitted_terms: dict | None, sett
             return regrouped
     if len(changes) == 2 and len(lost) == 1 and len(gained) == 1:
         coefficients = (expected_terms.get(lost[0]), submitted_terms.get(gained[0]))
-        if coefficients[0] == coefficients[1] and gained[0] in small_angle(lost[0], setting):
+        if (coefficients[0] == coefficients[1] and gained[0] in small_angle(lost[0], setting)) or _small_but_constant(
+            lost[0], gained[0], coefficients, setting
+        ):
             # g θ for g sin θ in one equation of a system: not "a term in sin θ missing, a gravity term too many"
             named = describe_term(gained[0], setting, definite=True, own=True)
             return [("term_differs", f"{named} is in its small-angle form, and the full form is asked for")]
@@ -448,6 +450,19 @@ def _by_form(collected: dict) -> dict:
         written, before = by_form.get(form, (shape, 0))
         by_form[form] = (written, before + coefficient * times)
     return by_form
+
+
+def _small_but_constant(lost, gained, coefficients: tuple, setting: Setting) -> bool:
+    """Whether ``gained`` (times its coefficient) is what varies of ``lost``'s small-angle form: −½ m g l θ²
+    for m g l cos θ, whose small-angle form m g l (1 − θ²/2) has a constant the terms compared leave out."""
+    if None in coefficients or has_angle_functions(gained, setting) or not has_angle_functions(lost, setting):
+        return False  # (checked first: sympy's expansion below costs a wrong answer milliseconds)
+    moving = set(setting.state.values())
+    for form in small_angle(coefficients[0] * lost, setting, second_order=True):
+        varying = [term for term in sympy.Add.make_args(sympy.expand(form)) if term.free_symbols & moving]
+        if varying and sympy.expand(sympy.Add(*varying) - coefficients[1] * gained) == 0:
+            return True
+    return False
 
 
 def _one_term_changed(changes: list, lost, gained, setting: Setting, written: list) -> list:

@@ -108,6 +108,8 @@ FEEDBACK: dict[str, str] = {
     "constant_offset_kinetic": "Your answer is right but for an added constant: a kinetic energy has none, it is"
     " zero when nothing moves.",
     "small_angle": "You used the small-angle approximation, but the full answer is asked for here.",
+    "small_angle_in": "In your equation {index}, you used the small-angle approximation, but the full answer is"
+    " asked for here.",
     # "kinetic" and "potential" energy would be wrong words where T has a part without velocities (a hoop
     # turned at a fixed rate): the terms are told by what they hold
     "potential_wrong": "The terms of your Lagrangian with velocities are right, but not the terms without{factor}.",

@@ -54,7 +54,16 @@ import numpy as np
 import sympy
 
 from grader.judge.deadline import Deadline
-from grader.judge.diagnose import MAX_TERMS, TERM_KEYS, coefficients_differ, expand_terms, taylor, terms
+from grader.judge.diagnose import (
+    MAX_TERMS,
+    TERM_KEYS,
+    coefficients_differ,
+    expand_terms,
+    has_angle_functions,
+    small_angle,
+    taylor,
+    terms,
+)
 from grader.judge.expected import Expected, Outcome
 from grader.judge.expression import diagnose_difference, same_values, term_outcome
 from grader.judge.numeric import FLOAT_EQUAL, PRECISE_DIGITS, UNDEFINED, Closeness, Compiled, closeness
@@ -85,6 +94,10 @@ _CONSTANT = 1e-9
 # double zero's, the parabola misses zero by about h²/12 of them, h the samples' spacing: < 0.01)
 _DIP = 0.05
 _MOST_DIPS = 32  # dips narrowed at most, in one numpy pass a round
+# a factor narrowed to this part of its size along the segment has fallen to rounding there: a zero,
+# though every term of the submitted equations holds it (θ̈ cos θ + (g/l) sin θ cos θ), so that their
+# own rounding, of terms as small as the factor, cannot call their rows zero
+_VANISHED = 1e-12
 _SMOOTH = 2.0  # a pole of the expected equations grows at least 3 times over a dip's samples
 
 
@@ -543,9 +556,12 @@ def _scalings(mine: np.ndarray, theirs: np.ndarray) -> tuple[np.ndarray, np.ndar
     return factor, own.real
 
 
-def _says_less(a: _Rows, b: _Rows) -> bool:
+def _says_less(a: _Rows, b: _Rows, *, vanished: bool = False) -> bool:
     """Whether rows ``b`` leave undetermined what rows ``a`` say at their state: one equation all
-    of whose entries are within rounding of zero, or a system that no longer fixes an acceleration.
+    of whose entries are within rounding of zero, or a system that no longer fixes an acceleration;
+    with ``vanished`` (the factor from ``a`` to ``b`` has fallen to rounding), whether ``a`` says
+    anything there (of a system, fixes every acceleration: at its own singular point, as the
+    spherical pendulum's pole, the factor may vanish where ``a`` fixes no more than ``b``).
 
     What ``a`` says must be plain: an entry of it that rounding cannot tell from zero (closeness
     unsure) says nothing. At the expected equations' own singular point their coefficient may be
@@ -555,10 +571,12 @@ def _says_less(a: _Rows, b: _Rows) -> bool:
         said = any(
             closeness(x, 0, scale) is Closeness.DIFFERENT for x, scale in zip(a.rows[0], a.entry_scales[0], strict=True)
         )
-        silent = all(
+        silent = vanished or all(
             closeness(x, 0, scale) is Closeness.EQUAL for x, scale in zip(b.rows[0], b.entry_scales[0], strict=True)
         )
         return said and silent
+    if vanished and all(_determined(a, plain=True)):
+        return True
     return any(mine and not yours for mine, yours in zip(_determined(a, plain=True), _determined(b), strict=True))
 
 
@@ -595,7 +613,8 @@ def _silent_between(
         rows = [_rows_at(expected, system, nearest.tolist(), step, exact=False, floats=True) for system in systems]
     except UNDEFINED:
         return False
-    return _says_less(*rows)
+    vanished = min(abs(factors[change - 1]), abs(factors[change])) <= _VANISHED * size
+    return _says_less(*rows, vanished=vanished)
 
 
 def _touches_between(
@@ -631,6 +650,7 @@ def _touches_between(
     lows, spans = lows[owners], spans[owners]
     low, high = (dips - 1) / (_ALONG - 1), (dips + 1) / (_ALONG - 1)
     norm0, own0 = first[1][owners, dips], first[2][owners, dips]
+    size0 = np.nanmax(first[0][owners], axis=1)  # the factor's size along each dip's segment
     for _ in range(_ROUNDS):
         where = low[:, None] + along[None, :] * (high - low)[:, None]  # brackets × _ALONG fractions
         sizes, norms, owns = _factor_sizes_at(expected, systems, lows, spans, where, step)
@@ -642,13 +662,14 @@ def _touches_between(
             return False
         low, high = np.maximum(lowest - width, 0.0)[alive], np.minimum(lowest + width, 1.0)[alive]
         lows, spans, norm0, own0 = lows[alive], spans[alive], norm0[alive], own0[alive]
-    for start, span, fraction in zip(lows, spans, (low + high) / 2, strict=True):
+        least, size0 = sizes[every, at][alive], size0[alive]
+    for start, span, fraction, vanished in zip(lows, spans, (low + high) / 2, least <= _VANISHED * size0, strict=True):
         try:
             point = (start + fraction * span).tolist()
             rows = [_rows_at(expected, system, point, step, exact=False, floats=True) for system in systems]
         except UNDEFINED:
             continue
-        if _says_less(*rows):
+        if _says_less(*rows, vanished=bool(vanished)):
             return True
     return False
 
@@ -760,8 +781,18 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "e
         expected.cache[key] = acceleration, _solved(f, acceleration)
     acceleration, normal_f = expected.cache[key]
     coefficient = _coefficient(g, acceleration)
-    if coefficient == 0:  # none of this acceleration: another coordinate's equation
-        return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+    if coefficient == 0:
+        # solved for another acceleration of the expected equation, one the answer has: s̈ = g sin α₀ for
+        # s̈ + Ẍ cos α₀ = g sin α₀ (solved for Ẍ first) lacks a term, and is no other coordinate's equation
+        others = [expected.setting.acceleration(q) for q in accelerations_in(f, expected)]
+        other = next((a for a in others if a != acceleration and _coefficient(g, a) != 0), None)
+        if other is None:  # none of the expected equation's accelerations: another coordinate's equation
+            return Outcome("not_equivalent", 0.0, "wrong_equation_single", method="accelerations")
+        key = f"{key}, for {other}"
+        if key not in expected.cache:
+            expected.cache[key] = other, _solved(f, other)
+        acceleration, normal_f = expected.cache[key]
+        coefficient = _coefficient(g, acceleration)
     # the same terms, off in their parameters: named in the ratio most share, or not at all, since
     # solved for an acceleration whose own factor is off, the right terms would be named instead
     scaled = _off_in_scale(expected, f, g, key)
@@ -776,7 +807,8 @@ def _diagnose_motion(expected: Expected, f, g, deadline: Deadline, key: str = "e
     _, pairs = same_values(expected, normal_f, normal_g, deadline, key=key)
     outcome = diagnose_difference(
         expected, normal_f, normal_g, pairs, deadline, key=key,
-        approximations=lambda expr: [taylor(expr, expected.setting, 1)],
+        # linearized, or sin u → u and cos u → 1 put in: θ̈ = θ φ̇² − (g/l) θ keeps a term of third order
+        approximations=lambda expr: [taylor(expr, expected.setting, 1), *small_angle(expr, expected.setting)],
         termwise=lambda: _solved(g, acceleration),
     )  # fmt: skip
     if outcome.key in ("sign", "factor", "wrong"):
@@ -844,8 +876,11 @@ def _solved(g, acceleration):
         # each term as it does from the student's (m₁ + m₂) l₁ θ̈₁ + …, and the shapes of the two agree
         # (multiplied out again, as the expected terms are: 1/(l₁m₁ + l₁m₂) for 1/(l₁(m₁ + m₂)))
         lead = sympy.factor(sympy.Add(*coefficients))
-        quotient = expand_terms(sympy.Add(*(term / lead for term in terms)))
-        return None if quotient is None else sympy.Add(*(c * shape for shape, c in quotient.items()))
+        # the acceleration's own terms come to the acceleration alone: divided one by one, (m₁ + m₂) ẍ
+        # would stay m₁ ẍ/(m₁ + m₂) + m₂ ẍ/(m₁ + m₂), two terms no solved answer has
+        rest = [term for term in terms if not term.has(acceleration)]
+        quotient = expand_terms(sympy.Add(*(term / lead for term in rest)))
+        return None if quotient is None else acceleration + sympy.Add(*(c * shape for shape, c in quotient.items()))
     lead = sympy.diff(g, acceleration)
     return None if lead == 0 else sympy.expand(g / lead)
 
@@ -1167,7 +1202,12 @@ def check_equations(expected: Expected, answer: ParsedAnswer, deadline: Deadline
     if outcome.key == "equivalent" and _vanishes_between(expected, expected_fs, submitted_gs):
         return Outcome("not_equivalent", 0.0, "vanishing_factor_system_between", method=outcome.method)
     wrong = outcome.key in ("wrong_equation", "wrong_equations")
-    if wrong and _is_small_angle_system(expected, submitted_gs, theirs, deadline):
+    # an answer that keeps sin θ or cos θ is no small-angle form: the forms are not tried, at milliseconds each
+    if (
+        wrong
+        and not any(has_angle_functions(expected.setting.plain(g), expected.setting) for g in theirs)
+        and _is_small_angle_system(expected, submitted_gs, theirs, deadline)
+    ):
         return Outcome("not_equivalent", 0.0, "small_angle", method="accelerations")
     if not wrong:
         return outcome
@@ -1249,6 +1289,8 @@ def _terms_named(expected: Expected, references: Sequence, g, position: int, dea
             continue  # θ̈₁ = … solved is no term or two away from an equation in θ̈₁ and θ̈₂
         plain = plain if plain is not None else expected.setting.plain(g)  # built only when compared
         outcome = _diagnose_motion(expected, f, plain, deadline, key=f"equations {i}, normalized")
+        if outcome.key == "small_angle":  # θ̈ = θ φ̇² − (g/l) θ beside a right φ equation
+            return (("small_angle", {}),)
         if outcome.key in TERM_KEYS:
             sentences = ((outcome.key, outcome.details), *outcome.more)
             if len(sentences) == 1:
@@ -1272,18 +1314,33 @@ def _state_agrees(state: _State) -> bool:
 
 
 def _is_small_angle_system(expected: Expected, submitted_gs, theirs, deadline: Deadline) -> bool:
-    """Whether the submitted system is the expected one linearized about q = q̇ = 0."""
-    if "equations, linearized" not in expected.cache:
-        linear = [taylor(f, expected.setting, 1) for f in _expected_equations(expected)[0]]
-        finite = not any(f.has(sympy.nan, sympy.zoo) for f in linear)
-        expected.cache["equations, linearized"] = (
-            [expected.compiled(f"equations, linearized {i}", f) for i, f in enumerate(linear)] if finite else None
-        )
-    linear_fs = expected.cache["equations, linearized"]
-    if linear_fs is None:
-        return False
-    states = [state for _, state in _states(expected, linear_fs, submitted_gs, deadline)]
-    return len(states) >= MIN_DEFINED and _system_outcome(expected, states, theirs).key == "equivalent"
+    """Whether the submitted system is the expected one linearized about q = q̇ = 0, or with
+    sin u → u and cos u → 1 in it."""
+    if "equations, small angle" not in expected.cache:
+        expected.cache["equations, small angle"] = [
+            [expected.compiled(f"equations, small angle {number} {i}", f) for i, f in enumerate(system)]
+            for number, system in enumerate(_small_angle_systems(expected))
+        ]
+    for forms in expected.cache["equations, small angle"]:
+        deadline.check()
+        states = [state for _, state in _states(expected, forms, submitted_gs, deadline)]
+        if len(states) >= MIN_DEFINED and _system_outcome(expected, states, theirs).key == "equivalent":
+            return True
+    return False
+
+
+def _small_angle_systems(expected: Expected) -> list[list]:
+    """The expected equations linearized, and with sin u → u, cos u → 1 put in each.
+
+    Linearized, the spherical pendulum's θ̈ − sin θ cos θ φ̇² + (g/l) sin θ loses its φ̇² term, a
+    third-order one; the form a student writes for small θ keeps it, as θ̈ − θ φ̇² + (g/l) θ. (Not
+    cos u → 1 − u²/2 too, as for one equation: each form tried costs a wrong system milliseconds.)
+    """
+    equations = _expected_equations(expected)[0]
+    linear = [taylor(f, expected.setting, 1) for f in equations]
+    substituted = [(small_angle(f, expected.setting) or [f])[0] for f in equations]  # no angle's function: as it is
+    finite = [system for system in (linear, substituted) if not any(f.has(sympy.nan, sympy.zoo) for f in system)]
+    return [system for number, system in enumerate(finite) if system not in finite[:number]]
 
 
 def _system_state(rows: Sequence[_Rows], precise: bool) -> _State | None:
