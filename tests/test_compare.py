@@ -4329,8 +4329,37 @@ def test_a_given_name_is_put_in_place_and_the_feedback_says_so(submitted, status
     assert verdict.feedback[-1] == "Read with the problem's own meaning of `p_θ`."
 
 
+_P_AS_P_THETA = (
+    "Read `p` as `p_θ`: the problem has one coordinate, so p is its momentum.",
+    "Read with the problem's own meaning of `p_θ`.",
+)
+LONE_MOMENTUM = (
+    ("p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", "equivalent", ("Correct.", *_P_AS_P_THETA)),
+    ("H = p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", "equivalent", ("Correct.", *_P_AS_P_THETA)),
+    ("p²/(m R²) − ½ m R² ω² sin²θ − m g R cos θ", "not_equivalent",
+     ("A term differs: the term in p_θ² has the wrong factor.", *_P_AS_P_THETA)),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), LONE_MOMENTUM)
+def test_a_bare_p_is_the_momentum_of_a_problem_with_one_coordinate(submitted, status, feedback):
+    verdict = compare(HOOP_H, submitted, given={"p_theta": "m R^2 thetadot"}, up_to_constant=True, **HOOP)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 SPHERICAL_H = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"
 MOMENTA = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
+
+
+def test_a_bare_p_is_a_momentum_only_where_one_coordinate_has_one_and_the_student_gives_it_none():
+    hoop = compare(HOOP_H, "p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", given={"p_theta": "m R^2 thetadot"}, **HOOP)
+    assert hoop.status == "equivalent"
+    # the student's own p is theirs, read with their value and no note
+    own = "p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ, where p = m R² θ̇"
+    assert compare(HOOP_H, own, given={"p_theta": "m R^2 thetadot"}, **HOOP).feedback == ("Correct.",)
+    # with two coordinates, p is neither momentum
+    verdict = compare(SPHERICAL_H, "p²/(2 m l²) + p_φ²/(2 m l² sin²θ) − m g l cos θ", given=MOMENTA, **SPHERICAL)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "undefined_symbol")
 
 
 @pytest.mark.parametrize(

@@ -572,7 +572,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
         # building one factor of a hostile answer, and an answer has room for dozens.
         with time_limit(timeout) as deadline:
             if spec.parsed:
-                names = sorted(expected.names | {symbol.name for symbol, _ in given})
+                momentum = _lone_momentum(expected, given)
+                names = sorted(expected.names | {symbol.name for symbol, _ in given} | set(momentum[:1]))
                 answer, read_notes = _read(spec, expected, submitted, names, deadline)
                 formula = spec.name in ("expression", "lagrangian")
                 # √(g/l) in s: "in" and a unit are no words to read past, nor names of the student's
@@ -600,7 +601,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return _verdict(energies, answer)
                 if _loose_definitions(answer):
                     return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
-                typed, (answer, used) = answer, _with_given(answer, given)
+                typed, (answer, used) = answer, _with_given(_as_momentum(answer, momentum), given)
+                if momentum and sympy.Symbol(momentum[0]) in typed.symbols:
+                    read_notes += (("p_read_as_momentum", {"momentum": unicode_name(momentum[1])}),)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer, said = _said_constant(answer, spec, expected)
                 read_notes += said
@@ -748,6 +751,32 @@ def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple
         else _replaced(value, replacement)
     )
     return ParsedAnswer(answer.text, value, answer.kind), used
+
+
+def _lone_momentum(expected: Expected, given: tuple) -> tuple[str, ...]:
+    """``("p", "p_theta")`` where the problem has one coordinate and gives its momentum (p_θ), and
+    ``p`` is no name of its own: a bare ``p`` can then mean only that momentum, as texts write it for
+    one degree of freedom. With two coordinates, ``p`` names none of them; then ``()``."""
+    coords = expected.setting.coords
+    if len(coords) != 1 or "p" in expected.names:
+        return ()
+    wanted = canonical_name(f"p_{coords[0]}")
+    return ("p", wanted) if any(symbol.name == wanted for symbol, _ in given) else ()
+
+
+def _as_momentum(answer: ParsedAnswer, momentum: tuple) -> ParsedAnswer:
+    """The answer with a bare ``p`` written as the one momentum it means (:func:`_lone_momentum`)."""
+    bare = sympy.Symbol(momentum[0]) if momentum else None
+    if bare is None or bare not in answer.symbols:
+        return answer
+    replacement = {bare: sympy.Symbol(momentum[1])}
+    value = answer.value
+    value = (
+        tuple(_replaced(item, replacement) for item in value)
+        if isinstance(value, tuple)
+        else _replaced(value, replacement)
+    )
+    return ParsedAnswer(answer.text, value, answer.kind)
 
 
 def _replaced(item, replacement: dict):
