@@ -4187,6 +4187,31 @@ def test_a_decimal_comma_is_read_as_a_point_in_a_number(submitted, status, read_
     assert compare("x", "1,5", known=["x"]).status == "invalid"
 
 
+_FREQUENCY = "sqrt(9.81)/(2*pi)"  # hertz, for l = 1 m and g = 9.81 m/s²
+ZERO_DECIMAL_COMMA = (
+    # a thousands separator never follows a lone 0: 0,498 can only be 0.498
+    (_FREQUENCY, "Hz", "0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
+    (_FREQUENCY, "Hz", "-0,498", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `-0,498` as -0.498: a decimal comma.")),
+    (PERIOD, "s", "T = 2,01 s, f = 0,498 Hz", "equivalent",
+     ("Correct.", "Read `2,01` as 2.01: a decimal comma.", "Graded the number `2,01 s`; the rest of your answer is"
+      " not graded.", "Graded `T = 2,01 s`, your value in s; the rest of your answer (`f = 0,498 Hz`) is not graded.")),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "unit", "submitted", "status", "feedback"), ZERO_DECIMAL_COMMA)
+def test_three_digits_after_a_lone_zero_and_a_comma_are_decimals(expected, unit, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="number", rtol=0.005, unit=unit)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+def test_three_digits_after_any_other_whole_number_and_a_comma_may_be_thousands():
+    assert compare(_FREQUENCY, "0,498", kind="number", rtol=0.005, unit="Hz").status == "equivalent"
+    for submitted in ("1,000", "10,498", "00,498", "2,006"):  # 1000 or 1.000? the student is asked for a point
+        verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
+        assert verdict.feedback[0].startswith("A comma is not understood here"), submitted
+
+
 def test_out_of_time_is_undecided_and_flagged_for_a_person():
     verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2", kind="lagrangian", timeout=1e-9, **PENDULUM)
     assert verdict.status == "undecided"
