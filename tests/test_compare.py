@@ -3305,6 +3305,33 @@ def test_a_label_with_a_remark_as_students_write_it(options, expected, submitted
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+def _scribbled(typed):
+    return (
+        f"Your answer `{typed}` names an option, then a formula that says nothing of it: is the formula your choice?"
+        " Give the option's label alone, or words after it that say why."
+    )
+
+
+# a label, then a formula with no words: scribbles (another part's working?) that may be meant for the choice
+SCRIBBLED_CHOICE = (
+    "(b) = k θ̈",  # the label set equal to a formula
+    "b) = m R² θ̈",
+    "b, l sin ω",
+    "(b) l sin ω",
+    "b, mgR cos θ",  # letters glued, with no vowel: no word
+    "b, thetadot^2",
+    "b, \\dot\\theta^2",
+    "b is correct, = k θ̈",
+    "rheonomic, l sin ω",  # the option's words, then scribbles
+)
+
+
+@pytest.mark.parametrize("submitted", SCRIBBLED_CHOICE)
+def test_a_label_then_a_formula_that_says_nothing_of_it_is_asked_again(submitted):
+    verdict = compare("b", submitted, **TIME_CHOICE)
+    assert (verdict.status, verdict.feedback) == ("invalid", (_scribbled(submitted),))
+
+
 def _beside(labels, rest):
     return f"Read as the option you wrote out: {labels}; the words beside it (`{rest}`) are not graded."
 

@@ -213,6 +213,8 @@ FEEDBACK: dict[str, str] = {
     "choice_read_remark": "Read as the option you wrote out: {labels}; what follows it (`{rest}`) is not graded.",
     "choice_read_beside": "Read as the option you wrote out: {labels}; the words beside it (`{rest}`) are not graded.",
     "choice_remark": "Graded your choice, {labels}; what follows it (`{rest}`) is not graded.",
+    "choice_scribbled": "Your answer {typed} names an option, then a formula that says nothing of it: is the formula"
+    " your choice? Give the option's label alone, or words after it that say why.",
     "choice_hedged": "One option is asked for here, and your answer {typed} offers another, or doubts or denies the"
     " one it names: give the one you mean.",
     "choices_hedged": "Your answer {typed} offers another option, or doubts or denies one it names: give just the"
