@@ -4921,6 +4921,7 @@ HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
 
 
 ELASTIC = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"]}  # the elastic pendulum's polar coordinates
+Q_THETA = ("-m g r sin(theta)", {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_theta"})
 
 
 def _misstated(statement: str, label: str) -> str:
@@ -5012,6 +5013,56 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
     assert compare(expected, submitted, kind=kind, **options).status == "equivalent"
 
 
+def _steps_left_out(steps: str) -> str:
+    return f"Read without the step `{steps}`: a derivative written out is not checked; the last side was graded."
+
+
+_HOOP_DEFINED = r"H = \dot\theta \frac{\partial L}{\partial \dot\theta} - L = "
+_Q_THETA_TEX = r"Q_\theta = \mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta} = -mgr\sin\theta"
+_P_PHI_STEP = "∂/∂φ̇(½ m l² sin²θ φ̇²)"
+# a chain through a partial derivative written out: before, each was refused ("`∂` is read only in the name …")
+PARTIALS_IN_CHAIN = (
+    # q̇ ∂L/∂q̇ is p_q q̇, and the definition is judged as H = p_θ θ̇ − L = … is
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.",)),
+    (HOOP_H, _HOOP_DEFINED + HOOP_H_TYPED, HOOP_NOT_ENERGY, "equivalent", ("Correct.",)),
+    (HOOP_H, "H = θ̇ ∂L/∂θ̇ − L = m R² θ̇² − m g R cos θ", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.",
+      "A term is missing: a term in sin(θ).")),
+    (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ + φ̇ ∂L/∂φ̇ − L = {SPHERICAL_H_TYPED}", SPHERICAL, "equivalent", ("Correct.",)),
+    (SPHERICAL_H, rf"H = \sum_j \dot q_j \frac{{\partial L}}{{\partial \dot q_j}} - L = {SPHERICAL_H_TYPED}", SPHERICAL,
+     "equivalent", ("Correct.",)),
+    # a wrong definition, + L or a coordinate's term left out, goes to a person
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided", (_misstated("H = L + p_θ*θ̇", "H"),)),
+    (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ − L = {SPHERICAL_H_TYPED}", SPHERICAL, "undecided",
+     (_misstated("H = -L + p_θ*θ̇", "H"),)),
+    # any other ∂ in a step of H's chain: the step that defines H is not checked, so a person checks it
+    (HOOP_H, f"H = θ̇ ∂L/∂θ − L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
+     (_steps_left_out("θ̇ ∂L/∂θ − L"), "Its last side is right; a person will check the step that defines it.")),
+    # a derivative worked out on the way: the step is left out, and the last side graded
+    (SPHERICAL_P_PHI, f"p_φ = {_P_PHI_STEP} = m l² sin²θ φ̇", SPHERICAL, "equivalent",
+     ("Correct.", _steps_left_out(_P_PHI_STEP))),
+    (SPHERICAL_P_PHI, f"p_φ = {_P_PHI_STEP} = m l² φ̇", SPHERICAL, "not_equivalent",
+     ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+      " on θ.", _steps_left_out(_P_PHI_STEP))),
+    # a definition before it is still judged: p_φ = ∂L/∂φ is not what p_φ is
+    (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ = {_P_PHI_STEP} = m l² sin²θ φ̇", SPHERICAL, "undecided",
+     (_misstated("p_φ = ∂L/∂φ", "p_φ"), _steps_left_out(_P_PHI_STEP))),
+    (Q_THETA[0], "Q_θ = F·∂r/∂θ = −m g r sin θ", Q_THETA[1], "equivalent", ("Correct.", _steps_left_out("F·∂r/∂θ"))),
+    (Q_THETA[0], "Q_θ = F·∂r/∂θ = m g r sin θ", Q_THETA[1], "not_equivalent",
+     ("The overall sign is wrong.", _steps_left_out("F·∂r/∂θ"))),
+    (Q_THETA[0], _Q_THETA_TEX, Q_THETA[1], "equivalent",
+     ("Correct.", _steps_left_out(r"\mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta}"))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "options", "status", "feedback"), PARTIALS_IN_CHAIN)
+def test_a_chain_through_a_partial_derivative_written_out_grades_its_last_side(
+    expected, submitted, options, status, feedback
+):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 def _chain(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
 
@@ -5032,7 +5083,6 @@ def test_a_remark_in_brackets_that_h_is_not_t_plus_v_goes_to_a_person(submitted,
 
 
 DAMPED_EOM = ("m xddot + b xdot + k x = 0", {"kind": "equation", **DAMPED})
-Q_THETA = ("-m g r sin(theta)", {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_theta"})
 
 
 @pytest.mark.parametrize(

@@ -196,6 +196,10 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
+    partials = _partials_read(submitted) if spec.parsed and spec.shape and _refused(verdict, "partial") else None
+    if partials is not None:  # H = θ̇ ∂L/∂θ̇ − L = …, p_φ = ∂/∂φ̇(…) = …: a chain through a derivative written out
+        read = _judge(spec, prepared, partials[0], timeout - (time.monotonic() - started), values)
+        verdict = _with_steps_left_out(read, *partials[1:], prepared) if read.status != "invalid" else verdict
     left = timeout - (time.monotonic() - started)
     forms = _small_angle_forms(spec, prepared, submitted, left, values) if verdict.status != "equivalent" else None
     if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
@@ -560,6 +564,75 @@ def _hashable(value):
     if isinstance(value, dict):  # meanings={"phi": "azimuthal angle"}
         return tuple(sorted((key, _hashable(item)) for key, item in value.items()))
     return value
+
+
+def _refused(verdict: Verdict, code: str) -> bool:
+    return verdict.status == "invalid" and getattr(verdict.answer, "code", None) == code
+
+
+def _partials_read(text: str) -> tuple[str, list[str], str] | None:
+    """``H = θ̇ ∂L/∂θ̇ − L = …``, ``p_φ = ∂/∂φ̇(½ m l² sin²θ φ̇²) = …``, ``Q_θ = F·∂r/∂θ = …``: a chain on
+    one line whose steps write out a partial derivative, which the parser reads only as a chain's
+    label. ∂L/∂q̇ among a step's factors is the momentum p_q it defines, so that ``H = q̇ ∂L/∂q̇ − L``
+    is judged as the definition ``H = p_q q̇ − L`` is; a step with any other ∂ is left out. Returns the
+    chain so written, which grades its last side, the steps left out, as typed, and the chain's label;
+    None where ``text`` is no such chain, or its last side has a ∂ of its own."""
+    if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip() or _ROW_BREAK.search(text):
+        return None  # lines are chains of their own (see _chained)
+    label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
+    if len(sides) < 2 or _PARTIAL.search(sides[-1]) or len(label) > _LABEL_LENGTH:
+        return None
+    read = parse_answer(label) if not _SIDES_LABEL.fullmatch(label) else None  # Q_\theta, p_{\phi}: TeX's labels
+    if read is not None and not (read.ok and read.kind == "expression" and read.value.is_Symbol):
+        return None
+    steps, left_out = [], []
+    for number, side in enumerate(sides[:-1]):
+        step = _MOMENTUM_QUOTIENT.sub(_momentum_named, side)
+        if number == 0 and _QUOTIENT_ALONE.fullmatch(side):
+            steps.append(side)  # p_φ = ∂L/∂θ̇ = …: a quotient alone after the label, the parser judges as a definition
+        elif _PARTIAL.search(step):
+            left_out.append(side.strip())
+        else:
+            steps.append(step)
+    if not left_out and steps == sides[:-1]:
+        return None  # no ∂ in the steps: the parser's refusal is about something else
+    return "=".join([label, *steps, sides[-1]]), left_out, label.strip()
+
+
+def _momentum_named(found: re.Match) -> str:
+    """``∂L/∂θ̇`` as ``p_{theta}``, the name of the momentum it defines; any other quotient as typed."""
+    read = parse_answer(f"{found[0]} = 0")
+    if not read.ok or read.kind != "equation" or not read.value.lhs.is_Symbol:
+        return found[0]
+    momentum = _MOMENTUM_DEFINED.fullmatch(read.value.lhs.name)
+    return f" p_{{{momentum[1].replace('_', '')}}} " if momentum else found[0]  # θ₁'s p_{theta1}, read in TeX too
+
+
+_PARTIAL = re.compile(r"∂|\\partial(?![A-Za-z])")
+_QUOTIENT_ALONE = re.compile(
+    r"\s*[-−]?\s*(?:∂\s*[A-Za-z]\w*\s*/\s*∂\s*[^\s=+\-−*/·⋅()\[\]{}]{1,20}"
+    r"|\\frac\s*\{\s*\\partial\s*[A-Za-z]\s*\}\s*\{\s*\\partial\s*(?:[^{}]|\{[^{}]*\}){1,30}\})\s*"
+)
+# ∂L/∂θ̇ written inline (θ̇, thetadot, \dot\theta, \dot{\theta}) or as TeX's \frac{\partial L}{\partial \dot\theta}
+_MOMENTUM_QUOTIENT = re.compile(
+    r"∂\s*L\s*/\s*∂\s*(?:\\dot\s*(?:\{[^{}]{1,20}\}|\\?[A-Za-z]+)|[^\s=+\-−*/·⋅()\[\]{}]{1,20})"
+    r"|\\frac\s*\{\s*\\partial\s*L\s*\}\s*\{\s*\\partial\s*(?:[^{}]|\{[^{}]*\}){1,30}\}"
+)
+
+
+def _with_steps_left_out(verdict: Verdict, left_out: list[str], label: str, expected: Expected) -> Verdict:
+    """The verdict on a chain read without the steps ``left_out`` (:func:`_partials_read`), and the note
+    that says so. Where the chain's ``label`` names the Hamiltonian, the Lagrangian or the energy, a step
+    left out may be its definition, unchecked (``H = θ̇ ∂L/∂θ − L``): a right value goes to a person, as
+    one after a wrong definition does."""
+    if not left_out:
+        return verdict
+    s = "s" if len(left_out) > 1 else ""
+    note = say("steps_left_out", s=s, steps=_shown("; ".join(left_out)))
+    name = canonical_name(label) if _ONE_NAME.fullmatch(label) else None
+    if name in _ENERGY_SUMS and name not in expected.names and verdict.status == "equivalent":
+        return replace(verdict, status="undecided", feedback=(note, say("step_for_a_person")), notes=(note,))
+    return replace(verdict, feedback=(*verdict.feedback, note), notes=(*verdict.notes, note))
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:

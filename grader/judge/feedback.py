@@ -55,6 +55,9 @@ FEEDBACK: dict[str, str] = {
     "forms_for_a_person": "Your formula after `{words}` is not the small-angle form of the one before it, as your"
     " words say: a person will decide which is your answer.",
     "forms_both_wrong": "Neither your formula before `{words}` nor the one after it is right.",
+    "steps_left_out": "Read without the step{s} `{steps}`: a derivative written out is not checked; the last side"
+    " was graded.",
+    "step_for_a_person": "Its last side is right; a person will check the step that defines it.",
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
