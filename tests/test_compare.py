@@ -5063,6 +5063,41 @@ def test_a_chain_through_a_partial_derivative_written_out_grades_its_last_side(
     assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
+def _defined_before(words: str, definition: str) -> str:
+    return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
+
+
+_HOOP_IN_P = "p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ"
+_HOOP_P = "p_θ = m R² θ̇"
+# a sentence that defines a name, then the answer in it: before, refused for its colon, or its words undefined
+DEFINITION_BEFORE = (
+    (HOOP_H, f"With {_HOOP_P}: H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("With", _HOOP_P))),
+    (HOOP_H, f"With {_HOOP_P}, H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("With", _HOOP_P))),
+    (HOOP_H, f"Using {_HOOP_P}, we have H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("Using … we have", _HOOP_P))),
+    (HOOP_H, f"With {_HOOP_P}: {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("With", _HOOP_P))),
+    # the student's own definition, wrong, is put in place as theirs: wrong
+    (HOOP_H, f"With p_θ = m R θ̇: H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.",
+      _defined_before("With", "p_θ = m R θ̇"))),
+    (HOOP_H, f"With {_HOOP_P}: H = p_θ²/(m R²) − ½ m R² ω² sin²θ − m g R cos θ", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", _defined_before("With", _HOOP_P))),
+    ("sqrt(g/l)", "With ω₀ = √(g/l): ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("With", "ω₀ = √(g/l)"))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "options", "status", "feedback"), DEFINITION_BEFORE)
+def test_a_sentence_that_defines_a_name_before_the_answer_puts_it_in_place(
+    expected, submitted, options, status, feedback
+):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 def _chain(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
 

@@ -53,6 +53,7 @@ from grader.judge.units import (
 )
 from grader.judge.verdict import Verdict
 from grader.judge.words import (
+    definition_before_formula,
     definition_then_formula,
     euler_lagrange_then_formula,
     formula_then_approximation,
@@ -1739,7 +1740,22 @@ def _without_words(
         if _states_one_definition(read, expected):
             chained = {"words": _shown(words), "chain": f"{definition} = …"}
             return read, ((_words_note("definition_in_words", words, expected), chained), *after)
+    # a name the problem gives a meaning (p_θ) is the student's to define too, as after the formula (…, where p_θ = …)
+    before = definition_before_formula(submitted, sorted(expected.names), coords)
+    if before is not None:  # With p_θ = m R² θ̇: H = …, read as H = …, where p_θ = m R² θ̇ is
+        words, definition, formula = before
+        read = parse_answer(f"{formula}, where {definition}", coords=coords, known=names, deadline=deadline)
+        if read.ok and not _unknown_in_items(read, names):
+            said = {"words": _shown(words), "definition": definition}
+            return read, ((_words_note("definition_before", words, expected), said),)
     return without if without is not None else (answer, ())
+
+
+def _unknown_in_items(read: ParsedAnswer, names: list) -> bool:
+    """Whether an answer uses a name neither the problem's nor one an item of it gives a value (``H``, ``p_θ``)."""
+    items = read.value if read.kind == "equations" else (read.value,)
+    labels = {item.lhs for item in items if isinstance(item, sympy.Eq)}
+    return any(symbol not in labels and symbol.name not in names for symbol in read.symbols)
 
 
 def _read_with_remark(text: str, expected: Expected, names: list, deadline) -> tuple[ParsedAnswer | Refusal, tuple]:
