@@ -632,7 +632,9 @@ def _with_steps_left_out(verdict: Verdict, left_out: list[str], label: str, expe
     note = say("steps_left_out", s=s, steps=_shown("; ".join(left_out)))
     name = canonical_name(label) if _ONE_NAME.fullmatch(label) else None
     if name in _ENERGY_SUMS and name not in expected.names and verdict.status == "equivalent":
-        return replace(verdict, status="undecided", feedback=(note, say("step_for_a_person")), notes=(note,))
+        return replace(
+            _right_but_said(verdict, "step_for_a_person"), feedback=(note, say("step_for_a_person")), notes=(note,)
+        )
     return replace(verdict, feedback=(*verdict.feedback, note), notes=(*verdict.notes, note))
 
 
