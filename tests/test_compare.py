@@ -4921,6 +4921,7 @@ HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
 
 
 ELASTIC = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"]}  # the elastic pendulum's polar coordinates
+_HOOP_WORKED = "m R² θ̇² − (½ m R² θ̇² + ½ m R² ω² sin²θ + m g R cos θ)"  # p_θ θ̇ − L, worked out
 Q_THETA = ("-m g r sin(theta)", {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_theta"})
 
 
@@ -4977,6 +4978,9 @@ def _misstated(statement: str, label: str) -> str:
         (SPHERICAL_H, f"H = p_θ θ̇ + p_φ φ̇ + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
          _misstated("H = L + p_φ*φ̇ + p_θ*θ̇", "H")),
         (HOOP_H, f"Since H = p_θ θ̇ + L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = L + p_θ*θ̇", "H")),
+        # a chain of more sides, read side by side: before, the definition was passed over, and right
+        (HOOP_H, f"H = p_θ θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
          _misstated("H = L + p_θ*θ̇", "H")),
     ],
 )  # fmt: skip
@@ -5050,6 +5054,14 @@ PARTIALS_IN_CHAIN = (
     (Q_THETA[0], "Q_θ = F·∂r/∂θ = −m g r sin θ", Q_THETA[1], "equivalent", ("Correct.", _steps_left_out("F·∂r/∂θ"))),
     (Q_THETA[0], "Q_θ = F·∂r/∂θ = m g r sin θ", Q_THETA[1], "not_equivalent",
      ("The overall sign is wrong.", _steps_left_out("F·∂r/∂θ"))),
+    # a chain of more sides after the step, read side by side as any is
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = {_HOOP_WORKED} = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
+     (_misstated("H = L + p_θ*θ̇", "H"),)),
+    (SPHERICAL_P_PHI, f"p_φ = {_P_PHI_STEP} = ½ m l² · 2 φ̇ = m l² sin²θ φ̇", SPHERICAL, "undecided",
+     ("Your last side is right, but side 1 does not say the same: a person will decide which is your answer.",
+      _steps_left_out(_P_PHI_STEP))),
     (Q_THETA[0], _Q_THETA_TEX, Q_THETA[1], "equivalent",
      ("Correct.", _steps_left_out(r"\mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta}"))),
 )  # fmt: skip

@@ -198,9 +198,13 @@ def compare(
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
     partials = _partials_read(submitted) if spec.parsed and spec.shape and _refused(verdict, "partial") else None
+    sides_of = submitted  # as typed, or with the derivatives of its steps read (a chain of more sides: below)
     if partials is not None:  # H = θ̇ ∂L/∂θ̇ − L = …, p_φ = ∂/∂φ̇(…) = …: a chain through a derivative written out
         read = _judge(spec, prepared, partials[0], timeout - (time.monotonic() - started), values)
-        verdict = _with_steps_left_out(read, *partials[1:], prepared) if read.status != "invalid" else verdict
+        if read.status != "invalid":
+            verdict = _with_steps_left_out(read, *partials[1:], prepared)
+        elif _refused(read, "too_many_equals"):
+            verdict, sides_of = read, partials[0]
     left = timeout - (time.monotonic() - started)
     forms = _small_angle_forms(spec, prepared, submitted, left, values) if verdict.status != "equivalent" else None
     if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
@@ -223,12 +227,14 @@ def compare(
     unknowns = verdict.diagnosis == "eliminate_unknowns"
     lines, parts = (_lines(submitted), "line") if several or unknowns else (None, "")
     if getattr(verdict.answer, "code", None) == "too_many_equals" and spec.shape == "expression":
-        lines, parts = _sides(submitted), "side"
+        lines, parts = _sides(sides_of), "side"
     if lines:
         left = timeout - (time.monotonic() - started)
         by_lines = _judge_lines(spec, prepared, lines, left, values, verdict, parts)
         if not unknowns or by_lines.status in ("equivalent", "undecided"):
             verdict = by_lines
+        if sides_of is not submitted and verdict is by_lines:
+            verdict = _with_steps_left_out(verdict, *partials[1:], prepared)
     said = _said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
     if said is not None:  # Using L = T + V, we get L = …: right as a value, not as what it says L is
         return _right_but_said(verdict, "statement_for_a_person", statement=said[1], label=said[0])
@@ -513,6 +519,9 @@ def _judge_lines(
     *earlier, last = verdicts
     if last.diagnosis == "number_for_formula":
         return whole  # ω = √(g/l) = 3.13: the formula, then its value for numbers of the student's own
+    misstated = _side_misstated(lines, earlier, expected, given) if parts == "side" else None
+    if misstated is not None and last.status == "equivalent":  # H = p_θ θ̇ + L = … = …: a wrong definition
+        return _right_but_said(last, "statement_for_a_person", **misstated)
     # L = T − V = …: a side in names of the answer's own is its definition, not a step to check
     wrong = [
         str(number)
@@ -530,6 +539,21 @@ def _judge_lines(
     note = say("lines_agree" if last.status == "equivalent" else "last_line_graded", **count)
     feedback = tuple(dict.fromkeys([*last.feedback, note]))
     return replace(last, feedback=feedback, notes=(*last.notes, note))
+
+
+def _side_misstated(lines: list[str], verdicts: list[Verdict], expected: Expected, given: tuple) -> dict | None:
+    """Of a chain's sides judged one by one (:func:`_judge_lines`), a side in names of the answer's own
+    that is a wrong definition of the quantity (``H = p_θ θ̇ + L = m R² θ̇² − … = …``): what the note on
+    it says; None where there is none. Such a side is no step to check against the value, but what it
+    says the quantity is may be wrong."""
+    names = sorted(expected.names | {symbol.name for symbol, _ in given})
+    for line, verdict in zip(lines, verdicts, strict=False):
+        if verdict.diagnosis not in _UNDEFINED:
+            continue
+        read = parse_answer(line, coords=expected.setting.coords, known=names)
+        if read.ok and read.kind == "equation" and _wrong_definition(read.value.lhs, read.value.rhs, expected):
+            return {"statement": _shown_statement(read.value), "label": unicode_name(read.value.lhs.name)}
+    return None
 
 
 # a line that starts with a dash and a space: a Markdown list's bullet, or a minus sign?
