@@ -5075,6 +5075,25 @@ def test_a_chain_through_a_partial_derivative_written_out_grades_its_last_side(
     assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
+_THREE_SIDES = "Your answer has 3 sides after the name, each the same; the last was graded."
+_THREE_LINES = "Your 3 lines, each `H = …`, were read as one chain, H = … = …: its last side was graded."
+# H's definition, its working and its value, a line each: before, read as typed, L undefined, and not right
+LINES_OF_A_LONGER_CHAIN = (
+    (f"H = p_θ θ̇ − L\nH = {_HOOP_WORKED}\nH = {HOOP_H_TYPED}", "equivalent", ("Correct.", _THREE_SIDES, _THREE_LINES)),
+    (f"H = p_θ θ̇ + L\nH = {_HOOP_WORKED}\nH = {HOOP_H_TYPED}", "undecided",
+     (_misstated("H = L + p_θ*θ̇", "H"), _THREE_LINES)),
+    (f"H = p_θ θ̇ − L\nH = {_HOOP_WORKED}\nH = m R² θ̇²", "not_equivalent",
+     ("Not equivalent to the expected answer.", "Your answer has 3 sides after the name; the last was graded as your"
+      " answer.", _THREE_LINES)),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), LINES_OF_A_LONGER_CHAIN)
+def test_lines_of_a_chain_with_working_between_its_definition_and_value_are_one_chain(submitted, status, feedback):
+    verdict = compare(HOOP_H, submitted, given={"p_theta": "m R^2 thetadot"}, **HOOP_NOT_ENERGY)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 def _defined_before(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
 

@@ -214,8 +214,13 @@ def compare(
     chain = _chained(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
+        sides = _sides(chain[0]) if _refused(chained, "too_many_equals") and spec.shape == "expression" else None
+        if sides:  # H = p_θ θ̇ − L, then H = m R² θ̇² − (…), then H = …: a chain of more sides, read side by side
+            left = timeout - (time.monotonic() - started)
+            chained = _judge_lines(spec, prepared, sides, left, values, chained, "side")
         # where the lines could be read as typed, only a definition we know makes the first line one (not L = … + q)
-        known = verdict.status == "invalid" or _defines_as_known(chain[0], prepared, values)
+        first = f"{sides[0]} = {sides[-1].partition('=')[2]}" if sides else chain[0]  # the definition, then the value
+        known = verdict.status == "invalid" or _defines_as_known(first, prepared, values)
         if chained.status != "invalid" and chained.diagnosis not in _UNDEFINED and known:
             # where an expression is asked, the chain is the answer; in a system, it is one of its lines
             key = "lines_as_chain" if spec.shape == "expression" else "lines_as_one_chain"
