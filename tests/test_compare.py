@@ -3429,6 +3429,33 @@ def test_a_label_with_a_remark_as_students_write_it(options, expected, submitted
     assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
 
 
+def _scribbled(typed):
+    return (
+        f"Your answer `{typed}` names an option, then a formula that says nothing of it: is the formula your choice?"
+        " Give the option's label alone, or words after it that say why."
+    )
+
+
+# a label, then a formula with no words: scribbles (another part's working?) that may be meant for the choice
+SCRIBBLED_CHOICE = (
+    "(b) = k θ̈",  # the label set equal to a formula
+    "b) = m R² θ̈",
+    "b, l sin ω",
+    "(b) l sin ω",
+    "b, mgR cos θ",  # letters glued, with no vowel: no word
+    "b, thetadot^2",
+    "b, \\dot\\theta^2",
+    "b is correct, = k θ̈",
+    "rheonomic, l sin ω",  # the option's words, then scribbles
+)
+
+
+@pytest.mark.parametrize("submitted", SCRIBBLED_CHOICE)
+def test_a_label_then_a_formula_that_says_nothing_of_it_is_asked_again(submitted):
+    verdict = compare("b", submitted, **TIME_CHOICE)
+    assert (verdict.status, verdict.feedback) == ("invalid", (_scribbled(submitted),))
+
+
 def _beside(labels, rest):
     return f"Read as the option you wrote out: {labels}; the words beside it (`{rest}`) are not graded."
 
@@ -4311,6 +4338,31 @@ def test_a_decimal_comma_is_read_as_a_point_in_a_number(submitted, status, read_
     assert compare("x", "1,5", known=["x"]).status == "invalid"
 
 
+_FREQUENCY = "sqrt(9.81)/(2*pi)"  # hertz, for l = 1 m and g = 9.81 m/s²
+ZERO_DECIMAL_COMMA = (
+    # a thousands separator never follows a lone 0: 0,498 can only be 0.498
+    (_FREQUENCY, "Hz", "0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
+    (_FREQUENCY, "Hz", "-0,498", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `-0,498` as -0.498: a decimal comma.")),
+    (PERIOD, "s", "T = 2,01 s, f = 0,498 Hz", "equivalent",
+     ("Correct.", "Read `2,01` as 2.01: a decimal comma.", "Graded the number `2,01 s`; the rest of your answer is"
+      " not graded.", "Graded `T = 2,01 s`, your value in s; the rest of your answer (`f = 0,498 Hz`) is not graded.")),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "unit", "submitted", "status", "feedback"), ZERO_DECIMAL_COMMA)
+def test_three_digits_after_a_lone_zero_and_a_comma_are_decimals(expected, unit, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="number", rtol=0.005, unit=unit)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+def test_three_digits_after_any_other_whole_number_and_a_comma_may_be_thousands():
+    assert compare(_FREQUENCY, "0,498", kind="number", rtol=0.005, unit="Hz").status == "equivalent"
+    for submitted in ("1,000", "10,498", "00,498", "2,006"):  # 1000 or 1.000? the student is asked for a point
+        verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
+        assert verdict.feedback[0].startswith("A comma is not understood here"), submitted
+
+
 def test_out_of_time_is_undecided_and_flagged_for_a_person():
     verdict = compare(L_PENDULUM, "1/2 m l^2 θ̇^2", kind="lagrangian", timeout=1e-9, **PENDULUM)
     assert verdict.status == "undecided"
@@ -4453,8 +4505,37 @@ def test_a_given_name_is_put_in_place_and_the_feedback_says_so(submitted, status
     assert verdict.feedback[-1] == "Read with the problem's own meaning of `p_θ`."
 
 
+_P_AS_P_THETA = (
+    "Read `p` as `p_θ`: the problem has one coordinate, so p is its momentum.",
+    "Read with the problem's own meaning of `p_θ`.",
+)
+LONE_MOMENTUM = (
+    ("p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", "equivalent", ("Correct.", *_P_AS_P_THETA)),
+    ("H = p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", "equivalent", ("Correct.", *_P_AS_P_THETA)),
+    ("p²/(m R²) − ½ m R² ω² sin²θ − m g R cos θ", "not_equivalent",
+     ("A term differs: the term in p_θ² has the wrong factor.", *_P_AS_P_THETA)),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), LONE_MOMENTUM)
+def test_a_bare_p_is_the_momentum_of_a_problem_with_one_coordinate(submitted, status, feedback):
+    verdict = compare(HOOP_H, submitted, given={"p_theta": "m R^2 thetadot"}, up_to_constant=True, **HOOP)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 SPHERICAL_H = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"
 MOMENTA = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
+
+
+def test_a_bare_p_is_a_momentum_only_where_one_coordinate_has_one_and_the_student_gives_it_none():
+    hoop = compare(HOOP_H, "p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", given={"p_theta": "m R^2 thetadot"}, **HOOP)
+    assert hoop.status == "equivalent"
+    # the student's own p is theirs, read with their value and no note
+    own = "p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ, where p = m R² θ̇"
+    assert compare(HOOP_H, own, given={"p_theta": "m R^2 thetadot"}, **HOOP).feedback == ("Correct.",)
+    # with two coordinates, p is neither momentum
+    verdict = compare(SPHERICAL_H, "p²/(2 m l²) + p_φ²/(2 m l² sin²θ) − m g l cos θ", given=MOMENTA, **SPHERICAL)
+    assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "undefined_symbol")
 
 
 @pytest.mark.parametrize(
@@ -4964,6 +5045,8 @@ HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
 
 
 ELASTIC = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"]}  # the elastic pendulum's polar coordinates
+_HOOP_WORKED = "m R² θ̇² − (½ m R² θ̇² + ½ m R² ω² sin²θ + m g R cos θ)"  # p_θ θ̇ − L, worked out
+Q_THETA = ("-m g r sin(theta)", {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_theta"})
 
 
 def _misstated(statement: str, label: str) -> str:
@@ -5020,6 +5103,9 @@ def _misstated(statement: str, label: str) -> str:
          _misstated("H = L + p_φ*φ̇ + p_θ*θ̇", "H")),
         (HOOP_H, f"Since H = p_θ θ̇ + L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
          _misstated("H = L + p_θ*θ̇", "H")),
+        # a chain of more sides, read side by side: before, the definition was passed over, and right
+        (HOOP_H, f"H = p_θ θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = L + p_θ*θ̇", "H")),
     ],
 )  # fmt: skip
 def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
@@ -5055,6 +5141,118 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
     assert compare(expected, submitted, kind=kind, **options).status == "equivalent"
 
 
+def _steps_left_out(steps: str) -> str:
+    return f"Read without the step `{steps}`: a derivative written out is not checked; the last side was graded."
+
+
+_HOOP_DEFINED = r"H = \dot\theta \frac{\partial L}{\partial \dot\theta} - L = "
+_Q_THETA_TEX = r"Q_\theta = \mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta} = -mgr\sin\theta"
+_P_PHI_STEP = "∂/∂φ̇(½ m l² sin²θ φ̇²)"
+# a chain through a partial derivative written out: before, each was refused ("`∂` is read only in the name …")
+PARTIALS_IN_CHAIN = (
+    # q̇ ∂L/∂q̇ is p_q q̇, and the definition is judged as H = p_θ θ̇ − L = … is
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.",)),
+    (HOOP_H, _HOOP_DEFINED + HOOP_H_TYPED, HOOP_NOT_ENERGY, "equivalent", ("Correct.",)),
+    (HOOP_H, "H = θ̇ ∂L/∂θ̇ − L = m R² θ̇² − m g R cos θ", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.",
+      "A term is missing: a term in sin(θ).")),
+    (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ + φ̇ ∂L/∂φ̇ − L = {SPHERICAL_H_TYPED}", SPHERICAL, "equivalent", ("Correct.",)),
+    (SPHERICAL_H, rf"H = \sum_j \dot q_j \frac{{\partial L}}{{\partial \dot q_j}} - L = {SPHERICAL_H_TYPED}", SPHERICAL,
+     "equivalent", ("Correct.",)),
+    # a wrong definition, + L or a coordinate's term left out, goes to a person
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided", (_misstated("H = L + p_θ*θ̇", "H"),)),
+    (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ − L = {SPHERICAL_H_TYPED}", SPHERICAL, "undecided",
+     (_misstated("H = -L + p_θ*θ̇", "H"),)),
+    # any other ∂ in a step of H's chain: the step that defines H is not checked, so a person checks it
+    (HOOP_H, f"H = θ̇ ∂L/∂θ − L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
+     (_steps_left_out("θ̇ ∂L/∂θ − L"), "Its last side is right; a person will check the step that defines it.")),
+    # a derivative worked out on the way: the step is left out, and the last side graded
+    (SPHERICAL_P_PHI, f"p_φ = {_P_PHI_STEP} = m l² sin²θ φ̇", SPHERICAL, "equivalent",
+     ("Correct.", _steps_left_out(_P_PHI_STEP))),
+    (SPHERICAL_P_PHI, f"p_φ = {_P_PHI_STEP} = m l² φ̇", SPHERICAL, "not_equivalent",
+     ("Your answer depends on l, m and φ̇ as the right answer does, but not on θ: check how your answer depends"
+      " on θ.", _steps_left_out(_P_PHI_STEP))),
+    # a definition before it is still judged: p_φ = ∂L/∂φ is not what p_φ is
+    (SPHERICAL_P_PHI, f"p_φ = ∂L/∂φ = {_P_PHI_STEP} = m l² sin²θ φ̇", SPHERICAL, "undecided",
+     (_misstated("p_φ = ∂L/∂φ", "p_φ"), _steps_left_out(_P_PHI_STEP))),
+    (Q_THETA[0], "Q_θ = F·∂r/∂θ = −m g r sin θ", Q_THETA[1], "equivalent", ("Correct.", _steps_left_out("F·∂r/∂θ"))),
+    (Q_THETA[0], "Q_θ = F·∂r/∂θ = m g r sin θ", Q_THETA[1], "not_equivalent",
+     ("The overall sign is wrong.", _steps_left_out("F·∂r/∂θ"))),
+    # a chain of more sides after the step, read side by side as any is
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = {_HOOP_WORKED} = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
+     (_misstated("H = L + p_θ*θ̇", "H"),)),
+    (SPHERICAL_P_PHI, f"p_φ = {_P_PHI_STEP} = ½ m l² · 2 φ̇ = m l² sin²θ φ̇", SPHERICAL, "undecided",
+     ("Your last side is right, but side 1 does not say the same: a person will decide which is your answer.",
+      _steps_left_out(_P_PHI_STEP))),
+    (Q_THETA[0], _Q_THETA_TEX, Q_THETA[1], "equivalent",
+     ("Correct.", _steps_left_out(r"\mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta}"))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "options", "status", "feedback"), PARTIALS_IN_CHAIN)
+def test_a_chain_through_a_partial_derivative_written_out_grades_its_last_side(
+    expected, submitted, options, status, feedback
+):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+_THREE_SIDES = "Your answer has 3 sides after the name, each the same; the last was graded."
+_THREE_LINES = "Your 3 lines, each `H = …`, were read as one chain, H = … = …: its last side was graded."
+# H's definition, its working and its value, a line each: before, read as typed, L undefined, and not right
+LINES_OF_A_LONGER_CHAIN = (
+    (f"H = p_θ θ̇ − L\nH = {_HOOP_WORKED}\nH = {HOOP_H_TYPED}", "equivalent", ("Correct.", _THREE_SIDES, _THREE_LINES)),
+    (f"H = p_θ θ̇ + L\nH = {_HOOP_WORKED}\nH = {HOOP_H_TYPED}", "undecided",
+     (_misstated("H = L + p_θ*θ̇", "H"), _THREE_LINES)),
+    (f"H = p_θ θ̇ − L\nH = {_HOOP_WORKED}\nH = m R² θ̇²", "not_equivalent",
+     ("Not equivalent to the expected answer.", "Your answer has 3 sides after the name; the last was graded as your"
+      " answer.", _THREE_LINES)),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), LINES_OF_A_LONGER_CHAIN)
+def test_lines_of_a_chain_with_working_between_its_definition_and_value_are_one_chain(submitted, status, feedback):
+    verdict = compare(HOOP_H, submitted, given={"p_theta": "m R^2 thetadot"}, **HOOP_NOT_ENERGY)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+def _defined_before(words: str, definition: str) -> str:
+    return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
+
+
+_HOOP_IN_P = "p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ"
+_HOOP_P = "p_θ = m R² θ̇"
+# a sentence that defines a name, then the answer in it: before, refused for its colon, or its words undefined
+DEFINITION_BEFORE = (
+    (HOOP_H, f"With {_HOOP_P}: H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("With", _HOOP_P))),
+    (HOOP_H, f"With {_HOOP_P}, H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("With", _HOOP_P))),
+    (HOOP_H, f"Using {_HOOP_P}, we have H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("Using … we have", _HOOP_P))),
+    (HOOP_H, f"With {_HOOP_P}: {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("With", _HOOP_P))),
+    # the student's own definition, wrong, is put in place as theirs: wrong
+    (HOOP_H, f"With p_θ = m R θ̇: H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.",
+      _defined_before("With", "p_θ = m R θ̇"))),
+    (HOOP_H, f"With {_HOOP_P}: H = p_θ²/(m R²) − ½ m R² ω² sin²θ − m g R cos θ", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", _defined_before("With", _HOOP_P))),
+    ("sqrt(g/l)", "With ω₀ = √(g/l): ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("With", "ω₀ = √(g/l)"))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "options", "status", "feedback"), DEFINITION_BEFORE)
+def test_a_sentence_that_defines_a_name_before_the_answer_puts_it_in_place(
+    expected, submitted, options, status, feedback
+):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 def _chain(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, as the chain `{definition} = …`: its last side was graded."
 
@@ -5075,7 +5273,6 @@ def test_a_remark_in_brackets_that_h_is_not_t_plus_v_goes_to_a_person(submitted,
 
 
 DAMPED_EOM = ("m xddot + b xdot + k x = 0", {"kind": "equation", **DAMPED})
-Q_THETA = ("-m g r sin(theta)", {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_theta"})
 
 
 @pytest.mark.parametrize(

@@ -23,7 +23,7 @@ from grader.judge.expected import Expected, Outcome
 from grader.judge.numbers import NUMBER_WORDS
 from grader.parse import visible
 from grader.parse.messages import ParseFailure
-from grader.parse.names import GREEK_BY_LETTER, canonical_name, split_derivative
+from grader.parse.names import FUNCTION_NAMES, GREEK_BY_LETTER, GREEK_NAMES, canonical_name, split_derivative
 from grader.parse.tokens import tokenize
 
 __all__ = ["check_choice", "choice_labels", "chosen"]
@@ -56,6 +56,8 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
         return Outcome("invalid", 0.0, "choice_conflict", details, "labels")
     if reading.hedged:
         return Outcome("invalid", 0.0, "choices_hedged" if multiple else "choice_hedged", {"typed": _typed(submitted)})
+    if reading.scribbled:
+        return Outcome("invalid", 0.0, "choice_scribbled", {"typed": _typed(submitted)}, "labels")
     given = reading.labels
     if given is None:
         details = {"labels": _typed(submitted), "options": ", ".join(options) or "?"}
@@ -105,14 +107,15 @@ def chosen(submitted: str, options, *, multiple: bool = False, meanings=(), asks
     None where it names no option's label or words, names two options at once, or hedges."""
     texts = _option_texts(options)
     reading = _read_choice(submitted, texts, multiple=multiple, meanings=meanings, asks_false=asks_false)
-    return None if reading.conflict or reading.hedged else reading.labels
+    return None if reading.conflict or reading.hedged or reading.scribbled else reading.labels
 
 
 class _Reading(NamedTuple):
     """A choice answer as read: the labels it names (or None); those read from an option's words (or
     None); what was read past after the option (a remark, a reason); a label with words that name
     another option (or None); whether it hedges, doubts or takes back what it names; and a claim read past
-    before the option (``holonomic`` of "holonomic and rheonomic")."""
+    before the option (``holonomic`` of "holonomic and rheonomic"); and whether what follows the option is a
+    formula that says nothing of it (:func:`_scribbled`)."""
 
     labels: list[str] | None = None
     words: list[str] | None = None
@@ -120,6 +123,7 @@ class _Reading(NamedTuple):
     conflict: tuple[str, str] | None = None
     hedged: bool = False
     before: str = ""
+    scribbled: bool = False
 
 
 def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(), asks_false=False) -> _Reading:
@@ -146,7 +150,7 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
     if said and all(label in texts for label in said):  # b is correct, since …; c is false, because …
         remark = submitted[len(claim) :]
         hedged = _hedges(submitted, said, remark, readings, texts, asks_false=asks_false)
-        return _Reading(hedged=True) if hedged else _Reading(said, None, remark)
+        return _Reading(hedged=True) if hedged else _Reading(said, None, remark, scribbled=_scribbled(remark, said))
     said = _named(core, readings) if core != submitted else None
     if said:
         return _Reading([said], [said])  # I choose rheonomic
@@ -165,11 +169,37 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
         label, before_it, remark = joined
         if _hedges(submitted, [label], remark, readings, texts, asks_false=asks_false):
             return _Reading(hedged=True)
-        return _Reading([label], [label], remark, before=before_it)
+        return _Reading([label], [label], remark, before=before_it, scribbled=_scribbled(remark, [label]))
     labels, remark = found or (None, "")
     if _hedges(submitted, labels, remark, readings, texts, asks_false=asks_false):
         return _Reading(hedged=True)
-    return _Reading(labels or given, words, remark)
+    return _Reading(labels or given, words, remark, scribbled=bool(labels) and _scribbled(remark, labels))
+
+
+def _scribbled(remark: str, labels) -> bool:
+    """Whether what follows an option is a formula and no words (``= k θ̈``, ``, l sin ω``, ``(m g l)``):
+    scribbles, a step of another part perhaps, that say nothing of the choice, and may be meant for it
+    (``(b) = k θ̈``: is b that formula?). A remark with words (``since l = l(t)``) is read past, and so is a
+    relation (``(r ≥ a)``: why the option holds), but for the label set equal to a formula (``(b) = …``).
+    Function names, Greek letters by name and a rate spelled out (``thetadot``) are no words. The chosen
+    option's own label is no formula (``rheonomic, b``)."""
+    text = remark.strip().lstrip(",;:–—-. ").strip()
+    said = choice_labels(text)
+    if not text or (said and set(said) <= set(labels)):
+        return False
+    equated = text.startswith("=")
+    words = [
+        word
+        for word in _WORD.findall(text)
+        if word.lower() not in FUNCTION_NAMES and word.lower() not in GREEK_NAMES and not split_derivative(word)
+    ]
+    return not words and (equated or not _RELATION.search(text))
+
+
+# a word of a remark: three Latin letters or more with a vowel (not m g R glued, mgR), not a TeX command
+# (\sin, \theta); and the signs of a relation
+_WORD = re.compile(r"(?<![\\A-Za-zÀ-ÿ])(?=[A-Za-zÀ-ÿ]*[aeiouyAEIOUYÀ-ÿ])[A-Za-zÀ-ÿ]{3,}")
+_RELATION = re.compile(r"[=<>≤≥≠≈≃∝]|\\(?:geq?|leq?|neq?|approx|propto|sim)(?![A-Za-z])")
 
 
 def _joined(submitted: str, readings: dict[str, str | None], texts: dict[str, str]) -> tuple[str, str, str] | None:

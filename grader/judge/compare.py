@@ -53,6 +53,7 @@ from grader.judge.units import (
 )
 from grader.judge.verdict import Verdict
 from grader.judge.words import (
+    definition_before_formula,
     definition_then_formula,
     euler_lagrange_then_formula,
     formula_then_approximation,
@@ -196,6 +197,14 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
+    partials = _partials_read(submitted) if spec.parsed and spec.shape and _refused(verdict, "partial") else None
+    sides_of = submitted  # as typed, or with the derivatives of its steps read (a chain of more sides: below)
+    if partials is not None:  # H = θ̇ ∂L/∂θ̇ − L = …, p_φ = ∂/∂φ̇(…) = …: a chain through a derivative written out
+        read = _judge(spec, prepared, partials[0], timeout - (time.monotonic() - started), values)
+        if read.status != "invalid":
+            verdict = _with_steps_left_out(read, *partials[1:], prepared)
+        elif _refused(read, "too_many_equals"):
+            verdict, sides_of = read, partials[0]
     left = timeout - (time.monotonic() - started)
     forms = _small_angle_forms(spec, prepared, submitted, left, values) if verdict.status != "equivalent" else None
     if forms is not None:  # θ̈ = −(g/l) sin θ, which for small θ gives θ̈ = −(g/l) θ: which is the answer?
@@ -205,8 +214,13 @@ def compare(
     chain = _chained(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
+        sides = _sides(chain[0]) if _refused(chained, "too_many_equals") and spec.shape == "expression" else None
+        if sides:  # H = p_θ θ̇ − L, then H = m R² θ̇² − (…), then H = …: a chain of more sides, read side by side
+            left = timeout - (time.monotonic() - started)
+            chained = _judge_lines(spec, prepared, sides, left, values, chained, "side")
         # where the lines could be read as typed, only a definition we know makes the first line one (not L = … + q)
-        known = verdict.status == "invalid" or _defines_as_known(chain[0], prepared, values)
+        first = f"{sides[0]} = {sides[-1].partition('=')[2]}" if sides else chain[0]  # the definition, then the value
+        known = verdict.status == "invalid" or _defines_as_known(first, prepared, values)
         if chained.status != "invalid" and chained.diagnosis not in _UNDEFINED and known:
             # where an expression is asked, the chain is the answer; in a system, it is one of its lines
             key = "lines_as_chain" if spec.shape == "expression" else "lines_as_one_chain"
@@ -218,12 +232,14 @@ def compare(
     unknowns = verdict.diagnosis == "eliminate_unknowns"
     lines, parts = (_lines(submitted), "line") if several or unknowns else (None, "")
     if getattr(verdict.answer, "code", None) == "too_many_equals" and spec.shape == "expression":
-        lines, parts = _sides(submitted), "side"
+        lines, parts = _sides(sides_of), "side"
     if lines:
         left = timeout - (time.monotonic() - started)
         by_lines = _judge_lines(spec, prepared, lines, left, values, verdict, parts)
         if not unknowns or by_lines.status in ("equivalent", "undecided"):
             verdict = by_lines
+        if sides_of is not submitted and verdict is by_lines:
+            verdict = _with_steps_left_out(verdict, *partials[1:], prepared)
     said = _said_wrong(submitted, prepared) if spec.parsed and verdict.status == "equivalent" else None
     if said is not None:  # Using L = T + V, we get L = …: right as a value, not as what it says L is
         return _right_but_said(verdict, "statement_for_a_person", statement=said[1], label=said[0])
@@ -508,6 +524,9 @@ def _judge_lines(
     *earlier, last = verdicts
     if last.diagnosis == "number_for_formula":
         return whole  # ω = √(g/l) = 3.13: the formula, then its value for numbers of the student's own
+    misstated = _side_misstated(lines, earlier, expected, given) if parts == "side" else None
+    if misstated is not None and last.status == "equivalent":  # H = p_θ θ̇ + L = … = …: a wrong definition
+        return _right_but_said(last, "statement_for_a_person", **misstated)
     # L = T − V = …: a side in names of the answer's own is its definition, not a step to check
     wrong = [
         str(number)
@@ -525,6 +544,21 @@ def _judge_lines(
     note = say("lines_agree" if last.status == "equivalent" else "last_line_graded", **count)
     feedback = tuple(dict.fromkeys([*last.feedback, note]))
     return replace(last, feedback=feedback, notes=(*last.notes, note))
+
+
+def _side_misstated(lines: list[str], verdicts: list[Verdict], expected: Expected, given: tuple) -> dict | None:
+    """Of a chain's sides judged one by one (:func:`_judge_lines`), a side in names of the answer's own
+    that is a wrong definition of the quantity (``H = p_θ θ̇ + L = m R² θ̇² − … = …``): what the note on
+    it says; None where there is none. Such a side is no step to check against the value, but what it
+    says the quantity is may be wrong."""
+    names = sorted(expected.names | {symbol.name for symbol, _ in given})
+    for line, verdict in zip(lines, verdicts, strict=False):
+        if verdict.diagnosis not in _UNDEFINED:
+            continue
+        read = parse_answer(line, coords=expected.setting.coords, known=names)
+        if read.ok and read.kind == "equation" and _wrong_definition(read.value.lhs, read.value.rhs, expected):
+            return {"statement": _shown_statement(read.value), "label": unicode_name(read.value.lhs.name)}
+    return None
 
 
 # a line that starts with a dash and a space: a Markdown list's bullet, or a minus sign?
@@ -562,6 +596,77 @@ def _hashable(value):
     return value
 
 
+def _refused(verdict: Verdict, code: str) -> bool:
+    return verdict.status == "invalid" and getattr(verdict.answer, "code", None) == code
+
+
+def _partials_read(text: str) -> tuple[str, list[str], str] | None:
+    """``H = θ̇ ∂L/∂θ̇ − L = …``, ``p_φ = ∂/∂φ̇(½ m l² sin²θ φ̇²) = …``, ``Q_θ = F·∂r/∂θ = …``: a chain on
+    one line whose steps write out a partial derivative, which the parser reads only as a chain's
+    label. ∂L/∂q̇ among a step's factors is the momentum p_q it defines, so that ``H = q̇ ∂L/∂q̇ − L``
+    is judged as the definition ``H = p_q q̇ − L`` is; a step with any other ∂ is left out. Returns the
+    chain so written, which grades its last side, the steps left out, as typed, and the chain's label;
+    None where ``text`` is no such chain, or its last side has a ∂ of its own."""
+    if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip() or _ROW_BREAK.search(text):
+        return None  # lines are chains of their own (see _chained)
+    label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
+    if len(sides) < 2 or _PARTIAL.search(sides[-1]) or len(label) > _LABEL_LENGTH:
+        return None
+    read = parse_answer(label) if not _SIDES_LABEL.fullmatch(label) else None  # Q_\theta, p_{\phi}: TeX's labels
+    if read is not None and not (read.ok and read.kind == "expression" and read.value.is_Symbol):
+        return None
+    steps, left_out = [], []
+    for number, side in enumerate(sides[:-1]):
+        step = _MOMENTUM_QUOTIENT.sub(_momentum_named, side)
+        if number == 0 and _QUOTIENT_ALONE.fullmatch(side):
+            steps.append(side)  # p_φ = ∂L/∂θ̇ = …: a quotient alone after the label, the parser judges as a definition
+        elif _PARTIAL.search(step):
+            left_out.append(side.strip())
+        else:
+            steps.append(step)
+    if not left_out and steps == sides[:-1]:
+        return None  # no ∂ in the steps: the parser's refusal is about something else
+    return "=".join([label, *steps, sides[-1]]), left_out, label.strip()
+
+
+def _momentum_named(found: re.Match) -> str:
+    """``∂L/∂θ̇`` as ``p_{theta}``, the name of the momentum it defines; any other quotient as typed."""
+    read = parse_answer(f"{found[0]} = 0")
+    if not read.ok or read.kind != "equation" or not read.value.lhs.is_Symbol:
+        return found[0]
+    momentum = _MOMENTUM_DEFINED.fullmatch(read.value.lhs.name)
+    return f" p_{{{momentum[1].replace('_', '')}}} " if momentum else found[0]  # θ₁'s p_{theta1}, read in TeX too
+
+
+_PARTIAL = re.compile(r"∂|\\partial(?![A-Za-z])")
+_QUOTIENT_ALONE = re.compile(
+    r"\s*[-−]?\s*(?:∂\s*[A-Za-z]\w*\s*/\s*∂\s*[^\s=+\-−*/·⋅()\[\]{}]{1,20}"
+    r"|\\frac\s*\{\s*\\partial\s*[A-Za-z]\s*\}\s*\{\s*\\partial\s*(?:[^{}]|\{[^{}]*\}){1,30}\})\s*"
+)
+# ∂L/∂θ̇ written inline (θ̇, thetadot, \dot\theta, \dot{\theta}) or as TeX's \frac{\partial L}{\partial \dot\theta}
+_MOMENTUM_QUOTIENT = re.compile(
+    r"∂\s*L\s*/\s*∂\s*(?:\\dot\s*(?:\{[^{}]{1,20}\}|\\?[A-Za-z]+)|[^\s=+\-−*/·⋅()\[\]{}]{1,20})"
+    r"|\\frac\s*\{\s*\\partial\s*L\s*\}\s*\{\s*\\partial\s*(?:[^{}]|\{[^{}]*\}){1,30}\}"
+)
+
+
+def _with_steps_left_out(verdict: Verdict, left_out: list[str], label: str, expected: Expected) -> Verdict:
+    """The verdict on a chain read without the steps ``left_out`` (:func:`_partials_read`), and the note
+    that says so. Where the chain's ``label`` names the Hamiltonian, the Lagrangian or the energy, a step
+    left out may be its definition, unchecked (``H = θ̇ ∂L/∂θ − L``): a right value goes to a person, as
+    one after a wrong definition does."""
+    if not left_out:
+        return verdict
+    s = "s" if len(left_out) > 1 else ""
+    note = say("steps_left_out", s=s, steps=_shown("; ".join(left_out)))
+    name = canonical_name(label) if _ONE_NAME.fullmatch(label) else None
+    if name in _ENERGY_SUMS and name not in expected.names and verdict.status == "equivalent":
+        return replace(
+            _right_but_said(verdict, "step_for_a_person"), feedback=(note, say("step_for_a_person")), notes=(note,)
+        )
+    return replace(verdict, feedback=(*verdict.feedback, note), notes=(*verdict.notes, note))
+
+
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
     if timeout <= 0:  # a second reading of the answer, with no time left for it: nobody may say
         return _verdict(Outcome("undecided", 0.0, "undecided", method="timeout"), None)
@@ -572,7 +677,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
         # building one factor of a hostile answer, and an answer has room for dozens.
         with time_limit(timeout) as deadline:
             if spec.parsed:
-                names = sorted(expected.names | {symbol.name for symbol, _ in given})
+                momentum = _lone_momentum(expected, given)
+                names = sorted(expected.names | {symbol.name for symbol, _ in given} | set(momentum[:1]))
                 answer, read_notes = _read(spec, expected, submitted, names, deadline)
                 formula = spec.name in ("expression", "lagrangian")
                 # √(g/l) in s: "in" and a unit are no words to read past, nor names of the student's
@@ -600,7 +706,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     return _verdict(energies, answer)
                 if _loose_definitions(answer):
                     return _verdict(Outcome("invalid", 0.0, "loose_definitions", method="parse"), answer)
-                typed, (answer, used) = answer, _with_given(answer, given)
+                typed, (answer, used) = answer, _with_given(_as_momentum(answer, momentum), given)
+                if momentum and sympy.Symbol(momentum[0]) in typed.symbols:
+                    read_notes += (("p_read_as_momentum", {"momentum": unicode_name(momentum[1])}),)
                 answer, conserved = _conserved(answer, spec, expected, deadline)
                 answer, said = _said_constant(answer, spec, expected)
                 read_notes += said
@@ -748,6 +856,32 @@ def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple
         else _replaced(value, replacement)
     )
     return ParsedAnswer(answer.text, value, answer.kind), used
+
+
+def _lone_momentum(expected: Expected, given: tuple) -> tuple[str, ...]:
+    """``("p", "p_theta")`` where the problem has one coordinate and gives its momentum (p_θ), and
+    ``p`` is no name of its own: a bare ``p`` can then mean only that momentum, as texts write it for
+    one degree of freedom. With two coordinates, ``p`` names none of them; then ``()``."""
+    coords = expected.setting.coords
+    if len(coords) != 1 or "p" in expected.names:
+        return ()
+    wanted = canonical_name(f"p_{coords[0]}")
+    return ("p", wanted) if any(symbol.name == wanted for symbol, _ in given) else ()
+
+
+def _as_momentum(answer: ParsedAnswer, momentum: tuple) -> ParsedAnswer:
+    """The answer with a bare ``p`` written as the one momentum it means (:func:`_lone_momentum`)."""
+    bare = sympy.Symbol(momentum[0]) if momentum else None
+    if bare is None or bare not in answer.symbols:
+        return answer
+    replacement = {bare: sympy.Symbol(momentum[1])}
+    value = answer.value
+    value = (
+        tuple(_replaced(item, replacement) for item in value)
+        if isinstance(value, tuple)
+        else _replaced(value, replacement)
+    )
+    return ParsedAnswer(answer.text, value, answer.kind)
 
 
 def _replaced(item, replacement: dict):
@@ -1637,7 +1771,22 @@ def _without_words(
         if _states_one_definition(read, expected):
             chained = {"words": _shown(words), "chain": f"{definition} = …"}
             return read, ((_words_note("definition_in_words", words, expected), chained), *after)
+    # a name the problem gives a meaning (p_θ) is the student's to define too, as after the formula (…, where p_θ = …)
+    before = definition_before_formula(submitted, sorted(expected.names), coords)
+    if before is not None:  # With p_θ = m R² θ̇: H = …, read as H = …, where p_θ = m R² θ̇ is
+        words, definition, formula = before
+        read = parse_answer(f"{formula}, where {definition}", coords=coords, known=names, deadline=deadline)
+        if read.ok and not _unknown_in_items(read, names):
+            said = {"words": _shown(words), "definition": definition}
+            return read, ((_words_note("definition_before", words, expected), said),)
     return without if without is not None else (answer, ())
+
+
+def _unknown_in_items(read: ParsedAnswer, names: list) -> bool:
+    """Whether an answer uses a name neither the problem's nor one an item of it gives a value (``H``, ``p_θ``)."""
+    items = read.value if read.kind == "equations" else (read.value,)
+    labels = {item.lhs for item in items if isinstance(item, sympy.Eq)}
+    return any(symbol not in labels and symbol.name not in names for symbol in read.symbols)
 
 
 def _read_with_remark(text: str, expected: Expected, names: list, deadline) -> tuple[ParsedAnswer | Refusal, tuple]:

@@ -55,6 +55,9 @@ FEEDBACK: dict[str, str] = {
     "forms_for_a_person": "Your formula after `{words}` is not the small-angle form of the one before it, as your"
     " words say: a person will decide which is your answer.",
     "forms_both_wrong": "Neither your formula before `{words}` nor the one after it is right.",
+    "steps_left_out": "Read without the step{s} `{steps}`: a derivative written out is not checked; the last side"
+    " was graded.",
+    "step_for_a_person": "Its last side is right; a person will check the step that defines it.",
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
@@ -63,6 +66,8 @@ FEEDBACK: dict[str, str] = {
     "words_for_a_person": "Your answer says `{words}` beside the formula. The formula was graded on its own;"
     " a person will read the words against it.",
     "words_before_left_out": "Read without the words before it, `{words}`: the formula is what is graded.",
+    "definition_before": "Read without the words `{words}`, with your `{definition}` put in place in the formula"
+    " after it.",
     "definition_in_words": "Read without the words `{words}`, as the chain `{chain}`: its last side was graded.",
     "unit_for_a_person": "Your formula is labelled `{unit}`. Graded without its unit, it is right; but a"
     " frequency in Hz counts cycles and an angular frequency in rad/s radians, 2π apart (ω = 2πf). A person"
@@ -155,6 +160,7 @@ FEEDBACK: dict[str, str] = {
     "wrong_equations": "Your equations do not determine the right accelerations for {coords}.",
     "dependent_equations": "Your equations are not independent: they do not determine every acceleration.",
     "given_read": "Read with the problem's own meaning of {names}.",
+    "p_read_as_momentum": "Read `p` as `{momentum}`: the problem has one coordinate, so p is its momentum.",
     "conserved_read": "`… = const` was read as a conserved quantity: what was compared is its time derivative,"
     " d/dt (…) = 0.",
     "vanishing_factor": "Your equation is right only where a factor of it is not zero: at rest, or where a"
@@ -214,6 +220,8 @@ FEEDBACK: dict[str, str] = {
     "choice_read_remark": "Read as the option you wrote out: {labels}; what follows it (`{rest}`) is not graded.",
     "choice_read_beside": "Read as the option you wrote out: {labels}; the words beside it (`{rest}`) are not graded.",
     "choice_remark": "Graded your choice, {labels}; what follows it (`{rest}`) is not graded.",
+    "choice_scribbled": "Your answer {typed} names an option, then a formula that says nothing of it: is the formula"
+    " your choice? Give the option's label alone, or words after it that say why.",
     "choice_hedged": "One option is asked for here, and your answer {typed} offers another, or doubts or denies the"
     " one it names: give the one you mean.",
     "choices_hedged": "Your answer {typed} offers another option, or doubts or denies one it names: give just the"

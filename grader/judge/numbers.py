@@ -37,8 +37,11 @@ from grader.parse.names import IMPLYING_WORDS
 
 __all__ = ["NUMBER_WORDS", "read_number"]
 
-# 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English
-_DECIMAL_COMMA = re.compile(r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,})(?![0-9,])(.*)", re.DOTALL)
+# 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English. But
+# 0,498 is 0.498: a thousands separator never follows a lone 0, so three digits after 0, are decimals too
+_DECIMAL_COMMA = re.compile(
+    r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,}|(?<=(?<![0-9])0,)[0-9]{3})(?![0-9,])(.*)", re.DOTALL
+)
 
 # ``2.006 sec``, ``2006 msec``, ``2.006 seconds``: after a number, at the end, the word for seconds, not the secant
 _SEC = re.compile(r"([0-9.]\s*)(m?)(?:secs?|seconds?)\.?\s*$")

@@ -8,6 +8,8 @@ Contents:
     words_then_formula(text, names, coords)    ``The equation of motion is m l θ̈ = …``: the words and the formula
     definition_then_formula(text, names, coords)
                                                ``Since L = T − V, L = …``: the words, the definition, the chain
+    definition_before_formula(text, names, coords)
+                                               ``With p_θ = m R² θ̇: H = …``: the words, a name's definition, the formula
     euler_lagrange_then_formula(text, names, coords)
                                                ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: …``: words, operator, equation
     formula_then_convention(text, names)       ``L = … (taking V = 0 at the pivot)``: the formula and its remark
@@ -61,6 +63,7 @@ from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = [
+    "definition_before_formula",
     "definition_then_formula",
     "euler_lagrange_then_formula",
     "formula_then_approximation",
@@ -385,31 +388,10 @@ def definition_then_formula(
     ``so``), or the chain's next ``=``; then the value, after the name again unless words or a colon
     hand over to it. The words must be prose (:func:`is_prose`). Neither the definition nor the value is
     checked here."""
-    first = _PROSE_WORD.match(text, len(text) - len(text.lstrip()))
-    if len(text) > _LENGTH or first is None or first[0].lower() not in _STATING:
-        return  # as nearly every answer: no sentence that states
-    lead, start = _words_from(text, 0, names, coords)
-    if not lead:
+    sentence = _defining_sentence(text, names, coords)
+    if sentence is None:
         return
-    equals = _stop(text, start, names, coords)
-    if equals is None or text[equals] != "=":
-        return
-    left = text[start:equals].strip()
-    stop = _stop(text, equals + 1, names, coords)
-    side = text[equals + 1 : stop].strip() if stop is not None else ""
-    if not side or any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
-        return  # L = T − V (not T + V): words in the definition may make it another
-    if text[stop] == "=":  # Since L = T − V = …: the chain as typed
-        between, after, handed = [], stop + 1, True
-    else:
-        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
-        if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
-            return  # …, not L = …: words that do not hand over to the value
-        handed = bool(between) or text[stop] == ":"
-    if not is_prose(" ".join((*lead, *between)), names, doubt=True):
-        return
-    said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=")) if part)
-    said = re.sub(r"\s+", " ", said)
+    said, left, side, stop, after, handed = sentence
     value = text[after:].strip()
     value_equals = _first_equals(value)
     name = _name(left, names, coords)
@@ -422,6 +404,57 @@ def definition_then_formula(
         left = text[after:].strip()[:value_equals].strip()  # L(θ, θ̇), as the value is named
     if handed and value:
         yield said, f"{left} = {side}", f"{left} = {side} = {value}"
+
+
+def definition_before_formula(
+    text: str, names: Collection[str], coords: Collection[str]
+) -> tuple[str, str, str] | None:
+    """``With p_θ = m R² θ̇: H = p_θ²/(2 m R²) − …``: a sentence that defines a name of the student's own,
+    then the value of another quantity in it, as (the words, the definition as typed, the formula), the
+    sentence as :func:`definition_then_formula` reads one (``Using ω₀ = √(g/l), we have ω = ω₀``); None
+    for any other text, and where the value is the defined name's own (that is a chain). The value is
+    named (``H = …``) or handed over to (``… : p_θ²/(2 m R²) − …``). Neither is checked here."""
+    sentence = _defining_sentence(text, names, coords)
+    if sentence is None or text[sentence[3]] == "=":
+        return None  # Since L = T − V = …: a chain
+    said, left, side, _, after, handed = sentence
+    value, name = text[after:].strip(), _name(left, names, coords)
+    value_equals = _first_equals(value)
+    named = _name(value[:value_equals], names, coords) if value_equals is not None else None
+    if name is None or not value or named == name or not (named or handed):
+        return None
+    return said, f"{left} = {side}", value
+
+
+def _defining_sentence(text: str, names: Collection[str], coords: Collection[str]) -> tuple | None:
+    """A sentence that states a definition, then hands over to a value (:func:`definition_then_formula`):
+    (the words, the definition's left side and its side, where the side stops, where the value starts,
+    whether words or a colon hand over to it); None where ``text`` begins with no such sentence."""
+    first = _PROSE_WORD.match(text, len(text) - len(text.lstrip()))
+    if len(text) > _LENGTH or first is None or first[0].lower() not in _STATING:
+        return None  # as nearly every answer: no sentence that states
+    lead, start = _words_from(text, 0, names, coords)
+    if not lead:
+        return None
+    equals = _stop(text, start, names, coords)
+    if equals is None or text[equals] != "=":
+        return None
+    left = text[start:equals].strip()
+    stop = _stop(text, equals + 1, names, coords)
+    side = text[equals + 1 : stop].strip() if stop is not None else ""
+    if not side or any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
+        return None  # L = T − V (not T + V): words in the definition may make it another
+    if text[stop] == "=":  # Since L = T − V = …: the chain as typed
+        between, after, handed = [], stop + 1, True
+    else:
+        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
+            return None  # …, not L = …: words that do not hand over to the value
+        handed = bool(between) or text[stop] == ":"
+    if not is_prose(" ".join((*lead, *between)), names, doubt=True):
+        return None
+    said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=")) if part)
+    return re.sub(r"\s+", " ", said), left, side, stop, after, handed
 
 
 def euler_lagrange_then_formula(
