@@ -5,7 +5,8 @@ Contents:
     Verdict     equivalent / not_equivalent / undecided / invalid, with score and feedback
     KINDS       the closed registry of answer kinds and their options
 
-Modules: ``compare`` (dispatch, the shared steps), ``expression``, ``motion``
+Modules: ``compare`` (dispatch, the shared steps), ``chains`` (an answer's text cut into lines
+and a chain's sides), ``expression``, ``motion``
 (equation, equations), ``lagrangian``, ``scalar`` (integer, number), ``choice``, the
 kinds' checkers; ``numeric`` and ``sampling`` (fast evaluation at seeded points),
 ``diagnose`` (naming mistakes), ``feedback`` (every sentence), ``deadline`` (time

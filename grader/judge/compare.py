@@ -25,6 +25,15 @@ import sympy
 from sympy.core.function import AppliedUndef
 
 from grader.errors import AuthorError
+from grader.judge.chains import (
+    MOMENTUM_DEFINED,
+    ONE_NAME,
+    answer_lines,
+    chain_sides,
+    lines_as_chain,
+    partials_read,
+    without_dashes,
+)
 from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
@@ -197,7 +206,7 @@ def compare(
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
-    partials = _partials_read(submitted) if spec.parsed and spec.shape and _refused(verdict, "partial") else None
+    partials = partials_read(submitted) if spec.parsed and spec.shape and _refused(verdict, "partial") else None
     sides_of = submitted  # as typed, or with the derivatives of its steps read (a chain of more sides: below)
     if partials is not None:  # H = θ̇ ∂L/∂θ̇ − L = …, p_φ = ∂/∂φ̇(…) = …: a chain through a derivative written out
         read = _judge(spec, prepared, partials[0], timeout - (time.monotonic() - started), values)
@@ -211,10 +220,10 @@ def compare(
         return forms
     # H = p_θ θ̇ − L, then H = …: read as typed, H's value is put into the first line, and L is undefined
     unread = verdict.status == "invalid" or verdict.diagnosis in _UNDEFINED
-    chain = _chained(submitted) if unread and spec.parsed and spec.shape else None
+    chain = lines_as_chain(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
-        sides = _sides(chain[0]) if _refused(chained, "too_many_equals") and spec.shape == "expression" else None
+        sides = chain_sides(chain[0]) if _refused(chained, "too_many_equals") and spec.shape == "expression" else None
         if sides:  # H = p_θ θ̇ − L, then H = m R² θ̇² − (…), then H = …: a chain of more sides, read side by side
             left = timeout - (time.monotonic() - started)
             chained = _judge_lines(spec, prepared, sides, left, values, chained, "side")
@@ -230,9 +239,9 @@ def compare(
     # θ̈ = −ω² sin θ, then θ̈ = −(g/l) sin θ: no definition of ω to eliminate, but a last line that
     # needs none; only where that line is right does the reading by lines say more
     unknowns = verdict.diagnosis == "eliminate_unknowns"
-    lines, parts = (_lines(submitted), "line") if several or unknowns else (None, "")
+    lines, parts = (answer_lines(submitted), "line") if several or unknowns else (None, "")
     if getattr(verdict.answer, "code", None) == "too_many_equals" and spec.shape == "expression":
-        lines, parts = _sides(sides_of), "side"
+        lines, parts = chain_sides(sides_of), "side"
     if lines:
         left = timeout - (time.monotonic() - started)
         by_lines = _judge_lines(spec, prepared, lines, left, values, verdict, parts)
@@ -250,7 +259,7 @@ def compare(
     rounded = _rounded(spec, prepared, submitted, left, values) if verdict.status == "not_equivalent" else None
     if rounded is not None:  # 0.333 m l² θ̇²: right with the decimal written as the 1/3 it rounds
         return _verdict(rounded, verdict.answer)
-    listed = _without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
+    listed = without_dashes(submitted) if spec.parsed and verdict.status == "not_equivalent" else None
     left = timeout - (time.monotonic() - started)
     if listed is None or left <= 0:
         return verdict
@@ -379,120 +388,11 @@ def _one_of_two_forms(full: Verdict, small: Verdict, words: str) -> Verdict:
 
 # one equation, or one expression, is asked for, and the answer has several lines
 _ONE_THING_ASKED = frozenset({"expected_one_equation", "expected_expression"})
-_MAX_LINES = 6
 
 
 def _answered_twice(answer, expected: Expected) -> bool:
     """``ω = √(l/g); ω₀ = √(g/l)``: lines labelled with the asked quantity's names, two answers."""
     return getattr(answer, "kind", None) == "equations" and len(_asked_lines(answer.value, expected)) > 1
-
-
-def _chained(text: str) -> tuple[str, int, str] | None:
-    """``H = Σ p q̇ − L`` then ``H = ½ m l² θ̇² − …``, or ``p_φ = ∂L/∂φ̇`` then ``p_φ = m l² sin²θ φ̇``:
-    lines that each give one name a value, read as the one chain ``H = Σ p q̇ − L = ½ m l² θ̇² − …``
-    that they are (the parser reads a chain's definitions on the way as such, and grades its last
-    side). In TeX too (``p_\\phi = \\frac{\\partial L}{\\partial \\dot\\phi} \\\\ p_\\phi = …``, each line in
-    its ``$…$`` or not); and where other lines follow or come before, as a system's equations do,
-    each run of lines that name one quantity is one chain, the others kept as they are. Returns the
-    answer so read, the count of lines of the first such run and its name as a student reads it;
-    None where no two lines in a row name one quantity."""
-    lines = _chain_lines(text)
-    if lines is None:
-        return None
-    runs: list[list[tuple[str | None, str, str]]] = []  # of (name, label, side): lines in a row that name one
-    for line in lines:
-        name, label, side = _labelled_line(line)
-        if runs and name is not None and runs[-1][-1][0] == name:
-            runs[-1].append((name, label, side))
-        else:
-            runs.append([(name, label, side) if name is not None else (None, "", line.strip())])
-    chains = [run for run in runs if len(run) > 1]
-    if not chains:
-        return None
-    joined = [f"{run[0][1]} = " + " = ".join(side for *_, side in run) if run[0][0] else run[0][2] for run in runs]
-    return "\n".join(joined), len(chains[0]), unicode_name(chains[0][0][0])
-
-
-# TeX's row break, \\ (with the space below it, \\[6pt]), which ends a line as a new line does
-_ROW_BREAK = re.compile(r"\\\\(?:\s*\[[^\]\n]{0,12}\])?")
-# the math's delimiters around a line: $…$, $$…$$, \[…\], \(…\)
-_OPENS_MATH = re.compile(r"^\s*(?:\$\$?|\\\[|\\\()")
-_CLOSES_MATH = re.compile(r"(?:\$\$?|\\\]|\\\))\s*$")
-
-
-def _chain_lines(text: str) -> list[str] | None:
-    """The lines of ``text`` as :func:`_lines` finds them, TeX's ``\\\\`` ending one too, each without the
-    math's delimiters around it; None where there are not two to six."""
-    if not isinstance(text, str) or len(text) > LIMITS.length:
-        return None
-    lines = _lines(_ROW_BREAK.sub("\n", text))
-    return [_CLOSES_MATH.sub("", _OPENS_MATH.sub("", line)) for line in lines] if lines else None
-
-
-def _labelled_line(line: str) -> tuple[str | None, str, str]:
-    """A line that gives a name a value, ``p_\\phi = …``: (the name, its label as typed, what follows
-    its first ``=``); (None, "", "") for any other line. The label is read alone, as a name (H, ``p_φ``,
-    TeX's ``p_{\\phi}``): ``2L``, ``θ̈`` or ``L(θ)`` name no quantity a chain gives values."""
-    label, *sides = _cut(line, lambda i, depth: depth == 0 and _EQUALS.match(line, i) is not None)
-    read = parse_answer(label) if sides and label.strip() and len(label) <= _LABEL_LENGTH else None
-    if read is None or not read.ok or read.kind != "expression" or not read.value.is_Symbol:
-        return None, "", ""
-    return read.value.name, label.strip(), "=".join(sides).strip().rstrip(",")
-
-
-_LABEL_LENGTH = 40  # characters of a label: a name, with its subscript in TeX
-
-
-def _lines(text: str) -> list[str] | None:
-    """The lines of ``text`` (split at new lines and at ``;`` outside brackets), where it has two
-    to six; else None."""
-    if not isinstance(text, str) or len(text) > LIMITS.length:
-        return None
-    cut = _cut(text, lambda i, depth: text[i] == "\n" or (text[i] == ";" and depth == 0))
-    lines = [line for line in cut if line.strip()]
-    return lines if 2 <= len(lines) <= _MAX_LINES else None
-
-
-def _cut(text: str, at: Callable[[int, int], bool]) -> list[str]:
-    """``text`` cut at (and without) each one-character separator ``at(position, depth)`` accepts,
-    where depth counts the brackets open there."""
-    pieces, depth, start = [], 0, 0
-    for i, character in enumerate(text):
-        depth += (character in "([{") - (character in ")]}")
-        if at(i, depth):
-            pieces.append(text[start:i])
-            start = i + 1
-    return [*pieces, text[start:]]
-
-
-# `=` that is not part of =>, ==, <=, >= or :=
-_EQUALS = re.compile(r"(?<![=<>:!])=(?![=>])")
-
-
-# a chain's label: a name (L, p_φ, L(θ, θ̇)), or a momentum by its definition (∂L/∂φ̇)
-_SIDES_LABEL = re.compile(r"\s*(?:[^\W\d][\w\s(),'̇]*|∂\s*[A-Za-z]\w*\s*/\s*∂\s*[^\W\d]\w*̇\s*)")
-
-
-_ONE_NAME = re.compile(r"[^\W\d]\w*")  # L_z, p_z, E: a name alone, no product (m l²) nor call (L(θ))
-
-
-def _sides(text: str) -> list[str] | None:
-    """``L = ½ m (l θ̇)² + … = ½ m l² θ̇² + …`` on one line: ``L = `` with each side after it, where
-    the first is a name (a label) and there are two to six sides after it; else None."""
-    if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip():
-        return None
-    label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
-    if not _SIDES_LABEL.fullmatch(label) or not 2 <= len(sides) <= _MAX_LINES:
-        return None
-    sides = [side.strip() for side in sides]
-    if not all(sides):
-        return None
-    lines = [f"{label.strip()} = {side}" for side in sides]
-    if is_arbitrary_constant(canonical_name(sides[-1])):  # ẍ = … = const: the value before it is said constant
-        lines[-1] = f"{sides[-2]} = {sides[-1]}"
-    elif _ONE_NAME.fullmatch(sides[-1]) and not _ONE_NAME.fullmatch(sides[-2]):
-        lines[-1] = f"{sides[-1]} = {sides[-2]}"  # p_φ = m l² sin²θ φ̇ = L_z: the value named again, not a value
-    return lines
 
 
 def _judge_lines(
@@ -561,22 +461,6 @@ def _side_misstated(lines: list[str], verdicts: list[Verdict], expected: Expecte
     return None
 
 
-# a line that starts with a dash and a space: a Markdown list's bullet, or a minus sign?
-_DASHED = re.compile(r"[ \t]*[-–][ \t]+")
-
-
-def _without_dashes(text: str) -> str | None:
-    """``text`` without the ``- `` that starts each of its lines, where it has two lines or more
-    and each starts so; else None. As typed, each dash is a minus sign: where that reading is
-    wrong and this one right, which was meant is for the student to say."""
-    if not isinstance(text, str) or len(text) > LIMITS.length:
-        return None
-    lines = [line for line in text.split("\n") if line.strip()]
-    if len(lines) < 2 or not all(_DASHED.match(line) for line in lines):
-        return None
-    return "\n".join(line[_DASHED.match(line).end() :] for line in lines)
-
-
 def _names(name) -> tuple[str, ...]:
     """The option ``name`` (a name or a list of them) as the names an answer is read with: p_φ is p_phi."""
     names = [name] if isinstance(name, str) else name
@@ -600,58 +484,8 @@ def _refused(verdict: Verdict, code: str) -> bool:
     return verdict.status == "invalid" and getattr(verdict.answer, "code", None) == code
 
 
-def _partials_read(text: str) -> tuple[str, list[str], str] | None:
-    """``H = θ̇ ∂L/∂θ̇ − L = …``, ``p_φ = ∂/∂φ̇(½ m l² sin²θ φ̇²) = …``, ``Q_θ = F·∂r/∂θ = …``: a chain on
-    one line whose steps write out a partial derivative, which the parser reads only as a chain's
-    label. ∂L/∂q̇ among a step's factors is the momentum p_q it defines, so that ``H = q̇ ∂L/∂q̇ − L``
-    is judged as the definition ``H = p_q q̇ − L`` is; a step with any other ∂ is left out. Returns the
-    chain so written, which grades its last side, the steps left out, as typed, and the chain's label;
-    None where ``text`` is no such chain, or its last side has a ∂ of its own."""
-    if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip() or _ROW_BREAK.search(text):
-        return None  # lines are chains of their own (see _chained)
-    label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
-    if len(sides) < 2 or _PARTIAL.search(sides[-1]) or len(label) > _LABEL_LENGTH:
-        return None
-    read = parse_answer(label) if not _SIDES_LABEL.fullmatch(label) else None  # Q_\theta, p_{\phi}: TeX's labels
-    if read is not None and not (read.ok and read.kind == "expression" and read.value.is_Symbol):
-        return None
-    steps, left_out = [], []
-    for number, side in enumerate(sides[:-1]):
-        step = _MOMENTUM_QUOTIENT.sub(_momentum_named, side)
-        if number == 0 and _QUOTIENT_ALONE.fullmatch(side):
-            steps.append(side)  # p_φ = ∂L/∂θ̇ = …: a quotient alone after the label, the parser judges as a definition
-        elif _PARTIAL.search(step):
-            left_out.append(side.strip())
-        else:
-            steps.append(step)
-    if not left_out and steps == sides[:-1]:
-        return None  # no ∂ in the steps: the parser's refusal is about something else
-    return "=".join([label, *steps, sides[-1]]), left_out, label.strip()
-
-
-def _momentum_named(found: re.Match) -> str:
-    """``∂L/∂θ̇`` as ``p_{theta}``, the name of the momentum it defines; any other quotient as typed."""
-    read = parse_answer(f"{found[0]} = 0")
-    if not read.ok or read.kind != "equation" or not read.value.lhs.is_Symbol:
-        return found[0]
-    momentum = _MOMENTUM_DEFINED.fullmatch(read.value.lhs.name)
-    return f" p_{{{momentum[1].replace('_', '')}}} " if momentum else found[0]  # θ₁'s p_{theta1}, read in TeX too
-
-
-_PARTIAL = re.compile(r"∂|\\partial(?![A-Za-z])")
-_QUOTIENT_ALONE = re.compile(
-    r"\s*[-−]?\s*(?:∂\s*[A-Za-z]\w*\s*/\s*∂\s*[^\s=+\-−*/·⋅()\[\]{}]{1,20}"
-    r"|\\frac\s*\{\s*\\partial\s*[A-Za-z]\s*\}\s*\{\s*\\partial\s*(?:[^{}]|\{[^{}]*\}){1,30}\})\s*"
-)
-# ∂L/∂θ̇ written inline (θ̇, thetadot, \dot\theta, \dot{\theta}) or as TeX's \frac{\partial L}{\partial \dot\theta}
-_MOMENTUM_QUOTIENT = re.compile(
-    r"∂\s*L\s*/\s*∂\s*(?:\\dot\s*(?:\{[^{}]{1,20}\}|\\?[A-Za-z]+)|[^\s=+\-−*/·⋅()\[\]{}]{1,20})"
-    r"|\\frac\s*\{\s*\\partial\s*L\s*\}\s*\{\s*\\partial\s*(?:[^{}]|\{[^{}]*\}){1,30}\}"
-)
-
-
 def _with_steps_left_out(verdict: Verdict, left_out: list[str], label: str, expected: Expected) -> Verdict:
-    """The verdict on a chain read without the steps ``left_out`` (:func:`_partials_read`), and the note
+    """The verdict on a chain read without the steps ``left_out`` (:func:`partials_read`), and the note
     that says so. Where the chain's ``label`` names the Hamiltonian, the Lagrangian or the energy, a step
     left out may be its definition, unchecked (``H = θ̇ ∂L/∂θ − L``): a right value goes to a person, as
     one after a wrong definition does."""
@@ -659,7 +493,7 @@ def _with_steps_left_out(verdict: Verdict, left_out: list[str], label: str, expe
         return verdict
     s = "s" if len(left_out) > 1 else ""
     note = say("steps_left_out", s=s, steps=_shown("; ".join(left_out)))
-    name = canonical_name(label) if _ONE_NAME.fullmatch(label) else None
+    name = canonical_name(label) if ONE_NAME.fullmatch(label) else None
     if name in _ENERGY_SUMS and name not in expected.names and verdict.status == "equivalent":
         return replace(
             _right_but_said(verdict, "step_for_a_person"), feedback=(note, say("step_for_a_person")), notes=(note,)
@@ -1185,7 +1019,7 @@ def _asked_line(items, expected: Expected) -> int | None:
 def _is_asked(label: str, names: tuple) -> bool:
     """Whether a label names the asked quantity: one of ``names``, spelt with or without its ``_``
     (pφ for p_φ), its stem (p for p_φ), or ∂L/∂φ̇ for p_φ, by its definition."""
-    definition = _MOMENTUM_DEFINED.fullmatch(label)
+    definition = MOMENTUM_DEFINED.fullmatch(label)
     same = {label.replace("_", ""), f"p{definition[1]}" if definition else None}
     return bool(same & {name.replace("_", "") for name in names}) or label in {name.split("_")[0] for name in names}
 
@@ -1408,13 +1242,10 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
     if _is_asked(label, names):
         return None  # pφ for p_φ, and p
-    definition = _MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
+    definition = MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
     described = expected.setting.describe
     shown = f"∂L/∂{unicode_name(definition[1], 1)}" if definition else described([label])
     return ("label_for_a_person", {"label": shown, "name": described(names[:1])})  # ω, not w too
-
-
-_MOMENTUM_DEFINED = re.compile(r"dL_d(\w+?)_?dot")  # the name ∂L/∂φ̇ is read as
 
 
 # The sums of the energies that name a quantity: L = T − V, and H = E = T + V (U is V)
