@@ -23,7 +23,7 @@ if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
 
 from course import BANK, REVIEW  # noqa: E402
 from selenium import webdriver  # noqa: E402  (after the skip: nothing to drive without a browser)
-from selenium.common.exceptions import TimeoutException  # noqa: E402
+from selenium.common.exceptions import StaleElementReferenceException, TimeoutException  # noqa: E402
 from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.support import expected_conditions  # noqa: E402
 from selenium.webdriver.support.ui import WebDriverWait  # noqa: E402
@@ -209,4 +209,6 @@ def test_equations_from_the_students_own_lagrangian_on_the_page_earn_the_method_
     # the verdict before was not_equivalent too, and stays shown until the new one comes: wait for its words
     verdict = f'article.part[data-part="{MOTION}"] .result.not_equivalent .verdict'
     alone = "✘\nnot right"
-    WebDriverWait(browser, 20).until(lambda driver: driver.find_element(By.CSS_SELECTOR, verdict).text == alone)
+    # the result is drawn anew as the answer comes: an element found may be replaced before its text is read
+    waiting = WebDriverWait(browser, 20, ignored_exceptions=(StaleElementReferenceException,))
+    waiting.until(lambda driver: driver.find_element(By.CSS_SELECTOR, verdict).text == alone)
