@@ -212,6 +212,22 @@ FEEDBACK = [
      " Eliminate it between your equations, to leave one in the problem's own names."),
     (EOM_PENDULUM, "m l^2 θ̈ + m g l sin θ", "equation", PENDULUM, "expected_equation",
      "An equation (with `=`) is asked for here, but your answer is an expression."),
+    # a quantity where its equation of motion is asked: not "`L` is not defined"
+    (EOM_PENDULUM, L_PENDULUM.join(["L = ", ""]), "equation", PENDULUM, "quantity_for_motion",
+     "Your answer gives a Lagrangian, `L = …`, where an equation of motion is asked for: write the equation itself."),
+    (EOM_PENDULUM, "H = p_theta^2/(2 m l^2) - m g l cos θ", "equation", PENDULUM, "quantity_for_motion",
+     "Your answer gives a Hamiltonian, `H = …`, where an equation of motion is asked for: write the equation"
+     " itself."),
+    (EOM_DOUBLE, "T = 1/2 (m1 + m2) l1^2 θ̇₁² + 1/2 m2 l2^2 θ̇₂²", "equations", DOUBLE, "quantity_for_motion",
+     "Your answer gives a kinetic energy, `T = …`, where the equations of motion are asked for: write the"
+     " equations themselves."),
+    # with an acceleration, L is a label the student gave an equation's side, and undefined
+    (EOM_PENDULUM, "L = m l^2 θ̈ + m g l sin θ", "equation", PENDULUM, "undefined_symbol",
+     "Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+     " or say what it stands for: …, where L = …."),
+    (EOM_PENDULUM, "L = r^2 θ̇²", "equation", PENDULUM, "undefined_symbol",
+     "Your answer uses `L` and `r`, which this problem does not define (it uses g, l, m, θ). Write your answer in"
+     " those, or say what each stands for: …, where L = …."),
     ("sqrt(g/l)", "omega = sqrt(g/l) = 1", "expression", PENDULUM, None, None),
     (EOM_DOUBLE, EOM_DOUBLE_1, "equations", DOUBLE, "expected_system",
      "A system of 2 equations is asked for here (one per coordinate: θ₁, θ₂)."),

@@ -356,7 +356,7 @@ def _two_forms_judged(spec: Kind, expected: Expected, forms: tuple, words: str, 
 
 
 # what an answer with a name the problem does not define is told: a unit's letter at its end is one too
-_UNDEFINED = frozenset({"undefined_symbol", "undefined_unit_letter"})
+_UNDEFINED = frozenset({"undefined_symbol", "undefined_unit_letter", "quantity_for_motion"})
 # what a formula is told where words were left in it, or it is two equations: no one formula of the two forms
 _NOT_ONE_FORMULA = _UNDEFINED | {"undefined_units", "eliminate_unknowns", "expected_one_equation"}
 
@@ -1970,6 +1970,9 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
         # … − k (r − l₀) N: a unit's letter, which _unit_tail does not read past (it may be a name of theirs)
         details = {"name": unicode_name(undefined[0])}
         return Outcome("not_equivalent", 0.0, "undefined_unit_letter", details, method="symbols")
+    named = _quantity_for_motion(spec, expected, answer, undefined)
+    if named is not None:  # L = ½ m l² θ̇² + …, where the equation of motion is asked: not "L is undefined"
+        return Outcome("not_equivalent", 0.0, "quantity_for_motion", named, method="shape")
     if undefined:
         defined = sorted(expected.names - {"t"}, key=lambda name: (name in expected.setting.coords, name))
         return Outcome(
@@ -1991,6 +1994,34 @@ def _mismatch(spec: Kind, expected: Expected, answer: ParsedAnswer) -> Outcome |
             coords = expected.setting.describe(expected.setting.coords)
             return Outcome("not_equivalent", 0.0, "expected_system", {"count": count, "coords": coords}, method="shape")
     return None
+
+
+def _quantity_for_motion(spec: Kind, expected: Expected, answer: ParsedAnswer, undefined: list[str]) -> dict | None:
+    """Where an equation of motion (or a system of them) is asked for and the answer gives a quantity
+    instead, ``L = …``, ``H = …``, ``T = …`` in the problem's names (H's momenta too) and without an
+    acceleration: what the sentence that says so needs; else None."""
+    if spec.shape not in ("equation", "equations") or answer.kind != "equation" or not answer.value.lhs.is_Symbol:
+        return None
+    name = answer.value.lhs.name
+    momenta = {canonical_name(f"p_{coordinate}") for coordinate in expected.setting.coords}
+    if name not in _QUANTITIES or name not in undefined or not set(undefined) - {name} <= momenta:
+        return None
+    if any(derivative.derivative_count > 1 for derivative in answer.value.rhs.atoms(sympy.Derivative)):
+        return None  # L = m l² θ̈ + …: a label on an equation's side, not the quantity
+    system = spec.shape == "equations"
+    return {
+        "quantity": _QUANTITIES[name],
+        "name": unicode_name(name),
+        "asked": "the equations of motion are" if system else "an equation of motion is",
+        "itself": "the equations themselves" if system else "the equation itself",
+    }
+
+
+# the quantities a student may give where the equations of motion are asked, by the letters texts use
+_QUANTITIES = {
+    "L": "a Lagrangian", "H": "a Hamiltonian", "T": "a kinetic energy", "K": "a kinetic energy",
+    "V": "a potential energy", "U": "a potential energy", "E": "an energy",
+}  # fmt: skip
 
 
 _LISTED = 6  # names a sentence lists before it counts the rest

@@ -136,6 +136,7 @@ FEEDBACK: dict[str, str] = {
     "undefined_units": "Your answer uses {names}, which this problem does not define: units, it seems."
     " A formula in the problem's own symbols is asked for here, and its units follow from theirs.",
     "expected_equation": "An equation (with `=`) is asked for here, but your answer is an expression.",
+    "quantity_for_motion": "Your answer gives {quantity}, `{name} = …`, where {asked} asked for: write {itself}.",
     "lines_agree": "Your answer has {count} {parts}, each the same; the last was graded.",
     "last_line_graded": "Your answer has {count} {parts}; the last was graded as your answer.",
     "last_line_right_earlier_not": "Your last {part} is right, but {lines} {do} not say the same: a person"
