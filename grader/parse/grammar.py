@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
@@ -1123,7 +1123,7 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
     out: list[Token] = []
     i = 0
     while i < len(tokens):
-        found = _leibniz_at(tokens, i)
+        found = _leibniz_at(tokens, i, context.coords)
         if found is None:
             out.append(tokens[i])
             i += 1
@@ -1300,24 +1300,47 @@ def _order(tokens: list[Token], i: int) -> tuple[int, int]:
     return 1, i
 
 
-def _numerator(tokens: list[Token]) -> tuple[int, list[Token]] | None:
-    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x`` or ``d\\theta``, else None."""
-    if not tokens or tokens[0].kind != "name" or tokens[0].value.dots or tokens[0].value.primes:
+def _numerator(tokens: list[Token], coords: Collection[str]) -> tuple[int, list[Token]] | None:
+    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x``, ``d\\theta`` or ``dθ̇``, else None."""
+    if not tokens or tokens[0].kind != "name" or tokens[0].value.primes:
         return None
     first = tokens[0]
-    if first.value.raw == "d":
+    if first.value.raw == "d" and not first.value.dots:
         order, rest = _order(tokens, 1)
         return order, tokens[rest:]
     if first.value.raw.startswith("d") and len(tokens) == 1:  # dθ, dx: one name
-        name = Name(first.value.raw[1:], tex=first.value.tex)
+        rest, dots = first.value.raw[1:], first.value.dots
+        if dots and canonical_name(rest) not in coords:
+            return None  # dθ̇ is θ̇'s; but δ̇ has its dot on δ, never on "elta"
+        name = Name(rest, dots=dots, tex=first.value.tex)
         return 1, [Token("name", name, first.start + 1, first.end)]
     return None
 
 
-def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | None:
+def _bracketed_numerator(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | None:
+    """``d(m l² θ̇)/dt`` or ``d²(…)/dt²`` at ``i``: (order, the bracket, the index after dt), else None.
+    Its bracket may be any length, where :func:`_leibniz_at` looks only a few tokens ahead for the /."""
+    order, opener = _order(tokens, i + 1)
+    if not tokens[opener].is_op("(", "["):
+        return None
+    closer = _closing(tokens, opener)
+    if closer is None or not tokens[closer + 1].is_op("/"):
+        return None
+    after_dt = _after_dt(tokens, closer + 2)
+    if after_dt is None:
+        return None
+    dt_order, end = _order(tokens, after_dt)
+    return (order, tokens[opener : closer + 1], end) if dt_order == order else None
+
+
+def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[int, list[Token], int] | None:
     token = tokens[i]
+    if _is_raw(token, "d"):
+        found = _bracketed_numerator(tokens, i)
+        if found is not None:
+            return found
     if token.is_op("("):  # (d/dt) θ, (d/dt)² θ, (d/dt)^2 θ: the operator in brackets, and its power
-        inner = _leibniz_at(tokens, i + 1)
+        inner = _leibniz_at(tokens, i + 1, coords)
         if inner is None or inner[:2] != (1, []) or not tokens[inner[2]].is_op(")"):
             return None
         after = inner[2] + 1
@@ -1333,7 +1356,7 @@ def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | N
         denominator_end = _closing(tokens, numerator_end + 1)
         if denominator_end is None:
             return None
-        numerator = _numerator(tokens[i + 2 : numerator_end])
+        numerator = _numerator(tokens[i + 2 : numerator_end], coords)
         denominator = tokens[numerator_end + 2 : denominator_end]
         after_dt = _after_dt(denominator, 0)
         if numerator is None or after_dt is None:
@@ -1352,7 +1375,7 @@ def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | N
     after_dt = _after_dt(tokens, numerator_end + 1) if numerator_end < len(tokens) - 1 else None
     if after_dt is None:
         return None
-    numerator = _numerator(tokens[i:numerator_end])
+    numerator = _numerator(tokens[i:numerator_end], coords)
     if numerator is None:
         return None
     order, end = _order(tokens, after_dt)
