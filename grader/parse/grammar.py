@@ -340,13 +340,21 @@ class _Parser:
         return items
 
     def item(self):
-        first = self.token
-        operator = self._euler_lagrange_operator(self.i)
-        if operator is not None:
+        first, start = self.token, self.i
+        found = self._euler_lagrange_operator(start)
+        if found is not None:
             # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0: the operator, then the equation it gives
+            operator, terms = found
             self.i = operator + 1
             lhs = self.over()
             if not self.token.is_op("="):
+                if self.token.kind == "end" and TIME not in lhs.free_symbols:
+                    # d/dt(∂L/∂ẋ) − ∂L/∂x = 0 (or = Q) alone: no equation of this system, not the expression 0
+                    code = "euler_lagrange_general" if _is_lagrange(terms) else "euler_lagrange_other"
+                    raise ParseFailure(
+                        code, first.start, self.tokens[self.i - 1].end,
+                        functions=self._operator_functions(start, operator),
+                    )  # fmt: skip
                 return first, lhs  # what the operator comes to, without "= 0": an expression
             self.advance()
             rhs = self.over()
@@ -437,10 +445,11 @@ class _Parser:
                 return -sympy.Symbol(name) if negated else sympy.Symbol(name)
         return self.over()
 
-    def _euler_lagrange_operator(self, i: int) -> int | None:
+    def _euler_lagrange_operator(self, i: int) -> tuple[int, list[tuple[str, str]]] | None:
         """``d/dt(∂L/∂θ̇) − ∂L/∂θ`` at ``i``, bracketed or not, in plain notation or TeX's, with
         any further derivatives (``+ ∂F/∂ẋ``, Rayleigh's dissipation function), and followed by
-        ``=``: the position of that ``=``; None if there is none."""
+        ``=``: the position of that ``=``, and each term's sign and name (``dL_dthetadot``); None if
+        there is none."""
         tokens = self.tokens
         if tokens[i].kind != "deriv" or tokens[i].value != (1, False):
             return None
@@ -454,14 +463,23 @@ class _Parser:
                 return None
             j += 1
         force = self._partial_quotient(j + 1) if tokens[j].is_op("-") else None
+        terms = [("+", momentum[1]), ("-", force[1])] if force is not None else []
         while force is not None and tokens[force[0]].is_op("+", "-"):
             dissipation = self._partial_quotient(force[0] + 1)  # + ∂F/∂q̇, Rayleigh's function
             if dissipation is None:
                 return None
+            terms.append((tokens[force[0]].value, dissipation[1]))
             force = dissipation
         if force is None or not tokens[force[0]].is_op("="):
             return None
-        return force[0]
+        return force[0], terms
+
+    def _operator_functions(self, start: int, end: int) -> str:
+        """The functions an Euler–Lagrange operator between ``start`` and ``end`` differentiates, as
+        typed: ``L``, or ``L`` and ``F`` with Rayleigh's; each is the first of a quotient's two ∂."""
+        tops = [self.tokens[j + 1] for j in range(start, end) if self.tokens[j].kind == "partial"][::2]
+        shown = list(dict.fromkeys(f"`{self.source(token)}`" for token in tops))
+        return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
 
     def _partial_quotient(self, i: int) -> tuple[int, str] | None:
         """``∂L/∂φ̇`` or ``\\frac{\\partial L}{\\partial \\dot\\phi}`` at ``i``: the position after it, and
@@ -1133,6 +1151,16 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
         out += target
         i = end
     return out
+
+
+def _is_lagrange(terms: list[tuple[str, str]]) -> bool:
+    """Whether an operator's terms (sign, quotient's name) are d/dt(∂L/∂q̇) − ∂L/∂q, perhaps + ∂F/∂q̇
+    (Rayleigh's function, as F, R or D): not ∂V, nor q and q̇ swapped, nor a minus before ∂F."""
+    (_, momentum), (_, force), *dissipation = terms
+    if not force.startswith("dL_d") or momentum != force + "dot":
+        return False
+    velocity = momentum.removeprefix("dL")
+    return all(sign == "+" and name in (f"d{f}{velocity}" for f in "FRD") for sign, name in dissipation)
 
 
 def _as_system(tokens: list[Token]) -> list[Token]:
