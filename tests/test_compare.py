@@ -111,6 +111,9 @@ def test_author_mistakes_in_the_call_raise_author_error(call, message):
         # a function we do not know
         ("1/2 m l^2 θ̇^2 - mgL(1-cosθ)", "L"),
         ("1/2 m l^2 θ̇^2 + Lmg (cos θ)", "Lmg"),  # apart from its bracket: a name of its own, as always
+        # a Greek letter glued after a letter is shown as typed: before, as `itheta`
+        ("1/2 m l^2 θ̇^2 + m g l cos θ e^(iθ)", "iθ"),
+        ("1/2 m l^2 θ̇^2 + m g l cos θ + xω₀", "xω₀"),
     ],
 )
 def test_symbols_the_problem_does_not_define_are_named(submitted, name):
