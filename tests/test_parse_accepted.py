@@ -256,6 +256,8 @@ LEIBNIZ = [
     ("d[m_1 l_1 x]/dt", m1 * l1 * D(x)),
     ("d²(m x + a θ)/dt²", m * D(x, 2) + a * D(theta, 2)),
     ("d(m l² θ̇)/dt·2", 2 * m * l**2 * D(theta, 2)),  # the bracket is the target, not what follows it
+    ("d(m l^2 dθ/dt)/dt", m * l**2 * D(theta, 2)),  # and holds Leibniz's notation of its own
+    ("d(d(x)/dt)/dt", D(x, 2)),
     # d glued to a coordinate's rate, as dθ/dt is to the coordinate
     ("dθ̇/dt = −(g/l) sin θ", Eq(D(theta, 2), -g / l * sin(theta))),
     ("dθ̇₁/dt + dẋ/dt", D(theta1, 2) + D(x, 2)),

@@ -1138,16 +1138,22 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
     """
     if {"d", "dt"} & set(context.known) or not any(_is_raw(token, "dt") or _is_raw(token, "t") for token in tokens):
         return tokens  # no dt (nor d t) anywhere: nothing to rewrite
+    return _leibniz_in(tokens, context.coords)
+
+
+def _leibniz_in(tokens: list[Token], coords: Collection[str]) -> list[Token]:
     out: list[Token] = []
     i = 0
     while i < len(tokens):
-        found = _leibniz_at(tokens, i, context.coords)
+        found = _leibniz_at(tokens, i, coords)
         if found is None:
             out.append(tokens[i])
             i += 1
             continue
         order, target, end = found
         out.append(Token("deriv", (order, bool(target)), tokens[i].start, tokens[end - 1].end))
+        if len(target) > 3:  # d(m d(x)/dt)/dt: a bracket read whole may hold Leibniz's notation of its own
+            target = _leibniz_in([*target, Token("end", None, target[-1].end, target[-1].end)], coords)[:-1]
         out += target
         i = end
     return out
