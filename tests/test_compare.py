@@ -111,6 +111,9 @@ def test_author_mistakes_in_the_call_raise_author_error(call, message):
         # a function we do not know
         ("1/2 m l^2 θ̇^2 - mgL(1-cosθ)", "L"),
         ("1/2 m l^2 θ̇^2 + Lmg (cos θ)", "Lmg"),  # apart from its bracket: a name of its own, as always
+        # a Greek letter glued after a letter is shown as typed: before, as `itheta`
+        ("1/2 m l^2 θ̇^2 + m g l cos θ e^(iθ)", "iθ"),
+        ("1/2 m l^2 θ̇^2 + m g l cos θ + xω₀", "xω₀"),
     ],
 )
 def test_symbols_the_problem_does_not_define_are_named(submitted, name):
@@ -1093,6 +1096,44 @@ DAMPED = {"coords": ["x"], "known": ["m", "b", "k"]}
 )
 def test_lagranges_equation_with_a_dissipation_function_may_be_written_out_first(submitted, status):
     assert compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **DAMPED).status == status
+
+
+GENERAL_FORM = (
+    "This is Lagrange's equation in general form, which holds for every system: work it out for this one,"
+    " with its {} put in, and give the equation of motion it comes to."
+)
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # before, read as the expression 0, and told that an equation was asked for
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = 0", "invalid", (GENERAL_FORM.format("`L` and `F`"),)),
+        (r"\frac{d}{dt}\frac{\partial L}{\partial \dot x} - \frac{\partial L}{\partial x} = 0", "invalid",
+         (GENERAL_FORM.format("`L`"),)),
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x = Q", "invalid", (GENERAL_FORM.format("`L`"),)),
+        ("d/dt(∂L/∂x) − ∂L/∂ẋ = 0", "invalid",
+         ("This is not Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q = 0, nor an equation of motion of this system:"
+          " give the equation of motion, worked out for this system.",)),
+    ],
+)  # fmt: skip
+def test_lagranges_equation_in_general_form_alone_is_asked_to_be_worked_out(submitted, status, feedback):
+    verdict = compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **DAMPED)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        # before, `dt` was refused as no derivative the grader could read
+        "d(m l^2 thetadot)/dt + m g l sin(theta) = 0",
+        "d(m l² θ̇)/dt = −m g l sin θ",
+        "dθ̇/dt = −(g/l) sin θ",
+    ],
+)
+def test_d_of_a_bracket_or_of_a_rate_over_dt_is_the_time_derivative(submitted):
+    verdict = compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.",))
 
 
 @pytest.mark.parametrize(

@@ -250,6 +250,18 @@ LEIBNIZ = [
      " + \\frac{l^{2} m \\left(\\frac{d}{d t} \\theta{\\left(t \\right)}\\right)^{2}}{2}",
      g * l * m * cos(theta) + l**2 * m * D(theta) ** 2 / 2),
     ("\\frac{d^{2}}{d t^{2}} \\theta_{1}{\\left(t \\right)} + x{(t)}", D(theta1, 2) + x),
+    # d of a bracket over dt, the bracket of any length, as d/dt(…) and d(θ̇)/dt are read
+    ("d(m l^2 thetadot)/dt + m g l sin(theta) = 0", Eq(m * l**2 * D(theta, 2) + m * g * l * sin(theta), 0)),
+    ("d(m l² θ̇)/dt = −m g l sin θ", Eq(m * l**2 * D(theta, 2), -m * g * l * sin(theta))),
+    ("d[m_1 l_1 x]/dt", m1 * l1 * D(x)),
+    ("d²(m x + a θ)/dt²", m * D(x, 2) + a * D(theta, 2)),
+    ("d(m l² θ̇)/dt·2", 2 * m * l**2 * D(theta, 2)),  # the bracket is the target, not what follows it
+    ("d(m l^2 dθ/dt)/dt", m * l**2 * D(theta, 2)),  # and holds Leibniz's notation of its own
+    ("d(d(x)/dt)/dt", D(x, 2)),
+    # d glued to a coordinate's rate, as dθ/dt is to the coordinate
+    ("dθ̇/dt = −(g/l) sin θ", Eq(D(theta, 2), -g / l * sin(theta))),
+    ("dθ̇₁/dt + dẋ/dt", D(theta1, 2) + D(x, 2)),
+    ("\\frac{dθ̇}{dt}", D(theta, 2)),
 ]  # fmt: skip
 
 SPLITTING = [

@@ -281,6 +281,13 @@ FORMERLY_ACCEPTED = [
     ("m + exp(exp(exp(100)))", "value_too_large"),  # nor the printer's ordering of the terms
     ("theta/dt", "leibniz"),  # a dt that is no derivative: refused, never read as a quotient
     ("dx/dt^2", "leibniz"),  # the orders of d and dt disagree
+    # Lagrange's equation in general form alone was read as the expression 0: no equation of the system
+    ("d/dt(∂L/∂θ̇) − ∂L/∂θ = 0", "euler_lagrange_general"),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = Q", "euler_lagrange_general"),  # a generalized force in general
+    ("d/dt(∂L/∂θ) − ∂L/∂θ̇ = 0", "euler_lagrange_other"),  # q and q̇ swapped
+    ("d/dt(∂V/∂θ̇) − ∂V/∂θ = 0", "euler_lagrange_other"),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ = 0", "euler_lagrange_other"),  # Rayleigh's term of the wrong sign
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂θ̇ = 0", "euler_lagrange_other"),  # of another coordinate
     # a power on a bare angle was read as sin(θ²); who writes it in a Lagrangian mostly means sin²θ
     ("sin θ^2", "function_argument_power"),
     ("ω^2 sin θ² + 1", "function_argument_power"),
@@ -411,6 +418,24 @@ SHOWN = [
         "`\\sum` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …,"
         " whose last side is graded; anywhere else, write the sum out term by term.",
         "H = \\sum_i p_i \\dot q_i - L\n    ^^^^",
+    ),
+    (
+        "d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = 0",
+        "This is Lagrange's equation in general form, which holds for every system: work it out for this one,"
+        " with its `L` and `F` put in, and give the equation of motion it comes to.",
+        "d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = 0\n" + "^" * 31,
+    ),
+    (
+        "\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot x} - \\frac{\\partial L}{\\partial x} = 0",
+        "This is Lagrange's equation in general form, which holds for every system: work it out for this one,"
+        " with its `L` put in, and give the equation of motion it comes to.",
+        "\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot x} - \\frac{\\part…\n" + "^" * 60,
+    ),
+    (
+        "d/dt(∂V/∂θ̇) − ∂V/∂θ = 0",
+        "This is not Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q = 0, nor an equation of motion of this system:"
+        " give the equation of motion, worked out for this system.",
+        "d/dt(∂V/∂θ̇) − ∂V/∂θ = 0\n" + "^" * 23,
     ),
     (
         "H = \\sum p \\dot q - L = \\sum p \\dot q",  # the sum left in, not the one passed over

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
@@ -340,13 +340,21 @@ class _Parser:
         return items
 
     def item(self):
-        first = self.token
-        operator = self._euler_lagrange_operator(self.i)
-        if operator is not None:
+        first, start = self.token, self.i
+        found = self._euler_lagrange_operator(start)
+        if found is not None:
             # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0: the operator, then the equation it gives
+            operator, terms = found
             self.i = operator + 1
             lhs = self.over()
             if not self.token.is_op("="):
+                if self.token.kind == "end" and TIME not in lhs.free_symbols:
+                    # d/dt(∂L/∂ẋ) − ∂L/∂x = 0 (or = Q) alone: no equation of this system, not the expression 0
+                    code = "euler_lagrange_general" if _is_lagrange(terms) else "euler_lagrange_other"
+                    raise ParseFailure(
+                        code, first.start, self.tokens[self.i - 1].end,
+                        functions=self._operator_functions(start, operator),
+                    )  # fmt: skip
                 return first, lhs  # what the operator comes to, without "= 0": an expression
             self.advance()
             rhs = self.over()
@@ -437,10 +445,11 @@ class _Parser:
                 return -sympy.Symbol(name) if negated else sympy.Symbol(name)
         return self.over()
 
-    def _euler_lagrange_operator(self, i: int) -> int | None:
+    def _euler_lagrange_operator(self, i: int) -> tuple[int, list[tuple[str, str]]] | None:
         """``d/dt(∂L/∂θ̇) − ∂L/∂θ`` at ``i``, bracketed or not, in plain notation or TeX's, with
         any further derivatives (``+ ∂F/∂ẋ``, Rayleigh's dissipation function), and followed by
-        ``=``: the position of that ``=``; None if there is none."""
+        ``=``: the position of that ``=``, and each term's sign and name (``dL_dthetadot``); None if
+        there is none."""
         tokens = self.tokens
         if tokens[i].kind != "deriv" or tokens[i].value != (1, False):
             return None
@@ -454,14 +463,23 @@ class _Parser:
                 return None
             j += 1
         force = self._partial_quotient(j + 1) if tokens[j].is_op("-") else None
+        terms = [("+", momentum[1]), ("-", force[1])] if force is not None else []
         while force is not None and tokens[force[0]].is_op("+", "-"):
             dissipation = self._partial_quotient(force[0] + 1)  # + ∂F/∂q̇, Rayleigh's function
             if dissipation is None:
                 return None
+            terms.append((tokens[force[0]].value, dissipation[1]))
             force = dissipation
         if force is None or not tokens[force[0]].is_op("="):
             return None
-        return force[0]
+        return force[0], terms
+
+    def _operator_functions(self, start: int, end: int) -> str:
+        """The functions an Euler–Lagrange operator between ``start`` and ``end`` differentiates, as
+        typed: ``L``, or ``L`` and ``F`` with Rayleigh's; each is the first of a quotient's two ∂."""
+        tops = [self.tokens[j + 1] for j in range(start, end) if self.tokens[j].kind == "partial"][::2]
+        shown = list(dict.fromkeys(f"`{self.source(token)}`" for token in tops))
+        return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
 
     def _partial_quotient(self, i: int) -> tuple[int, str] | None:
         """``∂L/∂φ̇`` or ``\\frac{\\partial L}{\\partial \\dot\\phi}`` at ``i``: the position after it, and
@@ -1120,19 +1138,35 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
     """
     if {"d", "dt"} & set(context.known) or not any(_is_raw(token, "dt") or _is_raw(token, "t") for token in tokens):
         return tokens  # no dt (nor d t) anywhere: nothing to rewrite
+    return _leibniz_in(tokens, context.coords)
+
+
+def _leibniz_in(tokens: list[Token], coords: Collection[str]) -> list[Token]:
     out: list[Token] = []
     i = 0
     while i < len(tokens):
-        found = _leibniz_at(tokens, i)
+        found = _leibniz_at(tokens, i, coords)
         if found is None:
             out.append(tokens[i])
             i += 1
             continue
         order, target, end = found
         out.append(Token("deriv", (order, bool(target)), tokens[i].start, tokens[end - 1].end))
+        if len(target) > 3:  # d(m d(x)/dt)/dt: a bracket read whole may hold Leibniz's notation of its own
+            target = _leibniz_in([*target, Token("end", None, target[-1].end, target[-1].end)], coords)[:-1]
         out += target
         i = end
     return out
+
+
+def _is_lagrange(terms: list[tuple[str, str]]) -> bool:
+    """Whether an operator's terms (sign, quotient's name) are d/dt(∂L/∂q̇) − ∂L/∂q, perhaps + ∂F/∂q̇
+    (Rayleigh's function, as F, R or D): not ∂V, nor q and q̇ swapped, nor a minus before ∂F."""
+    (_, momentum), (_, force), *dissipation = terms
+    if not force.startswith("dL_d") or momentum != force + "dot":
+        return False
+    velocity = momentum.removeprefix("dL")
+    return all(sign == "+" and name in (f"d{f}{velocity}" for f in "FRD") for sign, name in dissipation)
 
 
 def _as_system(tokens: list[Token]) -> list[Token]:
@@ -1300,24 +1334,47 @@ def _order(tokens: list[Token], i: int) -> tuple[int, int]:
     return 1, i
 
 
-def _numerator(tokens: list[Token]) -> tuple[int, list[Token]] | None:
-    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x`` or ``d\\theta``, else None."""
-    if not tokens or tokens[0].kind != "name" or tokens[0].value.dots or tokens[0].value.primes:
+def _numerator(tokens: list[Token], coords: Collection[str]) -> tuple[int, list[Token]] | None:
+    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x``, ``d\\theta`` or ``dθ̇``, else None."""
+    if not tokens or tokens[0].kind != "name" or tokens[0].value.primes:
         return None
     first = tokens[0]
-    if first.value.raw == "d":
+    if first.value.raw == "d" and not first.value.dots:
         order, rest = _order(tokens, 1)
         return order, tokens[rest:]
     if first.value.raw.startswith("d") and len(tokens) == 1:  # dθ, dx: one name
-        name = Name(first.value.raw[1:], tex=first.value.tex)
+        rest, dots = first.value.raw[1:], first.value.dots
+        if dots and canonical_name(rest) not in coords:
+            return None  # dθ̇ is θ̇'s; but δ̇ has its dot on δ, never on "elta"
+        name = Name(rest, dots=dots, tex=first.value.tex)
         return 1, [Token("name", name, first.start + 1, first.end)]
     return None
 
 
-def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | None:
+def _bracketed_numerator(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | None:
+    """``d(m l² θ̇)/dt`` or ``d²(…)/dt²`` at ``i``: (order, the bracket, the index after dt), else None.
+    Its bracket may be any length, where :func:`_leibniz_at` looks only a few tokens ahead for the /."""
+    order, opener = _order(tokens, i + 1)
+    if not tokens[opener].is_op("(", "["):
+        return None
+    closer = _closing(tokens, opener)
+    if closer is None or not tokens[closer + 1].is_op("/"):
+        return None
+    after_dt = _after_dt(tokens, closer + 2)
+    if after_dt is None:
+        return None
+    dt_order, end = _order(tokens, after_dt)
+    return (order, tokens[opener : closer + 1], end) if dt_order == order else None
+
+
+def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[int, list[Token], int] | None:
     token = tokens[i]
+    if _is_raw(token, "d"):
+        found = _bracketed_numerator(tokens, i)
+        if found is not None:
+            return found
     if token.is_op("("):  # (d/dt) θ, (d/dt)² θ, (d/dt)^2 θ: the operator in brackets, and its power
-        inner = _leibniz_at(tokens, i + 1)
+        inner = _leibniz_at(tokens, i + 1, coords)
         if inner is None or inner[:2] != (1, []) or not tokens[inner[2]].is_op(")"):
             return None
         after = inner[2] + 1
@@ -1333,7 +1390,7 @@ def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | N
         denominator_end = _closing(tokens, numerator_end + 1)
         if denominator_end is None:
             return None
-        numerator = _numerator(tokens[i + 2 : numerator_end])
+        numerator = _numerator(tokens[i + 2 : numerator_end], coords)
         denominator = tokens[numerator_end + 2 : denominator_end]
         after_dt = _after_dt(denominator, 0)
         if numerator is None or after_dt is None:
@@ -1352,7 +1409,7 @@ def _leibniz_at(tokens: list[Token], i: int) -> tuple[int, list[Token], int] | N
     after_dt = _after_dt(tokens, numerator_end + 1) if numerator_end < len(tokens) - 1 else None
     if after_dt is None:
         return None
-    numerator = _numerator(tokens[i:numerator_end])
+    numerator = _numerator(tokens[i:numerator_end], coords)
     if numerator is None:
         return None
     order, end = _order(tokens, after_dt)

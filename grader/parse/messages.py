@@ -31,6 +31,14 @@ MESSAGES: dict[str, str] = {
         "`∂` is read only in the name of what an answer writes out, before `=`, as in p = ∂L/∂φ̇ = …"
         " or d/dt(∂L/∂θ̇) − ∂L/∂θ = … = 0"
     ),
+    "euler_lagrange_general": (
+        "This is Lagrange's equation in general form, which holds for every system: work it out for this one,"
+        " with its {functions} put in, and give the equation of motion it comes to."
+    ),
+    "euler_lagrange_other": (
+        "This is not Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q = 0, nor an equation of motion of this system:"
+        " give the equation of motion, worked out for this system."
+    ),
     "sum": (
         "`{name}` is read only in a definition on the way to the answer, as in H = \\sum_j p_j \\dot q_j - L = …,"
         " whose last side is graded; anywhere else, write the sum out term by term."

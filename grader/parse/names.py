@@ -229,14 +229,26 @@ def split_prefixed_derivative(name: str) -> tuple[str, int] | None:
     return match["base"], len(match["ds"])
 
 
+# A Greek letter glued after letters, as in iθ (canonical "itheta"): shown as typed. Spellings of three
+# letters or more, as the grammar takes them for pieces of a glued name; "sinu" is no "siν".
+_GLUED_GREEK = re.compile(
+    "(?P<head>[A-Za-z]+?)(?P<greek>"
+    + "|".join(sorted((name for name in GREEK_NAMES if len(name) >= 3), key=len, reverse=True))
+    + ")"
+)
+
+
 def unicode_name(name: str, dots: int = 0) -> str:
     """A canonical name as a student would write it by hand, in Unicode.
 
     >>> unicode_name("theta_1", dots=1), unicode_name("p_theta"), unicode_name("x_cm")
     ('θ̇₁', 'p_θ', 'x_cm')
+    >>> unicode_name("itheta"), unicode_name("xomega_0"), unicode_name("sinu")
+    ('iθ', 'xω₀', 'sinu')
     """
     base, _, sub = name.partition("_")
-    text = GREEK_NAMES.get(base, base)
+    glued = None if base in GREEK_NAMES else _GLUED_GREEK.fullmatch(base)
+    text = glued["head"] + GREEK_NAMES[glued["greek"]] if glued else GREEK_NAMES.get(base, base)
     text += {0: "", 1: "\u0307", 2: "\u0308", 3: "\u20db"}.get(dots, "")
     if sub:
         if sub.isdigit():
