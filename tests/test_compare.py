@@ -5122,6 +5122,29 @@ def _misstated(statement: str, label: str) -> str:
         # a chain of more sides, read side by side: before, the definition was passed over, and right
         (HOOP_H, f"H = p_θ θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
          _misstated("H = L + p_θ*θ̇", "H")),
+        # Σ p q̇ − L written otherwise wrong, in momenta, as ∂L/∂θ̇ or worked out with the momenta given: before,
+        # each was Correct (only a term left out, or + L, was known wrong)
+        (HOOP_H, f"H = θ p_θ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = -L + p_θ*θ", "H")),
+        (HOOP_H, f"H = θ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = -L + p_θ*θ", "H")),
+        (HOOP_H, f"H = ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = -L + p_θ", "H")),
+        (HOOP_H, f"H = L − θ̇ ∂L/∂θ̇ = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = L - p_θ*θ̇", "H")),
+        (HOOP_H, f"H = 2 θ̇ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = -L + 2*p_θ*θ̇", "H")),
+        (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − T = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = -T + p_θ*θ̇", "H")),
+        (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = m R² θ̇² + L = {HOOP_H_TYPED}", "expression",
+         {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}}, _misstated("H = L + R^2*m*θ̇^2", "H")),
+        (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ + φ̇ ∂L/∂θ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = -L + p_θ*φ̇ + p_θ*θ̇", "H")),
+        (SPHERICAL_H, f"H = p_φ θ̇ + p_θ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = -L + p_φ*θ̇ + p_θ*φ̇", "H")),
+        (L_PENDULUM, f"L = θ̇ ∂L/∂θ̇ + H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H + p_θ*θ̇", "L")),
+        # a momentum as −∂L/∂φ̇, ∂V/∂φ̇ (zero) or 2 ∂L/∂φ̇: before, Correct
+        (SPHERICAL_P_PHI, "p_φ = −∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = -∂L/∂φ̇", "p_φ")),
+        (SPHERICAL_P_PHI, "p_φ = ∂V/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = ∂V/∂φ̇", "p_φ")),
+        (SPHERICAL_P_PHI, "p_φ = 2 ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = 2*p_φ", "p_φ")),
     ],
 )  # fmt: skip
 def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
