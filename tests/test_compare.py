@@ -5180,6 +5180,40 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
     assert compare(expected, submitted, kind=kind, **options).status == "equivalent"
 
 
+_HOOP_P = {"p_theta": "m R^2 thetadot"}
+_SPHERICAL_P = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
+
+
+def _redefined(definition: str, name: str) -> str:
+    return (
+        f"Your answer defines `{definition}`, which is not the problem's {name}. Read with your definition put in"
+        " place, it is right; a person will check this answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "given", "status", "first"),
+    [
+        # a wrong momentum of the student's own makes a wrong H in it right: before, Correct
+        (HOOP_H, "H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_P, "undecided",
+         _redefined("p_θ = R*m*θ̇", "p_θ")),
+        (HOOP_H, "With p_θ = m R θ̇: H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ", HOOP, _HOOP_P, "undecided",
+         _redefined("p_θ = R*m*θ̇", "p_θ")),
+        (HOOP_H, "H = p²/(8 m R²) − ½ m R² ω² sin²θ − m g R cos θ, where p = 2 m R² θ̇", HOOP, _HOOP_P, "undecided",
+         _redefined("p = 2*R^2*m*θ̇", "p_θ")),
+        (SPHERICAL_H, "With p_φ = m l² sin θ φ̇: H = p_θ²/(2 m l²) + p_φ²/(2 m l²) − m g l cos θ", SPHERICAL,
+         _SPHERICAL_P, "undecided", _redefined("p_φ = l^2*m*sin(θ)*φ̇", "p_φ")),
+        # where it is wrong either way, said so
+        (HOOP_H, "H = p_θ²/m − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_P, "not_equivalent",
+         "Your answer defines `p_θ = R*m*θ̇`, which is not the problem's p_θ."),
+    ],
+)  # fmt: skip
+def test_a_given_name_defined_otherwise_goes_to_a_person(expected, submitted, options, given, status, first):
+    verdict = compare(expected, submitted, given=given, **options)
+    assert verdict.status == status, verdict
+    assert first in verdict.feedback, verdict
+
+
 def _steps_left_out(steps: str) -> str:
     return f"Read without the step `{steps}`: a derivative written out is not checked; the last side was graded."
 

@@ -532,6 +532,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += _misstated(answer, expected, given)
                 answer, stated = _without_stated_definitions(answer, expected)
                 read_notes += stated
+                read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _with_definitions(answer, expected, deadline)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += working
@@ -940,6 +941,41 @@ def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tup
     if len(rest) == 1:
         return ParsedAnswer(answer.text, rest[0], "equation"), notes
     return ParsedAnswer(answer.text, rest, "equations"), notes
+
+
+def _given_redefined(answer: ParsedAnswer, expected: Expected, given: tuple, momentum: tuple) -> tuple:
+    """A note where the answer defines for itself a name the problem gives a meaning, as other than it is
+    (``H = p_θ²/(2 m) − …, where p_θ = m R θ̇``; ``With p_φ = m l² sin θ φ̇: H = …``): put in place, the
+    student's definition decides the value, and a wrong one can make a wrong formula in that name right."""
+    if answer.kind != "equations" or not given:
+        return ()
+    values = dict(given)
+    if momentum:  # p, where it means p_θ
+        values[sympy.Symbol(momentum[0])] = values.get(sympy.Symbol(momentum[1]))
+    for item in answer.value:
+        value = values.get(item.lhs) if item.lhs.is_Symbol else None
+        if value is None or any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
+            continue
+        if not _same_value(item.rhs, value, expected):
+            name = unicode_name(momentum[1] if momentum and item.lhs.name == momentum[0] else item.lhs.name)
+            return (("given_redefined_for_a_person", {"name": name, "definition": to_text(item)}),)
+    return ()
+
+
+def _same_value(mine, theirs, expected: Expected) -> bool:
+    """Whether two values in the problem's names agree at a few points (sin²θ and 1 − cos²θ do)."""
+    difference = expected.setting.plain(mine - theirs)
+    symbols = sorted(difference.free_symbols, key=str)
+    for point in _SAME_VALUE_POINTS:
+        values = {symbol: sympy.Float(point[i % len(point)]) for i, symbol in enumerate(symbols)}
+        found = sympy.N(difference.xreplace(values))
+        scale = 1 + abs(sympy.N(expected.setting.plain(theirs).xreplace(values)))
+        if not (found.is_number and found.is_finite and abs(found) <= 1e-9 * scale):
+            return False
+    return True
+
+
+_SAME_VALUE_POINTS = ((0.73, 1.31, 0.57, 1.12, 0.91), (1.43, 0.61, 1.07, 0.83, 1.29))
 
 
 def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:
@@ -1453,6 +1489,7 @@ _FOR_A_PERSON = {
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
     "constant_said_for_a_person": "constant_said",
+    "given_redefined_for_a_person": "given_redefined",
 }
 
 
