@@ -221,6 +221,13 @@ FEEDBACK = [
     (EOM_DOUBLE, "T = 1/2 (m1 + m2) l1^2 θ̇₁² + 1/2 m2 l2^2 θ̇₂²", "equations", DOUBLE, "quantity_for_motion",
      "Your answer gives a kinetic energy, `T = …`, where the equations of motion are asked for: write the"
      " equations themselves."),
+    # T without a velocity is no kinetic energy (a tension, a torque), nor V with one a potential energy
+    (EOM_PENDULUM, "T = m g cos θ", "equation", PENDULUM, "undefined_symbol",
+     "Your answer uses `T`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+     " or say what it stands for: …, where T = …."),
+    (EOM_PENDULUM, "V = 1/2 m l^2 θ̇²", "equation", PENDULUM, "undefined_symbol",
+     "Your answer uses `V`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+     " or say what it stands for: …, where V = …."),
     # with an acceleration, L is a label the student gave an equation's side, and undefined
     (EOM_PENDULUM, "L = m l^2 θ̈ + m g l sin θ", "equation", PENDULUM, "undefined_symbol",
      "Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"

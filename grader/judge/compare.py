@@ -2085,8 +2085,11 @@ def _quantity_for_motion(spec: Kind, expected: Expected, answer: ParsedAnswer, u
     momenta = {canonical_name(f"p_{coordinate}") for coordinate in expected.setting.coords}
     if name not in _QUANTITIES or name not in undefined or not set(undefined) - {name} <= momenta:
         return None
-    if any(derivative.derivative_count > 1 for derivative in answer.value.rhs.atoms(sympy.Derivative)):
+    orders = {derivative.derivative_count for derivative in answer.value.rhs.atoms(sympy.Derivative)}
+    if any(order > 1 for order in orders):
         return None  # L = m l² θ̈ + …: a label on an equation's side, not the quantity
+    if (name in _KINETIC_NAMES) != (1 in orders) and name in _KINETIC_NAMES | _POTENTIAL_NAMES:
+        return None  # T = (m₁ − m₂) g, a tension; V = ½ m ẋ²: no such energy, whatever else it is
     system = spec.shape == "equations"
     return {
         "quantity": _QUANTITIES[name],
@@ -2096,6 +2099,7 @@ def _quantity_for_motion(spec: Kind, expected: Expected, answer: ParsedAnswer, u
     }
 
 
+_KINETIC_NAMES, _POTENTIAL_NAMES = frozenset("TK"), frozenset("VU")  # a kinetic energy has velocities, a potential none
 # the quantities a student may give where the equations of motion are asked, by the letters texts use
 _QUANTITIES = {
     "L": "a Lagrangian", "H": "a Hamiltonian", "T": "a kinetic energy", "K": "a kinetic energy",
