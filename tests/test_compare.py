@@ -5229,6 +5229,7 @@ _HOOP_DEFINED = r"H = \dot\theta \frac{\partial L}{\partial \dot\theta} - L = "
 _Q_THETA_TEX = r"Q_\theta = \mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta} = -mgr\sin\theta"
 _P_PHI_STEP = "∂/∂φ̇(½ m l² sin²θ φ̇²)"
 # a chain through a partial derivative written out: before, each was refused ("`∂` is read only in the name …")
+_TWO_H_LINES = "Your 2 lines, each `H = …`, were read as one chain, H = … = …: its last side was graded."
 PARTIALS_IN_CHAIN = (
     # q̇ ∂L/∂q̇ is p_q q̇, and the definition is judged as H = p_θ θ̇ − L = … is
     (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.",)),
@@ -5268,6 +5269,12 @@ PARTIALS_IN_CHAIN = (
       _steps_left_out(_P_PHI_STEP))),
     (Q_THETA[0], _Q_THETA_TEX, Q_THETA[1], "equivalent",
      ("Correct.", _steps_left_out(r"\mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta}"))),
+    # the definition on a line of its own, then the value: read as the chain on one line is (before, refused
+    # for its ∂; and cut at `;`, H = θ̇ p_θ − L and H = … apart, told that L is undefined)
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L\nH = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.", _TWO_H_LINES)),
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L; H = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.", _TWO_H_LINES)),
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L\nH = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
+     (_misstated("H = L + p_θ*θ̇", "H"), _TWO_H_LINES)),
 )  # fmt: skip
 
 

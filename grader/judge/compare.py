@@ -223,6 +223,10 @@ def compare(
     chain = lines_as_chain(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
+        through = partials_read(chain[0]) if _refused(chained, "partial") else None
+        if through is not None:  # H = θ̇ ∂L/∂θ̇ − L, then H = …: through its derivative, as the chain on one line is
+            read = _judge(spec, prepared, through[0], timeout - (time.monotonic() - started), values)
+            chained = _with_steps_left_out(read, *through[1:], prepared) if read.status != "invalid" else chained
         sides = chain_sides(chain[0]) if _refused(chained, "too_many_equals") and spec.shape == "expression" else None
         if sides:  # H = p_θ θ̇ − L, then H = m R² θ̇² − (…), then H = …: a chain of more sides, read side by side
             left = timeout - (time.monotonic() - started)
