@@ -5187,8 +5187,8 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
     assert compare(expected, submitted, kind=kind, **options).status == "equivalent"
 
 
-_HOOP_P = {"p_theta": "m R^2 thetadot"}
-_SPHERICAL_P = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
+_HOOP_GIVEN = {"p_theta": "m R^2 thetadot"}
+_SPHERICAL_GIVEN = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
 
 
 def _redefined(definition: str, name: str) -> str:
@@ -5202,16 +5202,16 @@ def _redefined(definition: str, name: str) -> str:
     ("expected", "submitted", "options", "given", "status", "first"),
     [
         # a wrong momentum of the student's own makes a wrong H in it right: before, Correct
-        (HOOP_H, "H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_P, "undecided",
+        (HOOP_H, "H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_GIVEN, "undecided",
          _redefined("p_θ = R*m*θ̇", "p_θ")),
-        (HOOP_H, "With p_θ = m R θ̇: H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ", HOOP, _HOOP_P, "undecided",
+        (HOOP_H, "With p_θ = m R θ̇: H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ", HOOP, _HOOP_GIVEN, "undecided",
          _redefined("p_θ = R*m*θ̇", "p_θ")),
-        (HOOP_H, "H = p²/(8 m R²) − ½ m R² ω² sin²θ − m g R cos θ, where p = 2 m R² θ̇", HOOP, _HOOP_P, "undecided",
+        (HOOP_H, "H = p²/(8 m R²) − ½ m R² ω² sin²θ − m g R cos θ, where p = 2 m R² θ̇", HOOP, _HOOP_GIVEN, "undecided",
          _redefined("p = 2*R^2*m*θ̇", "p_θ")),
         (SPHERICAL_H, "With p_φ = m l² sin θ φ̇: H = p_θ²/(2 m l²) + p_φ²/(2 m l²) − m g l cos θ", SPHERICAL,
-         _SPHERICAL_P, "undecided", _redefined("p_φ = l^2*m*sin(θ)*φ̇", "p_φ")),
+         _SPHERICAL_GIVEN, "undecided", _redefined("p_φ = l^2*m*sin(θ)*φ̇", "p_φ")),
         # where it is wrong either way, said so
-        (HOOP_H, "H = p_θ²/m − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_P, "not_equivalent",
+        (HOOP_H, "H = p_θ²/m − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_GIVEN, "not_equivalent",
          "Your answer defines `p_θ = R*m*θ̇`, which is not the problem's p_θ."),
     ],
 )  # fmt: skip
@@ -5329,6 +5329,13 @@ DEFINITION_BEFORE = (
      ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", _defined_before("With", _HOOP_P))),
     ("sqrt(g/l)", "With ω₀ = √(g/l): ω = ω₀", PENDULUM, "equivalent",
      ("Correct.", _defined_before("With", "ω₀ = √(g/l)"))),
+    # the name defined by its square, as a frequency is: before, `Using` and ω₀ undefined, and wrong
+    ("sqrt(g/l)", "Using ω₀² = g/l, ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("Using", "ω₀² = g/l"))),
+    (EOM_PENDULUM, "With ω² = g/l: θ̈ + ω² sin θ = 0", {**PENDULUM, "kind": "equation"}, "equivalent",
+     ("Correct.", _defined_before("With", "ω² = g/l"))),
+    (EOM_PENDULUM, "With ω² = l/g: θ̈ + ω² sin θ = 0", {**PENDULUM, "kind": "equation"}, "not_equivalent",
+     ("A term differs: the term in sin(θ) has the wrong factor.", _defined_before("With", "ω² = l/g"))),
 )  # fmt: skip
 
 

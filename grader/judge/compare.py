@@ -1699,7 +1699,8 @@ def _without_words(
 def _unknown_in_items(read: ParsedAnswer, names: list) -> bool:
     """Whether an answer uses a name neither the problem's nor one an item of it gives a value (``H``, ``p_θ``)."""
     items = read.value if read.kind == "equations" else (read.value,)
-    labels = {item.lhs for item in items if isinstance(item, sympy.Eq)}
+    # ω₀² = g/l defines ω₀, as _definition reads it
+    labels = {item.lhs.as_coeff_Mul()[1].as_base_exp()[0] for item in items if isinstance(item, sympy.Eq)}
     return any(symbol not in labels and symbol.name not in names for symbol in read.symbols)
 
 
