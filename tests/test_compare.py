@@ -5148,6 +5148,10 @@ def _misstated(statement: str, label: str) -> str:
         (SPHERICAL_H, f"H = p_φ θ̇ + p_θ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
          _misstated("H = -L + p_φ*θ̇ + p_θ*φ̇", "H")),
         (L_PENDULUM, f"L = θ̇ ∂L/∂θ̇ + H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H + p_θ*θ̇", "L")),
+        # judged by its values, not multiplied out: a power of a sum in it costs nothing
+        (HOOP_H, f"H = (p_θ θ̇ + L + T + V + m + R + g)^40 − L = {HOOP_H_TYPED}", "expression",
+         {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+         _misstated("H = -L + (L + R + T + V + g + m + p_θ*θ̇)^40", "H")),
         # a momentum as −∂L/∂φ̇, ∂V/∂φ̇ (zero) or 2 ∂L/∂φ̇: before, Correct
         (SPHERICAL_P_PHI, "p_φ = −∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = -∂L/∂φ̇", "p_φ")),
         (SPHERICAL_P_PHI, "p_φ = ∂V/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = ∂V/∂φ̇", "p_φ")),

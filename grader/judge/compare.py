@@ -894,7 +894,7 @@ def _legendre_judged(name: str, side, expected: Expected, given: tuple) -> bool 
     }  # fmt: skip
     replacement = {symbol: value for symbol, value in replacement.items() if symbol in energies or symbol in momenta}
     target = summed - lagrangian if name == "H" else lagrangian
-    return sympy.expand(side.xreplace(replacement) - target) == 0
+    return _same_value(side.xreplace(replacement), target, expected)
 
 
 def _sum_written_out(side, lagrangian: sympy.Symbol, expected: Expected) -> bool | None:
@@ -967,19 +967,21 @@ def _given_redefined(answer: ParsedAnswer, expected: Expected, given: tuple, mom
 
 
 def _same_value(mine, theirs, expected: Expected) -> bool:
-    """Whether two values in the problem's names agree at a few points (sin²θ and 1 − cos²θ do)."""
-    difference = expected.setting.plain(mine - theirs)
-    symbols = sorted(difference.free_symbols, key=str)
-    for point in _SAME_VALUE_POINTS:
-        values = {symbol: sympy.Float(point[i % len(point)]) for i, symbol in enumerate(symbols)}
-        found = sympy.N(difference.xreplace(values))
-        scale = 1 + abs(sympy.N(expected.setting.plain(theirs).xreplace(values)))
-        if not (found.is_number and found.is_finite and abs(found) <= 1e-9 * scale):
+    """Whether two values agree at a few points, each name at its own value (sin²θ and 1 − cos²θ do).
+    Evaluated, not expanded: a definition's side as typed may be (p_θ θ̇ + L)⁹⁹."""
+    mine, theirs = expected.setting.plain(mine), expected.setting.plain(theirs)
+    symbols = sorted(mine.free_symbols | theirs.free_symbols, key=str)  # V − V cancels in the difference
+    for step in _SAME_VALUE_STEPS:
+        values = {symbol: sympy.Float(0.5 + (i + 1) * step % 1) for i, symbol in enumerate(symbols)}
+        found, scale = sympy.N(mine.xreplace(values) - theirs.xreplace(values)), sympy.N(theirs.xreplace(values))
+        if not (found.is_number and scale.is_number and found.is_finite and scale.is_finite):
+            return False
+        if abs(complex(found)) > 1e-9 * (1 + abs(complex(scale))):
             return False
     return True
 
 
-_SAME_VALUE_POINTS = ((0.73, 1.31, 0.57, 1.12, 0.91), (1.43, 0.61, 1.07, 0.83, 1.29))
+_SAME_VALUE_STEPS = (0.6180339887, 0.4142135624)  # the golden ratio's and √2's: no two names share a value
 
 
 def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:
