@@ -224,6 +224,13 @@ FEEDBACK = [
     (EOM_DOUBLE, "T = 1/2 (m1 + m2) l1^2 θ̇₁² + 1/2 m2 l2^2 θ̇₂²", "equations", DOUBLE, "quantity_for_motion",
      "Your answer gives a kinetic energy, `T = …`, where the equations of motion are asked for: write the"
      " equations themselves."),
+    # T without a velocity is no kinetic energy (a tension, a torque), nor V with one a potential energy
+    (EOM_PENDULUM, "T = m g cos θ", "equation", PENDULUM, "undefined_symbol",
+     "Your answer uses `T`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+     " or say what it stands for: …, where T = …."),
+    (EOM_PENDULUM, "V = 1/2 m l^2 θ̇²", "equation", PENDULUM, "undefined_symbol",
+     "Your answer uses `V`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+     " or say what it stands for: …, where V = …."),
     # with an acceleration, L is a label the student gave an equation's side, and undefined
     (EOM_PENDULUM, "L = m l^2 θ̈ + m g l sin θ", "equation", PENDULUM, "undefined_symbol",
      "Your answer uses `L`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
@@ -5163,6 +5170,33 @@ def _misstated(statement: str, label: str) -> str:
         # a chain of more sides, read side by side: before, the definition was passed over, and right
         (HOOP_H, f"H = p_θ θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
          _misstated("H = L + p_θ*θ̇", "H")),
+        # Σ p q̇ − L written otherwise wrong, in momenta, as ∂L/∂θ̇ or worked out with the momenta given: before,
+        # each was Correct (only a term left out, or + L, was known wrong)
+        (HOOP_H, f"H = θ p_θ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = -L + p_θ*θ", "H")),
+        (HOOP_H, f"H = θ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = -L + p_θ*θ", "H")),
+        (HOOP_H, f"H = ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = -L + p_θ", "H")),
+        (HOOP_H, f"H = L − θ̇ ∂L/∂θ̇ = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = L - p_θ*θ̇", "H")),
+        (HOOP_H, f"H = 2 θ̇ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = -L + 2*p_θ*θ̇", "H")),
+        (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − T = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
+         _misstated("H = -T + p_θ*θ̇", "H")),
+        (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = m R² θ̇² + L = {HOOP_H_TYPED}", "expression",
+         {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}}, _misstated("H = L + R^2*m*θ̇^2", "H")),
+        (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ + φ̇ ∂L/∂θ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = -L + p_θ*φ̇ + p_θ*θ̇", "H")),
+        (SPHERICAL_H, f"H = p_φ θ̇ + p_θ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
+         _misstated("H = -L + p_φ*θ̇ + p_θ*φ̇", "H")),
+        (L_PENDULUM, f"L = θ̇ ∂L/∂θ̇ + H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H + p_θ*θ̇", "L")),
+        # judged by its values, not multiplied out: a power of a sum in it costs nothing
+        (HOOP_H, f"H = (p_θ θ̇ + L + T + V + m + R + g)^40 − L = {HOOP_H_TYPED}", "expression",
+         {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+         _misstated("H = -L + (L + R + T + V + g + m + p_θ*θ̇)^40", "H")),
+        # a momentum as −∂L/∂φ̇, ∂V/∂φ̇ (zero) or 2 ∂L/∂φ̇: before, Correct
+        (SPHERICAL_P_PHI, "p_φ = −∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = -∂L/∂φ̇", "p_φ")),
+        (SPHERICAL_P_PHI, "p_φ = ∂V/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = ∂V/∂φ̇", "p_φ")),
+        (SPHERICAL_P_PHI, "p_φ = 2 ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = 2*p_φ", "p_φ")),
     ],
 )  # fmt: skip
 def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
@@ -5198,6 +5232,40 @@ def test_a_right_definition_on_the_way_is_right(expected, submitted, kind, optio
     assert compare(expected, submitted, kind=kind, **options).status == "equivalent"
 
 
+_HOOP_GIVEN = {"p_theta": "m R^2 thetadot"}
+_SPHERICAL_GIVEN = {"p_theta": "m l^2 thetadot", "p_phi": "m l^2 sin(theta)^2 phidot"}
+
+
+def _redefined(definition: str, name: str) -> str:
+    return (
+        f"Your answer defines `{definition}`, which is not the problem's {name}. Read with your definition put in"
+        " place, it is right; a person will check this answer."
+    )
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "given", "status", "first"),
+    [
+        # a wrong momentum of the student's own makes a wrong H in it right: before, Correct
+        (HOOP_H, "H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_GIVEN, "undecided",
+         _redefined("p_θ = R*m*θ̇", "p_θ")),
+        (HOOP_H, "With p_θ = m R θ̇: H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ", HOOP, _HOOP_GIVEN, "undecided",
+         _redefined("p_θ = R*m*θ̇", "p_θ")),
+        (HOOP_H, "H = p²/(8 m R²) − ½ m R² ω² sin²θ − m g R cos θ, where p = 2 m R² θ̇", HOOP, _HOOP_GIVEN, "undecided",
+         _redefined("p = 2*R^2*m*θ̇", "p_θ")),
+        (SPHERICAL_H, "With p_φ = m l² sin θ φ̇: H = p_θ²/(2 m l²) + p_φ²/(2 m l²) − m g l cos θ", SPHERICAL,
+         _SPHERICAL_GIVEN, "undecided", _redefined("p_φ = l^2*m*sin(θ)*φ̇", "p_φ")),
+        # where it is wrong either way, said so
+        (HOOP_H, "H = p_θ²/m − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_GIVEN, "not_equivalent",
+         "Your answer defines `p_θ = R*m*θ̇`, which is not the problem's p_θ."),
+    ],
+)  # fmt: skip
+def test_a_given_name_defined_otherwise_goes_to_a_person(expected, submitted, options, given, status, first):
+    verdict = compare(expected, submitted, given=given, **options)
+    assert verdict.status == status, verdict
+    assert first in verdict.feedback, verdict
+
+
 def _steps_left_out(steps: str) -> str:
     return f"Read without the step `{steps}`: a derivative written out is not checked; the last side was graded."
 
@@ -5206,6 +5274,7 @@ _HOOP_DEFINED = r"H = \dot\theta \frac{\partial L}{\partial \dot\theta} - L = "
 _Q_THETA_TEX = r"Q_\theta = \mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta} = -mgr\sin\theta"
 _P_PHI_STEP = "∂/∂φ̇(½ m l² sin²θ φ̇²)"
 # a chain through a partial derivative written out: before, each was refused ("`∂` is read only in the name …")
+_TWO_H_LINES = "Your 2 lines, each `H = …`, were read as one chain, H = … = …: its last side was graded."
 PARTIALS_IN_CHAIN = (
     # q̇ ∂L/∂q̇ is p_q q̇, and the definition is judged as H = p_θ θ̇ − L = … is
     (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.",)),
@@ -5245,6 +5314,12 @@ PARTIALS_IN_CHAIN = (
       _steps_left_out(_P_PHI_STEP))),
     (Q_THETA[0], _Q_THETA_TEX, Q_THETA[1], "equivalent",
      ("Correct.", _steps_left_out(r"\mathbf F \cdot \frac{\partial \mathbf r}{\partial \theta}"))),
+    # the definition on a line of its own, then the value: read as the chain on one line is (before, refused
+    # for its ∂; and cut at `;`, H = θ̇ p_θ − L and H = … apart, told that L is undefined)
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L\nH = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.", _TWO_H_LINES)),
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L; H = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.", _TWO_H_LINES)),
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L\nH = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
+     (_misstated("H = L + p_θ*θ̇", "H"), _TWO_H_LINES)),
 )  # fmt: skip
 
 
@@ -5299,6 +5374,13 @@ DEFINITION_BEFORE = (
      ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", _defined_before("With", _HOOP_P))),
     ("sqrt(g/l)", "With ω₀ = √(g/l): ω = ω₀", PENDULUM, "equivalent",
      ("Correct.", _defined_before("With", "ω₀ = √(g/l)"))),
+    # the name defined by its square, as a frequency is: before, `Using` and ω₀ undefined, and wrong
+    ("sqrt(g/l)", "Using ω₀² = g/l, ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("Using", "ω₀² = g/l"))),
+    (EOM_PENDULUM, "With ω² = g/l: θ̈ + ω² sin θ = 0", {**PENDULUM, "kind": "equation"}, "equivalent",
+     ("Correct.", _defined_before("With", "ω² = g/l"))),
+    (EOM_PENDULUM, "With ω² = l/g: θ̈ + ω² sin θ = 0", {**PENDULUM, "kind": "equation"}, "not_equivalent",
+     ("A term differs: the term in sin(θ) has the wrong factor.", _defined_before("With", "ω² = l/g"))),
 )  # fmt: skip
 
 

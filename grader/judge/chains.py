@@ -166,6 +166,8 @@ def partials_read(text: str) -> tuple[str, list[str], str] | None:
     None where ``text`` is no such chain, or its last side has a ∂ of its own."""
     if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip() or _ROW_BREAK.search(text):
         return None  # lines are chains of their own (see lines_as_chain)
+    if answer_lines(text) is not None:
+        return None  # lines cut at `;` too: H = θ̇ ∂L/∂θ̇ − L; H = … is not H = θ̇ p_θ − L and H = … apart
     label, *sides = _cut(text, lambda i, depth: depth == 0 and _EQUALS.match(text, i) is not None)
     if len(sides) < 2 or _PARTIAL.search(sides[-1]) or len(label) > _LABEL_LENGTH:
         return None

@@ -223,6 +223,10 @@ def compare(
     chain = lines_as_chain(submitted) if unread and spec.parsed and spec.shape else None
     if chain is not None:  # H = Σ p q̇ − L, then H = …: a chain over lines, as H = Σ p q̇ − L = … is read
         chained = _judge(spec, prepared, chain[0], timeout - (time.monotonic() - started), values)
+        through = partials_read(chain[0]) if _refused(chained, "partial") else None
+        if through is not None:  # H = θ̇ ∂L/∂θ̇ − L, then H = …: through its derivative, as the chain on one line is
+            read = _judge(spec, prepared, through[0], timeout - (time.monotonic() - started), values)
+            chained = _with_steps_left_out(read, *through[1:], prepared) if read.status != "invalid" else chained
         sides = chain_sides(chain[0]) if _refused(chained, "too_many_equals") and spec.shape == "expression" else None
         if sides:  # H = p_θ θ̇ − L, then H = m R² θ̇² − (…), then H = …: a chain of more sides, read side by side
             left = timeout - (time.monotonic() - started)
@@ -456,7 +460,7 @@ def _side_misstated(lines: list[str], verdicts: list[Verdict], expected: Expecte
         if verdict.diagnosis not in _UNDEFINED:
             continue
         read = parse_answer(line, coords=expected.setting.coords, known=names)
-        if read.ok and read.kind == "equation" and _wrong_definition(read.value.lhs, read.value.rhs, expected):
+        if read.ok and read.kind == "equation" and _wrong_definition(read.value.lhs, read.value.rhs, expected, given):
             return {"statement": _shown_statement(read.value), "label": unicode_name(read.value.lhs.name)}
     return None
 
@@ -529,9 +533,10 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                     read_notes = (note,)  # the words were the unit
                 if not answer.ok:
                     return Verdict("invalid", 0.0, (answer.message,), "parse", "invalid", answer)
-                read_notes += _misstated(answer, expected)
+                read_notes += _misstated(answer, expected, given)
                 answer, stated = _without_stated_definitions(answer, expected)
                 read_notes += stated
+                read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _with_definitions(answer, expected, deadline)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += working
@@ -725,14 +730,14 @@ def _replaced(item, replacement: dict):
     return item.xreplace(replacement)
 
 
-def _misstated(answer: ParsedAnswer, expected: Expected) -> tuple:
+def _misstated(answer: ParsedAnswer, expected: Expected, given: tuple = ()) -> tuple:
     """A note where the answer says on its way that its quantity is what it is not:
     ``L = T + V = ½ m l² θ̇² + m g l cos θ`` is right as a value, but not as what it says L is. So
     does a line of working (``T = …; V = …; L = T + V``), or a chain's definition of H or of a
     momentum (``H = Σ p q̇ + L = …``, ``p_φ = ∂L/∂φ = …``)."""
     working = answer.value if answer.kind == "equations" else ()
     for statement in (*answer.stated, *working):
-        if _wrong_definition(statement.lhs, statement.rhs, expected):
+        if _wrong_definition(statement.lhs, statement.rhs, expected, given):
             label = statement.lhs.name
             return (
                 ("statement_for_a_person", {"statement": _shown_statement(statement), "label": unicode_name(label)}),
@@ -801,16 +806,18 @@ _SAID_NOT_ENERGY = (
 _DEFINING_LETTERS = frozenset("TVUKEHL")
 _SUMS = frozenset({"Sigma", "sum"})  # Σ and TeX's \sum, as the parser names them in a chain's definition
 _KINETIC_K = sympy.Symbol("K")  # K = T, as some texts write the kinetic energy
+_LAGRANGIAN, _HAMILTONIAN = sympy.symbols("L H")
 
 
-def _wrong_definition(label, side, expected: Expected) -> bool:
+def _wrong_definition(label, side, expected: Expected, given: tuple = ()) -> bool:
     """Whether ``label = side``, a definition the answer states, is wrong for the quantity named:
     L or H or E as the wrong sum of energies, or as one another where they differ (L = E, H = L);
-    H = Σ p q̇ + L; a momentum p_φ as ∂L/∂φ, or as ∂L/∂θ̇. What the problem names is not judged."""
-    return _definition_judged(label, side, expected) is False
+    H = Σ p q̇ + L, H = θ p_θ − L; a momentum p_φ as ∂L/∂φ, as ∂L/∂θ̇ or as −∂L/∂φ̇. What the problem
+    names is not judged."""
+    return _definition_judged(label, side, expected, given) is False
 
 
-def _definition_judged(label, side, expected: Expected) -> bool | None:
+def _definition_judged(label, side, expected: Expected, given: tuple = ()) -> bool | None:
     """Whether ``label = side`` is right for the quantity named (see :func:`_wrong_definition`); None
     where it is no definition of one we know, as ``H = Σ p q̇ − L + V`` or ``L = T − V·not`` are not,
     or the problem names the quantity."""
@@ -832,9 +839,8 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
                 return False  # H = Σ p q̇ + L, H = L − Σ p q̇
             coefficient, term = rest.as_coeff_Mul()
             return True if coefficient == 1 and term.is_Mul and not term.has(lagrangian) else None  # H = Σ p q̇ − L
-        if name == "H" and side.has(lagrangian):
-            return _sum_written_out(side, lagrangian, expected)
-        return None
+        written_out = _sum_written_out(side, lagrangian, expected) if name == "H" and side.has(lagrangian) else None
+        return written_out if written_out is not None else _legendre_judged(name, side, expected, given)
     force = re.fullmatch(r"Q_?([A-Za-z]\w*)", name)
     if force is not None:  # Q_r = −∂V/∂r; ∂V/∂r, or ∂V/∂θ for Q_r, is wrong
         coefficient, quotient = side.as_coeff_Mul()
@@ -843,11 +849,52 @@ def _definition_judged(label, side, expected: Expected) -> bool | None:
             return None
         return coefficient == -1 and gradient[1].replace("_", "") == force[1].replace("_", "")
     momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
-    derivative = re.fullmatch(r"d[LT]_d(\w+)", side.name) if side.is_Symbol else None
+    coefficient, quotient = side.as_coeff_Mul()
+    derivative = re.fullmatch(r"d([LTVU])_d(\w+)", quotient.name) if quotient.is_Symbol else None
+    momenta = {sympy.Symbol(canonical_name(f"p_{q}")) for q in expected.setting.coords}
+    if momentum and label in momenta and side.free_symbols and side.free_symbols <= momenta:
+        return side == label  # p_φ = 2 ∂L/∂φ̇, its ∂L/∂φ̇ read as p_φ (see partials_read): not p_φ
     if not momentum or not derivative:
         return None
     wanted = momentum[1].replace("_", "") + "dot"  # p_θ₁ is ∂L/∂θ̇₁: dL_dtheta_1dot
-    return derivative[1].replace("_", "") == wanted
+    # −∂L/∂φ̇ and ∂V/∂φ̇ (zero: V has no velocity in it) are no momentum; ∂T/∂φ̇ is, as V has none
+    return coefficient == 1 and derivative[1] in "LT" and derivative[2].replace("_", "") == wanted
+
+
+def _legendre_judged(name: str, side, expected: Expected, given: tuple) -> bool | None:
+    """Whether ``H = side`` (or ``L = side``), written in momenta, velocities and L or H (or T and V), is
+    H = Σ p q̇ − L (L = Σ p q̇ − H), identically: ``H = θ p_θ − L``, ``H = L − p_θ θ̇``, ``H = p_θ φ̇ + p_φ θ̇ − L``
+    and ``L = p_θ θ̇ + H`` are not. Where the problem gives every momentum, a step with the momenta
+    worked out (``m R² θ̇² − L``) is judged so too. None for any other side: one in another name, or in
+    the problem's parameters where the momenta are not given, or in neither momenta nor parameters, or
+    in none of L, H, T and V (a value in the momenta)."""
+    if name not in ("H", "L"):
+        return None
+    coords = expected.setting.coords
+    momenta = {sympy.Symbol(canonical_name(f"p_{q}")): q for q in coords}
+    if len(coords) == 1 and "p" not in expected.names:
+        momenta[sympy.Symbol("p")] = coords[0]  # one coordinate: p is its momentum
+    energies = {s for s in (*_ENERGIES, _KINETIC_K, _HAMILTONIAN, _LAGRANGIAN) if s.name not in expected.names}
+    names = side.free_symbols - {TIME}
+    parameters = {symbol for symbol in names if symbol.name in expected.names}
+    if names - parameters - energies - set(momenta) or not names & energies:
+        return None  # H = p_θ²/(2 m R²) − …: a value, in the momenta, judged as one
+    if not names & set(momenta) and not parameters:
+        return None  # H = 2T − L: right only where T is quadratic in the velocities, which is not judged here
+    values = {momenta[symbol]: value for symbol, value in given if symbol in momenta}
+    if parameters and len(values) < len(coords):
+        return None  # m R² θ̇² − L: p_θ θ̇ worked out, which only the momenta's values can check
+    own = {q: sympy.Symbol(canonical_name(f"p_{q}")) for q in coords}  # p for p_θ, where it is
+    momentum = {symbol: values.get(q, own[q]) for symbol, q in momenta.items()}
+    summed = sympy.Add(*(momentum[own[q]] * expected.setting.node(q, 1) for q in coords))
+    lagrangian = _KINETIC - _POTENTIAL
+    replacement = {
+        **momentum, _KINETIC_K: _KINETIC, _POTENTIAL_U: _POTENTIAL, _LAGRANGIAN: lagrangian,
+        _HAMILTONIAN: summed - lagrangian,
+    }  # fmt: skip
+    replacement = {symbol: value for symbol, value in replacement.items() if symbol in energies or symbol in momenta}
+    target = summed - lagrangian if name == "H" else lagrangian
+    return _same_value(side.xreplace(replacement), target, expected)
 
 
 def _sum_written_out(side, lagrangian: sympy.Symbol, expected: Expected) -> bool | None:
@@ -898,6 +945,43 @@ def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tup
     if len(rest) == 1:
         return ParsedAnswer(answer.text, rest[0], "equation"), notes
     return ParsedAnswer(answer.text, rest, "equations"), notes
+
+
+def _given_redefined(answer: ParsedAnswer, expected: Expected, given: tuple, momentum: tuple) -> tuple:
+    """A note where the answer defines for itself a name the problem gives a meaning, as other than it is
+    (``H = p_θ²/(2 m) − …, where p_θ = m R θ̇``; ``With p_φ = m l² sin θ φ̇: H = …``): put in place, the
+    student's definition decides the value, and a wrong one can make a wrong formula in that name right."""
+    if answer.kind != "equations" or not given:
+        return ()
+    values = dict(given)
+    if momentum:  # p, where it means p_θ
+        values[sympy.Symbol(momentum[0])] = values.get(sympy.Symbol(momentum[1]))
+    for item in answer.value:
+        value = values.get(item.lhs) if item.lhs.is_Symbol else None
+        if value is None or any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
+            continue
+        if not _same_value(item.rhs, value, expected):
+            name = unicode_name(momentum[1] if momentum and item.lhs.name == momentum[0] else item.lhs.name)
+            return (("given_redefined_for_a_person", {"name": name, "definition": to_text(item)}),)
+    return ()
+
+
+def _same_value(mine, theirs, expected: Expected) -> bool:
+    """Whether two values agree at a few points, each name at its own value (sin²θ and 1 − cos²θ do).
+    Evaluated, not expanded: a definition's side as typed may be (p_θ θ̇ + L)⁹⁹."""
+    mine, theirs = expected.setting.plain(mine), expected.setting.plain(theirs)
+    symbols = sorted(mine.free_symbols | theirs.free_symbols, key=str)  # V − V cancels in the difference
+    for step in _SAME_VALUE_STEPS:
+        values = {symbol: sympy.Float(0.5 + (i + 1) * step % 1) for i, symbol in enumerate(symbols)}
+        found, scale = sympy.N(mine.xreplace(values) - theirs.xreplace(values)), sympy.N(theirs.xreplace(values))
+        if not (found.is_number and scale.is_number and found.is_finite and scale.is_finite):
+            return False
+        if abs(complex(found)) > 1e-9 * (1 + abs(complex(scale))):
+            return False
+    return True
+
+
+_SAME_VALUE_STEPS = (0.6180339887, 0.4142135624)  # the golden ratio's and √2's: no two names share a value
 
 
 def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> ParsedAnswer:
@@ -1411,6 +1495,7 @@ _FOR_A_PERSON = {
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
     "constant_said_for_a_person": "constant_said",
+    "given_redefined_for_a_person": "given_redefined",
 }
 
 
@@ -1616,7 +1701,8 @@ def _without_words(
 def _unknown_in_items(read: ParsedAnswer, names: list) -> bool:
     """Whether an answer uses a name neither the problem's nor one an item of it gives a value (``H``, ``p_θ``)."""
     items = read.value if read.kind == "equations" else (read.value,)
-    labels = {item.lhs for item in items if isinstance(item, sympy.Eq)}
+    # ω₀² = g/l defines ω₀, as _definition reads it
+    labels = {item.lhs.as_coeff_Mul()[1].as_base_exp()[0] for item in items if isinstance(item, sympy.Eq)}
     return any(symbol not in labels and symbol.name not in names for symbol in read.symbols)
 
 
@@ -2006,8 +2092,11 @@ def _quantity_for_motion(spec: Kind, expected: Expected, answer: ParsedAnswer, u
     momenta = {canonical_name(f"p_{coordinate}") for coordinate in expected.setting.coords}
     if name not in _QUANTITIES or name not in undefined or not set(undefined) - {name} <= momenta:
         return None
-    if any(derivative.derivative_count > 1 for derivative in answer.value.rhs.atoms(sympy.Derivative)):
+    orders = {derivative.derivative_count for derivative in answer.value.rhs.atoms(sympy.Derivative)}
+    if any(order > 1 for order in orders):
         return None  # L = m l² θ̈ + …: a label on an equation's side, not the quantity
+    if (name in _KINETIC_NAMES) != (1 in orders) and name in _KINETIC_NAMES | _POTENTIAL_NAMES:
+        return None  # T = (m₁ − m₂) g, a tension; V = ½ m ẋ²: no such energy, whatever else it is
     system = spec.shape == "equations"
     return {
         "quantity": _QUANTITIES[name],
@@ -2017,6 +2106,7 @@ def _quantity_for_motion(spec: Kind, expected: Expected, answer: ParsedAnswer, u
     }
 
 
+_KINETIC_NAMES, _POTENTIAL_NAMES = frozenset("TK"), frozenset("VU")  # a kinetic energy has velocities, a potential none
 # the quantities a student may give where the equations of motion are asked, by the letters texts use
 _QUANTITIES = {
     "L": "a Lagrangian", "H": "a Hamiltonian", "T": "a kinetic energy", "K": "a kinetic energy",

@@ -81,6 +81,9 @@ FEEDBACK: dict[str, str] = {
     "statement_for_a_person": "Your answer says `{statement}` on the way to its value, which is not what {label}"
     " is. Its value was graded and is right; a person will check this answer.",
     "statement_wrong": "Your answer says `{statement}` on the way to its value, which is not what {label} is.",
+    "given_redefined_for_a_person": "Your answer defines `{definition}`, which is not the problem's {name}. Read"
+    " with your definition put in place, it is right; a person will check this answer.",
+    "given_redefined": "Your answer defines `{definition}`, which is not the problem's {name}.",
     "operator_for_a_person": "Your answer says `{statement}` on the way to its equation, which is not Lagrange's"
     " equation. The equation was graded and is right; a person will check this answer.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",

@@ -418,12 +418,16 @@ def definition_before_formula(
     if sentence is None or text[sentence[3]] == "=":
         return None  # Since L = T − V = …: a chain
     said, left, side, _, after, handed = sentence
-    value, name = text[after:].strip(), _name(left, names, coords)
+    # ω₀² = g/l: the name squared, as a frequency is defined (the answer's reading takes the root)
+    value, name = text[after:].strip(), _name(_SQUARED.sub("", left), names, coords)
     value_equals = _first_equals(value)
     named = _name(value[:value_equals], names, coords) if value_equals is not None else None
     if name is None or not value or named == name or not (named or handed):
         return None
     return said, f"{left} = {side}", value
+
+
+_SQUARED = re.compile(r"\s*(?:²|\^\s*2|\^\s*\{\s*2\s*\}|\*\*\s*2)\s*$")
 
 
 def _defining_sentence(text: str, names: Collection[str], coords: Collection[str]) -> tuple | None:
