@@ -5503,6 +5503,11 @@ P_THETA = {**PENDULUM, "name": "p_theta"}
          ("Correct.", _chain("Using … we have", "H = θ̇ p_θ − L"))),
         (SPHERICAL_H, f"Since H = p_θ θ̇ + p_φ φ̇ − L, H = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
          "equivalent", ("Correct.", _chain("Since", "H = p_θ θ̇ + p_φ φ̇ − L"))),
+        # ∂L/∂θ̇ is read as p_θ, and shown as typed: not as the name put in for it
+        (HOOP_H, f"Since H = θ̇ ∂L/∂θ̇ − L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, "equivalent",
+         ("Correct.", _chain("Since", "H = θ̇ ∂L/∂θ̇ − L"))),
+        (HOOP_H, rf"Since {_HOOP_DEFINED[:-3]}, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, "equivalent",
+         ("Correct.", _chain("Since", _HOOP_DEFINED[:-3]))),
         # a wrong value after a right definition: the value's own feedback, never `Since` undefined
         (L_PENDULUM, "Since L = T − V, L = 1/2 m l^2 θ̇^2 − m g l cos θ", "lagrangian", PENDULUM, "not_equivalent",
          ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _chain("Since", "L = T − V"))),

@@ -157,12 +157,13 @@ def without_dashes(text: str) -> str | None:
     return "\n".join(line[_DASHED.match(line).end() :] for line in lines)
 
 
-def partials_read(text: str) -> tuple[str, list[str], str] | None:
+def partials_read(text: str) -> tuple[str, list[str], str, tuple[tuple[str, str], ...]] | None:
     """``H = θ̇ ∂L/∂θ̇ − L = …``, ``p_φ = ∂/∂φ̇(½ m l² sin²θ φ̇²) = …``, ``Q_θ = F·∂r/∂θ = …``: a chain on
     one line whose steps write out a partial derivative, which the parser reads only as a chain's
     label. ∂L/∂q̇ among a step's factors is the momentum p_q it defines, so that ``H = q̇ ∂L/∂q̇ − L``
     is judged as the definition ``H = p_q q̇ − L`` is; a step with any other ∂ is left out. Returns the
-    chain so written, which grades its last side, the steps left out, as typed, and the chain's label;
+    chain so written, which grades its last side, the steps left out, as typed, the chain's label, and
+    each momentum's name as put in with the quotient it stands for (to show the student their own);
     None where ``text`` is no such chain, or its last side has a ∂ of its own."""
     if not isinstance(text, str) or len(text) > LIMITS.length or "\n" in text.strip() or _ROW_BREAK.search(text):
         return None  # lines are chains of their own (see lines_as_chain)
@@ -174,9 +175,9 @@ def partials_read(text: str) -> tuple[str, list[str], str] | None:
     read = parse_answer(label) if not _SIDES_LABEL.fullmatch(label) else None  # Q_\theta, p_{\phi}: TeX's labels
     if read is not None and not (read.ok and read.kind == "expression" and read.value.is_Symbol):
         return None
-    steps, left_out = [], []
+    steps, left_out, named = [], [], {}
     for number, side in enumerate(sides[:-1]):
-        step = _MOMENTUM_QUOTIENT.sub(_momentum_named, side)
+        step = _MOMENTUM_QUOTIENT.sub(lambda found: _momentum_named(found, named), side)
         if number == 0 and _QUOTIENT_ALONE.fullmatch(side):
             steps.append(side)  # p_φ = ∂L/∂θ̇ = …: a quotient alone after the label, the parser judges as a definition
         elif _PARTIAL.search(step):
@@ -185,16 +186,21 @@ def partials_read(text: str) -> tuple[str, list[str], str] | None:
             steps.append(step)
     if not left_out and steps == sides[:-1]:
         return None  # no ∂ in the steps: the parser's refusal is about something else
-    return "=".join([label, *steps, sides[-1]]), left_out, label.strip()
+    return "=".join([label, *steps, sides[-1]]), left_out, label.strip(), tuple(named.items())
 
 
-def _momentum_named(found: re.Match) -> str:
-    """``∂L/∂θ̇`` as ``p_{theta}``, the name of the momentum it defines; any other quotient as typed."""
+def _momentum_named(found: re.Match, named: dict[str, str]) -> str:
+    """``∂L/∂θ̇`` as ``p_{theta}``, the name of the momentum it defines, noted in ``named`` with the
+    quotient as typed; any other quotient as typed."""
     read = parse_answer(f"{found[0]} = 0")
     if not read.ok or read.kind != "equation" or not read.value.lhs.is_Symbol:
         return found[0]
     momentum = MOMENTUM_DEFINED.fullmatch(read.value.lhs.name)
-    return f" p_{{{momentum[1].replace('_', '')}}} " if momentum else found[0]  # θ₁'s p_{theta1}, read in TeX too
+    if not momentum:
+        return found[0]
+    name = f" p_{{{momentum[1].replace('_', '')}}} "  # θ₁'s p_{theta1}, read in TeX too
+    named[name] = found[0]
+    return name
 
 
 _PARTIAL = re.compile(r"∂|\\partial(?![A-Za-z])")

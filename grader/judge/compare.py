@@ -488,11 +488,14 @@ def _refused(verdict: Verdict, code: str) -> bool:
     return verdict.status == "invalid" and getattr(verdict.answer, "code", None) == code
 
 
-def _with_steps_left_out(verdict: Verdict, left_out: list[str], label: str, expected: Expected) -> Verdict:
+def _with_steps_left_out(
+    verdict: Verdict, left_out: list[str], label: str, named: tuple, expected: Expected
+) -> Verdict:
     """The verdict on a chain read without the steps ``left_out`` (:func:`partials_read`), and the note
     that says so. Where the chain's ``label`` names the Hamiltonian, the Lagrangian or the energy, a step
     left out may be its definition, unchecked (``H = θ̇ ∂L/∂θ − L``): a right value goes to a person, as
-    one after a wrong definition does."""
+    one after a wrong definition does. The sentences show each ∂L/∂q̇ read as p_q as the student typed it."""
+    verdict = _as_typed(verdict, named)
     if not left_out:
         return verdict
     s = "s" if len(left_out) > 1 else ""
@@ -503,6 +506,20 @@ def _with_steps_left_out(verdict: Verdict, left_out: list[str], label: str, expe
             _right_but_said(verdict, "step_for_a_person"), feedback=(note, say("step_for_a_person")), notes=(note,)
         )
     return replace(verdict, feedback=(*verdict.feedback, note), notes=(*verdict.notes, note))
+
+
+def _as_typed(verdict: Verdict, named: tuple) -> Verdict:
+    """``verdict`` with each momentum's name put in for a quotient (``named``, see :func:`partials_read`)
+    shown as the quotient typed again: "as the chain `H = θ̇ ∂L/∂θ̇ − L = …`", not "θ̇  p_{theta}  − L"."""
+    if not named:
+        return verdict
+
+    def typed(sentence: str) -> str:
+        for name, quotient in named:
+            sentence = sentence.replace(name, quotient)
+        return sentence
+
+    return replace(verdict, feedback=tuple(map(typed, verdict.feedback)), notes=tuple(map(typed, verdict.notes)))
 
 
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
