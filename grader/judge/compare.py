@@ -1710,9 +1710,21 @@ def _without_words(
         words, definition, formula = before
         read = parse_answer(f"{formula}, where {definition}", coords=coords, known=names, deadline=deadline)
         if read.ok and not _unknown_in_items(read, names):
+            if not _uses_defined(formula, definition, coords, names):
+                return read, ()  # With L = …: m l² θ̈ = …: L is working, which a note on the lines says, not put in
             said = {"words": _shown(words), "definition": definition}
             return read, ((_words_note("definition_before", words, expected), said),)
     return without if without is not None else (answer, ())
+
+
+def _uses_defined(formula: str, definition: str, coords, names: list) -> bool:
+    """Whether ``formula`` uses the name ``definition`` gives a value (``H = p_θ²/…`` with ``p_θ = …``)."""
+    defined = parse_answer(definition, coords=coords, known=names)
+    if not defined.ok or defined.kind != "equation" or not defined.value.lhs.is_Symbol:
+        return True  # as before: the definition is put in as typed
+    name = defined.value.lhs
+    read = parse_answer(formula, coords=coords, known=[*names, name.name])
+    return not read.ok or name in read.symbols
 
 
 def _unknown_in_items(read: ParsedAnswer, names: list) -> bool:
