@@ -1684,6 +1684,8 @@ def _before(words):
          (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0:"),)),
         (EOM_PENDULUM, "Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get θ̈ = −(g/l) θ", "equation", "not_equivalent",
          (_before("Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, we get"),)),
+        (EOM_PENDULUM, "d/dt(∂L/∂θ̇) − ∂L/∂θ = 0\nm l² θ̈ − m g l sin θ = 0", "equation", "not_equivalent",
+         (_before("d/dt(∂L/∂θ̇) − ∂L/∂θ = 0"),)),
         # q for any coordinate; and a wrong equation is wrong, whatever the operator before it
         (EOM_PENDULUM, "Using d/dt(∂L/∂q̇) − ∂L/∂q = 0 we get m l² θ̈ + m g l sin θ = 0", "equation", "equivalent",
          (_before("Using d/dt(∂L/∂q̇) − ∂L/∂q = 0 we get"),)),
@@ -1749,6 +1751,10 @@ def _operator(operator):
          ("Correct.", _before("Applying ∂L/∂θ − d/dt(∂L/∂θ̇) = 0:"))),
         (f"d/dt(∂L/∂θ̇) − ∂L/∂θ = 0, {EOM_TYPED}", "equivalent",
          ("Correct.", _before("d/dt(∂L/∂θ̇) − ∂L/∂θ = 0,"))),
+        # the operator on a line of its own, then the equation: before, refused ("the first item has no `=`")
+        (f"d/dt(∂L/∂θ̇) − ∂L/∂θ = 0\n{EOM_TYPED}", "equivalent", ("Correct.", _before("d/dt(∂L/∂θ̇) − ∂L/∂θ = 0"))),
+        (f"d/dt(∂V/∂θ̇) − ∂V/∂θ = 0\n{EOM_TYPED}", "undecided",
+         (_operator("d/dt(∂V/∂θ̇) − ∂V/∂θ"), _before("d/dt(∂V/∂θ̇) − ∂V/∂θ = 0"))),
         # a method in words that hands over, or with a unit's name in it: before, refused
         ("From the Euler-Lagrange equation, it follows that m l^2 thetaddot + m g l sin(theta) = 0", "equivalent",
          ("Correct.", _before("From the Euler-Lagrange equation, it follows that"))),

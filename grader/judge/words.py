@@ -451,7 +451,7 @@ def _defining_sentence(text: str, names: Collection[str], coords: Collection[str
     if text[stop] == "=":  # Since L = T − V = …: the chain as typed
         between, after, handed = [], stop + 1, True
     else:
-        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        between, after = _words_from(text, stop + (text[stop] in ",;:\n"), names, coords, handing=True)
         if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
             return None  # …, not L = …: words that do not hand over to the value
         handed = bool(between) or text[stop] == ":"
@@ -491,7 +491,7 @@ def euler_lagrange_then_formula(
             break
     else:
         return
-    stop = _stop(text, equals + 1, names, coords)
+    stop = _stop(text, equals + 1, names, coords, stops=",;:\n")  # the operator's line, then the equation's
     side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
     between: list[str] = []
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
@@ -499,7 +499,7 @@ def euler_lagrange_then_formula(
     elif stop is None or text[stop] == "=":
         return
     else:
-        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        between, after = _words_from(text, stop + (text[stop] in ",;:\n"), names, coords, handing=True)
         if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
             return  # …, not …: words that do not hand over to the equation
     equation = text[after:].strip(" ,;:")
@@ -527,9 +527,9 @@ def _words_from(
     return words, end
 
 
-def _stop(text: str, start: int, names: Collection[str], coords: Collection[str]) -> int | None:
-    """Where a side that starts at ``start`` ends: at its first ``,``, ``;``, ``:`` or ``=`` outside
-    brackets, or a word of prose there; None where it runs to the end."""
+def _stop(text: str, start: int, names: Collection[str], coords: Collection[str], stops: str = ",;:") -> int | None:
+    """Where a side that starts at ``start`` ends: at its first of ``stops`` (``,``, ``;``, ``:``) or ``=``
+    outside brackets, or a word of prose there; None where it runs to the end."""
     words = {found.start() for found in _WORD.finditer(text, start) if _is_word(found[0], names, coords)}
     words |= {found.start() for found in _WORD.finditer(text, start) if found[0].lower() in IMPLYING_WORDS}
     depth = 0
@@ -538,7 +538,7 @@ def _stop(text: str, start: int, names: Collection[str], coords: Collection[str]
         depth += (character in "([{") - (character in ")]}")
         if depth or (i and text[i - 1] == "\\"):
             continue  # inside brackets, or TeX's \, and \: (spaces)
-        if character in ",;:" or _EQUALS.match(text, i) or i in words:
+        if character in stops or _EQUALS.match(text, i) or i in words:
             return i
     return None
 
