@@ -87,6 +87,7 @@ from grader.parse import (
     too_many_digits,
     within_diff_budget,
 )
+from grader.parse.messages import listed
 from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
 from grader.parse.readback import to_text
 
@@ -284,10 +285,9 @@ def _rounded(spec: Kind, expected: Expected, submitted: str, timeout: float, giv
         if left <= 0:
             return None
         if _judge(spec, expected, reading, left, given).equivalent:
-            quoted = [f"`{decimal}`" for decimal in decimals]
-            shown = quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " and " + quoted[-1]
             key = "rounded_decimal" if len(decimals) == 1 else "rounded_decimals"
-            return Outcome("not_equivalent", 0.0, key, {"decimals": shown}, method="rounded")
+            details = {"decimals": listed([f"`{decimal}`" for decimal in decimals])}
+            return Outcome("not_equivalent", 0.0, key, details, method="rounded")
     return None
 
 
@@ -2158,7 +2158,7 @@ def _listing(names: list[str]) -> str:
     shown = [f"`{unicode_name(name)}`" for name in sorted(names, key=_natural)]
     if len(shown) > _LISTED:
         return ", ".join(shown[: _LISTED - 1]) + f" and {len(shown) - _LISTED + 1} more"
-    return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
+    return listed(shown)
 
 
 def _natural(name: str) -> list:

@@ -51,6 +51,7 @@ from grader.judge.sampling import (
 )
 from grader.judge.units import DIMENSIONS, Mixed, units_of
 from grader.parse import ParsedAnswer
+from grader.parse.messages import listed
 from grader.parse.names import unicode_name
 
 __all__ = [
@@ -254,13 +255,13 @@ def _factor_dependence(expected: Expected, key: str, e, s, plain) -> Outcome | N
     if not others:  # every symbol is wrong: say which the answer lacks, or has where the right one has not
         lacking = [_shown(variables[i]) for i in used if variables[i] not in plain.free_symbols]
         extra = [_shown(variables[i]) for i in used if variables[i] not in e.free_symbols]
-        said = [("factor_lacks", {"names": _listed(lacking)})] if lacking else []
-        said += [("factor_extra", {"names": _listed(extra)})] if extra else []
+        said = [("factor_lacks", {"names": listed(lacking)})] if lacking else []
+        said += [("factor_extra", {"names": listed(extra)})] if extra else []
         if not said:
-            said = [("factor_depends_all", {"names": _listed(names)})]
+            said = [("factor_depends_all", {"names": listed(names)})]
         (key, details), *more = said
         return Outcome("not_equivalent", 0.0, key, details, method="numeric: ratio", more=tuple(more))
-    details = {"names": _listed(names), "others": _listed(others)}
+    details = {"names": listed(names), "others": listed(others)}
     # said as it is: the answer lacks them (g l for g l m), has them where the right one has not, has
     # one symbol for another (l₀ for r), or depends on them in another way
     theirs = [variables[i] in plain.free_symbols for i in used if i in depends]
@@ -269,7 +270,7 @@ def _factor_dependence(expected: Expected, key: str, e, s, plain) -> Outcome | N
     if key == "factor_depends_how" and not any(a and b for a, b in zip(theirs, ours, strict=True)):
         wrote = [name for name, mine in zip(names, theirs, strict=True) if mine]
         instead = [name for name, mine in zip(names, theirs, strict=True) if not mine]
-        details = {**details, "names": _listed(wrote), "instead": _listed(instead)}
+        details = {**details, "names": listed(wrote), "instead": listed(instead)}
         key = "factor_depends_instead"
     return Outcome("not_equivalent", 0.0, key, details, method="numeric: ratio")
 
@@ -290,11 +291,6 @@ def _shown(symbol: sympy.Symbol) -> str:
     """A plain symbol as a student writes it: θ for theta, θ̇ for theta__1."""
     name, _, dots = symbol.name.partition("__")
     return unicode_name(name, int(dots) if dots else 0)
-
-
-def _listed(names: list[str]) -> str:
-    """``a``, ``a and b``, ``a, b and c``."""
-    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
 def diagnose_difference(

@@ -35,7 +35,7 @@ from sympy.core.function import AppliedUndef
 from sympy.core.traversal import iterargs
 
 from grader.parse.functions import COMPLEX, SYMPY
-from grader.parse.messages import ParseFailure
+from grader.parse.messages import ParseFailure, listed
 from grader.parse.names import (
     CONSTANT_WORDS,
     FUNCTION_NAMES,
@@ -479,7 +479,7 @@ class _Parser:
         typed: ``L``, or ``L`` and ``F`` with Rayleigh's; each is the first of a quotient's two ∂."""
         tops = [self.tokens[j + 1] for j in range(start, end) if self.tokens[j].kind == "partial"][::2]
         shown = list(dict.fromkeys(f"`{self.source(token)}`" for token in tops))
-        return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
+        return listed(shown)
 
     def _partial_quotient(self, i: int) -> tuple[int, str] | None:
         """``∂L/∂φ̇`` or ``\\frac{\\partial L}{\\partial \\dot\\phi}`` at ``i``: the position after it, and

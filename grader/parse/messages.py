@@ -4,6 +4,7 @@ Contents:
     MESSAGES     refusal code → the sentence a student reads
     Refusal      the parser's failure value: code, message, where
     ParseFailure the internal exception that carries a Refusal out of the parser
+    listed(items)  ``a``, ``a and b``, ``a, b and c``: names in a sentence, here and in the judge's
 
 Each message says what is wrong in the student's terms and, where there is a
 spot to point at, ``Refusal.pointer`` draws a caret under it. Places are counted as
@@ -16,7 +17,7 @@ from __future__ import annotations
 import unicodedata
 from dataclasses import dataclass
 
-__all__ = ["MESSAGES", "ParseFailure", "Refusal", "refusal"]
+__all__ = ["MESSAGES", "ParseFailure", "Refusal", "listed", "refusal"]
 
 MESSAGES: dict[str, str] = {
     "empty": "Your answer is empty.",
@@ -133,6 +134,15 @@ class Refusal:
 
     def __str__(self) -> str:
         return f"{self.message}\n{self.pointer}" if self.pointer else self.message
+
+
+def listed(items: list[str]) -> str:
+    """Items as a sentence lists them.
+
+    >>> listed(["`L`"]), listed(["a", "b"]), listed(["a", "b", "c"])
+    ('`L`', 'a and b', 'a, b and c')
+    """
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
 def refusal(code: str, text: str, start: int | None = None, end: int | None = None, **details) -> Refusal:
