@@ -20,6 +20,7 @@ from typing import NamedTuple
 
 from grader.judge.deadline import Deadline
 from grader.judge.expected import Expected, Outcome
+from grader.judge.feedback import shown
 from grader.judge.numbers import NUMBER_WORDS
 from grader.parse import visible
 from grader.parse.messages import ParseFailure
@@ -91,15 +92,11 @@ def _reading_notes(reading: _Reading) -> tuple:
     labels = ", ".join(reading.words or reading.labels)
     if reading.before:  # holonomic and rheonomic: the words on both sides of the option, which were not graded
         rest = " … ".join(words for words in (reading.before, rest) if words)
-        rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
-        return (("choice_read_beside", {"labels": labels, "rest": rest}),)
-    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
+        return (("choice_read_beside", {"labels": labels, "rest": shown(rest)}),)
+    rest = shown(rest)
     if not rest:
         return (("choice_read", {"labels": labels}),) if reading.words else ()
     return (("choice_read_remark" if reading.words else "choice_remark", {"labels": labels, "rest": rest}),)
-
-
-_SHOWN = 60  # characters of a remark repeated back to the student
 
 
 def chosen(submitted: str, options, *, multiple: bool = False, meanings=(), asks_false=False) -> list[str] | None:

@@ -40,7 +40,7 @@ from grader.judge.diagnose import TERM_KEYS, in_sentence
 from grader.judge.euler_lagrange import euler_lagrange
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression, same_values
-from grader.judge.feedback import say
+from grader.judge.feedback import say, shown
 from grader.judge.given import given_values, in_given_names
 from grader.judge.lagrangian import check_lagrangian
 from grader.judge.motion import accelerations_in, check_equation, check_equations
@@ -337,7 +337,7 @@ def _small_angle_forms(spec: Kind, expected: Expected, submitted: str, timeout: 
     for first, words, last in formula_then_small_angle_form(submitted, names, coords):
         if readable(first, last):
             return _two_forms_judged(
-                spec, expected, (first, last), _shown(words), timeout - (time.monotonic() - started), given
+                spec, expected, (first, last), shown(words), timeout - (time.monotonic() - started), given
             )
     approximated = formula_then_approximation(submitted)  # θ̈ = −(g/l) sin θ ≈ −(g/l) θ
     if approximated is None or not readable(approximated[0], approximated[2]):
@@ -499,7 +499,7 @@ def _with_steps_left_out(
     if not left_out:
         return verdict
     s = "s" if len(left_out) > 1 else ""
-    note = say("steps_left_out", s=s, steps=_shown("; ".join(left_out)))
+    note = say("steps_left_out", s=s, steps=shown("; ".join(left_out)))
     name = canonical_name(label) if ONE_NAME.fullmatch(label) else None
     if name in _ENERGY_SUMS and name not in expected.names and verdict.status == "equivalent":
         return replace(
@@ -1603,7 +1603,7 @@ def _read(
         answer, notes = _without_words(answer, submitted, expected, names, deadline)
         said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
         if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
-            notes = (("words_for_a_person", {"words": _shown(said)}),)
+            notes = (("words_for_a_person", {"words": shown(said)}),)
         return answer, notes
     reads = partial(_as_number, spec=spec, expected=expected, names=names, deadline=deadline)
     unit = str(expected.option("unit") or "") if spec.name == "number" else ""
@@ -1681,7 +1681,7 @@ def _without_words(
     # Dimension of force: Q_θ = …, a line's label the parser read past: no sentence before its own label
     labelled = answer.ok and not _undefined(_without_label(answer), names)
     for words, formula in words_then_formula(submitted, names, coords):
-        before = (_words_note("words_before_left_out", words, expected), {"words": _shown(words)})
+        before = (_words_note("words_before_left_out", words, expected), {"words": shown(words)})
         read = parse_answer(formula, coords=coords, known=names, deadline=deadline)
         zero = _ZERO_THEN_WORDS.search(formula)  # … = 0 is wrong: 0 times the words is 0, as at the top
         # The generalized force along r is Q_r = …: a label the sentence names is no undefined name
@@ -1698,11 +1698,11 @@ def _without_words(
         # Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …, the operator read past (compare judges it)
         read, after = _read_with_remark(equation, expected, names, deadline)
         if read.ok and read.kind == "equation":
-            return read, ((_words_note("words_before_left_out", words, expected), {"words": _shown(words)}), *after)
+            return read, ((_words_note("words_before_left_out", words, expected), {"words": shown(words)}), *after)
     for words, definition, chain in definition_then_formula(submitted, names, coords):
         read, after = _read_with_remark(chain, expected, names, deadline)
         if _states_one_definition(read, expected):
-            chained = {"words": _shown(words), "chain": f"{definition} = …"}
+            chained = {"words": shown(words), "chain": f"{definition} = …"}
             return read, ((_words_note("definition_in_words", words, expected), chained), *after)
     # a name the problem gives a meaning (p_θ) is the student's to define too, as after the formula (…, where p_θ = …)
     before = definition_before_formula(submitted, sorted(expected.names), coords)
@@ -1712,7 +1712,7 @@ def _without_words(
         if read.ok and not _unknown_in_items(read, names):
             if not _uses_defined(formula, definition, coords, names):
                 return read, ()  # With L = …: m l² θ̈ = …: L is working, which a note on the lines says, not put in
-            said = {"words": _shown(words), "definition": definition}
+            said = {"words": shown(words), "definition": definition}
             return read, ((_words_note("definition_before", words, expected), said),)
     return without if without is not None else (answer, ())
 
@@ -1777,13 +1777,13 @@ def _formula_before_words(text: str, expected: Expected, names: list, deadline) 
     for formula, words in formula_then_words(text, names, expected.setting.coords):
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:  # a name of its own left in the formula (v, where v is the speed) is said as usual
-            return read, ((_words_note("words_left_out", words, expected), {"words": _shown(words)}),)
+            return read, ((_words_note("words_left_out", words, expected), {"words": shown(words)}),)
     convention = formula_then_convention(text, names)  # … (taking V = 0 at the pivot): the zero, stated
     if convention is not None:
         formula, remark = convention
         read = parse_answer(formula, coords=expected.setting.coords, known=names, deadline=deadline)
         if read.ok:
-            return read, ((_words_note("words_left_out", remark, expected), {"words": _shown(remark)}),)
+            return read, ((_words_note("words_left_out", remark, expected), {"words": shown(remark)}),)
     return None
 
 
@@ -1803,10 +1803,6 @@ def _words_note(key: str, words: str, expected: Expected) -> str:
     if key != "words_left_out":
         named = named & _ENERGY_SUMS.keys() if asked else set()
     return "words_for_a_person" if named - asked else key
-
-
-def _shown(words: str) -> str:
-    return words if len(words) <= 60 else words[:59] + "…"
 
 
 def _undefined(answer: ParsedAnswer, names: list) -> bool:

@@ -3,13 +3,14 @@
 Contents:
     FEEDBACK         diagnosis key → sentence template
     say(key, **kw)   the sentence, filled in
+    shown(text)      a student's words as a sentence repeats them, cut short past SHOWN characters
 
 The sentences name the kind of mistake, never the expected answer itself.
 """
 
 from __future__ import annotations
 
-__all__ = ["FEEDBACK", "say"]
+__all__ = ["FEEDBACK", "SHOWN", "say", "shown"]
 
 FEEDBACK: dict[str, str] = {
     "equivalent": "Correct.",
@@ -240,3 +241,11 @@ FEEDBACK: dict[str, str] = {
 def say(key: str, **details) -> str:
     """The sentence for ``key``, with ``details`` filled in."""
     return FEEDBACK[key].format(**details)
+
+
+SHOWN = 60  # characters of a student's words repeated back to them
+
+
+def shown(text: str) -> str:
+    """``text`` as a sentence repeats it: cut short, with "…", where it is longer than :data:`SHOWN`."""
+    return text if len(text) <= SHOWN else text[: SHOWN - 1] + "…"

@@ -30,6 +30,7 @@ from functools import lru_cache
 
 import sympy
 
+from grader.judge.feedback import SHOWN, shown
 from grader.judge.units import in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
@@ -88,7 +89,6 @@ _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its o
 _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
 _REMARKS_TRIED = 12
-_SHOWN = 60  # characters of a remark repeated back to the student
 
 _WORDS = [
     "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
@@ -245,12 +245,12 @@ def _read_number(
             # 4 − 1 = 2, 3·5 = 16 → 15: working that does not hold, a slip or a value not worked out
             working = _false_working(pieces, runs, _last_side(answer), numbers) if last and index == last else None
             if working:
-                notes += (("working_false_for_a_person", {"value": typed, "working": _shown(working)}),)
+                notes += (("working_false_for_a_person", {"value": typed, "working": shown(working)}),)
             elif before:
                 notes += (("number_in_sentence", {"value": typed}),)
             elif rest:
                 rest = rest.lstrip(",:;–—- ")
-                notes += (("remark_ignored", {"value": typed, "rest": _shown(rest)}),)
+                notes += (("remark_ignored", {"value": typed, "rest": shown(rest)}),)
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
             elif last:
@@ -306,7 +306,7 @@ def _worked_over_lines(
     value = next((details["value"] for _, details in notes if "value" in details), _sides(final)[0][-1])
     notes = tuple(note for note in notes if note[0] not in ("final_value", "number_read"))
     if false is not None:
-        return prepared, answer, (("working_false_for_a_person", {"value": value, "working": _shown(false)}), *notes)
+        return prepared, answer, (("working_false_for_a_person", {"value": value, "working": shown(false)}), *notes)
     return prepared, answer, (("final_value", {"value": value}), *notes)
 
 
@@ -318,7 +318,7 @@ def _words_beside(text: str) -> str:
     """The words of ``text``, as a phrase (``as well``, ``The answer is``): not a name of one letter,
     a step (so, hence) or a number in words."""
     said = (word for word in _WORD.findall(text) if word.lower() not in (*IMPLYING_WORDS, *NUMBER_WORDS))
-    return _shown(" ".join(said))
+    return shown(" ".join(said))
 
 
 def _other_values(pieces: list[str], answer: ParsedAnswer, reads, decimal_comma: bool, unit: str, count: bool) -> bool:
@@ -456,18 +456,13 @@ def _said(words: re.Pattern, text: str) -> str:
     for found in words.finditer(text):
         typed = " ".join(found[0].strip(" (,").split())  # 2 (max): max
         said.setdefault(typed.lower(), typed)
-    return _shown(", ".join(said.values()))
-
-
-def _shown(text: str) -> str:
-    """``text`` as a note repeats it: cut short where it is long."""
-    return text if len(text) <= _SHOWN else text[: _SHOWN - 1] + "…"
+    return shown(", ".join(said.values()))
 
 
 def _is_name(side: str) -> bool:
     """Whether ``side`` is a quantity's name alone (T, n, DOF, the period), not words that take the value
     before it back (no, wrong) or more of the answer."""
-    if len(side) > _SHOWN or not _NAME_AFTER.fullmatch(side) or _CORRECTION.search(side):
+    if len(side) > SHOWN or not _NAME_AFTER.fullmatch(side) or _CORRECTION.search(side):
         return False
     return side.rstrip(".").lower() not in _JOINING
 
@@ -510,8 +505,7 @@ def _unequal(
         return found[0], None, ()  # 6 ≠ 6 says no count
     typed = next((details["value"] for _, details in notes if "value" in details), _sides(found["value"])[0][-1])
     rest = rest or f"{found['sign']} {found['other']}"
-    rest = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
-    return prepared, answer, (*notes, ("remark_ignored", {"value": typed, "rest": rest}))
+    return prepared, answer, (*notes, ("remark_ignored", {"value": typed, "rest": shown(rest)}))
 
 
 def _value_of(answer: ParsedAnswer | None):
@@ -550,7 +544,7 @@ def _listed(
         if answer is None:
             return None
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
-        return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": _shown(rest)}))
+        return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": shown(rest)}))
     return None
 
 
@@ -590,7 +584,7 @@ def _stated_in_unit(
     (graded,) = in_unit
     others = ", ".join(statement for index, statement in enumerate(statements) if index != graded)
     prepared, answer, notes = read[graded]
-    details = {"graded": _shown(statements[graded]), "unit": unit, "others": _shown(others)}
+    details = {"graded": shown(statements[graded]), "unit": unit, "others": shown(others)}
     return prepared, answer, (*notes, ("statements_left_out", details))
 
 
@@ -717,9 +711,8 @@ def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | N
     answer = reads(str(number))
     if answer is None:
         return None  # more digits than the parser reads: as typed, and refused
-    shown = rest if len(rest) <= _SHOWN else rest[: _SHOWN - 1] + "…"
-    remark = ("remark_ignored", {"value": typed, "rest": shown})
-    unclear = ("count_bracket_for_a_person", {"value": typed, "rest": shown})
+    remark = ("remark_ignored", {"value": typed, "rest": shown(rest)})
+    unclear = ("count_bracket_for_a_person", {"value": typed, "rest": shown(rest)})
     spaced = bool(found["space"]) or not typed.isdigit()  # two(2) is no product either
     if _ARITHMETIC.fullmatch(rest):
         worked = parse_answer(rest)
@@ -802,10 +795,9 @@ def _given(
         head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
     )
     if answer is not None:
-        shown = text[found.start() :].strip(" ,")
-        shown = shown if len(shown) <= _SHOWN else shown[: _SHOWN - 1] + "…"
+        rest = shown(text[found.start() :].strip(" ,"))
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
-        return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": shown}))
+        return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": rest}))
     joined = f"{head}; {values}"
     answer = reads(joined)  # T = 2π√(l/g); l = 1; g = 9.81: the values put in place
     return (joined, answer, ()) if answer is not None else (text, None, ())  # not = 1, a value it was given
