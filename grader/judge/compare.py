@@ -701,17 +701,10 @@ def _verdict(outcome: Outcome, answer: ParsedAnswer | None) -> Verdict:
 
 def _with_given(answer: ParsedAnswer, given: tuple) -> tuple[ParsedAnswer, tuple]:
     """The answer with the author's given names (p_θ) put in place, and those it used, each with its value."""
-    value = answer.value
     used = tuple((symbol, v) for symbol, v in given if symbol in answer.symbols)
     if not used:
         return answer, ()
-    replacement = dict(used)
-    value = (
-        tuple(_replaced(item, replacement) for item in value)
-        if isinstance(value, tuple)
-        else _replaced(value, replacement)
-    )
-    return ParsedAnswer(answer.text, value, answer.kind), used
+    return _answer_replaced(answer, dict(used)), used
 
 
 def _lone_momentum(expected: Expected, given: tuple) -> tuple[str, ...]:
@@ -730,14 +723,15 @@ def _as_momentum(answer: ParsedAnswer, momentum: tuple) -> ParsedAnswer:
     bare = sympy.Symbol(momentum[0]) if momentum else None
     if bare is None or bare not in answer.symbols:
         return answer
-    replacement = {bare: sympy.Symbol(momentum[1])}
+    return _answer_replaced(answer, {bare: sympy.Symbol(momentum[1])})
+
+
+def _answer_replaced(answer: ParsedAnswer, replacement: dict) -> ParsedAnswer:
+    """The answer, each of its items (or its one value) with names put in place (:func:`_replaced`)."""
     value = answer.value
-    value = (
-        tuple(_replaced(item, replacement) for item in value)
-        if isinstance(value, tuple)
-        else _replaced(value, replacement)
-    )
-    return ParsedAnswer(answer.text, value, answer.kind)
+    if isinstance(value, tuple):
+        return ParsedAnswer(answer.text, tuple(_replaced(item, replacement) for item in value), answer.kind)
+    return ParsedAnswer(answer.text, _replaced(value, replacement), answer.kind)
 
 
 def _replaced(item, replacement: dict):
