@@ -353,8 +353,7 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
             comma = text.index(",", end) + 1
             # …, it follows that m l² θ̈ + … = 0: words that hand over to the formula after the comma
             between, after = _words_from(text, comma, names, coords, handing=True)
-            lowered = set(map(str.lower, between))
-            if not between or between[-1].lower() not in _HANDS_OVER_TO_VALUE or lowered - _BETWEEN:
+            if not _hands_over(between):
                 between, after = [], comma
             words, formula = text[:after].strip(), text[after:].strip()
             if formula and is_prose(" ".join((*said, *between)), names, doubt=True):
@@ -451,8 +450,8 @@ def _defining_sentence(text: str, names: Collection[str], coords: Collection[str
     if text[stop] == "=":  # Since L = T − V = …: the chain as typed
         between, after, handed = [], stop + 1, True
     else:
-        between, after = _words_from(text, stop + (text[stop] in ",;:\n"), names, coords, handing=True)
-        if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
+        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        if between and not _hands_over(between):
             return None  # …, not L = …: words that do not hand over to the value
         handed = bool(between) or text[stop] == ":"
     if not is_prose(" ".join((*lead, *between)), names, doubt=True):
@@ -500,7 +499,7 @@ def euler_lagrange_then_formula(
         return
     else:
         between, after = _words_from(text, stop + (text[stop] in ",;:\n"), names, coords, handing=True)
-        if between and (between[-1].lower() not in _HANDS_OVER_TO_VALUE or set(map(str.lower, between)) - _BETWEEN):
+        if between and not _hands_over(between):
             return  # …, not …: words that do not hand over to the equation
     equation = text[after:].strip(" ,;:")
     words = " ".join((*_PROSE_WORD.findall(text[:start]), *between))
@@ -525,6 +524,12 @@ def _words_from(
         words.append(found[0])
         end = found.end()
     return words, end
+
+
+def _hands_over(between: list[str]) -> bool:
+    """Whether the words between a statement and what follows it hand over to it (``we get``, ``so``):
+    they end in such a word, and hold no word but those that may stand between."""
+    return bool(between) and between[-1].lower() in _HANDS_OVER_TO_VALUE and not set(map(str.lower, between)) - _BETWEEN
 
 
 def _stop(text: str, start: int, names: Collection[str], coords: Collection[str], stops: str = ",;:") -> int | None:
