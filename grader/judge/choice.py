@@ -67,8 +67,8 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
     if unknown:
         # "e" is a label that is not there; "the first one" is words, shown as typed
         words = any(len(label) > 2 for label in unknown)
-        shown = _typed(submitted) if words else ", ".join(unknown)
-        return Outcome("invalid", 0.0, "choice_unknown", {"labels": shown, "options": ", ".join(options)}, "labels")
+        labels = _typed(submitted) if words else ", ".join(unknown)
+        return Outcome("invalid", 0.0, "choice_unknown", {"labels": labels, "options": ", ".join(options)}, "labels")
     if not multiple and len(set(given)) > 1:
         return Outcome("not_equivalent", 0.0, "choice_count", {"count": "one option"}, "labels")
     right = set(given) == wanted

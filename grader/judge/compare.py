@@ -525,7 +525,7 @@ def _as_typed(verdict: Verdict, named: tuple) -> Verdict:
 def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple = ()) -> Verdict:
     if timeout <= 0:  # a second reading of the answer, with no time left for it: nobody may say
         return _verdict(Outcome("undecided", 0.0, "undecided", method="timeout"), None)
-    answer, conserved, used, typed, read_in, read_notes, shown = None, False, (), None, None, (), None
+    answer, conserved, used, typed, read_in, read_notes, read_shown = None, False, (), None, None, (), None
     with_constant, constant = None, None
     try:
         # Reading is timed too: within the parser's caps, sympy can still spend a second
@@ -576,13 +576,13 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 with_constant, (answer, constant) = answer, _without_constant_terms(answer, spec, expected)
                 read_notes += (constant,) if constant else ()
-                shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
+                read_shown, (answer, early, read_in) = answer, _in_unit(answer, spec, expected)
                 early = early or _mismatch(spec, expected, answer)
                 if early and used:
                     return _verdict(_with_given_note(early, used), typed)  # as for any verdict: see below
                 if early:
                     # as typed: 2.006 m is not read as a time; and 2 or 3 is not shown as the product 6·or
-                    return _verdict(early, None if early.key == "number_hedged" else shown)
+                    return _verdict(early, None if early.key == "number_hedged" else read_shown)
             outcome = spec.check(expected, answer if spec.parsed else submitted, deadline)
             squared = _square_sign_open(named, spec, expected, outcome, deadline) if spec.parsed else outcome
             if squared is not outcome:  # shown as typed: the root it was read as is what a person decides
@@ -597,7 +597,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                         if used
                         else _verdict(undefined, with_constant)
                     )
-            if outcome.key == "other_unit" and shown is not None and shown.value.free_symbols:
+            if outcome.key == "other_unit" and read_shown is not None and read_shown.value.free_symbols:
                 # 2.006 ms: the unit was typed, and asking whether the number is in ks is no help
                 outcome = replace(outcome, key="out_of_tolerance", details={})
             outcome, read_notes = _count_unclear(spec, expected, outcome, read_notes, deadline)
@@ -1339,8 +1339,8 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         return None  # pφ for p_φ, and p
     definition = MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
     described = expected.setting.describe
-    shown = f"∂L/∂{unicode_name(definition[1], 1)}" if definition else described([label])
-    return ("label_for_a_person", {"label": shown, "name": described(names[:1])})  # ω, not w too
+    said = f"∂L/∂{unicode_name(definition[1], 1)}" if definition else described([label])
+    return ("label_for_a_person", {"label": said, "name": described(names[:1])})  # ω, not w too
 
 
 # The sums of the energies that name a quantity: L = T − V, and H = E = T + V (U is V)
@@ -2145,10 +2145,10 @@ def _ends_in_unit_letter(text: str, name: str) -> bool:
 
 def _listing(names: list[str]) -> str:
     """``a``, ``b`` and ``c``, in order, x₂ before x₁₀; past six names, "and 54 more"."""
-    shown = [f"`{unicode_name(name)}`" for name in sorted(names, key=_natural)]
-    if len(shown) > _LISTED:
-        return ", ".join(shown[: _LISTED - 1]) + f" and {len(shown) - _LISTED + 1} more"
-    return listed(shown)
+    quoted = [f"`{unicode_name(name)}`" for name in sorted(names, key=_natural)]
+    if len(quoted) > _LISTED:
+        return ", ".join(quoted[: _LISTED - 1]) + f" and {len(quoted) - _LISTED + 1} more"
+    return listed(quoted)
 
 
 def _natural(name: str) -> list:
