@@ -13,7 +13,8 @@ Commands:
 
 Exit statuses: 0 equivalent (or read, or all graded); 1 not equivalent (or validation
 failures); 2 invalid input or usage error; 3 undecided (set aside for a person); 4 some
-submissions could not be graded (listed; an export leaves them out).
+submissions could not be graded (listed; an export leaves them out); 130 interrupted (Ctrl-C);
+141 the reader of the output went away (`grader … | head`).
 """
 
 from __future__ import annotations
@@ -45,6 +46,7 @@ EXIT_INVALID = 2
 EXIT_UNDECIDED = 3
 EXIT_SOME_FAILED = 4
 EXIT_PIPE_CLOSED = 141  # as a shell reports a process stopped by SIGPIPE: `grader … | head`
+EXIT_INTERRUPTED = 130  # as a shell reports a process stopped by SIGINT: Ctrl-C
 _EXIT_BY_STATUS = {
     "equivalent": EXIT_OK,
     "not_equivalent": EXIT_WRONG,
@@ -474,6 +476,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         # Python would still flush at exit into the closed pipe; stdout goes nowhere now.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return EXIT_PIPE_CLOSED
+    except KeyboardInterrupt:
+        # Ctrl-C: what was written is whole (every output file is renamed into place), and a
+        # traceback would only hide that. `grader serve` catches its own, to say it stopped.
+        print("\ngrader: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     return status
 
 

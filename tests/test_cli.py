@@ -72,6 +72,30 @@ def test_a_reader_that_stops_early_gets_no_traceback():
     assert status == 141
 
 
+def test_ctrl_c_ends_a_command_with_status_130_and_no_traceback(capsys, monkeypatch):
+    def pressed(*_, **__):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("grader.cli.parse_answer", pressed)
+    assert main(["parse", "x"]) == 130
+    assert capsys.readouterr().err == "\ngrader: interrupted\n"
+
+
+def test_importing_grader_loads_nothing_heavy_until_a_name_is_used():
+    # What lets `grader` catch a Ctrl-C while sympy loads (grader/__main__.py).
+    script = (
+        "import sys, grader\n"
+        "assert 'sympy' not in sys.modules and 'pandas' not in sys.modules, 'loaded early'\n"
+        "from grader import compare, check\n"
+        "assert compare('x', 'x + 0', coords=['x']).equivalent and callable(check)\n"
+        "assert {'compare', 'parse_answer', 'AuthorError'} <= set(dir(grader))\n"
+        "try:\n    grader.no_such_name\nexcept AttributeError as error:\n    print(error)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert (done.returncode, done.stderr) == (0, "")
+    assert done.stdout == "module 'grader' has no attribute 'no_such_name'\n"
+
+
 L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
 COMPARE_EXITS = [
     # (arguments, exit status, first line)
