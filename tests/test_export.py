@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import os
+import signal
 import stat
 
 import pytest
@@ -156,6 +157,24 @@ def test_a_set_of_files_is_written_all_or_none(tmp_path):
     assert sorted(p.name for p in tmp_path.rglob("*") if p.is_file()) == ["a.csv", "b.csv"]  # no temporaries
     write_all_atomic({tmp_path / "a.csv": "new a"}, remove=[tmp_path / "sub" / "b.csv"])
     assert sorted(p.name for p in tmp_path.rglob("*") if p.is_file()) == ["a.csv"]
+
+
+def test_a_ctrl_c_among_the_renames_is_raised_once_every_file_is_in_place(tmp_path, monkeypatch):
+    write_all_atomic({tmp_path / "a.csv": "old a", tmp_path / "b.csv": "old b", tmp_path / "c.csv": "old c"})
+    replace = os.replace
+
+    def pressed_during_the_first(source, target):
+        if not pressed:
+            pressed.append(target)
+            signal.raise_signal(signal.SIGINT)  # handled before raise_signal returns, as a terminal's is
+        replace(source, target)
+
+    pressed = []
+    monkeypatch.setattr(os, "replace", pressed_during_the_first)
+    with pytest.raises(KeyboardInterrupt):
+        write_all_atomic({tmp_path / "a.csv": "new a", tmp_path / "b.csv": "new b"}, remove=[tmp_path / "c.csv"])
+    assert pressed == [tmp_path / "a.csv"]
+    assert sorted((p.name, p.read_text()) for p in tmp_path.iterdir()) == [("a.csv", "new a"), ("b.csv", "new b")]
 
 
 def test_files_are_written_with_the_permissions_the_umask_gives(tmp_path):

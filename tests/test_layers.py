@@ -15,7 +15,7 @@ import pytest
 
 PACKAGE = Path(__file__).resolve().parent.parent / "grader"
 LAYERS = {
-    "errors": 0, "bank": 1, "parse": 2, "judge": 3, "grade": 4,
+    "errors": 0, "interrupt": 0, "bank": 1, "parse": 2, "judge": 3, "grade": 4,
     "report": 5, "export": 5, "run": 6, "serve": 6, "cli": 7, "__main__": 8,
 }  # fmt: skip
 MODULES = sorted(path for path in PACKAGE.rglob("*.py") if path != PACKAGE / "__init__.py")

@@ -9,11 +9,13 @@ from __future__ import annotations
 import dataclasses
 import html
 import json
+import os
 import re
 import signal
 import subprocess
 import sys
 import threading
+import time
 import urllib.error
 import urllib.request
 
@@ -577,6 +579,28 @@ def test_grader_serve_prints_the_url_and_stops_cleanly_on_ctrl_c(tmp_path):
             process.kill()
     assert process.returncode == 0
     assert out == "\nstopped\n"
+
+
+@pytest.mark.parametrize("seconds", [0.1, 0.6, 1.2, 2.0, 3.0])
+def test_ctrl_c_while_grader_serve_starts_ends_it_without_a_traceback(tmp_path, seconds):
+    # While sympy loads, while the fork server preloads, while workers are handed the bank, or
+    # once the page is up: a terminal's Ctrl-C reaches every process of the group, as killpg does.
+    command = [sys.executable, "-m", "grader", "serve", "--port", "0", "--log", str(tmp_path / "log.jsonl")]
+    process = subprocess.Popen(
+        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True
+    )
+    try:
+        time.sleep(seconds)
+        os.killpg(process.pid, signal.SIGINT)
+        out, _ = process.communicate(timeout=60)
+    finally:
+        if process.poll() is None:
+            os.killpg(process.pid, signal.SIGKILL)
+    assert "Traceback" not in out
+    if process.returncode == 130:
+        assert out.endswith("\ngrader: interrupted\n")
+    else:
+        assert (process.returncode, out.endswith("\nstopped\n")) == (0, True), out
 
 
 def test_grader_serve_with_an_unknown_assignment_exits_2(capsys):

@@ -12,6 +12,8 @@ import tempfile
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
+from grader.interrupt import ctrl_c_deferred
+
 __all__ = ["write_all_atomic", "write_atomic"]
 
 
@@ -40,14 +42,15 @@ def write_all_atomic(
             if path in staged:  # given twice: the last content is the file's
                 staged.pop(path).unlink()
             staged[path] = _temporary(path, content)
-        for path, temporary in staged.items():
-            os.replace(temporary, path)
+        with ctrl_c_deferred():  # a Ctrl-C among the renames would leave old and new files mixed
+            for path, temporary in staged.items():
+                os.replace(temporary, path)
+            for path in remove:
+                if Path(path) not in staged:
+                    Path(path).unlink(missing_ok=True)
     finally:
         for temporary in staged.values():
             temporary.unlink(missing_ok=True)  # written but never renamed: the write failed
-    for path in remove:
-        if Path(path) not in staged:
-            Path(path).unlink(missing_ok=True)
     return list(staged)
 
 
