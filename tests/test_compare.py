@@ -4576,9 +4576,8 @@ def test_a_given_name_is_put_in_place_and_the_feedback_says_so(submitted, status
 
 
 _P_AS_P_THETA = (
-    "Read `p` as `p_θ`: the problem has one coordinate, so p is its momentum.",
-    "Read with the problem's own meaning of `p_θ`.",
-)
+    "Read `p` as `p_θ`, with the problem's own meaning: the problem has one coordinate, so p is its momentum.",
+)  # one note: a second, "Read with the problem's own meaning of `p_θ`", would say it again
 LONE_MOMENTUM = (
     ("p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", "equivalent", ("Correct.", *_P_AS_P_THETA)),
     ("H = p²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ", "equivalent", ("Correct.", *_P_AS_P_THETA)),

@@ -623,6 +623,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
     if used:
         # Neither the note nor the answer shown back says what p_θ stands for: another part
         # of the problem may ask for just that. The answer is shown as typed.
+        if momentum and ("p_read_as_momentum", {"momentum": unicode_name(momentum[1])}) in outcome.notes:
+            used = tuple(item for item in used if item[0].name != momentum[1])  # that note said so
         return _verdict(_with_given_note(outcome, used), typed)
     if constant:
         return _verdict(outcome, with_constant)  # shown with the constant the note says was left out
@@ -631,6 +633,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
 
 def _with_given_note(outcome: Outcome, used: tuple) -> Outcome:
     """``outcome`` with the note that the given names (p_θ) were read with the problem's meaning."""
+    if not used:
+        return outcome
     names = _listing([symbol.name for symbol, _ in used])
     return replace(outcome, notes=(*outcome.notes, ("given_read", {"names": names})))
 

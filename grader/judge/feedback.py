@@ -165,7 +165,10 @@ FEEDBACK: dict[str, str] = {
     "wrong_equations": "Your equations do not determine the right accelerations for {coords}.",
     "dependent_equations": "Your equations are not independent: they do not determine every acceleration.",
     "given_read": "Read with the problem's own meaning of {names}.",
-    "p_read_as_momentum": "Read `p` as `{momentum}`: the problem has one coordinate, so p is its momentum.",
+    "p_read_as_momentum": (
+        "Read `p` as `{momentum}`, with the problem's own meaning: the problem has one coordinate,"
+        " so p is its momentum."
+    ),
     "conserved_read": "`… = const` was read as a conserved quantity: what was compared is its time derivative,"
     " d/dt (…) = 0.",
     "vanishing_factor": "Your equation is right only where a factor of it is not zero: at rest, or where a"
