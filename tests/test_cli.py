@@ -89,6 +89,8 @@ def test_importing_grader_loads_nothing_heavy_until_a_name_is_used():
         "from grader import compare, check\n"
         "assert compare('x', 'x + 0', coords=['x']).equivalent and callable(check)\n"
         "assert {'compare', 'parse_answer', 'AuthorError'} <= set(dir(grader))\n"
+        "import grader.cli\n"
+        "assert 'pandas' not in sys.modules, 'grader check and serve write no CSV'\n"
         "try:\n    grader.no_such_name\nexcept AttributeError as error:\n    print(error)\n"
     )
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)

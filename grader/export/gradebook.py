@@ -22,8 +22,6 @@ import dataclasses
 import json
 from collections.abc import Sequence
 
-import pandas
-
 from grader.export import columns as c
 from grader.export.spreadsheet import csv_text
 from grader.grade.results import PartGrade, Student, SubmissionGrade
@@ -106,7 +104,7 @@ def gradebook_csv(grades: Sequence[SubmissionGrade], keys: Sequence[tuple[str, f
             | {c.PERCENT: round(100 * grade.score / possible[c.MAX], 2) if possible[c.MAX] else 0}
         )
     order = [c.STUDENT_ID, c.NAME, c.EMAIL, *(key for key, _ in keys), c.TOTAL, c.MAX, c.PERCENT, c.STATUS]
-    return csv_text(pandas.DataFrame(rows, columns=order))
+    return csv_text(rows, order)
 
 
 def scores_long_csv(grades: Sequence[SubmissionGrade]) -> str:
@@ -126,7 +124,7 @@ def scores_long_csv(grades: Sequence[SubmissionGrade]) -> str:
         for grade in grades
         for part in grade.parts
     ]
-    return csv_text(pandas.DataFrame(rows, columns=list(c.LONG)))
+    return csv_text(rows, c.LONG)
 
 
 def review_csv(grades: Sequence[SubmissionGrade]) -> str:
@@ -153,7 +151,7 @@ def review_csv(grades: Sequence[SubmissionGrade]) -> str:
         for grade in grades
         if grade.status == "error"
     ]
-    return csv_text(pandas.DataFrame(rows, columns=list(c.REVIEW)))
+    return csv_text(rows, c.REVIEW)
 
 
 # -- LMS imports ------------------------------------------------------------------------------
@@ -180,7 +178,7 @@ def canvas_csv(grades: Sequence[SubmissionGrade], *, assignment: str, assignment
                 column: f"{grade.score:.2f}",
             }
         )
-    return csv_text(pandas.DataFrame(rows, columns=[*c.CANVAS_IDENTITY, column]))
+    return csv_text(rows, [*c.CANVAS_IDENTITY, column])
 
 
 def moodle_csv(grades: Sequence[SubmissionGrade], *, assignment: str) -> str:
@@ -197,7 +195,7 @@ def moodle_csv(grades: Sequence[SubmissionGrade], *, assignment: str) -> str:
         }
         for grade in _graded(grades)
     ]
-    return csv_text(pandas.DataFrame(rows, columns=[c.MOODLE_IDENTITY, grade_column, feedback_column]))
+    return csv_text(rows, [c.MOODLE_IDENTITY, grade_column, feedback_column])
 
 
 def _graded(grades: Sequence[SubmissionGrade]) -> list[SubmissionGrade]:

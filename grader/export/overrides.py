@@ -21,8 +21,6 @@ import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-import pandas
-
 from grader.errors import GraderError
 from grader.export import columns as c
 from grader.export.spreadsheet import csv_text, typed
@@ -144,4 +142,4 @@ def apply_overrides(grades: Sequence[SubmissionGrade], overrides: Overrides) -> 
 def overrides_csv(overrides: Overrides) -> str:
     """overrides.csv: every override, as :func:`read_overrides` reads it back."""
     rows = [(student, key, points, comment) for (student, key), (points, comment) in overrides.items()]
-    return csv_text(pandas.DataFrame(rows, columns=list(c.OVERRIDE)))
+    return csv_text(rows, c.OVERRIDE)
