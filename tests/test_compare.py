@@ -5137,6 +5137,9 @@ def _misstated(statement: str, label: str) -> str:
         (L_PENDULUM, f"L = K + U = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = K + U", "L")),
         (L_PENDULUM, f"L = E = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = E", "L")),
         (L_PENDULUM, f"L = H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H", "L")),
+        # another quantity in the sum, written as the energies it is: 2V − E is V − T
+        (L_PENDULUM, f"L = 2V − E = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = -E + 2*V", "L")),
+        (SPHERICAL_H, f"H = 2L − T = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = 2*L - T", "H")),
         # H as the wrong combination of Σ p q̇ and L, in Unicode and in TeX
         (SPHERICAL_H, f"H = Σ p q̇ + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
          _misstated("H = L + Σ p q̇", "H")),
@@ -5220,6 +5223,9 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
         (SPHERICAL_H, rf"H = \sum_j p_j \dot q_j - L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (SPHERICAL_H, f"H = E = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (SPHERICAL_H, f"H = T + V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),  # the energy, where it is
+        (SPHERICAL_H, f"H = 2T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),  # T + V, where H is that
+        (SPHERICAL_H, f"E = 2T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
+        (L_PENDULUM, f"L = 2T − E = {L_TYPED}", "lagrangian", PENDULUM),
         (HOOP_H, f"H = Σ p q̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY),  # where it is not too
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
         (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it
@@ -5463,6 +5469,9 @@ def test_a_remark_with_commas_or_signs_that_closes_the_answer_goes_to_a_person(e
         (f"The Hamiltonian H = T + V is {HOOP_H_TYPED}",
          (_misstated("H = T + V", "H"), _chain("The Hamiltonian … is", "H = T + V"))),
         (f"H = T + V ⇒ H = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"),)),
+        # 2T − L is T + V, whatever T and V are: the same claim
+        (f"H = 2T − L = {HOOP_H_TYPED}", (_misstated("H = -L + 2*T", "H"),)),
+        (f"H = 2 T - L = {HOOP_H_TYPED}", (_misstated("H = -L + 2*T", "H"),)),
         # the energies as the label: not H's here
         (f"T + V = {HOOP_H_TYPED}",
          ("Your answer is labelled T + V, but the quantity asked for is H. Read as H, it is right; a person will"

@@ -842,8 +842,10 @@ def _definition_judged(label, side, expected: Expected, given: tuple = ()) -> bo
     if name in _ENERGY_SUMS:
         if _KINETIC_K.name not in expected.names:
             side = side.xreplace({_KINETIC_K: _KINETIC})
-        if _in_energies(side, expected.names):
-            return _energy_multiple(side, [name], sums) == 1  # where H is not the energy, no sum of T and V is H
+        in_energies = _others_in_energies(side, name, expected)
+        if _in_energies(in_energies, expected.names):
+            # where H is not the energy, no sum of T and V is H: nor is 2T − L, which is T + V
+            return _energy_multiple(in_energies, [name], sums) == 1
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
             # L = E, L = H, H = L are wrong; H = E is right where H is the energy
             return name == side.name or (name in sums and sums[name] == sums.get(side.name))
@@ -1358,6 +1360,18 @@ _NOT_ENERGY_SUMS = {name: value for name, value in _ENERGY_SUMS.items() if name 
 def _energy_sums(expected: Expected) -> Mapping:
     """The sums of the energies that name a quantity here: H is T + V unless the part says it is not."""
     return _ENERGY_SUMS if expected.option("h_is_energy", True) else _NOT_ENERGY_SUMS
+
+
+def _others_in_energies(side, name: str, expected: Expected):
+    """``side`` with the other quantities it names written as the energies they are here: L as T − V,
+    E as T + V, and H as T + V where it is the energy. ``H = 2T − L`` says H = T + V, which a rotating
+    hoop's H is not, and ``L = 2T − H`` says L = T − V where H is the energy. A lone name stays, for
+    :func:`_definition_judged` to judge as a name (L = E, H = L)."""
+    if side.is_Symbol:
+        return side
+    sums = _energy_sums(expected)
+    swaps = {sympy.Symbol(other): sums[other] for other in sums if other != name and other not in expected.names}
+    return side.xreplace(swaps)
 
 
 def _in_energies(side, defined: set[str]) -> bool:
