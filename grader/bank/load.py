@@ -18,13 +18,24 @@ from grader.bank.schema import Assignment, BankError, Problem, assignment_from_d
 __all__ = ["default_bank_path", "load_assignment", "load_bank", "load_problem", "read_yaml"]
 
 MAX_FILE_BYTES = 1_000_000  # a problem is a page, not a data dump
+# Values in a file once its aliases are expanded: the bank's largest problem has under 1,000. Nine
+# anchors, each a list of nine aliases of the one before, are 9⁹ values from 200 bytes.
+MAX_VALUES = 100_000
 
 
 def read_yaml(path: Path) -> tuple[object, dict[tuple, int]]:
-    """The file's data (safe YAML: no Python objects) and the 1-based line of each field."""
+    """The file's data (safe YAML: no Python objects) and the 1-based line of each field.
+
+    Raises:
+        BankError: not YAML; nested deeper than the reader's stack; more than MAX_VALUES values
+            once aliases are expanded; or a key twice in one mapping, where YAML would silently
+            keep the last (a part's second ``answer:`` would replace its first).
+    """
     text = _read_text(path)
     try:
         node = yaml.compose(text, Loader=yaml.SafeLoader)
+        lines: dict[tuple, int] = {}
+        _index(node, (), lines, [0], path)
         data = yaml.safe_load(text)
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
@@ -32,8 +43,8 @@ def read_yaml(path: Path) -> tuple[object, dict[tuple, int]]:
         raise BankError(
             f"this is not valid YAML: {getattr(error, 'problem', error)}", path=str(path), line=line
         ) from None
-    lines: dict[tuple, int] = {}
-    _index(node, (), lines)
+    except RecursionError:  # [[[[…: PyYAML reads nesting by recursion
+        raise BankError("the file is nested too deeply to read", path=str(path)) from None
     return data, lines
 
 
@@ -48,18 +59,32 @@ def _read_text(path: Path) -> str:
         raise BankError(f"cannot read the file: {error.strerror}", path=str(path)) from None
 
 
-def _index(node, location: tuple, lines: dict) -> None:
+def _index(node, location: tuple, lines: dict, count: list[int], path: Path) -> None:
+    """Record each field's line in ``lines``, counting values in ``count`` as aliases expand them."""
     if node is None:
         return
+    count[0] += 1
+    if count[0] > MAX_VALUES:
+        raise BankError(f"the file holds more than {MAX_VALUES} values once its aliases are expanded", path=str(path))
     lines[location] = node.start_mark.line + 1
     if isinstance(node, yaml.MappingNode):
+        seen: dict[object, int] = {}
         for key, value in node.value:
-            lines[(*location, key.value)] = key.start_mark.line + 1
-            _index(value, (*location, key.value), lines)
-            lines[(*location, key.value)] = key.start_mark.line + 1
+            line = key.start_mark.line + 1
+            if key.value in seen and key.tag != "tag:yaml.org,2002:merge":
+                raise BankError(
+                    f"field {key.value!r} is given a second time (first on line {seen[key.value]}); YAML"
+                    " would silently keep only the last",
+                    path=str(path),
+                    line=line,
+                )
+            seen[key.value] = line
+            lines[(*location, key.value)] = line
+            _index(value, (*location, key.value), lines, count, path)
+            lines[(*location, key.value)] = line
     elif isinstance(node, yaml.SequenceNode):
         for index, item in enumerate(node.value):
-            _index(item, (*location, index), lines)
+            _index(item, (*location, index), lines, count, path)
 
 
 def default_bank_path() -> Path:
