@@ -295,6 +295,9 @@ def _read_answers(path: Path) -> dict[str, str] | None:
     except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
         print(f"grader check: cannot read {path}: {error}", file=sys.stderr)
         return None
+    except RecursionError:  # [[[[…: PyYAML reads nesting by recursion
+        print(f"grader check: cannot read {path}: it is nested too deeply", file=sys.stderr)
+        return None
     if not isinstance(data, dict):
         print(f"grader check: {path} must map problem.part to an answer", file=sys.stderr)
         return None

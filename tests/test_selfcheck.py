@@ -181,6 +181,7 @@ BAD_FILES = [
     ("- just\n- a list\n", "must map problem.part to an answer"),
     ("plane-pendulum.lagrangian: {a: 1}\n", "the answer to plane-pendulum.lagrangian must be text"),
     ("plane-pendulum.nope: x\n", "problem 'plane-pendulum' has no part 'nope'"),
+    ("a: " + "[" * 3000 + "]" * 3000 + "\n", "cannot read"),  # deeper than PyYAML's recursion: no traceback
 ]
 
 
