@@ -75,6 +75,20 @@ def test_a_folder_of_answer_files_is_read(tmp_path):
     assert str(issues[1]).startswith(f"{tmp_path / 's3.yaml'}: cannot be read")
 
 
+def test_a_part_answered_twice_in_one_file_is_reported_with_the_answer_read(tmp_path):
+    twice = f"id: s1\nanswers:\n  plane-pendulum.lagrangian: '{PENDULUM_L}'\n  plane-pendulum.lagrangian: '0'\n"
+    (tmp_path / "s1.yaml").write_text(twice)
+    (tmp_path / "s2.json").write_text('{"id": "s2", "answers": {"plane-pendulum.lagrangian": "1",'
+                                      ' "plane-pendulum.lagrangian": "2"}}')  # fmt: skip
+    (tmp_path / "s3.yaml").write_text("id: s3\nanswers:\n  plane-pendulum.lagrangian: '1'\n")  # once: no issue
+    submissions, issues = read_submissions(tmp_path, ["plane-pendulum.lagrangian"])
+    assert [s.answers["plane-pendulum.lagrangian"] for s in submissions] == ["0", "2", "1"]  # as YAML and JSON read
+    assert [str(issue) for issue in issues] == [
+        f"{tmp_path / 's1.yaml'}, line 4: 'plane-pendulum.lagrangian' is given twice; the last one is read",
+        f"{tmp_path / 's2.json'}: 'plane-pendulum.lagrangian' is given twice; the last one is read",
+    ]
+
+
 def test_a_cell_longer_than_the_csv_modules_limit_is_read_and_cut(tmp_path):
     path = tmp_path / "class.csv"
     path.write_text(f"id,plane-pendulum.lagrangian\ns1,{'x' * 140_000}\ns2,{PENDULUM_L}\n", encoding="utf-8")

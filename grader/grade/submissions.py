@@ -394,7 +394,7 @@ def _read_folder(folder: Path, keys: set[str]) -> tuple[list[Submission], list[I
             text = _decoded(path, path.read_bytes(), issues)
             garbled_file = _NOT_UTF8.search(text) is not None
             text = _NOT_UTF8.sub("\ufffd", text)  # YAML refuses the stand-ins, and JSON would keep them
-            data = json.loads(text) if path.suffix.lower() == ".json" else yaml.safe_load(text)
+            data, repeated = _loaded(text, json_file=path.suffix.lower() == ".json")
         except (OSError, ValueError, yaml.YAMLError) as error:
             issues.append(InputIssue(where, f"cannot be read: {error}"))
             continue
@@ -409,6 +409,9 @@ def _read_folder(folder: Path, keys: set[str]) -> tuple[list[Submission], list[I
             issues.append(InputIssue(where, "id, name and email must each be text"))
             continue
         student_id = str(identity["id"] or path.stem).strip()
+        for key, line in repeated:
+            at = f"{where}, line {line}" if line else where
+            issues.append(InputIssue(at, f"{str(key)[:80]!r} is given twice; the last one is read"))
         answers, garbled = {}, set()
         for key, value in data.get("answers", {}).items():
             if key not in keys:
@@ -428,6 +431,41 @@ def _read_folder(folder: Path, keys: set[str]) -> tuple[list[Submission], list[I
         student = Student(student_id, str(identity["name"] or ""), str(identity["email"] or ""))
         submissions.append(Submission(student, answers, where, frozenset(garbled)))
     return submissions, issues
+
+
+class _RepeatsNoted(yaml.SafeLoader):
+    """Safe YAML that notes each key given twice in one mapping, of which YAML keeps the last silently."""
+
+    def __init__(self, stream):
+        super().__init__(stream)
+        self.repeated: list[tuple[object, int | None]] = []
+
+    def construct_mapping(self, node, deep=False):
+        seen = set()
+        for key, _ in node.value:
+            if isinstance(key, yaml.ScalarNode) and key.value in seen:
+                self.repeated.append((key.value, key.start_mark.line + 1))
+            seen.add(key.value if isinstance(key, yaml.ScalarNode) else id(key))
+        return super().construct_mapping(node, deep)
+
+
+def _loaded(text: str, *, json_file: bool) -> tuple[object, list[tuple[object, int | None]]]:
+    """A submission file's data, and each key it gives twice in one mapping (with its line, in YAML):
+    a part answered twice, of which only the last would otherwise be seen."""
+    repeated: list[tuple[object, int | None]] = []
+    if json_file:
+
+        def noted(pairs):
+            keys = [key for key, _ in pairs]
+            repeated.extend((key, None) for index, key in enumerate(keys) if key in keys[:index])
+            return dict(pairs)
+
+        return json.loads(text, object_pairs_hook=noted), repeated
+    loader = _RepeatsNoted(text)
+    try:
+        return loader.get_single_data(), loader.repeated
+    finally:
+        loader.dispose()
 
 
 def _without_duplicates(submissions: list[Submission], issues: list[InputIssue]):
