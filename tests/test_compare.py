@@ -4860,6 +4860,27 @@ def test_a_right_value_under_another_quantitys_name_goes_to_a_person(submitted, 
 
 
 @pytest.mark.parametrize(
+    ("submitted", "status", "first"),
+    [
+        # ∂V/∂θ is −Q_θ: a right value under it is for a person, a wrong one is wrong; both name it as typed
+        ("∂V/∂θ = −m g r sin θ", "undecided",
+         "Your answer is labelled ∂V/∂θ, but the quantity asked for is Q_θ. Read as Q_θ, it is right; a person will"
+         " check which you meant."),
+        ("∂V/∂θ = m g r sin θ", "not_equivalent", "Your answer is labelled ∂V/∂θ, but the quantity asked for is Q_θ."),
+        ("∂T/∂θ̇ = −m g r sin θ", "undecided",
+         "Your answer is labelled ∂T/∂θ̇, but the quantity asked for is Q_θ. Read as Q_θ, it is right; a person will"
+         " check which you meant."),
+    ],
+)  # fmt: skip
+def test_a_label_that_is_a_partial_derivative_is_shown_as_typed(submitted, status, first):
+    # before: "labelled dV_dtheta", the parser's own name for it
+    (answer, setting) = Q_THETA
+    verdict = compare(answer, submitted, **setting)
+    assert verdict.status == status
+    assert first in verdict.feedback
+
+
+@pytest.mark.parametrize(
     ("submitted", "status"),
     [
         ("m l² sin²θ φ̇ = p_φ", "equivalent"),  # before: p_φ was not defined

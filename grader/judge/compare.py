@@ -765,9 +765,9 @@ def _shown_statement(statement: sympy.Eq) -> str:
     product of its sum's symbol."""
     replacements = {}
     for symbol in statement.rhs.free_symbols:
-        found = re.fullmatch(r"d([LTVU])_d(\w+?)(dot)?", symbol.name)
-        if found:
-            replacements[symbol] = sympy.Symbol(f"∂{found[1]}/∂{unicode_name(found[2], 1 if found[3] else 0)}")
+        shown = _quotient_shown(symbol.name)
+        if shown:
+            replacements[symbol] = sympy.Symbol(shown)
     terms = []
     for term in sympy.Add.make_args(statement.rhs.xreplace(replacements)):
         if any(symbol.name in _SUMS for symbol in term.free_symbols):
@@ -776,6 +776,13 @@ def _shown_statement(statement: sympy.Eq) -> str:
             term = coefficient * sympy.Symbol("Σ " + to_text(rest).replace("*", " "))
         terms.append(term)
     return to_text(sympy.Eq(statement.lhs, sympy.Add(*terms), evaluate=False))
+
+
+def _quotient_shown(name: str) -> str | None:
+    """``∂V/∂θ`` for the name the parser reads it as, ``dV_dtheta``, and ``∂L/∂φ̇`` for ``dL_dphidot``;
+    None for any other name."""
+    found = re.fullmatch(r"d([LTVU])_d(\w+?)(_?dot)?", name)
+    return f"∂{found[1]}/∂{unicode_name(found[2], 1 if found[3] else 0)}" if found else None
 
 
 def _said_wrong(submitted: str, expected: Expected) -> tuple[str, str] | None:
@@ -1343,9 +1350,8 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
     if _is_asked(label, names):
         return None  # pφ for p_φ, and p
-    definition = MOMENTUM_DEFINED.fullmatch(label)  # ∂L/∂φ̇ = …: p_φ by its definition
     described = expected.setting.describe
-    said = f"∂L/∂{unicode_name(definition[1], 1)}" if definition else described([label])
+    said = _quotient_shown(label) or described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed
     return ("label_for_a_person", {"label": said, "name": described(names[:1])})  # ω, not w too
 
 
