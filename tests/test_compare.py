@@ -5360,6 +5360,13 @@ def _defined_before(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
 
 
+def _unused(words: str, definition: str) -> str:
+    return (
+        f"Read without the words `{words}`: your `{definition}` is not used in the formula after it, which was"
+        " graded as it stands."
+    )
+
+
 _HOOP_IN_P = "p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ"
 _HOOP_P = "p_θ = m R² θ̇"
 # a sentence that defines a name, then the answer in it: before, refused for its colon, or its words undefined
@@ -5391,6 +5398,31 @@ DEFINITION_BEFORE = (
      ("Correct.", _defined_before("With", "ω² = g/l"))),
     (EOM_PENDULUM, "With ω² = l/g: θ̈ + ω² sin θ = 0", {**PENDULUM, "kind": "equation"}, "not_equivalent",
      ("A term differs: the term in sin(θ) has the wrong factor.", _defined_before("With", "ω² = l/g"))),
+    # `Let` defines as `With` does, and a full stop then `Then` hands over: before, `:` refused, or Let undefined
+    ("sqrt(g/l)", "Let x = g: ω = √(x/l)", PENDULUM, "equivalent", ("Correct.", _defined_before("Let", "x = g"))),
+    ("sqrt(g/l)", "Let x = g: ω = √(x/(2 l))", PENDULUM, "not_equivalent",
+     ("Your answer is off by a constant factor: missing a factor √2?", _defined_before("Let", "x = g"))),
+    ("sqrt(g/l)", "Let ω₀² = g/l, then ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("Let … then", "ω₀² = g/l"))),
+    ("sqrt(g/l)", "Let ω₀² = l/g, then ω = ω₀", PENDULUM, "not_equivalent",
+     ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
+      _defined_before("Let … then", "ω₀² = l/g"))),
+    (HOOP_H, f"Let {_HOOP_P}. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("Let … Then", _HOOP_P))),
+    (HOOP_H, f"Let p_θ = m R θ̇. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.",
+      _defined_before("Let … Then", "p_θ = m R θ̇"))),
+    # a name of the student's own the formula does not use: the formula alone, said so (before, M undefined)
+    (ATWOOD_A, "With M = m₁ + m₂: ẍ = g (m₁ − m₂)/(m₁ + m₂)", ATWOOD, "equivalent",
+     ("Correct.", _unused("With", "M = m₁ + m₂"))),
+    (ATWOOD_A, "With M = m₁ + m₂: ẍ = g (m₁ + m₂)/(m₁ − m₂)", ATWOOD, "not_equivalent",
+     ("Your answer depends on g as the right answer does, but on m₁ and m₂ in another way: check how your answer"
+      " depends on m₁ and m₂.", _unused("With", "M = m₁ + m₂"))),
+    (ATWOOD_A, "Let M = m₁ + m₂. Then ẍ = g (m₁ − m₂)/(m₁ + m₂)", ATWOOD, "equivalent",
+     ("Correct.", _unused("Let … Then", "M = m₁ + m₂"))),
+    (ATWOOD_A, "Let M = m₁ + m₂. Then ẍ = g (m₁ − m₂)/(m₁ − m₂)", ATWOOD, "not_equivalent",
+     ("Your answer depends on g as the right answer does, but not on m₁ and m₂: check how your answer depends on"
+      " m₁ and m₂.", _unused("Let … Then", "M = m₁ + m₂"))),
 )  # fmt: skip
 
 
@@ -5490,6 +5522,12 @@ P_THETA = {**PENDULUM, "name": "p_theta"}
          ("Correct.", _chain("With", "L = T − V"))),
         (L_PENDULUM, f"Using L = T − V, L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
          ("Correct.", _chain("Using", "L = T − V"))),
+        (L_PENDULUM, f"Let L = T − V: L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Let", "L = T − V"))),
+        (L_PENDULUM, f"Let L = T − V. Then L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Let … Then", "L = T − V"))),
+        (L_PENDULUM, f"Let L = T + V. Then L = {L_TYPED}", "lagrangian", PENDULUM, "undecided",
+         (_misstated("L = T + V", "L"), _chain("Let … Then", "L = T + V"))),
         (L_PENDULUM, f"Since L = T − V, we have L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
          ("Correct.", _chain("Since … we have", "L = T − V"))),
         (L_PENDULUM, f"Given L = K − U we get {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
@@ -5537,7 +5575,9 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
     expected, submitted, kind, options, status, feedback
 ):
     verdict = compare(expected, submitted, kind=kind, **options)
-    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+    # a right value after a wrong definition keeps its credit until a person has read it
+    right = status in ("equivalent", "undecided")
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(right), feedback)
 
 
 _P_PHI_WORKED = "½ m l² sin²θ · 2φ̇"

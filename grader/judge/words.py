@@ -364,8 +364,9 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
 # small, …", "For small angles, …"): what that sets is not the formula's, and is read as typed.
 _METHOD = frozenset({"from", "using", "applying", "by"})
 # words that begin a sentence stating what the quantity is before its value: "Since L = T − V, L = …",
-# "The Lagrangian L = T − V is …", "With L = T − V: L = …". Again not a condition ("If L = …").
-_STATING = _METHOD | {"since", "as", "because", "with", "given", "here", "the", "our", "this"}
+# "The Lagrangian L = T − V is …", "With L = T − V: L = …", "Let L = T − V. Then L = …". Again not a
+# condition ("If L = …").
+_STATING = _METHOD | {"since", "as", "because", "with", "given", "here", "the", "our", "this", "let"}
 # words that hand over from a definition to the value: "…, we have L = …", "…, so L = …"; the words
 # between are these alone (not "…, the Hamiltonian is …", which may say the value is another quantity's)
 _HANDS_OVER_TO_VALUE = _HANDING_OVER | IMPLYING_WORDS | {"then", "that"}
@@ -426,6 +427,7 @@ def definition_before_formula(
     return said, f"{left} = {side}", value
 
 
+_FULL_STOP = re.compile(r"(?<![.\d])\.$")  # not 2. nor …: a number's point, an ellipsis
 _SQUARED = re.compile(r"\s*(?:²|\^\s*2|\^\s*\{\s*2\s*\}|\*\*\s*2)\s*$")
 
 
@@ -445,6 +447,8 @@ def _defining_sentence(text: str, names: Collection[str], coords: Collection[str
     left = text[start:equals].strip()
     stop = _stop(text, equals + 1, names, coords)
     side = text[equals + 1 : stop].strip() if stop is not None else ""
+    if stop is not None and text[stop] not in ",;:=":
+        side = _FULL_STOP.sub("", side)  # Let p_θ = m R² θ̇. Then H = …: the sentence's full stop, not the side's
     if not side or any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
         return None  # L = T − V (not T + V): words in the definition may make it another
     if text[stop] == "=":  # Since L = T − V = …: the chain as typed
