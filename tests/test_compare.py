@@ -4408,16 +4408,45 @@ def test_a_decimal_comma_is_read_as_a_point_in_a_number(submitted, status, read_
     assert compare("x", "1,5", known=["x"]).status == "invalid"
 
 
+_COMMA_REFUSED = (
+    "A comma is not understood here. Write decimals with a point (0.5); list equations as [eq1, eq2] or on separate"
+    " lines."
+)
 _FREQUENCY = "sqrt(9.81)/(2*pi)"  # hertz, for l = 1 m and g = 9.81 m/s²
 ZERO_DECIMAL_COMMA = (
     # a thousands separator never follows a lone 0: 0,498 can only be 0.498
     (_FREQUENCY, "Hz", "0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
     (_FREQUENCY, "Hz", "-0,498", "not_equivalent",
      ("Not within the accepted tolerance.", "Read `-0,498` as -0.498: a decimal comma.")),
+    # T's value, named, is read as T = 2.01 s is: before, also said to be "the number", the rest (T) not graded
     (PERIOD, "s", "T = 2,01 s, f = 0,498 Hz", "equivalent",
-     ("Correct.", "Read `2,01` as 2.01: a decimal comma.", "Graded the number `2,01 s`; the rest of your answer is"
-      " not graded.", "Graded `T = 2,01 s`, your value in s; the rest of your answer (`f = 0,498 Hz`) is not graded.")),
+     ("Correct.", "Read `2,01` as 2.01: a decimal comma.", "Graded `T = 2,01 s`, your value in s; the rest of your"
+      " answer (`f = 0,498 Hz`) is not graded.")),
+    (PERIOD, "s", "T = 2,01 s", "equivalent", ("Correct.", "Read `2,01` as 2.01: a decimal comma.")),
+    (PERIOD, "s", "T = 2,21 s", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `2,21` as 2.21: a decimal comma.")),
 )  # fmt: skip
+
+# a decimal comma inside the arithmetic that gives the number: before, refused ("A comma…"), or 1/0,498 said to divide
+# by zero; each comma read as one alone is, and the answer as typed where any comma may be a list's or thousands'
+ARITHMETIC_DECIMAL_COMMA = (
+    (PERIOD, "2π/√9,81", "equivalent", ("Correct.", "Read `9,81` as 9.81: a decimal comma.")),
+    (PERIOD, "2π/√9,18", "not_equivalent", ("Not within the accepted tolerance.", _comma("9,18"))),
+    (PERIOD, "2π √(1,00/9,81) s", "equivalent", ("Correct.", _comma("1,00 and 9,81"))),
+    (PERIOD, "2π √(1,00/9,81) ms", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `1,00 and 9,81` as 1.00 and 9.81: a decimal comma.",
+      "Read as 0.00200607 s.")),
+    (PERIOD, "1/0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
+    (PERIOD, "1/0,489", "not_equivalent", ("Not within the accepted tolerance.", _comma("0,489"))),
+    (PERIOD, "2π/√9,810", "invalid", (_COMMA_REFUSED,)),  # 9810 in English
+    (PERIOD, "2π/√9,81, 3", "invalid", (_COMMA_REFUSED,)),  # a list
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), ARITHMETIC_DECIMAL_COMMA)
+def test_a_decimal_comma_inside_the_arithmetic_of_a_number_is_read_as_a_point(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="number", rtol=0.005, unit="s")
+    assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
 @pytest.mark.parametrize(("expected", "unit", "submitted", "status", "feedback"), ZERO_DECIMAL_COMMA)

@@ -210,6 +210,8 @@ HOSTILE = [
     ("ω = √(g/l) = 3.13", "too_many_equals"),
     ("x = 1; m g", "not_an_equation"),  # an expression only first, before the definitions of its names
     ("9,81 θ + l = 0", "comma"),  # a decimal comma, not an expression and a definition
+    ("1/0,498", "comma"),  # a decimal comma: no division by zero, as said before
+    ("m g/0,5", "comma"),
     ("p = m g =", "unexpected_end"),  # a label, a side, and nothing after the last `=`
     ("m θ = m =", "unexpected_end"),
     ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),

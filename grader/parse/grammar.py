@@ -213,6 +213,19 @@ class _Parser:
             self.fail_here()
         self.advance()
 
+    def _decimal_comma_next(self) -> None:
+        """Refuse the comma of ``1/0,498``, where the 0 just read is a number's whole part: not 1/0."""
+        comma = self.token
+        after = self.tokens[self.i + 1] if self.i + 1 < len(self.tokens) else comma
+        last = self.tokens[self.i - 1]
+        if (
+            comma.is_op(",")
+            and after.kind == "num"
+            and last.kind == "num"
+            and last.end == comma.start == after.start - 1
+        ):
+            raise ParseFailure("comma", comma.start, comma.end)
+
     def fail_here(self):
         token = self.token
         if token.kind == "partial":
@@ -589,6 +602,7 @@ class _Parser:
                     factor *= self.factor()  # p²/2m, mg/2l: over 2m and 2l, as over lsinθ; but 1/2m is ½ m
                 if token.value == "/":
                     if factor == 0:
+                        self._decimal_comma_next()
                         raise ParseFailure("division_by_zero", token.start, token.end)
                     factor = _power(factor, sympy.Integer(-1), token)
                 factors.append(factor)
