@@ -1122,9 +1122,48 @@ GENERAL_FORM = (
         ("d/dt(∂L/∂x) − ∂L/∂ẋ = 0", "invalid",
          ("This is not Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q = 0, nor an equation of motion of this system:"
           " give the equation of motion, worked out for this system.",)),
+        # Rayleigh's term on the right: before, refused for its `∂` ("read only in the name of …")
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ", "invalid", (GENERAL_FORM.format("`L` and `F`"),)),
+        (r"\frac{d}{dt}\frac{\partial L}{\partial \dot x} - \frac{\partial L}{\partial x}"
+         r" = -\frac{\partial \mathcal{F}}{\partial \dot x}", "invalid",
+         (GENERAL_FORM.format("`L` and `\\mathcal{F}`"),)),
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ", "invalid",  # of the wrong sign
+         ("This is not Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q = 0, nor an equation of motion of this system:"
+          " give the equation of motion, worked out for this system.",)),
     ],
 )  # fmt: skip
 def test_lagranges_equation_in_general_form_alone_is_asked_to_be_worked_out(submitted, status, feedback):
+    verdict = compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **DAMPED)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+def _general_read_past(words: str) -> str:
+    return f"Read without the words before it, `{words}`: the formula is what is graded."
+
+
+_RAYLEIGH_RIGHT = "d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ"
+# Lagrange's equation with Rayleigh's term on the right, then the equation it comes to, graded as the form
+# with it on the left is: before, refused for its `∂`
+GENERAL_FORM_THEN_EQUATION = (
+    (f"{_RAYLEIGH_RIGHT}, m ẍ + b ẋ + k x = 0", "equivalent", ("Correct.", _general_read_past(f"{_RAYLEIGH_RIGHT},"))),
+    (f"{_RAYLEIGH_RIGHT}, m ẍ − b ẋ + k x = 0", "not_equivalent",
+     ("A term differs: the velocity-dependent term in ẋ has the wrong sign.",
+      _general_read_past(f"{_RAYLEIGH_RIGHT},"))),
+    (f"{_RAYLEIGH_RIGHT}\nm ẍ + b ẋ + k x = 0", "equivalent", ("Correct.", _general_read_past(_RAYLEIGH_RIGHT))),
+    (f"Using {_RAYLEIGH_RIGHT} we get m ẍ + b ẋ + k x = 0", "equivalent",
+     ("Correct.", _general_read_past(f"Using {_RAYLEIGH_RIGHT} we get"))),
+    # Rayleigh's term of the wrong sign is no Lagrange's equation: a right equation after it goes to a person
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ, m ẍ + b ẋ + k x = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ,"))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), GENERAL_FORM_THEN_EQUATION)
+def test_lagranges_equation_with_rayleighs_term_on_the_right_then_the_equation_grades_the_equation(
+    submitted, status, feedback
+):
     verdict = compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **DAMPED)
     assert (verdict.status, verdict.feedback) == (status, feedback)
 

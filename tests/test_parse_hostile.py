@@ -290,6 +290,8 @@ FORMERLY_ACCEPTED = [
     ("d/dt(∂V/∂θ̇) − ∂V/∂θ = 0", "euler_lagrange_other"),
     ("d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ = 0", "euler_lagrange_other"),  # Rayleigh's term of the wrong sign
     ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂θ̇ = 0", "euler_lagrange_other"),  # of another coordinate
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ", "euler_lagrange_general"),  # Rayleigh's term on the right
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ", "euler_lagrange_other"),  # on the right, of the wrong sign
     # a power on a bare angle was read as sin(θ²); who writes it in a Lagrangian mostly means sin²θ
     ("sin θ^2", "function_argument_power"),
     ("ω^2 sin θ² + 1", "function_argument_power"),

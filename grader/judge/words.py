@@ -57,7 +57,7 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
-from grader.judge.euler_lagrange import euler_lagrange
+from grader.judge.euler_lagrange import euler_lagrange, moved_left
 from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
@@ -497,6 +497,9 @@ def euler_lagrange_then_formula(
     stop = _stop(text, equals + 1, names, coords, stops=",;:\n")  # the operator's line, then the equation's
     side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
     between: list[str] = []
+    moved = moved_left(operator, side) if side != "0" else None
+    if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, as = 0 with it on the left
+        operator, side = moved, "0"
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
         after = equals + 1
     elif stop is None or text[stop] == "=":

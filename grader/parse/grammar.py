@@ -359,14 +359,18 @@ class _Parser:
             # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0: the operator, then the equation it gives
             operator, terms = found
             self.i = operator + 1
-            lhs = self.over()
+            moved = self._dissipation_moved(operator + 1)
+            if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, alone
+                self.i, sign, name = moved
+                terms = [*terms, ("+" if sign == "-" else "-", name)]
+            lhs = self.over() if moved is None else sympy.Integer(0)
             if not self.token.is_op("="):
                 if self.token.kind == "end" and TIME not in lhs.free_symbols:
                     # d/dt(∂L/∂ẋ) − ∂L/∂x = 0 (or = Q) alone: no equation of this system, not the expression 0
                     code = "euler_lagrange_general" if _is_lagrange(terms) else "euler_lagrange_other"
                     raise ParseFailure(
                         code, first.start, self.tokens[self.i - 1].end,
-                        functions=self._operator_functions(start, operator),
+                        functions=self._operator_functions(start, self.i if moved else operator),
                     )  # fmt: skip
                 return first, lhs  # what the operator comes to, without "= 0": an expression
             self.advance()
@@ -486,6 +490,16 @@ class _Parser:
         if force is None or not tokens[force[0]].is_op("="):
             return None
         return force[0], terms
+
+    def _dissipation_moved(self, i: int) -> tuple[int, str, str] | None:
+        """``−∂F/∂ẋ`` at ``i``, the whole right side of an Euler–Lagrange operator's ``=``: the position
+        after it, its sign and its name (``dF_dxdot``); None where the side is anything else."""
+        tokens = self.tokens
+        sign = tokens[i].value if tokens[i].is_op("+", "-") else "+"
+        quotient = self._partial_quotient(i + (sign != "+" or tokens[i].is_op("+")))
+        if quotient is None or tokens[quotient[0]].kind != "end":
+            return None
+        return quotient[0], sign, quotient[1]
 
     def _operator_functions(self, start: int, end: int) -> str:
         """The functions an Euler–Lagrange operator between ``start`` and ``end`` differentiates, as
