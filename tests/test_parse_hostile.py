@@ -306,6 +306,26 @@ def test_formerly_accepted_input_is_refused_with_its_code(text, code):
         assert _refusal(text).code == code
 
 
+# a name of the problem's (or a Greek letter's) that begins with d is no Leibniz numerator: delta/dt is δ over
+# dt, refused as any name over dt is; before, read as d(elta)/dt and "elta is not a coordinate of this problem"
+NAMES_BEGINNING_WITH_D = [
+    # (text, coords, known)
+    ("delta/dt", ["delta"], []),
+    ("δ/dt", ["delta"], ["m"]),
+    ("m delta/dt = 0", ["theta"], ["m"]),
+    ("delta/dt", ["x"], ["delta"]),
+    ("dm/dt", ["x"], ["dm"]),  # a known symbol's own name
+]
+
+
+@pytest.mark.parametrize(("text", "coords", "known"), NAMES_BEGINNING_WITH_D)
+def test_a_name_that_begins_with_d_over_dt_is_no_derivative(text, coords, known):
+    refusal = parse_answer(text, coords=coords, known=known)
+    assert (refusal.ok, refusal.code) == (False, "leibniz"), refusal
+    # the derivative itself, d then the coordinate's name, is read as before
+    assert str(parse_answer("ddelta/dt + dδ/dt", coords=["delta"]).value) == "2*Derivative(delta(t), t)"
+
+
 # -- what the student reads ----------------------------------------------------
 
 SHOWN = [

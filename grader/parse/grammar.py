@@ -40,6 +40,7 @@ from grader.parse.names import (
     CONSTANT_WORDS,
     FUNCTION_NAMES,
     GREEK_BY_LETTER,
+    GREEK_NAMES,
     JOINING_WORDS,
     canonical_name,
     is_arbitrary_constant,
@@ -1166,14 +1167,14 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
     """
     if {"d", "dt"} & set(context.known) or not any(_is_raw(token, "dt") or _is_raw(token, "t") for token in tokens):
         return tokens  # no dt (nor d t) anywhere: nothing to rewrite
-    return _leibniz_in(tokens, context.coords)
+    return _leibniz_in(tokens, context.coords, context.known)
 
 
-def _leibniz_in(tokens: list[Token], coords: Collection[str]) -> list[Token]:
+def _leibniz_in(tokens: list[Token], coords: Collection[str], known: Collection[str] = ()) -> list[Token]:
     out: list[Token] = []
     i = 0
     while i < len(tokens):
-        found = _leibniz_at(tokens, i, coords)
+        found = _leibniz_at(tokens, i, coords, known)
         if found is None:
             out.append(tokens[i])
             i += 1
@@ -1181,7 +1182,7 @@ def _leibniz_in(tokens: list[Token], coords: Collection[str]) -> list[Token]:
         order, target, end = found
         out.append(Token("deriv", (order, bool(target)), tokens[i].start, tokens[end - 1].end))
         if len(target) > 3:  # d(m d(x)/dt)/dt: a bracket read whole may hold Leibniz's notation of its own
-            target = _leibniz_in([*target, Token("end", None, target[-1].end, target[-1].end)], coords)[:-1]
+            target = _leibniz_in([*target, Token("end", None, target[-1].end, target[-1].end)], coords, known)[:-1]
         out += target
         i = end
     return out
@@ -1362,8 +1363,11 @@ def _order(tokens: list[Token], i: int) -> tuple[int, int]:
     return 1, i
 
 
-def _numerator(tokens: list[Token], coords: Collection[str]) -> tuple[int, list[Token]] | None:
-    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x``, ``d\\theta`` or ``dθ̇``, else None."""
+def _numerator(
+    tokens: list[Token], coords: Collection[str], known: Collection[str] = ()
+) -> tuple[int, list[Token]] | None:
+    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x``, ``d\\theta`` or ``dθ̇``, else None; not for a
+    name of its own that begins with d (``delta/dt`` is δ over dt, never d(elta)/dt)."""
     if not tokens or tokens[0].kind != "name" or tokens[0].value.primes:
         return None
     first = tokens[0]
@@ -1371,6 +1375,9 @@ def _numerator(tokens: list[Token], coords: Collection[str]) -> tuple[int, list[
         order, rest = _order(tokens, 1)
         return order, tokens[rest:]
     if first.value.raw.startswith("d") and len(tokens) == 1:  # dθ, dx: one name
+        whole = canonical_name(first.value.raw)
+        if whole in GREEK_NAMES or whole in coords or whole in known:
+            return None
         rest, dots = first.value.raw[1:], first.value.dots
         if dots and canonical_name(rest) not in coords:
             return None  # dθ̇ is θ̇'s; but δ̇ has its dot on δ, never on "elta"
@@ -1395,14 +1402,16 @@ def _bracketed_numerator(tokens: list[Token], i: int) -> tuple[int, list[Token],
     return (order, tokens[opener : closer + 1], end) if dt_order == order else None
 
 
-def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[int, list[Token], int] | None:
+def _leibniz_at(
+    tokens: list[Token], i: int, coords: Collection[str], known: Collection[str] = ()
+) -> tuple[int, list[Token], int] | None:
     token = tokens[i]
     if _is_raw(token, "d"):
         found = _bracketed_numerator(tokens, i)
         if found is not None:
             return found
     if token.is_op("("):  # (d/dt) θ, (d/dt)² θ, (d/dt)^2 θ: the operator in brackets, and its power
-        inner = _leibniz_at(tokens, i + 1, coords)
+        inner = _leibniz_at(tokens, i + 1, coords, known)
         if inner is None or inner[:2] != (1, []) or not tokens[inner[2]].is_op(")"):
             return None
         after = inner[2] + 1
@@ -1418,7 +1427,7 @@ def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[i
         denominator_end = _closing(tokens, numerator_end + 1)
         if denominator_end is None:
             return None
-        numerator = _numerator(tokens[i + 2 : numerator_end], coords)
+        numerator = _numerator(tokens[i + 2 : numerator_end], coords, known)
         denominator = tokens[numerator_end + 2 : denominator_end]
         after_dt = _after_dt(denominator, 0)
         if numerator is None or after_dt is None:
@@ -1437,7 +1446,7 @@ def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[i
     after_dt = _after_dt(tokens, numerator_end + 1) if numerator_end < len(tokens) - 1 else None
     if after_dt is None:
         return None
-    numerator = _numerator(tokens[i:numerator_end], coords)
+    numerator = _numerator(tokens[i:numerator_end], coords, known)
     if numerator is None:
         return None
     order, end = _order(tokens, after_dt)
