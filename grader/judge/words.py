@@ -427,7 +427,7 @@ def definition_before_formula(
     return said, f"{left} = {side}", value
 
 
-_FULL_STOP = re.compile(r"(?<![.\d])\.$")  # not 2. nor …: a number's point, an ellipsis
+_FULL_STOP = re.compile(r"(?<!\.)\.(?=\s)")  # a point before a space ends a sentence: no number's, nor …
 _SQUARED = re.compile(r"\s*(?:²|\^\s*2|\^\s*\{\s*2\s*\}|\*\*\s*2)\s*$")
 
 
@@ -446,21 +446,22 @@ def _defining_sentence(text: str, names: Collection[str], coords: Collection[str
         return None
     left = text[start:equals].strip()
     stop = _stop(text, equals + 1, names, coords)
+    # Let p_θ = m R² θ̇. Then H = …: the sentence's full stop ends the side, as a comma does
+    full_stop = _FULL_STOP.search(text, equals + 1, len(text) if stop is None else stop)
+    stop = full_stop.start() if full_stop else stop
     side = text[equals + 1 : stop].strip() if stop is not None else ""
-    if stop is not None and text[stop] not in ",;:=":
-        side = _FULL_STOP.sub("", side)  # Let p_θ = m R² θ̇. Then H = …: the sentence's full stop, not the side's
     if not side or any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
         return None  # L = T − V (not T + V): words in the definition may make it another
     if text[stop] == "=":  # Since L = T − V = …: the chain as typed
         between, after, handed = [], stop + 1, True
     else:
-        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        between, after = _words_from(text, stop + (text[stop] in ",;:."), names, coords, handing=True)
         if between and not _hands_over(between):
             return None  # …, not L = …: words that do not hand over to the value
         handed = bool(between) or text[stop] == ":"
     if not is_prose(" ".join((*lead, *between)), names, doubt=True):
         return None
-    said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=")) if part)
+    said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=.")) if part)
     return re.sub(r"\s+", " ", said), left, side, stop, after, handed
 
 
