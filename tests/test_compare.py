@@ -3838,7 +3838,8 @@ def _false(value, working):
         (PERIOD, "2π√(1/9.81) = 3 s", PERIOD_PART, "not_equivalent", "3", (_false("3 s", "2π√(1/9.81) = 3 s"),)),
         (PERIOD, "2.01 s = T", PERIOD_PART, "equivalent", "2.01", (_number("2.01 s"),)),
         # the quantity's name before its value is no working
-        (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"), _number("2,01 s"))),
+        # read as T ≈ 2.01 s is: before, also "the number", its name T called the rest of the answer
+        (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"),)),
         (PERIOD, "T = 2.0 s (approx)", PERIOD_PART, "equivalent", "2", (_number("2.0 s"),)),
         # approximately: the tolerance says how near
         (PERIOD, "≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", ()),
