@@ -1122,9 +1122,48 @@ GENERAL_FORM = (
         ("d/dt(∂L/∂x) − ∂L/∂ẋ = 0", "invalid",
          ("This is not Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q = 0, nor an equation of motion of this system:"
           " give the equation of motion, worked out for this system.",)),
+        # Rayleigh's term on the right: before, refused for its `∂` ("read only in the name of …")
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ", "invalid", (GENERAL_FORM.format("`L` and `F`"),)),
+        (r"\frac{d}{dt}\frac{\partial L}{\partial \dot x} - \frac{\partial L}{\partial x}"
+         r" = -\frac{\partial \mathcal{F}}{\partial \dot x}", "invalid",
+         (GENERAL_FORM.format("`L` and `\\mathcal{F}`"),)),
+        ("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ", "invalid",  # of the wrong sign
+         ("This is not Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q = 0, nor an equation of motion of this system:"
+          " give the equation of motion, worked out for this system.",)),
     ],
 )  # fmt: skip
 def test_lagranges_equation_in_general_form_alone_is_asked_to_be_worked_out(submitted, status, feedback):
+    verdict = compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **DAMPED)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
+def _general_read_past(words: str) -> str:
+    return f"Read without the words before it, `{words}`: the formula is what is graded."
+
+
+_RAYLEIGH_RIGHT = "d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ"
+# Lagrange's equation with Rayleigh's term on the right, then the equation it comes to, graded as the form
+# with it on the left is: before, refused for its `∂`
+GENERAL_FORM_THEN_EQUATION = (
+    (f"{_RAYLEIGH_RIGHT}, m ẍ + b ẋ + k x = 0", "equivalent", ("Correct.", _general_read_past(f"{_RAYLEIGH_RIGHT},"))),
+    (f"{_RAYLEIGH_RIGHT}, m ẍ − b ẋ + k x = 0", "not_equivalent",
+     ("A term differs: the velocity-dependent term in ẋ has the wrong sign.",
+      _general_read_past(f"{_RAYLEIGH_RIGHT},"))),
+    (f"{_RAYLEIGH_RIGHT}\nm ẍ + b ẋ + k x = 0", "equivalent", ("Correct.", _general_read_past(_RAYLEIGH_RIGHT))),
+    (f"Using {_RAYLEIGH_RIGHT} we get m ẍ + b ẋ + k x = 0", "equivalent",
+     ("Correct.", _general_read_past(f"Using {_RAYLEIGH_RIGHT} we get"))),
+    # Rayleigh's term of the wrong sign is no Lagrange's equation: a right equation after it goes to a person
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ, m ẍ + b ẋ + k x = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ,"))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), GENERAL_FORM_THEN_EQUATION)
+def test_lagranges_equation_with_rayleighs_term_on_the_right_then_the_equation_grades_the_equation(
+    submitted, status, feedback
+):
     verdict = compare("m xddot + b xdot + k x = 0", submitted, kind="equation", **DAMPED)
     assert (verdict.status, verdict.feedback) == (status, feedback)
 
@@ -3799,7 +3838,8 @@ def _false(value, working):
         (PERIOD, "2π√(1/9.81) = 3 s", PERIOD_PART, "not_equivalent", "3", (_false("3 s", "2π√(1/9.81) = 3 s"),)),
         (PERIOD, "2.01 s = T", PERIOD_PART, "equivalent", "2.01", (_number("2.01 s"),)),
         # the quantity's name before its value is no working
-        (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"), _number("2,01 s"))),
+        # read as T ≈ 2.01 s is: before, also "the number", its name T called the rest of the answer
+        (PERIOD, "T ≈ 2,01 s", PERIOD_PART, "equivalent", "2.01", (_comma("2,01"),)),
         (PERIOD, "T = 2.0 s (approx)", PERIOD_PART, "equivalent", "2", (_number("2.0 s"),)),
         # approximately: the tolerance says how near
         (PERIOD, "≈ 2.01 s", PERIOD_PART, "equivalent", "2.01", ()),
@@ -4408,16 +4448,45 @@ def test_a_decimal_comma_is_read_as_a_point_in_a_number(submitted, status, read_
     assert compare("x", "1,5", known=["x"]).status == "invalid"
 
 
+_COMMA_REFUSED = (
+    "A comma is not understood here. Write decimals with a point (0.5); list equations as [eq1, eq2] or on separate"
+    " lines."
+)
 _FREQUENCY = "sqrt(9.81)/(2*pi)"  # hertz, for l = 1 m and g = 9.81 m/s²
 ZERO_DECIMAL_COMMA = (
     # a thousands separator never follows a lone 0: 0,498 can only be 0.498
     (_FREQUENCY, "Hz", "0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
     (_FREQUENCY, "Hz", "-0,498", "not_equivalent",
      ("Not within the accepted tolerance.", "Read `-0,498` as -0.498: a decimal comma.")),
+    # T's value, named, is read as T = 2.01 s is: before, also said to be "the number", the rest (T) not graded
     (PERIOD, "s", "T = 2,01 s, f = 0,498 Hz", "equivalent",
-     ("Correct.", "Read `2,01` as 2.01: a decimal comma.", "Graded the number `2,01 s`; the rest of your answer is"
-      " not graded.", "Graded `T = 2,01 s`, your value in s; the rest of your answer (`f = 0,498 Hz`) is not graded.")),
+     ("Correct.", "Read `2,01` as 2.01: a decimal comma.", "Graded `T = 2,01 s`, your value in s; the rest of your"
+      " answer (`f = 0,498 Hz`) is not graded.")),
+    (PERIOD, "s", "T = 2,01 s", "equivalent", ("Correct.", "Read `2,01` as 2.01: a decimal comma.")),
+    (PERIOD, "s", "T = 2,21 s", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `2,21` as 2.21: a decimal comma.")),
 )  # fmt: skip
+
+# a decimal comma inside the arithmetic that gives the number: before, refused ("A comma…"), or 1/0,498 said to divide
+# by zero; each comma read as one alone is, and the answer as typed where any comma may be a list's or thousands'
+ARITHMETIC_DECIMAL_COMMA = (
+    (PERIOD, "2π/√9,81", "equivalent", ("Correct.", "Read `9,81` as 9.81: a decimal comma.")),
+    (PERIOD, "2π/√9,18", "not_equivalent", ("Not within the accepted tolerance.", _comma("9,18"))),
+    (PERIOD, "2π √(1,00/9,81) s", "equivalent", ("Correct.", _comma("1,00 and 9,81"))),
+    (PERIOD, "2π √(1,00/9,81) ms", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `1,00 and 9,81` as 1.00 and 9.81: a decimal comma.",
+      "Read as 0.00200607 s.")),
+    (PERIOD, "1/0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
+    (PERIOD, "1/0,489", "not_equivalent", ("Not within the accepted tolerance.", _comma("0,489"))),
+    (PERIOD, "2π/√9,810", "invalid", (_COMMA_REFUSED,)),  # 9810 in English
+    (PERIOD, "2π/√9,81, 3", "invalid", (_COMMA_REFUSED,)),  # a list
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), ARITHMETIC_DECIMAL_COMMA)
+def test_a_decimal_comma_inside_the_arithmetic_of_a_number_is_read_as_a_point(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="number", rtol=0.005, unit="s")
+    assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
 @pytest.mark.parametrize(("expected", "unit", "submitted", "status", "feedback"), ZERO_DECIMAL_COMMA)
@@ -5386,6 +5455,13 @@ def _defined_before(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
 
 
+def _unused(words: str, definition: str) -> str:
+    return (
+        f"Read without the words `{words}`: your `{definition}` is not used in the formula after it, which was"
+        " graded as it stands."
+    )
+
+
 _HOOP_IN_P = "p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ"
 _HOOP_P = "p_θ = m R² θ̇"
 # a sentence that defines a name, then the answer in it: before, refused for its colon, or its words undefined
@@ -5417,6 +5493,34 @@ DEFINITION_BEFORE = (
      ("Correct.", _defined_before("With", "ω² = g/l"))),
     (EOM_PENDULUM, "With ω² = l/g: θ̈ + ω² sin θ = 0", {**PENDULUM, "kind": "equation"}, "not_equivalent",
      ("A term differs: the term in sin(θ) has the wrong factor.", _defined_before("With", "ω² = l/g"))),
+    # `Let` defines as `With` does, and a full stop then `Then` hands over: before, `:` refused, or Let undefined
+    ("sqrt(g/l)", "Let x = g: ω = √(x/l)", PENDULUM, "equivalent", ("Correct.", _defined_before("Let", "x = g"))),
+    ("sqrt(g/l)", "Let x = g: ω = √(x/(2 l))", PENDULUM, "not_equivalent",
+     ("Your answer is off by a constant factor: missing a factor √2?", _defined_before("Let", "x = g"))),
+    ("sqrt(g/l)", "Let x = g. ω = √(x/l)", PENDULUM, "equivalent", ("Correct.", _defined_before("Let", "x = g"))),
+    ("sqrt(g/l)", "Let x = 2g. ω = √(x/l)", PENDULUM, "not_equivalent",
+     ("Your answer is off by a constant factor: missing a factor 1/√2?", _defined_before("Let", "x = 2g"))),
+    ("sqrt(g/l)", "Let ω₀² = g/l, then ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("Let … then", "ω₀² = g/l"))),
+    ("sqrt(g/l)", "Let ω₀² = l/g, then ω = ω₀", PENDULUM, "not_equivalent",
+     ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
+      _defined_before("Let … then", "ω₀² = l/g"))),
+    (HOOP_H, f"Let {_HOOP_P}. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
+     ("Correct.", _defined_before("Let … Then", _HOOP_P))),
+    (HOOP_H, f"Let p_θ = m R θ̇. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.",
+      _defined_before("Let … Then", "p_θ = m R θ̇"))),
+    # a name of the student's own the formula does not use: the formula alone, said so (before, M undefined)
+    (ATWOOD_A, "With M = m₁ + m₂: ẍ = g (m₁ − m₂)/(m₁ + m₂)", ATWOOD, "equivalent",
+     ("Correct.", _unused("With", "M = m₁ + m₂"))),
+    (ATWOOD_A, "With M = m₁ + m₂: ẍ = g (m₁ + m₂)/(m₁ − m₂)", ATWOOD, "not_equivalent",
+     ("Your answer depends on g as the right answer does, but on m₁ and m₂ in another way: check how your answer"
+      " depends on m₁ and m₂.", _unused("With", "M = m₁ + m₂"))),
+    (ATWOOD_A, "Let M = m₁ + m₂. Then ẍ = g (m₁ − m₂)/(m₁ + m₂)", ATWOOD, "equivalent",
+     ("Correct.", _unused("Let … Then", "M = m₁ + m₂"))),
+    (ATWOOD_A, "Let M = m₁ + m₂. Then ẍ = g (m₁ − m₂)/(m₁ − m₂)", ATWOOD, "not_equivalent",
+     ("Your answer depends on g as the right answer does, but not on m₁ and m₂: check how your answer depends on"
+      " m₁ and m₂.", _unused("Let … Then", "M = m₁ + m₂"))),
 )  # fmt: skip
 
 
@@ -5519,6 +5623,16 @@ P_THETA = {**PENDULUM, "name": "p_theta"}
          ("Correct.", _chain("With", "L = T − V"))),
         (L_PENDULUM, f"Using L = T − V, L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
          ("Correct.", _chain("Using", "L = T − V"))),
+        (L_PENDULUM, f"Let L = T − V: L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Let", "L = T − V"))),
+        (L_PENDULUM, f"Let L = T − V. Then L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Let … Then", "L = T − V"))),
+        (L_PENDULUM, f"Let L = T + V. Then L = {L_TYPED}", "lagrangian", PENDULUM, "undecided",
+         (_misstated("L = T + V", "L"), _chain("Let … Then", "L = T + V"))),
+        (L_PENDULUM, f"Let L = T − V. L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
+         ("Correct.", _chain("Let", "L = T − V"))),
+        (L_PENDULUM, "Let L = T − V. L = 1/2 m l^2 θ̇^2 − m g l cos θ", "lagrangian", PENDULUM, "not_equivalent",
+         ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _chain("Let", "L = T − V"))),
         (L_PENDULUM, f"Since L = T − V, we have L = {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
          ("Correct.", _chain("Since … we have", "L = T − V"))),
         (L_PENDULUM, f"Given L = K − U we get {L_TYPED}", "lagrangian", PENDULUM, "equivalent",
@@ -5566,7 +5680,9 @@ def test_a_definition_said_in_a_sentence_before_the_value_is_read_as_the_chain(
     expected, submitted, kind, options, status, feedback
 ):
     verdict = compare(expected, submitted, kind=kind, **options)
-    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), feedback)
+    # a right value after a wrong definition keeps its credit until a person has read it
+    right = status in ("equivalent", "undecided")
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(right), feedback)
 
 
 _P_PHI_WORKED = "½ m l² sin²θ · 2φ̇"

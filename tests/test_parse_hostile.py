@@ -210,6 +210,8 @@ HOSTILE = [
     ("ω = √(g/l) = 3.13", "too_many_equals"),
     ("x = 1; m g", "not_an_equation"),  # an expression only first, before the definitions of its names
     ("9,81 θ + l = 0", "comma"),  # a decimal comma, not an expression and a definition
+    ("1/0,498", "comma"),  # a decimal comma: no division by zero, as said before
+    ("m g/0,5", "comma"),
     ("p = m g =", "unexpected_end"),  # a label, a side, and nothing after the last `=`
     ("m θ = m =", "unexpected_end"),
     ("Derivative(theta(t), (t, 2, 3))", "diff_usage"),
@@ -288,6 +290,8 @@ FORMERLY_ACCEPTED = [
     ("d/dt(∂V/∂θ̇) − ∂V/∂θ = 0", "euler_lagrange_other"),
     ("d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ = 0", "euler_lagrange_other"),  # Rayleigh's term of the wrong sign
     ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂θ̇ = 0", "euler_lagrange_other"),  # of another coordinate
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ", "euler_lagrange_general"),  # Rayleigh's term on the right
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ", "euler_lagrange_other"),  # on the right, of the wrong sign
     # a power on a bare angle was read as sin(θ²); who writes it in a Lagrangian mostly means sin²θ
     ("sin θ^2", "function_argument_power"),
     ("ω^2 sin θ² + 1", "function_argument_power"),
@@ -300,6 +304,26 @@ FORMERLY_ACCEPTED = [
 def test_formerly_accepted_input_is_refused_with_its_code(text, code):
     with _hang_guard(HANG_SECONDS):
         assert _refusal(text).code == code
+
+
+# a name of the problem's (or a Greek letter's) that begins with d is no Leibniz numerator: delta/dt is δ over
+# dt, refused as any name over dt is; before, read as d(elta)/dt and "elta is not a coordinate of this problem"
+NAMES_BEGINNING_WITH_D = [
+    # (text, coords, known)
+    ("delta/dt", ["delta"], []),
+    ("δ/dt", ["delta"], ["m"]),
+    ("m delta/dt = 0", ["theta"], ["m"]),
+    ("delta/dt", ["x"], ["delta"]),
+    ("dm/dt", ["x"], ["dm"]),  # a known symbol's own name
+]
+
+
+@pytest.mark.parametrize(("text", "coords", "known"), NAMES_BEGINNING_WITH_D)
+def test_a_name_that_begins_with_d_over_dt_is_no_derivative(text, coords, known):
+    refusal = parse_answer(text, coords=coords, known=known)
+    assert (refusal.ok, refusal.code) == (False, "leibniz"), refusal
+    # the derivative itself, d then the coordinate's name, is read as before
+    assert str(parse_answer("ddelta/dt + dδ/dt", coords=["delta"]).value) == "2*Derivative(delta(t), t)"
 
 
 # -- what the student reads ----------------------------------------------------

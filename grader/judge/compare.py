@@ -1729,10 +1729,29 @@ def _without_words(
         read = parse_answer(f"{formula}, where {definition}", coords=coords, known=names, deadline=deadline)
         if read.ok and not _unknown_in_items(read, names):
             if not _uses_defined(formula, definition, coords, names):
-                return read, ()  # With L = …: m l² θ̈ = …: L is working, which a note on the lines says, not put in
+                return _unused_definition(read, words, definition, formula, expected, names, deadline)
             said = {"words": shown(words), "definition": definition}
             return read, ((_words_note("definition_before", words, expected), said),)
     return without if without is not None else (answer, ())
+
+
+def _unused_definition(
+    read: ParsedAnswer, words: str, definition: str, formula: str, expected: Expected, names: list, deadline
+) -> tuple[ParsedAnswer, tuple]:
+    """``With M = m₁ + m₂: ẍ = g (m₁ − m₂)/(m₁ + m₂)``: a name of the student's own, defined and then not
+    used, is the formula alone and a note that says so; ``read``, the formula with its definition, where
+    the name is the problem's or one whose definitions are judged (``With L = …``: a line of working)."""
+    coords = expected.setting.coords
+    defined = parse_answer(definition, coords=coords, known=names, deadline=deadline)
+    alone = parse_answer(formula, coords=coords, known=names, deadline=deadline)
+    if not (defined.ok and defined.kind == "equation" and defined.value.lhs.is_Symbol) or not alone.ok:
+        return read, ()
+    name, side = defined.value.lhs, defined.value.rhs
+    if name.name in names or name.name in _INGREDIENTS or _definition_judged(name, side, expected) is not None:
+        return read, ()  # With L = …: m l² θ̈ = …: L is working, which a note on the lines says, not put in
+    if _undefined(_without_label(alone), names):
+        return read, ()  # ω = √(g/l): the label the answer names, the part judges (see _another_name)
+    return alone, (("definition_unused", {"words": shown(words), "definition": definition}),)
 
 
 def _uses_defined(formula: str, definition: str, coords, names: list) -> bool:

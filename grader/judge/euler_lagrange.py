@@ -2,6 +2,7 @@
 
 Contents:
     euler_lagrange(text, coords, names)   whether ``text`` is d/dt(∂L/∂q̇) − ∂L/∂q: True, False, or None
+    moved_left(operator, side)            ``… = −∂F/∂ẋ`` as the operator ``… + ∂F/∂ẋ``, its side moved left
 
 ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0``: the operator says how the equation was
 found, and is read past before it (:func:`grader.judge.words.euler_lagrange_then_formula`). Only the true
@@ -21,7 +22,7 @@ from grader.parse.messages import ParseFailure
 from grader.parse.names import canonical_name
 from grader.parse.tokens import Token, tokenize
 
-__all__ = ["euler_lagrange"]
+__all__ = ["euler_lagrange", "moved_left"]
 
 _LENGTH = 200  # characters: an operator is short; anything longer is not read as one
 _DISSIPATION = frozenset({"F", "R", "D"})  # Rayleigh's function, as texts name it (TeX's \mathcal{F} is F)
@@ -60,6 +61,29 @@ def euler_lagrange(text: str, coords: Collection[str], names: Collection[str] = 
     if terms is None or all(term.rate for term in terms) or not any(term.rate for term in terms):
         return None
     return _true(terms, coords, names)
+
+
+def moved_left(operator: str, side: str) -> str | None:
+    """``d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ``, Rayleigh's term on the right: the operator with ``side``, one
+    derivative ∂·/∂· alone, moved to its left, its sign changed (as :func:`euler_lagrange` then judges
+    it); None where ``side`` is anything else (``0``, a generalized force ``Q_x``, an equation's side).
+
+    >>> moved_left("d/dt(∂L/∂ẋ) − ∂L/∂x", "−∂F/∂ẋ")
+    'd/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ'
+    >>> moved_left("d/dt(∂L/∂ẋ) − ∂L/∂x", "m ẍ") is None
+    True
+    """
+    if len(side) > _LENGTH:
+        return None
+    try:
+        tokens = tokenize(side)
+    except ParseFailure:
+        return None
+    terms = _terms(tokens)
+    if terms is None or len(terms) != 1 or terms[0].rate:
+        return None
+    term = side.strip().lstrip("+-−").strip()
+    return f"{operator.strip()} {'+' if terms[0].sign < 0 else '−'} {term}"
 
 
 def _true(terms: list[_Term], coords: Collection[str], names: Collection[str]) -> bool:

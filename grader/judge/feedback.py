@@ -69,6 +69,8 @@ FEEDBACK: dict[str, str] = {
     "words_before_left_out": "Read without the words before it, `{words}`: the formula is what is graded.",
     "definition_before": "Read without the words `{words}`, with your `{definition}` put in place in the formula"
     " after it.",
+    "definition_unused": "Read without the words `{words}`: your `{definition}` is not used in the formula after"
+    " it, which was graded as it stands.",
     "definition_in_words": "Read without the words `{words}`, as the chain `{chain}`: its last side was graded.",
     "unit_for_a_person": "Your formula is labelled `{unit}`. Graded without its unit, it is right; but a"
     " frequency in Hz counts cycles and an angular frequency in rad/s radians, 2π apart (ω = 2πf). A person"

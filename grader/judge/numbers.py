@@ -44,6 +44,9 @@ _DECIMAL_COMMA = re.compile(
     r"\s*([+-]?[0-9]+),([0-9]{1,2}|[0-9]{4,}|(?<=(?<![0-9])0,)[0-9]{3})(?![0-9,])(.*)", re.DOTALL
 )
 
+# the same inside arithmetic (2π/√9,81), not in a name (m1,5) nor after a point (1.2,5)
+_DECIMAL_COMMA_INSIDE = re.compile(r"(?<![\w.,])([0-9]+),([0-9]{1,2}|[0-9]{4,}|(?<=(?<![0-9])0,)[0-9]{3})(?![\w,.])")
+
 # ``2.006 sec``, ``2006 msec``, ``2.006 seconds``: after a number, at the end, the word for seconds, not the secant
 _SEC = re.compile(r"([0-9.]\s*)(m?)(?:secs?|seconds?)\.?\s*$")
 
@@ -855,11 +858,29 @@ def _decimal_point(text: str) -> tuple[str, tuple | None]:
     note that says so. Three digits after the comma may be thousands: those are left alone, and the
     parser asks for a point."""
     match = _DECIMAL_COMMA.fullmatch(text) if len(text) < _LENGTH else None
-    if match is None or "," in match.group(3):
+    if match is None:
+        return _decimal_points_inside(text)
+    if "," in match.group(3):
         return text, None
     whole, fraction, rest = match.groups()
     number = f"{whole}.{fraction}"
     return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
+
+
+def _decimal_points_inside(text: str) -> tuple[str, tuple | None]:
+    """``2π/√9,81``: numbers with a decimal comma inside the arithmetic, each read as
+    :func:`_decimal_point` reads one alone, with the note that says so; ``text`` as typed where any
+    of its commas is none (``T = 2,01 s, f = …`` lists; ``2π/√9,810`` may be 9810)."""
+    if "," not in text or len(text) >= _LENGTH:
+        return text, None
+    found = list(_DECIMAL_COMMA_INSIDE.finditer(text))
+    if not found or len(found) != text.count(","):
+        return text, None
+    typed = " and ".join(number[0] for number in found)
+    return _DECIMAL_COMMA_INSIDE.sub(r"\1.\2", text), (
+        "decimal_comma",
+        {"typed": typed, "number": typed.replace(",", ".")},
+    )
 
 
 def _number_in(piece: str, names: Collection[str]):

@@ -57,7 +57,7 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
-from grader.judge.euler_lagrange import euler_lagrange
+from grader.judge.euler_lagrange import euler_lagrange, moved_left
 from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
@@ -364,8 +364,9 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
 # small, …", "For small angles, …"): what that sets is not the formula's, and is read as typed.
 _METHOD = frozenset({"from", "using", "applying", "by"})
 # words that begin a sentence stating what the quantity is before its value: "Since L = T − V, L = …",
-# "The Lagrangian L = T − V is …", "With L = T − V: L = …". Again not a condition ("If L = …").
-_STATING = _METHOD | {"since", "as", "because", "with", "given", "here", "the", "our", "this"}
+# "The Lagrangian L = T − V is …", "With L = T − V: L = …", "Let L = T − V. Then L = …". Again not a
+# condition ("If L = …").
+_STATING = _METHOD | {"since", "as", "because", "with", "given", "here", "the", "our", "this", "let"}
 # words that hand over from a definition to the value: "…, we have L = …", "…, so L = …"; the words
 # between are these alone (not "…, the Hamiltonian is …", which may say the value is another quantity's)
 _HANDS_OVER_TO_VALUE = _HANDING_OVER | IMPLYING_WORDS | {"then", "that"}
@@ -426,6 +427,7 @@ def definition_before_formula(
     return said, f"{left} = {side}", value
 
 
+_FULL_STOP = re.compile(r"(?<!\.)\.(?=\s)")  # a point before a space ends a sentence: no number's, nor …
 _SQUARED = re.compile(r"\s*(?:²|\^\s*2|\^\s*\{\s*2\s*\}|\*\*\s*2)\s*$")
 
 
@@ -444,19 +446,22 @@ def _defining_sentence(text: str, names: Collection[str], coords: Collection[str
         return None
     left = text[start:equals].strip()
     stop = _stop(text, equals + 1, names, coords)
+    # Let p_θ = m R² θ̇. Then H = …: the sentence's full stop ends the side, as a comma does
+    full_stop = _FULL_STOP.search(text, equals + 1, len(text) if stop is None else stop)
+    stop = full_stop.start() if full_stop else stop
     side = text[equals + 1 : stop].strip() if stop is not None else ""
     if not side or any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
         return None  # L = T − V (not T + V): words in the definition may make it another
     if text[stop] == "=":  # Since L = T − V = …: the chain as typed
         between, after, handed = [], stop + 1, True
     else:
-        between, after = _words_from(text, stop + (text[stop] in ",;:"), names, coords, handing=True)
+        between, after = _words_from(text, stop + (text[stop] in ",;:."), names, coords, handing=True)
         if between and not _hands_over(between):
             return None  # …, not L = …: words that do not hand over to the value
         handed = bool(between) or text[stop] == ":"
     if not is_prose(" ".join((*lead, *between)), names, doubt=True):
         return None
-    said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=")) if part)
+    said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=.")) if part)
     return re.sub(r"\s+", " ", said), left, side, stop, after, handed
 
 
@@ -493,6 +498,9 @@ def euler_lagrange_then_formula(
     stop = _stop(text, equals + 1, names, coords, stops=",;:\n")  # the operator's line, then the equation's
     side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
     between: list[str] = []
+    moved = moved_left(operator, side) if side != "0" else None
+    if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, as = 0 with it on the left
+        operator, side = moved, "0"
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
         after = equals + 1
     elif stop is None or text[stop] == "=":

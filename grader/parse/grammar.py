@@ -40,6 +40,7 @@ from grader.parse.names import (
     CONSTANT_WORDS,
     FUNCTION_NAMES,
     GREEK_BY_LETTER,
+    GREEK_NAMES,
     JOINING_WORDS,
     canonical_name,
     is_arbitrary_constant,
@@ -213,6 +214,19 @@ class _Parser:
             self.fail_here()
         self.advance()
 
+    def _decimal_comma_next(self) -> None:
+        """Refuse the comma of ``1/0,498``, where the 0 just read is a number's whole part: not 1/0."""
+        comma = self.token
+        after = self.tokens[self.i + 1] if self.i + 1 < len(self.tokens) else comma
+        last = self.tokens[self.i - 1]
+        if (
+            comma.is_op(",")
+            and after.kind == "num"
+            and last.kind == "num"
+            and last.end == comma.start == after.start - 1
+        ):
+            raise ParseFailure("comma", comma.start, comma.end)
+
     def fail_here(self):
         token = self.token
         if token.kind == "partial":
@@ -346,14 +360,18 @@ class _Parser:
             # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0: the operator, then the equation it gives
             operator, terms = found
             self.i = operator + 1
-            lhs = self.over()
+            moved = self._dissipation_moved(operator + 1)
+            if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, alone
+                self.i, sign, name = moved
+                terms = [*terms, ("+" if sign == "-" else "-", name)]
+            lhs = self.over() if moved is None else sympy.Integer(0)
             if not self.token.is_op("="):
                 if self.token.kind == "end" and TIME not in lhs.free_symbols:
                     # d/dt(∂L/∂ẋ) − ∂L/∂x = 0 (or = Q) alone: no equation of this system, not the expression 0
                     code = "euler_lagrange_general" if _is_lagrange(terms) else "euler_lagrange_other"
                     raise ParseFailure(
                         code, first.start, self.tokens[self.i - 1].end,
-                        functions=self._operator_functions(start, operator),
+                        functions=self._operator_functions(start, self.i if moved else operator),
                     )  # fmt: skip
                 return first, lhs  # what the operator comes to, without "= 0": an expression
             self.advance()
@@ -474,6 +492,16 @@ class _Parser:
             return None
         return force[0], terms
 
+    def _dissipation_moved(self, i: int) -> tuple[int, str, str] | None:
+        """``−∂F/∂ẋ`` at ``i``, the whole right side of an Euler–Lagrange operator's ``=``: the position
+        after it, its sign and its name (``dF_dxdot``); None where the side is anything else."""
+        tokens = self.tokens
+        sign = tokens[i].value if tokens[i].is_op("+", "-") else "+"
+        quotient = self._partial_quotient(i + (sign != "+" or tokens[i].is_op("+")))
+        if quotient is None or tokens[quotient[0]].kind != "end":
+            return None
+        return quotient[0], sign, quotient[1]
+
     def _operator_functions(self, start: int, end: int) -> str:
         """The functions an Euler–Lagrange operator between ``start`` and ``end`` differentiates, as
         typed: ``L``, or ``L`` and ``F`` with Rayleigh's; each is the first of a quotient's two ∂."""
@@ -589,6 +617,7 @@ class _Parser:
                     factor *= self.factor()  # p²/2m, mg/2l: over 2m and 2l, as over lsinθ; but 1/2m is ½ m
                 if token.value == "/":
                     if factor == 0:
+                        self._decimal_comma_next()
                         raise ParseFailure("division_by_zero", token.start, token.end)
                     factor = _power(factor, sympy.Integer(-1), token)
                 factors.append(factor)
@@ -1138,14 +1167,14 @@ def _leibniz(tokens: list[Token], context: Context) -> list[Token]:
     """
     if {"d", "dt"} & set(context.known) or not any(_is_raw(token, "dt") or _is_raw(token, "t") for token in tokens):
         return tokens  # no dt (nor d t) anywhere: nothing to rewrite
-    return _leibniz_in(tokens, context.coords)
+    return _leibniz_in(tokens, context.coords, context.known)
 
 
-def _leibniz_in(tokens: list[Token], coords: Collection[str]) -> list[Token]:
+def _leibniz_in(tokens: list[Token], coords: Collection[str], known: Collection[str] = ()) -> list[Token]:
     out: list[Token] = []
     i = 0
     while i < len(tokens):
-        found = _leibniz_at(tokens, i, coords)
+        found = _leibniz_at(tokens, i, coords, known)
         if found is None:
             out.append(tokens[i])
             i += 1
@@ -1153,7 +1182,7 @@ def _leibniz_in(tokens: list[Token], coords: Collection[str]) -> list[Token]:
         order, target, end = found
         out.append(Token("deriv", (order, bool(target)), tokens[i].start, tokens[end - 1].end))
         if len(target) > 3:  # d(m d(x)/dt)/dt: a bracket read whole may hold Leibniz's notation of its own
-            target = _leibniz_in([*target, Token("end", None, target[-1].end, target[-1].end)], coords)[:-1]
+            target = _leibniz_in([*target, Token("end", None, target[-1].end, target[-1].end)], coords, known)[:-1]
         out += target
         i = end
     return out
@@ -1334,8 +1363,11 @@ def _order(tokens: list[Token], i: int) -> tuple[int, int]:
     return 1, i
 
 
-def _numerator(tokens: list[Token], coords: Collection[str]) -> tuple[int, list[Token]] | None:
-    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x``, ``d\\theta`` or ``dθ̇``, else None."""
+def _numerator(
+    tokens: list[Token], coords: Collection[str], known: Collection[str] = ()
+) -> tuple[int, list[Token]] | None:
+    """(order, target) for ``d``, ``d²``, ``dθ``, ``d^2 x``, ``d\\theta`` or ``dθ̇``, else None; not for a
+    name of its own that begins with d (``delta/dt`` is δ over dt, never d(elta)/dt)."""
     if not tokens or tokens[0].kind != "name" or tokens[0].value.primes:
         return None
     first = tokens[0]
@@ -1343,6 +1375,9 @@ def _numerator(tokens: list[Token], coords: Collection[str]) -> tuple[int, list[
         order, rest = _order(tokens, 1)
         return order, tokens[rest:]
     if first.value.raw.startswith("d") and len(tokens) == 1:  # dθ, dx: one name
+        whole = canonical_name(first.value.raw)
+        if whole in GREEK_NAMES or whole in coords or whole in known:
+            return None
         rest, dots = first.value.raw[1:], first.value.dots
         if dots and canonical_name(rest) not in coords:
             return None  # dθ̇ is θ̇'s; but δ̇ has its dot on δ, never on "elta"
@@ -1367,14 +1402,16 @@ def _bracketed_numerator(tokens: list[Token], i: int) -> tuple[int, list[Token],
     return (order, tokens[opener : closer + 1], end) if dt_order == order else None
 
 
-def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[int, list[Token], int] | None:
+def _leibniz_at(
+    tokens: list[Token], i: int, coords: Collection[str], known: Collection[str] = ()
+) -> tuple[int, list[Token], int] | None:
     token = tokens[i]
     if _is_raw(token, "d"):
         found = _bracketed_numerator(tokens, i)
         if found is not None:
             return found
     if token.is_op("("):  # (d/dt) θ, (d/dt)² θ, (d/dt)^2 θ: the operator in brackets, and its power
-        inner = _leibniz_at(tokens, i + 1, coords)
+        inner = _leibniz_at(tokens, i + 1, coords, known)
         if inner is None or inner[:2] != (1, []) or not tokens[inner[2]].is_op(")"):
             return None
         after = inner[2] + 1
@@ -1390,7 +1427,7 @@ def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[i
         denominator_end = _closing(tokens, numerator_end + 1)
         if denominator_end is None:
             return None
-        numerator = _numerator(tokens[i + 2 : numerator_end], coords)
+        numerator = _numerator(tokens[i + 2 : numerator_end], coords, known)
         denominator = tokens[numerator_end + 2 : denominator_end]
         after_dt = _after_dt(denominator, 0)
         if numerator is None or after_dt is None:
@@ -1409,7 +1446,7 @@ def _leibniz_at(tokens: list[Token], i: int, coords: Collection[str]) -> tuple[i
     after_dt = _after_dt(tokens, numerator_end + 1) if numerator_end < len(tokens) - 1 else None
     if after_dt is None:
         return None
-    numerator = _numerator(tokens[i:numerator_end], coords)
+    numerator = _numerator(tokens[i:numerator_end], coords, known)
     if numerator is None:
         return None
     order, end = _order(tokens, after_dt)
