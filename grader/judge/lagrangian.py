@@ -38,8 +38,9 @@ from grader.judge.sampling import (
     short_fraction,
     side_by_side,
 )
-from grader.judge.setting import Setting
+from grader.judge.setting import MAX_ORDER, Setting
 from grader.parse import TIME, ParsedAnswer
+from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["check_lagrangian", "equations_of_motion", "euler_lagrange"]
@@ -120,6 +121,11 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
         return Outcome("equivalent", 1.0, "equivalent")
     if constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
+    beyond = _beyond_velocities(submitted, expected.setting)
+    if beyond and not _beyond_velocities(expected.parsed.value, expected.setting):
+        # the evaluators differentiate along q, q̇ and t only, and read θ̈ as fixed: m l² θ θ̈ would
+        # pass for −m l² θ̇² (it is d/dt(m l² θ θ̇) − m l² θ̇²), and d/dt of any f(q̇) for nothing
+        return Outcome("not_equivalent", 0.0, "lagrangian_accelerations", {"names": ", ".join(beyond)})
     deadline.check()
     if "jumps" not in expected.cache:  # the expected answer's, the same for every submission
         expected.cache["jumps"] = _jumps(expected.parsed.value)
@@ -141,6 +147,13 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
             return Outcome("not_equivalent", credit, "normalization_scaled", method="euler-lagrange")
         return Outcome("not_equivalent", credit, "normalization", {"factor": factor}, "euler-lagrange")
     return _diagnose(expected, lagrangian, submitted, deadline)
+
+
+def _beyond_velocities(value, setting: Setting) -> list[str]:
+    """The derivatives of the coordinates past the velocities in ``value`` (as parsed), as typed: θ̈, θ⃛."""
+    present = value.atoms(sympy.Derivative)
+    orders = range(2, MAX_ORDER + 1)
+    return [unicode_name(q, order) for q in setting.coords for order in orders if setting.node(q, order) in present]
 
 
 def _jumps(value) -> bool:
