@@ -19,6 +19,7 @@ L_DOUBLE = (
     " + (m1 + m2) g l1 cos(theta1) + m2 g l2 cos(theta2)"
 )
 
+UNDECIDED = "This answer could not be checked automatically; it has been set aside for a person to grade."
 ACCELERATIONS = "but a Lagrangian is a function of the coordinates, the velocities and the time alone."
 
 LAGRANGIANS = [
@@ -37,6 +38,13 @@ LAGRANGIANS = [
      f"Your Lagrangian has ẍ in it, {ACCELERATIONS}"),
     (L_DOUBLE, f"{L_DOUBLE} + m2 l1^2 θ₁ θ̈₁ + m2 l2^2 θ̈₂", DOUBLE, "not_equivalent", 0.0,
      f"Your Lagrangian has θ̈₁, θ̈₂ in it, {ACCELERATIONS}"),
+    # the momentum m l² (θ̇ + sgn θ̇) steps where θ̇ passes 0, which no sample state sees: for a person
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 |θ̇|", PENDULUM, "undecided", 0.0, UNDECIDED),
+    (L_PENDULUM, f"{L_PENDULUM} + m l sqrt(l^2 θ̇^2)", PENDULUM, "undecided", 0.0, UNDECIDED),
+    (L_PENDULUM, "1/2 m l^2 |θ̇|^2 + m g l cos θ", PENDULUM, "equivalent", 1.0, "Correct."),
+    (L_PENDULUM, "1/2 m (sqrt(l^2 θ̇^2))^2 + m g l cos θ", PENDULUM, "equivalent", 1.0, "Correct."),
+    (L_PENDULUM, f"{L_PENDULUM} + m g l |θ| θ̇", PENDULUM, "equivalent", 1.0,  # d/dt(θ|θ|/2): no step
+     "Correct: your Lagrangian gives the same equations of motion."),
     # an acceleration that cancels is none
     (L_PENDULUM, f"{L_PENDULUM} + m l^2 θ̈ - m l^2 θ̈", PENDULUM, "equivalent", 1.0, "Correct."),
 ]  # fmt: skip

@@ -136,6 +136,9 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     ratio, named = _dynamics_ratio(expected, submitted, deadline)
     if ratio is Closeness.UNSURE:  # too few states where even 40 digits see every term
         return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: the numbers cannot tell")
+    if ratio is not None and _kinked_in_velocity(submitted) and not _kinked_in_velocity(expected.parsed.value):
+        # m l² |θ̇|: its momentum steps where θ̇ passes 0, a kick no sample state sees, as a step's
+        return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: a kink in a velocity")
     if ratio is not None:
         credit = float(expected.option("factor_credit", 0.5))
         if named and abs(ratio - 1) < 1e-9:
@@ -154,6 +157,20 @@ def _beyond_velocities(value, setting: Setting) -> list[str]:
     present = value.atoms(sympy.Derivative)
     orders = range(2, MAX_ORDER + 1)
     return [unicode_name(q, order) for q in setting.coords for order in orders if setting.node(q, order) in present]
+
+
+def _kinked_in_velocity(value) -> bool:
+    """Whether ``value`` (as parsed) has |…| of a velocity, or √(θ̇²) (which the parser keeps as
+    typed): ∂L/∂q̇ then steps along the motion."""
+    if any(kink.args[0].has(sympy.Derivative) for kink in value.atoms(sympy.Abs)):
+        return True
+    return any(
+        power.exp.is_Rational and not power.exp.is_integer and any(
+            factor.is_Pow and factor.exp.is_even and factor.base.has(sympy.Derivative)
+            for factor in sympy.Mul.make_args(power.base)
+        )
+        for power in value.atoms(sympy.Pow)
+    )  # fmt: skip
 
 
 def _jumps(value) -> bool:
