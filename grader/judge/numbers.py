@@ -31,7 +31,7 @@ from functools import lru_cache
 import sympy
 
 from grader.judge.feedback import SHOWN, shown
-from grader.judge.units import in_units, unit_named
+from grader.judge.units import SI_UNITS, in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.names import IMPLYING_WORDS
@@ -88,6 +88,8 @@ _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its o
 # "one" after these is a pronoun (the one that swings), not a number
 _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
+_PER_CENT = re.compile(r"%|\bper\s*cent\b", re.I)
+_UNIT_NAMED = re.compile(r"(?<![^\W\d_])[^\W\d_]{2,}(?![^\W\d_])")  # a unit named in a remark: not s or m, a letter
 _REMARKS_TRIED = 12
 
 _WORDS = [
@@ -234,7 +236,7 @@ def _read_number(
             words = NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, unit)
             answer = reads(prepared)
-            if answer is None or (rest and not _is_remark(rest, names, words or typed)):
+            if answer is None or (rest and not _is_remark(rest, names, words or typed, unit)):
                 continue
             typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
             said = _words_beside(f"{before} {rest}") if last and index == last else ""
@@ -894,10 +896,11 @@ def _number_then_remark(piece: str):
             yield number, rest
 
 
-def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
+def _is_remark(rest: str, names: Collection[str], number: str = "", unit: str = "") -> bool:
     """Whether ``rest`` is words about the number, not more of the answer: after the mark that
     opens it, prose (:func:`~grader.judge.words.is_prose`) that does not begin with a digit, is not
-    a unit, and names no number in words but ``number`` (2 (the two angles), not 2 (or three))."""
+    a unit, names no number in words but ``number`` (2 (the two angles), not 2 (or three)), and
+    names no unit but ``unit``, the part's, nor per cent (2.006 (in minutes), 2.006 percent)."""
     if _breaks_down(rest, names, number):
         return True
     if (repeated := _REPEATED.fullmatch(rest)) and repeated[1] == number:
@@ -905,6 +908,10 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
+    if _PER_CENT.search(words):
+        return False
+    if unit and any(SI_UNITS[word] != unit_named(unit) for word in _UNIT_NAMED.findall(words) if word in SI_UNITS):
+        return False
     if any(NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(_PER_EACH.sub(" ", words))):
         return False
     return is_prose(words, names)
