@@ -229,7 +229,8 @@ SI_UNITS |= _SPELLED
 SI_UNITS |= {word.capitalize(): SI_UNITS[word] for word in _CAPITALIZED}
 _UNUSUAL = frozenset(  # the prefixed units a number is not asked about being in (ms for s, but not ps)
     prefix + unit for prefix in _PREFIXES if prefix not in ("n", "mu", "m", "k", "M") for unit in _BASES
-) - {"cm"} | set(_SPELLED) | {word.capitalize() for word in _CAPITALIZED}
+) - {"cm"}
+_UNUSUAL |= {*_SPELLED, *(word.capitalize() for word in _CAPITALIZED)}  # a name's other spellings
 
 
 def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:
