@@ -75,3 +75,33 @@ NUMBERS = [
 def test_a_number_is_read_with_the_unit_it_is_written_in(submitted, status, feedback):
     verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+HOOP = {"coords": ["theta"], "known": ["m", "R", "omega", "g"]}
+EOM_HOOP = "R thetaddot - R omega^2 sin(theta) cos(theta) + g sin(theta) = 0"
+EOM_DOUBLE_1 = "(m1 + m2) l1 θ̈₁ + m2 l2 θ̈₂ cos(θ₁ − θ₂) + m2 l2 θ̇₂² sin(θ₁ − θ₂) + (m1 + m2) g sin θ₁ = 0"
+EOM_DOUBLE_2 = "l2 θ̈₂ + l1 θ̈₁ cos(θ₁ − θ₂) − l1 θ̇₁² sin(θ₁ − θ₂) + g sin θ₂"
+VANISHING = (
+    "Your equation is right only where a factor of it is not zero: where that factor is zero, it no longer says"
+    " what the acceleration is. Divide that factor out."
+)
+VANISHING_SYSTEM = (
+    "One of your equations is right only where a factor of it is not zero: where that factor is zero, your"
+    " equations no longer determine every acceleration. Divide that factor out."
+)
+
+PARAMETER_FACTORS = [
+    # (expected, submitted, kind, setting, feedback): a factor of the parameters alone that vanishes where
+    # both draws of the parameters leave it of one sign; m₁ − m₂ changed sign between them, and was caught
+    (EOM_HOOP, f"(R omega^2 - g) ({EOM_HOOP.removesuffix(' = 0')}) = 0", "equation", HOOP, VANISHING),
+    (f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2} = 0", f"{EOM_DOUBLE_1}; (l1 − l2) ({EOM_DOUBLE_2}) = 0", "equations", DOUBLE,
+     VANISHING_SYSTEM),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "kind", "setting", "sentence"), PARAMETER_FACTORS)
+def test_a_factor_of_the_parameters_that_vanishes_is_found_whatever_the_draws(
+    expected, submitted, kind, setting, sentence
+):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,)), verdict
