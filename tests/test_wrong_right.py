@@ -105,3 +105,29 @@ def test_a_factor_of_the_parameters_that_vanishes_is_found_whatever_the_draws(
 ):
     verdict = compare(expected, submitted, kind=kind, **setting)
     assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,)), verdict
+
+
+ATWOOD_A = "(m1 - m2) g / (m1 + m2)"
+ACCELERATION = {**ATWOOD, "name": ["xddot", "a", "a_1"]}
+
+LABELS = [
+    # (submitted, status, feedback): the acceleration ẍ asked, named as the coordinate's rate; a label that
+    # names another rate, or the coordinate, gave a velocity or a position, and was graded as ẍ
+    (f"ẋ = {ATWOOD_A}", "undecided",
+     "Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+     " which you meant."),
+    (f"x''' = {ATWOOD_A}", "undecided",
+     "Your answer is labelled x⃛, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+     " which you meant."),
+    ("ẋ = (m2 - m1) g / (m1 + m2)", "not_equivalent", "Your answer is labelled ẋ, but the quantity asked for is ẍ."),
+    (f"x = {ATWOOD_A}", "undecided",  # was so before, but said "xddot" for ẍ
+     "Your answer is labelled x, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+     " which you meant."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "sentence"), LABELS)
+def test_a_label_that_names_another_rate_is_not_the_asked_one(submitted, status, sentence):
+    verdict = compare(ATWOOD_A, submitted, kind="expression", **ACCELERATION)
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict

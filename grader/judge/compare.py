@@ -88,7 +88,7 @@ from grader.parse import (
     within_diff_budget,
 )
 from grader.parse.messages import listed
-from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
+from grader.parse.names import canonical_name, is_arbitrary_constant, split_derivative, unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "READINGS_FOR_A_PERSON", "ROUNDED", "Kind", "compare"]
@@ -1345,14 +1345,29 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         # T + V = … where L is asked, or where H is and is not the energy
         return ("label_for_a_person", {"label": to_text(side), "name": expected.setting.describe(names[:1])})
     lhs = _label_of(side)
-    if not isinstance(lhs, sympy.Symbol | AppliedUndef):
-        return None  # T − V = …, ẍ = …: no name of one quantity
-    label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
-    if _is_asked(label, names):
-        return None  # pφ for p_φ, and p
     described = expected.setting.describe
-    said = _quotient_shown(label) or described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed
-    return ("label_for_a_person", {"label": said, "name": described(names[:1])})  # ω, not w too
+    rates = dict(_rates_named(names, expected))
+    if isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
+        # where the quantity is named as a coordinate's rate (ẍ), another rate is another quantity:
+        # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity
+        name, order = lhs.expr.func.__name__, lhs.derivative_count
+        if rates.get(name) == order:
+            return None
+        said = unicode_name(name, order)
+    elif isinstance(lhs, sympy.Symbol | AppliedUndef):
+        label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
+        if _is_asked(label, names):
+            return None  # pφ for p_φ, and p
+        said = _quotient_shown(label) or described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed
+    else:
+        return None  # T − V = …, and ẍ = … where the quantity is not named as a rate: no name of one quantity
+    asked = _rates_named(names[:1], expected)
+    return ("label_for_a_person", {"label": said, "name": unicode_name(*asked[0]) if asked else described(names[:1])})
+
+
+def _rates_named(names: tuple, expected: Expected) -> list[tuple[str, int]]:
+    """The coordinates' rates among the names of the asked quantity, as (coordinate, order): xddot is (x, 2)."""
+    return [split for split in map(split_derivative, names) if split and split[0] in expected.setting.coords]
 
 
 # The sums of the energies that name a quantity: L = T − V, and H = E = T + V (U is V)
