@@ -131,3 +131,23 @@ def test_a_label_that_names_another_rate_is_not_the_asked_one(submitted, status,
     verdict = compare(ATWOOD_A, submitted, kind="expression", **ACCELERATION)
     assert verdict.status == status, verdict
     assert sentence in verdict.feedback, verdict
+
+
+NUMBER_LABELS = [
+    # (submitted, status, feedback): the period asked, by the names T, T₀, τ or P; a number labelled with
+    # another quantity's name was graded as the period, its label not read
+    ("f = 2.006", "undecided",
+     "Your answer is labelled f, but the quantity asked for is T. Read as T, it is right; a person will check"
+     " which you meant."),
+    ("ω = 2.006 s", "undecided",
+     "Your answer is labelled ω, but the quantity asked for is T. Read as T, it is right; a person will check"
+     " which you meant."),
+    ("f = 0.319", "not_equivalent", "Your answer is labelled f, but the quantity asked for is T."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "sentence"), NUMBER_LABELS)
+def test_a_number_labelled_with_another_quantity_is_not_the_asked_one(submitted, status, sentence):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s", name=["T", "T_0", "tau", "P"])
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict

@@ -128,7 +128,7 @@ KINDS: dict[str, Kind] = {
         Kind("equations", check_equations, shape="equations"),
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
         Kind("integer", check_integer, {"name": None}, shape="expression"),
-        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None}, shape="expression"),
+        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None, "name": None}, shape="expression"),
         Kind(
             "choice",
             check_choice,
@@ -161,7 +161,7 @@ def compare(
             answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
             (seconds, default 2), and the kind's own options (``up_to_constant``, ``h_is_energy``, ``asks_more``,
-            ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs,
+            ``rtol``/``atol``/``unit``/``name`` for numbers, ``options`` for choices: labels, or (label, words) pairs,
             and ``meanings``, the problem's symbols with what they mean…).
 
     Returns:
