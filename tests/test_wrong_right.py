@@ -151,3 +151,26 @@ def test_a_number_labelled_with_another_quantity_is_not_the_asked_one(submitted,
     verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s", name=["T", "T_0", "tau", "P"])
     assert verdict.status == status, verdict
     assert sentence in verdict.feedback, verdict
+
+
+PARTLY_RIGHT = [
+    # (submitted, status, score, feedback): a Lagrangian right only in part, read in a way a person would confirm
+    # were it right: it was told "Its value was graded and is right", or "Read as L, it is right"
+    ("H = m l^2 θ̇^2 + 2 m g l cos θ", "undecided", 0.5, (
+        "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention L = T − V fixes"
+        " the normalization.",
+        "Your answer is labelled H, but the quantity asked for is L.")),
+    ("L = T + V = m l^2 θ̇^2 + 2 m g l cos θ", "undecided", 0.5, (
+        "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention L = T − V fixes"
+        " the normalization.",
+        "Your answer says `L = T + V` on the way to its value, which is not what L is.")),
+    # L = V − T, as its value is: said once
+    ("T = 1/2 m l^2 θ̇^2; V = -m g l cos θ; L = V - T", "not_equivalent", 0.5,
+     ("Your Lagrangian has the opposite sign: it is V − T; the Lagrangian is L = T − V.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "score", "feedback"), PARTLY_RIGHT)
+def test_an_answer_right_in_part_is_not_told_it_is_right(submitted, status, score, feedback):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict

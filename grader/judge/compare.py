@@ -1549,6 +1549,10 @@ _FOR_A_PERSON = {
 }
 
 
+# the notes for a person that say nothing of whether the value is right: of one right only in part, as true
+_TRUE_IN_PART = frozenset({"constant_unsure", "words_for_a_person"})
+
+
 # the diagnoses of a value that is right as read, where how it was read is for a person to confirm (a wrong
 # Euler–Lagrange operator before it too, which compare finds once the value is judged)
 READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {"operator_for_a_person"}
@@ -1572,6 +1576,22 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
         if outcome.key == "t_plus_v":  # L = T + V = …, as its value says too: said once
             notes = tuple(note for note in notes if not note or note[0] != "statement_for_a_person")
         return outcome, tuple((_FOR_A_PERSON.get(note[0], note[0]), note[1]) if note else note for note in notes)
+    if outcome.score < 1 and outcome.status != "equivalent":
+        # right in part (2 (T − V), V − T): a note that says "it is right" would be false. It is said as of a
+        # wrong answer, after the diagnosis; a person still confirms the proposed credit
+        if outcome.key == "v_minus_t":  # L = V − T = …, as its value says too: said once
+            notes = tuple(note for note in notes if not note or note[0] != "statement_for_a_person")
+            unsure = [note for note in notes if note and note[0] in _FOR_A_PERSON]
+            if not unsure:
+                return outcome, notes
+        notes = tuple(
+            (_FOR_A_PERSON[note[0]], note[1]) if note and note[0] in _FOR_A_PERSON and note[0] not in _TRUE_IN_PART
+            else note
+            for note in notes
+        )  # fmt: skip
+        unsure = [note for note in notes if note and note[0] in _FOR_A_PERSON]
+        if not unsure:
+            return replace(outcome, status="undecided"), notes
     said = ((outcome.key, outcome.details),) if outcome.key and outcome.status != "equivalent" else ()
     (key, details), *others = unsure
     outcome = replace(outcome, status="undecided", key=key, details=details, more=(*others, *said, *outcome.more))
