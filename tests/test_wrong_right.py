@@ -174,3 +174,12 @@ PARTLY_RIGHT = [
 def test_an_answer_right_in_part_is_not_told_it_is_right(submitted, status, score, feedback):
     verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict
+
+
+def test_a_count_of_one_pair_is_not_one():
+    # 1 pair is 2: as 2 pairs was, the number goes to a person, who decides which it is; before, 1 was graded
+    verdict = compare("1", "1 pair", kind="integer", name="n")
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 0.0, (
+        "Your number `1` comes with `pair`, which may make it another number, or no one number: a person will"
+        " decide what your answer is.",
+    ))  # fmt: skip
