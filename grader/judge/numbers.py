@@ -416,14 +416,14 @@ def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> 
 
 
 # words that make a number another, or no one number: less than 2, at most 2, 2 or more, max 2, 2 for each bob
-# (4), 2 dozen, two hundred, 2 pairs, 1 pair. Minimum and maximum only against the number: 2 (the minimum number of
-# coordinates) says what a count of degrees of freedom is
+# (4), 2 dozen, two hundred, 2 pairs, 1 pair (not 2 (a pair of angles)). Minimum and maximum only against the
+# number: 2 (the minimum number of coordinates) says what a count of degrees of freedom is
 _QUALIFYING = re.compile(
     r"\b(?:less|fewer|more|greater|larger|smaller|bigger|higher|lower)\s+than\b|\bat\s+(?:most|least)\b"
     r"|\bup\s+to\b|\bor\s+(?:more|less|fewer|so)\b|\b(?:(?:for|on)\s+)?(?:each|every)\b|\b(?:per|apiece)\b"
     r"|\b(?:max|maximum|min|minimum)\b\.?(?=\s*[0-9])"
     r"|(?<=[0-9])\s*[(,]?\s*(?:max|maximum|minimum)\b(?=\s*\)?\s*[.,;]?\s*$)"
-    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs?)\b",
+    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs)\b|(?:(?<=[0-9])|(?<=[0-9]\s)|(?<=\bone\s))pair\b",
     re.I,
 )
 # and beside a count, which is exact, words of an approximation: about 2, ≈ 2, 2 (roughly)
