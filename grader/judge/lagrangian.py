@@ -162,8 +162,10 @@ def _beyond_velocities(value, setting: Setting) -> list[str]:
 def _kinked_in_velocity(value) -> bool:
     """Whether ``value`` (as parsed) has |…| of a velocity, or √(θ̇²) (which the parser keeps as
     typed): ∂L/∂q̇ then steps along the motion."""
-    if any(kink.args[0].has(sympy.Derivative) for kink in value.atoms(sympy.Abs)):
-        return True
+    even = {power: power.base.args[0] ** power.exp for power in value.atoms(sympy.Pow)
+            if isinstance(power.base, sympy.Abs) and power.exp.is_even}  # fmt: skip
+    if any(kink.args[0].has(sympy.Derivative) for kink in value.xreplace(even).atoms(sympy.Abs)):
+        return True  # |θ̇|, not |θ̇|², which is θ̇²
     return any(
         power.exp.is_Rational and not power.exp.is_integer and any(
             factor.is_Pow and factor.exp.is_even and factor.base.has(sympy.Derivative)
