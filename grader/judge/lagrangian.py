@@ -5,7 +5,8 @@ Contents:
     check_lagrangian(expected, answer, deadline)    the kind's checker
 
 A Lagrangian is right up to an additive constant (another zero of the potential)
-or a total time derivative: both leave the equations of motion unchanged. The
+or a total time derivative of a function of q and t: both leave the equations of
+motion unchanged. One with an acceleration in it is wrong, d/dt of f(q̇) too. The
 fast path catches the first without any calculus. Otherwise both sets of
 Euler–Lagrange expressions are evaluated at sample states: equal is full credit;
 a constant multiple k ≠ 1 has the right dynamics but not L = T − V, which earns
