@@ -187,3 +187,14 @@ def test_a_count_of_one_pair_is_not_one():
         "Your number `1` comes with `pair`, which may make it another number, or no one number: a person will"
         " decide what your answer is.",
     ))  # fmt: skip
+
+
+def test_words_that_set_another_angle_go_to_a_person():
+    # θ from the horizontal makes cos θ the other convention's sin θ: the words were read past, as harmless
+    verdict = compare(
+        L_PENDULUM, f"{L_PENDULUM} with theta measured from the horizontal", kind="lagrangian", **PENDULUM
+    )
+    assert (verdict.status, verdict.feedback) == ("undecided", (
+        "Your answer says `with theta measured from the horizontal` beside the formula. The formula was graded on"
+        " its own; a person will read the words against it.",
+    )), verdict  # fmt: skip
