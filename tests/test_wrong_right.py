@@ -198,3 +198,20 @@ def test_words_that_set_another_angle_go_to_a_person():
         "Your answer says `with theta measured from the horizontal` beside the formula. The formula was graded on"
         " its own; a person will read the words against it.",
     )), verdict  # fmt: skip
+
+
+COUNTS_WORKED = [
+    # (submitted, status, feedback): a count worked out with values given after it, which do not come to it
+    ("n = 3N - k = 1, where N = 1, k = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `3N - k, where N = 1, k = 1`, does not"
+     " hold: a person will check this answer."),
+    ("n = 3N - k = 3, where N = 1, k = 1", "not_equivalent",
+     "Graded your final value, `3`; your working, `3N - k, where N = 1, k = 1`, does not hold."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "sentence"), COUNTS_WORKED)
+def test_a_count_worked_out_with_values_that_do_not_come_to_it_is_for_a_person(submitted, status, sentence):
+    verdict = compare("1", submitted, kind="integer", name="n")
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict

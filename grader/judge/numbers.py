@@ -799,10 +799,29 @@ def _given(
     if answer is not None:
         rest = shown(text[found.start() :].strip(" ,"))
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
+        working = _given_working(head, values, reads, answer, count)
+        if working is not None:  # n = 3N − k = 1, where N = 1, k = 1: 3N − k is 2 with them
+            final = _sides(head)[0][-1].strip()
+            return prepared, answer, (("working_false_for_a_person", {"value": final, "working": shown(working)}),)
         return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": rest}))
     joined = f"{head}; {values}"
     answer = reads(joined)  # T = 2π√(l/g); l = 1; g = 9.81: the values put in place
     return (joined, answer, ()) if answer is not None else (text, None, ())  # not = 1, a value it was given
+
+
+def _given_working(head: str, values: str, reads, answer: ParsedAnswer, count: bool) -> str | None:
+    """The working in ``head`` (``n = 3N − k = 1``) that the ``values`` it was worked out with (``N = 1, k = 1``)
+    do not bring to the value ``answer`` says, as the student wrote it with them; None where each side
+    comes to it, or cannot be read with them."""
+    pieces, _ = _sides(head)
+    final = _last_side(answer)
+    for piece in pieces[:-1]:
+        if _QUANTITY.fullmatch(piece.strip()):
+            continue  # n, the label
+        read = reads(f"{piece}, where {values}")
+        if read is not None and not _agree(_last_side(read), final, count):
+            return f"{piece.strip()}, where {values.strip()}"
+    return None
 
 
 _DECIMAL = r"[0-9]+(?:[.,][0-9]*)?(?:[eE][-+]?[0-9]+)?|[.,][0-9]+"
