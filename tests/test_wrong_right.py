@@ -205,6 +205,10 @@ COUNTS_WORKED = [
     ("n = 3N - k = 1, where N = 1, k = 1", "undecided",
      "Your final value, `1`, was graded and is right, but your working, `3N - k, where N = 1, k = 1`, does not"
      " hold: a person will check this answer."),
+    # the arithmetic that gives its reason: 3 − 1 is 2
+    ("1, since 3 − 1 = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `1, since 3 − 1 = 1`, does not hold: a"
+     " person will check this answer."),
     ("n = 3N - k = 3, where N = 1, k = 1", "not_equivalent",
      "Graded your final value, `3`; your working, `3N - k, where N = 1, k = 1`, does not hold."),
 ]  # fmt: skip

@@ -668,6 +668,12 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
         values = [final] if end == len(pieces) else []
         for side in reversed(run[:-1] if values else run):
             read = reads(_spelled(side, decimal_comma, unit)[0]) if side else None
+            reason = _REASON.split(side)[-1] if read is None and side and _REASON.search(side) else None
+            if reason:  # 1 because 3 − 1 = 1: the reason's arithmetic is working too, and the first of it
+                read = reads(_spelled(reason, decimal_comma, unit)[0])
+                if read is not None:
+                    values.append(_last_side(read))
+                break
             if read is None:
                 break
             values.append(_last_side(read))
@@ -675,6 +681,9 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
             return " = ".join(run).rstrip(",;: ")  # 3·5 = 16, so 15: the comma is the step's
     return None
 
+
+# the word that gives a value its reason, whose arithmetic follows: 1 because 3 − 2 = 1, 1, since 3 − 2 = 1
+_REASON = re.compile(r"\b(?:because|since)\b", re.I)
 
 # a count, then brackets and nothing after them: 2 (6 − 4), 1 (2), 15 (5 particles), two (2)
 _COUNT_THEN_BRACKET = re.compile(
