@@ -390,6 +390,8 @@ def test_equations_that_determine_no_acceleration_earn_no_method_credit(tmp_path
         ("atwood-machine", "1/2 (m1 + m2) xdot^2", "(m1 + m2) xddot = 0", False),
         ("plane-pendulum", "1/2 m l^2 thetadot^2 + m g l", "thetaddot = 0", False),
         ("rotating-hoop", "1/2 m R^2 thetadot^2 + m g R", "thetaddot = 0", False),
+        # an acceleration in L: its equations are of a higher order, not those derived from it as if it had none
+        ("plane-pendulum", "1/2 m l^2 θ̇^2 + m g l cos θ + 1/2 m l^2 θ^2 θ̈", "m l^2 (1 - θ) θ̈ + m g l sin θ = 0", False),
         # a wrong sign or a wrong term: the work after it is as hard, and earns the credit
         ("atwood-machine", "1/2 (m1 + m2) xdot^2 - (m1 - m2) g x", "(m1 + m2) xddot = -(m1 - m2) g", True),
         ("rotating-hoop", "1/2 m R^2 thetadot^2 + m g R cos θ", "R θ̈ = -g sin θ", True),  # ω forgotten, not θ

@@ -177,8 +177,9 @@ def _carried_forward(problem: Problem, part: Part, answer: str, lagrangian: str,
     return part.method_credit if verdict.equivalent else None
 
 
-# what the Lagrangian part says of a Lagrangian that is no energy: its equations are no physics
-_NOT_AN_ENERGY = frozenset({"units_differ", "units_mixed", "units_argument", "units_power"})
+# what the Lagrangian part says of a Lagrangian that is no energy: its equations are no physics. One
+# with an acceleration has equations of a higher order, which equations_of_motion does not derive
+_NOT_AN_ENERGY = frozenset({"units_differ", "units_mixed", "units_argument", "units_power", "lagrangian_accelerations"})
 
 
 def _as_full(lagrangian, reference: str, setting: dict) -> bool:

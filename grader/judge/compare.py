@@ -88,7 +88,7 @@ from grader.parse import (
     within_diff_budget,
 )
 from grader.parse.messages import listed
-from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
+from grader.parse.names import canonical_name, is_arbitrary_constant, split_derivative, unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "READINGS_FOR_A_PERSON", "ROUNDED", "Kind", "compare"]
@@ -128,7 +128,7 @@ KINDS: dict[str, Kind] = {
         Kind("equations", check_equations, shape="equations"),
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
         Kind("integer", check_integer, {"name": None}, shape="expression"),
-        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None}, shape="expression"),
+        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None, "name": None}, shape="expression"),
         Kind(
             "choice",
             check_choice,
@@ -161,7 +161,7 @@ def compare(
             answer's units are then checked), ``given`` (names an answer may use for a quantity of the problem,
             ``{"p_theta": "m R^2 thetadot"}``: put in place before judging), ``timeout``
             (seconds, default 2), and the kind's own options (``up_to_constant``, ``h_is_energy``, ``asks_more``,
-            ``rtol``/``atol``/``unit`` for numbers, ``options`` for choices: labels, or (label, words) pairs,
+            ``rtol``/``atol``/``unit``/``name`` for numbers, ``options`` for choices: labels, or (label, words) pairs,
             and ``meanings``, the problem's symbols with what they mean…).
 
     Returns:
@@ -1345,14 +1345,29 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         # T + V = … where L is asked, or where H is and is not the energy
         return ("label_for_a_person", {"label": to_text(side), "name": expected.setting.describe(names[:1])})
     lhs = _label_of(side)
-    if not isinstance(lhs, sympy.Symbol | AppliedUndef):
-        return None  # T − V = …, ẍ = …: no name of one quantity
-    label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
-    if _is_asked(label, names):
-        return None  # pφ for p_φ, and p
     described = expected.setting.describe
-    said = _quotient_shown(label) or described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed
-    return ("label_for_a_person", {"label": said, "name": described(names[:1])})  # ω, not w too
+    rates = dict(_rates_named(names, expected))
+    if isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
+        # where the quantity is named as a coordinate's rate (ẍ), another rate is another quantity:
+        # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity
+        name, order = lhs.expr.func.__name__, lhs.derivative_count
+        if rates.get(name) == order:
+            return None
+        said = unicode_name(name, order)
+    elif isinstance(lhs, sympy.Symbol | AppliedUndef):
+        label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
+        if _is_asked(label, names):
+            return None  # pφ for p_φ, and p
+        said = _quotient_shown(label) or described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed
+    else:
+        return None  # T − V = …, and ẍ = … where the quantity is not named as a rate: no name of one quantity
+    asked = _rates_named(names[:1], expected)
+    return ("label_for_a_person", {"label": said, "name": unicode_name(*asked[0]) if asked else described(names[:1])})
+
+
+def _rates_named(names: tuple, expected: Expected) -> list[tuple[str, int]]:
+    """The coordinates' rates among the names of the asked quantity, as (coordinate, order): xddot is (x, 2)."""
+    return [split for split in map(split_derivative, names) if split and split[0] in expected.setting.coords]
 
 
 # The sums of the energies that name a quantity: L = T − V, and H = E = T + V (U is V)
@@ -1534,6 +1549,10 @@ _FOR_A_PERSON = {
 }
 
 
+# the notes for a person that say nothing of whether the value is right: of one right only in part, as true
+_TRUE_IN_PART = frozenset({"constant_unsure", "words_for_a_person"})
+
+
 # the diagnoses of a value that is right as read, where how it was read is for a person to confirm (a wrong
 # Euler–Lagrange operator before it too, which compare finds once the value is judged)
 READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {"operator_for_a_person"}
@@ -1557,6 +1576,22 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
         if outcome.key == "t_plus_v":  # L = T + V = …, as its value says too: said once
             notes = tuple(note for note in notes if not note or note[0] != "statement_for_a_person")
         return outcome, tuple((_FOR_A_PERSON.get(note[0], note[0]), note[1]) if note else note for note in notes)
+    if outcome.score < 1 and outcome.status != "equivalent":
+        # right in part (2 (T − V), V − T): a note that says "it is right" would be false. It is said as of a
+        # wrong answer, after the diagnosis; a person still confirms the proposed credit
+        if outcome.key == "v_minus_t":  # L = V − T = …, as its value says too: said once
+            notes = tuple(note for note in notes if not note or note[0] != "statement_for_a_person")
+            unsure = [note for note in notes if note and note[0] in _FOR_A_PERSON]
+            if not unsure:
+                return outcome, notes
+        notes = tuple(
+            (_FOR_A_PERSON[note[0]], note[1]) if note and note[0] in _FOR_A_PERSON and note[0] not in _TRUE_IN_PART
+            else note
+            for note in notes
+        )  # fmt: skip
+        unsure = [note for note in notes if note and note[0] in _FOR_A_PERSON]
+        if not unsure:
+            return replace(outcome, status="undecided"), notes
     said = ((outcome.key, outcome.details),) if outcome.key and outcome.status != "equivalent" else ()
     (key, details), *others = unsure
     outcome = replace(outcome, status="undecided", key=key, details=details, more=(*others, *said, *outcome.more))

@@ -21,6 +21,8 @@ FEEDBACK: dict[str, str] = {
     "normalization": "Your Lagrangian gives the right equations of motion, but it is {factor} × (T − V); the convention L = T − V fixes the normalization.",
     "normalization_scaled": "Your Lagrangian gives the right equations of motion, but it is a constant multiple of T − V; the convention L = T − V fixes the normalization.",
     "v_minus_t": "Your Lagrangian has the opposite sign: it is V − T; the Lagrangian is L = T − V.",
+    "lagrangian_accelerations": "Your Lagrangian has {names} in it, but a Lagrangian is a function of the"
+    " coordinates, the velocities and the time alone.",
     "t_plus_v": "It looks like you wrote L = T + V; the Lagrangian is L = T − V.",
     "missing_term": "A term is missing: {description}.",
     "extra_term": "There is a term too many: {description}.",

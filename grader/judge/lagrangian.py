@@ -5,7 +5,8 @@ Contents:
     check_lagrangian(expected, answer, deadline)    the kind's checker
 
 A Lagrangian is right up to an additive constant (another zero of the potential)
-or a total time derivative: both leave the equations of motion unchanged. The
+or a total time derivative of a function of q and t: both leave the equations of
+motion unchanged. One with an acceleration in it is wrong, d/dt of f(q̇) too. The
 fast path catches the first without any calculus. Otherwise both sets of
 Euler–Lagrange expressions are evaluated at sample states: equal is full credit;
 a constant multiple k ≠ 1 has the right dynamics but not L = T − V, which earns
@@ -38,8 +39,9 @@ from grader.judge.sampling import (
     short_fraction,
     side_by_side,
 )
-from grader.judge.setting import Setting
+from grader.judge.setting import MAX_ORDER, Setting
 from grader.parse import TIME, ParsedAnswer
+from grader.parse.names import unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["check_lagrangian", "equations_of_motion", "euler_lagrange"]
@@ -120,6 +122,11 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
         return Outcome("equivalent", 1.0, "equivalent")
     if constant_difference(pairs):
         return Outcome("equivalent", 1.0, "equivalent_up_to_constant")
+    beyond = _beyond_velocities(submitted, expected.setting)
+    if beyond and not _beyond_velocities(expected.parsed.value, expected.setting):
+        # the evaluators differentiate along q, q̇ and t only, and read θ̈ as fixed: m l² θ θ̈ would
+        # pass for −m l² θ̇² (it is d/dt(m l² θ θ̇) − m l² θ̇²), and d/dt of any f(q̇) for nothing
+        return Outcome("not_equivalent", 0.0, "lagrangian_accelerations", {"names": ", ".join(beyond)})
     deadline.check()
     if "jumps" not in expected.cache:  # the expected answer's, the same for every submission
         expected.cache["jumps"] = _jumps(expected.parsed.value)
@@ -130,6 +137,9 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
     ratio, named = _dynamics_ratio(expected, submitted, deadline)
     if ratio is Closeness.UNSURE:  # too few states where even 40 digits see every term
         return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: the numbers cannot tell")
+    if ratio is not None and _kinked_in_velocity(submitted) and not _kinked_in_velocity(expected.parsed.value):
+        # m l² |θ̇|: its momentum steps where θ̇ passes 0, a kick no sample state sees, as a step's
+        return Outcome("undecided", 0.0, "undecided", method="euler-lagrange: a kink in a velocity")
     if ratio is not None:
         credit = float(expected.option("factor_credit", 0.5))
         if named and abs(ratio - 1) < 1e-9:
@@ -141,6 +151,29 @@ def check_lagrangian(expected: Expected, answer: ParsedAnswer, deadline: Deadlin
             return Outcome("not_equivalent", credit, "normalization_scaled", method="euler-lagrange")
         return Outcome("not_equivalent", credit, "normalization", {"factor": factor}, "euler-lagrange")
     return _diagnose(expected, lagrangian, submitted, deadline)
+
+
+def _beyond_velocities(value, setting: Setting) -> list[str]:
+    """The derivatives of the coordinates past the velocities in ``value`` (as parsed), as typed: θ̈, θ⃛."""
+    present = value.atoms(sympy.Derivative)
+    orders = range(2, MAX_ORDER + 1)
+    return [unicode_name(q, order) for q in setting.coords for order in orders if setting.node(q, order) in present]
+
+
+def _kinked_in_velocity(value) -> bool:
+    """Whether ``value`` (as parsed) has |…| of a velocity, or √(θ̇²) (which the parser keeps as
+    typed): ∂L/∂q̇ then steps along the motion."""
+    even = {power: power.base.args[0] ** power.exp for power in value.atoms(sympy.Pow)
+            if isinstance(power.base, sympy.Abs) and power.exp.is_even}  # fmt: skip
+    if any(kink.args[0].has(sympy.Derivative) for kink in value.xreplace(even).atoms(sympy.Abs)):
+        return True  # |θ̇|, not |θ̇|², which is θ̇²
+    return any(
+        power.exp.is_Rational and not power.exp.is_integer and any(
+            factor.is_Pow and factor.exp.is_even and factor.base.has(sympy.Derivative)
+            for factor in sympy.Mul.make_args(power.base)
+        )
+        for power in value.atoms(sympy.Pow)
+    )  # fmt: skip
 
 
 def _jumps(value) -> bool:

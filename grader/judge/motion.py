@@ -98,6 +98,8 @@ _MOST_DIPS = 32  # dips narrowed at most, in one numpy pass a round
 # though every term of the submitted equations holds it (θ̈ cos θ + (g/l) sin θ cos θ), so that their
 # own rounding, of terms as small as the factor, cannot call their rows zero
 _VANISHED = 1e-12
+# a factor of the parameters alone is sought from 1/_SPREAD of each one's drawn value to _SPREAD times it
+_SPREAD = 64.0
 _SMOOTH = 2.0  # a pole of the expected equations grows at least 3 times over a dip's samples
 
 
@@ -516,10 +518,12 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
     if _one_value(list(sizes.values())):
         return False  # the same factor at every state, as a right answer's often is: it vanishes nowhere
     # A factor of the parameters alone (1/l, m l²) is one value within each run of states that share
-    # them. It is most right answers' and is not searched: such a factor that touches zero without
-    # changing sign ((m₁ − m₂)²) is written by nobody, and the search would cost every one of them.
+    # them. It is most right answers' and is not searched between states: such a factor that touches zero
+    # without changing sign ((m₁ − m₂)²) is written by nobody, and the search would cost every one of them.
+    # But two draws may leave one that changes sign of one sign in both ((l₁ − l₂), R ω² − g): it is
+    # sought along each parameter in turn.
     if _of_parameters(sizes):
-        return False
+        return _vanishes_along_parameters(expected, systems, states[defined[0]], steps[defined[0]])
     # Nor where the submitted equations' own coefficient (determinant) is of the parameters alone, as
     # in θ̈₁ = …, θ̈₂ = … solved, or m l² θ̈ + …: the factor is that over the expected equations' own, and
     # is zero only where theirs is infinite, where they are undefined.
@@ -535,6 +539,35 @@ def _vanishes_between(expected: Expected, reference: Sequence[Compiled], submitt
         return False
     step = max(max(steps[first], steps[second]) for first, second in pairs)  # a larger step reads as well
     return _touches_between(expected, systems, [(states[first], states[second]) for first, second in pairs], step)
+
+
+def _vanishes_along_parameters(
+    expected: Expected, systems: tuple[Sequence[Compiled], Sequence[Compiled]], state: np.ndarray, step: float
+) -> bool:
+    """Whether the factor between the submitted equations and the expected ones, a function of the
+    parameters alone, changes sign where the submitted say less as one parameter goes from
+    1/:data:`_SPREAD` of its value at ``state`` to :data:`_SPREAD` times it, the others held: (l₁ − l₂)·E
+    at l₁ = l₂. One numpy pass over the ends of every parameter's segment; a segment is searched
+    (:func:`_silent_between`) only where the factor's sign differs at its ends and the expected
+    equations' own does not."""
+    parameters = [i for i, symbol in enumerate(expected.variables) if not expected.setting.is_state(symbol)]
+    if not parameters:
+        return False
+    ends = np.repeat(state[None, :], 2 * len(parameters), axis=0)
+    for k, i in enumerate(parameters):
+        ends[2 * k, i] /= _SPREAD
+        ends[2 * k + 1, i] *= _SPREAD
+    with np.errstate(all="ignore"):  # 64 m in e^(−10 m x) overflows: undefined there, and let go
+        factors, owns = _scalings(*(_stacked_rows(expected, system, ends, step) for system in systems))
+    for k in range(len(parameters)):
+        low, high = factors[2 * k], factors[2 * k + 1]
+        if not (math.isfinite(low) and math.isfinite(high) and low and high and (low > 0) != (high > 0)):
+            continue
+        if (owns[2 * k] > 0) == (owns[2 * k + 1] > 0) and _silent_between(
+            expected, systems, ends[2 * k], ends[2 * k + 1], step
+        ):
+            return True
+    return False
 
 
 def _scalings(mine: np.ndarray, theirs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -31,7 +31,7 @@ from functools import lru_cache
 import sympy
 
 from grader.judge.feedback import SHOWN, shown
-from grader.judge.units import in_units, unit_named
+from grader.judge.units import SI_UNITS, in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.names import IMPLYING_WORDS
@@ -91,6 +91,8 @@ _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its o
 # "one" after these is a pronoun (the one that swings), not a number
 _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
+_PER_CENT = re.compile(r"%|\bper\s*cent\b", re.I)
+_UNIT_NAMED = re.compile(r"(?<![^\W\d_])[^\W\d_]{2,}(?![^\W\d_])")  # a unit named in a remark: not s or m, a letter
 _REMARKS_TRIED = 12
 
 _WORDS = [
@@ -237,7 +239,7 @@ def _read_number(
             words = NUMBER_WORDS.get(typed.lower().rstrip("."))
             prepared, notes = _spelled(words or typed, decimal_comma, unit)
             answer = reads(prepared)
-            if answer is None or (rest and not _is_remark(rest, names, words or typed)):
+            if answer is None or (rest and not _is_remark(rest, names, words or typed, unit)):
                 continue
             typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
             said = _words_beside(f"{before} {rest}") if last and index == last else ""
@@ -417,14 +419,14 @@ def _doubted(text: str, read: tuple[str, ParsedAnswer | None, tuple], reads) -> 
 
 
 # words that make a number another, or no one number: less than 2, at most 2, 2 or more, max 2, 2 for each bob
-# (4), 2 dozen, two hundred, 2 pairs. Minimum and maximum only against the number: 2 (the minimum number of
-# coordinates) says what a count of degrees of freedom is
+# (4), 2 dozen, two hundred, 2 pairs, 1 pair (not 2 (a pair of angles)). Minimum and maximum only against the
+# number: 2 (the minimum number of coordinates) says what a count of degrees of freedom is
 _QUALIFYING = re.compile(
     r"\b(?:less|fewer|more|greater|larger|smaller|bigger|higher|lower)\s+than\b|\bat\s+(?:most|least)\b"
     r"|\bup\s+to\b|\bor\s+(?:more|less|fewer|so)\b|\b(?:(?:for|on)\s+)?(?:each|every)\b|\b(?:per|apiece)\b"
     r"|\b(?:max|maximum|min|minimum)\b\.?(?=\s*[0-9])"
     r"|(?<=[0-9])\s*[(,]?\s*(?:max|maximum|minimum)\b(?=\s*\)?\s*[.,;]?\s*$)"
-    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs)\b",
+    r"|\b(?:dozens?|hundreds?|thousands?|millions?|billions?|pairs)\b|(?:(?<=[0-9])|(?<=[0-9]\s)|(?<=\bone\s))pair\b",
     re.I,
 )
 # and beside a count, which is exact, words of an approximation: about 2, ≈ 2, 2 (roughly)
@@ -669,6 +671,12 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
         values = [final] if end == len(pieces) else []
         for side in reversed(run[:-1] if values else run):
             read = reads(_spelled(side, decimal_comma, unit)[0]) if side else None
+            reason = _REASON.split(side)[-1] if read is None and side and _REASON.search(side) else None
+            if reason:  # 1 because 3 − 1 = 1: the reason's arithmetic is working too, and the first of it
+                read = reads(_spelled(reason, decimal_comma, unit)[0])
+                if read is not None:
+                    values.append(_last_side(read))
+                break
             if read is None:
                 break
             values.append(_last_side(read))
@@ -676,6 +684,9 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
             return " = ".join(run).rstrip(",;: ")  # 3·5 = 16, so 15: the comma is the step's
     return None
 
+
+# the word that gives a value its reason, whose arithmetic follows: 1 because 3 − 2 = 1, 1, since 3 − 2 = 1
+_REASON = re.compile(r"\b(?:because|since)\b", re.I)
 
 # a count, then brackets and nothing after them: 2 (6 − 4), 1 (2), 15 (5 particles), two (2)
 _COUNT_THEN_BRACKET = re.compile(
@@ -800,10 +811,29 @@ def _given(
     if answer is not None:
         rest = shown(text[found.start() :].strip(" ,"))
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
+        working = _given_working(head, values, reads, answer, count)
+        if working is not None:  # n = 3N − k = 1, where N = 1, k = 1: 3N − k is 2 with them
+            final = _sides(head)[0][-1].strip()
+            return prepared, answer, (("working_false_for_a_person", {"value": final, "working": shown(working)}),)
         return prepared, answer, (*notes, ("remark_ignored", {"value": value, "rest": rest}))
     joined = f"{head}; {values}"
     answer = reads(joined)  # T = 2π√(l/g); l = 1; g = 9.81: the values put in place
     return (joined, answer, ()) if answer is not None else (text, None, ())  # not = 1, a value it was given
+
+
+def _given_working(head: str, values: str, reads, answer: ParsedAnswer, count: bool) -> str | None:
+    """The working in ``head`` (``n = 3N − k = 1``) that the ``values`` it was worked out with (``N = 1, k = 1``)
+    do not bring to the value ``answer`` says, as the student wrote it with them; None where each side
+    comes to it, or cannot be read with them."""
+    pieces, _ = _sides(head)
+    final = _last_side(answer)
+    for piece in pieces[:-1]:
+        if _QUANTITY.fullmatch(piece.strip()):
+            continue  # n, the label
+        read = reads(f"{piece}, where {values}")
+        if read is not None and not _agree(_last_side(read), final, count):
+            return f"{piece.strip()}, where {values.strip()}"
+    return None
 
 
 _DECIMAL = r"[0-9]+(?:[.,][0-9]*)?(?:[eE][-+]?[0-9]+)?|[.,][0-9]+"
@@ -915,10 +945,11 @@ def _number_then_remark(piece: str):
             yield number, rest
 
 
-def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
+def _is_remark(rest: str, names: Collection[str], number: str = "", unit: str = "") -> bool:
     """Whether ``rest`` is words about the number, not more of the answer: after the mark that
     opens it, prose (:func:`~grader.judge.words.is_prose`) that does not begin with a digit, is not
-    a unit, and names no number in words but ``number`` (2 (the two angles), not 2 (or three))."""
+    a unit, names no number in words but ``number`` (2 (the two angles), not 2 (or three)), and
+    names no unit but ``unit``, the part's, nor per cent (2.006 (in minutes), 2.006 percent)."""
     if _breaks_down(rest, names, number):
         return True
     if (repeated := _REPEATED.fullmatch(rest)) and repeated[1] == number:
@@ -926,6 +957,10 @@ def _is_remark(rest: str, names: Collection[str], number: str = "") -> bool:
     words = rest.lstrip("([{,:;–—- ")
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
+    if _PER_CENT.search(words):
+        return False
+    if unit and any(SI_UNITS[word] != unit_named(unit) for word in _UNIT_NAMED.findall(words) if word in SI_UNITS):
+        return False
     if any(NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(_PER_EACH.sub(" ", words))):
         return False
     return is_prose(words, names)

@@ -211,9 +211,26 @@ SI_UNITS |= {
     for unit in _BASES
     if prefix + unit not in SI_UNITS and (unit != "rad" or prefix == "m")
 }
+# Other words for units of time, as students write them: unread, 2.006 days was graded as 2.006 s, the
+# word taken for a remark after the number. A unit's name may start a sentence (2.006 Seconds).
+_SPELLED = {
+    "mins": SI_UNITS["min"],
+    **dict.fromkeys(("hr", "hrs"), SI_UNITS["h"]),
+    **dict.fromkeys(("millisecond", "milliseconds", "msec", "msecs"), SI_UNITS["ms"]),
+    **dict.fromkeys(("microsecond", "microseconds"), SI_UNITS["mus"]),
+    **dict.fromkeys(("nanosecond", "nanoseconds"), SI_UNITS["ns"]),
+    **dict.fromkeys(("kilosecond", "kiloseconds"), SI_UNITS["ks"]),
+    **dict.fromkeys(("day", "days"), _si_unit(86400, "time")),
+    **dict.fromkeys(("week", "weeks"), _si_unit(7 * 86400, "time")),
+    **dict.fromkeys(("year", "years"), _si_unit(31557600, "time")),  # a Julian year
+}
+_CAPITALIZED = ("second", "seconds", "minute", "minutes", "hour", "hours", "hertz", "day", "days")
+SI_UNITS |= _SPELLED
+SI_UNITS |= {word.capitalize(): SI_UNITS[word] for word in _CAPITALIZED}
 _UNUSUAL = frozenset(  # the prefixed units a number is not asked about being in (ms for s, but not ps)
     prefix + unit for prefix in _PREFIXES if prefix not in ("n", "mu", "m", "k", "M") for unit in _BASES
 ) - {"cm"}
+_UNUSUAL |= {*_SPELLED, *(word.capitalize() for word in _CAPITALIZED)}  # a name's other spellings
 
 
 def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:

@@ -96,10 +96,11 @@ _DOUBT = re.compile(
     r"\b(?:not\s+(?:sure|certain)|unsure|uncertain|maybe|perhaps|probably|possibly|I\s+think|I\s+guess)\b", re.I
 )
 # words that may say the formula is other than written, or set what its sign means: "… upward",
-# "… inverted", "… except the cosine is a sine"; or state its dimensions, which a prompt may ask
-# for ("… dimensionless", "units of force"). A person reads them against the formula.
+# "… inverted", "… except the cosine is a sine", "θ from the horizontal" (whose cos θ is another's
+# sin θ); or state its dimensions, which a prompt may ask for ("… dimensionless", "units of force").
+# A person reads them against the formula.
 _OTHERWISE = re.compile(
-    r"\b(?:up|upward|upwards|down|downward|downwards|clockwise|anticlockwise|counterclockwise|"
+    r"\b(?:up|upward|upwards|down|downward|downwards|horizontal|horizontally|clockwise|anticlockwise|counterclockwise|"
     r"inverted|invert|flipped|flip|reversed|reverse|swapped|swap|interchanged|except|instead|replaced|"
     r"replace|wrong|mistake|typo|actually|should|meant|dimension|dimensions|dimensionless|units?\s+of)\b(?!\s+to\b)",
     re.I,

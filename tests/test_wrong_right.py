@@ -1,0 +1,221 @@
+"""Wrong answers that were once marked right, or earned credit they do not deserve, by kind.
+
+Each row is an answer a student could write, the verdict it must get, and what it is told.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from grader import compare
+
+PENDULUM = {"coords": ["theta"], "known": ["m", "g", "l"]}
+L_PENDULUM = "1/2 m l^2 thetadot^2 + m g l cos(theta)"
+ATWOOD = {"coords": ["x"], "known": ["m1", "m2", "g"]}
+L_ATWOOD = "1/2 (m1 + m2) xdot^2 + (m1 - m2) g x"
+DOUBLE = {"coords": ["theta1", "theta2"], "known": ["m1", "m2", "l1", "l2", "g"]}
+L_DOUBLE = (
+    "1/2 (m1 + m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m2 l1 l2 theta1dot theta2dot cos(theta1 - theta2)"
+    " + (m1 + m2) g l1 cos(theta1) + m2 g l2 cos(theta2)"
+)
+
+UNDECIDED = "This answer could not be checked automatically; it has been set aside for a person to grade."
+ACCELERATIONS = "but a Lagrangian is a function of the coordinates, the velocities and the time alone."
+
+LAGRANGIANS = [
+    # (expected, submitted, setting, status, score, first feedback sentence)
+    # d/dt(m l² θ θ̇) − m l² θ̇²... written with θ̈: it has no kinetic energy, yet read θ̈ as fixed it passed
+    (L_PENDULUM, "m l^2 θ̇^2 + m l^2 θ θ̈ + m g l cos θ", PENDULUM, "not_equivalent", 0.0,
+     f"Your Lagrangian has θ̈ in it, {ACCELERATIONS}"),
+    # d/dt of a function of the velocity: it raises the order of Lagrange's equations
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 θ̇ θ̈", PENDULUM, "not_equivalent", 0.0,
+     f"Your Lagrangian has θ̈ in it, {ACCELERATIONS}"),
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 d^2θ/dt^2", PENDULUM, "not_equivalent", 0.0,
+     f"Your Lagrangian has θ̈ in it, {ACCELERATIONS}"),
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 theta'''", PENDULUM, "not_equivalent", 0.0,
+     f"Your Lagrangian has θ⃛ in it, {ACCELERATIONS}"),
+    (L_ATWOOD, "(m1 + m2) ẋ^2 + (m1 + m2) x ẍ + (m1 - m2) g x", ATWOOD, "not_equivalent", 0.0,
+     f"Your Lagrangian has ẍ in it, {ACCELERATIONS}"),
+    (L_DOUBLE, f"{L_DOUBLE} + m2 l1^2 θ₁ θ̈₁ + m2 l2^2 θ̈₂", DOUBLE, "not_equivalent", 0.0,
+     f"Your Lagrangian has θ̈₁, θ̈₂ in it, {ACCELERATIONS}"),
+    # the momentum m l² (θ̇ + sgn θ̇) steps where θ̇ passes 0, which no sample state sees: for a person
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 |θ̇|", PENDULUM, "undecided", 0.0, UNDECIDED),
+    (L_PENDULUM, f"{L_PENDULUM} + m l sqrt(l^2 θ̇^2)", PENDULUM, "undecided", 0.0, UNDECIDED),
+    # |θ̇|² is θ̇², with no kink: 2 (T − V) so written earns its half, and goes to no person
+    (L_PENDULUM, "m l^2 |θ̇|^2 + 2 m g l cos θ", PENDULUM, "not_equivalent", 0.5,
+     "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention L = T − V fixes"
+     " the normalization."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "setting", "status", "score", "sentence"), LAGRANGIANS)
+def test_a_lagrangian_is_right_only_up_to_d_dt_of_a_function_of_q_and_t(
+    expected, submitted, setting, status, score, sentence
+):
+    verdict = compare(expected, submitted, kind="lagrangian", **setting)
+    assert (verdict.status, verdict.score) == (status, score), verdict
+    assert sentence in verdict.feedback, verdict
+
+
+PERIOD = "2*pi*sqrt(1/9.81)"  # 2.006 s
+
+NUMBERS = [
+    # (submitted, status, feedback): the period of a pendulum of 1 m, asked in seconds
+    # units of time spelled so the number was read alone, and the word taken for a remark after it
+    ("2.006 mins", "not_equivalent", ("Not within the accepted tolerance.", "Read as 120.36 s.")),
+    ("2.006 hrs", "not_equivalent", ("Not within the accepted tolerance.", "Read as 7221.6 s.")),
+    ("2.006 days", "not_equivalent", ("Not within the accepted tolerance.", "Read as 173318 s.")),
+    ("2.006 milliseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s.")),
+    ("2.006 Hertz", "not_equivalent", ("Your answer is in 1/s, but the quantity asked for is measured in s.",)),
+    ("2006 milliseconds", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 Seconds", "equivalent", ("Correct.",)),
+    # a remark that names another unit, or per cent, says what the number is in
+    ("2.006 (in minutes)", "invalid", ("A number is asked for here; your answer contains `in` and `minutes`.",)),
+    ("2.006 percent", "invalid", ("A number is asked for here; your answer contains `percent`.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), NUMBERS)
+def test_a_number_is_read_with_the_unit_it_is_written_in(submitted, status, feedback):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s")
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+HOOP = {"coords": ["theta"], "known": ["m", "R", "omega", "g"]}
+EOM_HOOP = "R thetaddot - R omega^2 sin(theta) cos(theta) + g sin(theta) = 0"
+EOM_DOUBLE_1 = "(m1 + m2) l1 θ̈₁ + m2 l2 θ̈₂ cos(θ₁ − θ₂) + m2 l2 θ̇₂² sin(θ₁ − θ₂) + (m1 + m2) g sin θ₁ = 0"
+EOM_DOUBLE_2 = "l2 θ̈₂ + l1 θ̈₁ cos(θ₁ − θ₂) − l1 θ̇₁² sin(θ₁ − θ₂) + g sin θ₂"
+VANISHING = (
+    "Your equation is right only where a factor of it is not zero: where that factor is zero, it no longer says"
+    " what the acceleration is. Divide that factor out."
+)
+VANISHING_SYSTEM = (
+    "One of your equations is right only where a factor of it is not zero: where that factor is zero, your"
+    " equations no longer determine every acceleration. Divide that factor out."
+)
+
+PARAMETER_FACTORS = [
+    # (expected, submitted, kind, setting, feedback): a factor of the parameters alone that vanishes where
+    # both draws of the parameters leave it of one sign; m₁ − m₂ changed sign between them, and was caught
+    (EOM_HOOP, f"(R omega^2 - g) ({EOM_HOOP.removesuffix(' = 0')}) = 0", "equation", HOOP, VANISHING),
+    (f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2} = 0", f"{EOM_DOUBLE_1}; (l1 − l2) ({EOM_DOUBLE_2}) = 0", "equations", DOUBLE,
+     VANISHING_SYSTEM),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "kind", "setting", "sentence"), PARAMETER_FACTORS)
+def test_a_factor_of_the_parameters_that_vanishes_is_found_whatever_the_draws(
+    expected, submitted, kind, setting, sentence
+):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == ("not_equivalent", (sentence,)), verdict
+
+
+ATWOOD_A = "(m1 - m2) g / (m1 + m2)"
+ACCELERATION = {**ATWOOD, "name": ["xddot", "a", "a_1"]}
+
+LABELS = [
+    # (submitted, status, feedback): the acceleration ẍ asked, named as the coordinate's rate; a label that
+    # names another rate, or the coordinate, gave a velocity or a position, and was graded as ẍ
+    (f"ẋ = {ATWOOD_A}", "undecided",
+     "Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+     " which you meant."),
+    (f"x''' = {ATWOOD_A}", "undecided",
+     "Your answer is labelled x⃛, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+     " which you meant."),
+    ("ẋ = (m2 - m1) g / (m1 + m2)", "not_equivalent", "Your answer is labelled ẋ, but the quantity asked for is ẍ."),
+    (f"x = {ATWOOD_A}", "undecided",  # was so before, but said "xddot" for ẍ
+     "Your answer is labelled x, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+     " which you meant."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "sentence"), LABELS)
+def test_a_label_that_names_another_rate_is_not_the_asked_one(submitted, status, sentence):
+    verdict = compare(ATWOOD_A, submitted, kind="expression", **ACCELERATION)
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict
+
+
+NUMBER_LABELS = [
+    # (submitted, status, feedback): the period asked, by the names T, T₀, τ or P; a number labelled with
+    # another quantity's name was graded as the period, its label not read
+    ("f = 2.006", "undecided",
+     "Your answer is labelled f, but the quantity asked for is T. Read as T, it is right; a person will check"
+     " which you meant."),
+    ("ω = 2.006 s", "undecided",
+     "Your answer is labelled ω, but the quantity asked for is T. Read as T, it is right; a person will check"
+     " which you meant."),
+    ("f = 0.319", "not_equivalent", "Your answer is labelled f, but the quantity asked for is T."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "sentence"), NUMBER_LABELS)
+def test_a_number_labelled_with_another_quantity_is_not_the_asked_one(submitted, status, sentence):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s", name=["T", "T_0", "tau", "P"])
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict
+
+
+PARTLY_RIGHT = [
+    # (submitted, status, score, feedback): a Lagrangian right only in part, read in a way a person would confirm
+    # were it right: it was told "Its value was graded and is right", or "Read as L, it is right"
+    ("H = m l^2 θ̇^2 + 2 m g l cos θ", "undecided", 0.5, (
+        "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention L = T − V fixes"
+        " the normalization.",
+        "Your answer is labelled H, but the quantity asked for is L.")),
+    ("L = T + V = m l^2 θ̇^2 + 2 m g l cos θ", "undecided", 0.5, (
+        "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention L = T − V fixes"
+        " the normalization.",
+        "Your answer says `L = T + V` on the way to its value, which is not what L is.")),
+    # L = V − T, as its value is: said once
+    ("T = 1/2 m l^2 θ̇^2; V = -m g l cos θ; L = V - T", "not_equivalent", 0.5,
+     ("Your Lagrangian has the opposite sign: it is V − T; the Lagrangian is L = T − V.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "score", "feedback"), PARTLY_RIGHT)
+def test_an_answer_right_in_part_is_not_told_it_is_right(submitted, status, score, feedback):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, score, feedback), verdict
+
+
+def test_a_count_of_one_pair_is_not_one():
+    # 1 pair is 2: as 2 pairs was, the number goes to a person, who decides which it is; before, 1 was graded
+    verdict = compare("1", "1 pair", kind="integer", name="n")
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 0.0, (
+        "Your number `1` comes with `pair`, which may make it another number, or no one number: a person will"
+        " decide what your answer is.",
+    ))  # fmt: skip
+
+
+def test_words_that_set_another_angle_go_to_a_person():
+    # θ from the horizontal makes cos θ the other convention's sin θ: the words were read past, as harmless
+    verdict = compare(
+        L_PENDULUM, f"{L_PENDULUM} with theta measured from the horizontal", kind="lagrangian", **PENDULUM
+    )
+    assert (verdict.status, verdict.feedback) == ("undecided", (
+        "Your answer says `with theta measured from the horizontal` beside the formula. The formula was graded on"
+        " its own; a person will read the words against it.",
+    )), verdict  # fmt: skip
+
+
+COUNTS_WORKED = [
+    # (submitted, status, feedback): a count worked out with values given after it, which do not come to it
+    ("n = 3N - k = 1, where N = 1, k = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `3N - k, where N = 1, k = 1`, does not"
+     " hold: a person will check this answer."),
+    # the arithmetic that gives its reason: 3 − 1 is 2
+    ("1, since 3 − 1 = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `1, since 3 − 1 = 1`, does not hold: a"
+     " person will check this answer."),
+    ("n = 3N - k = 3, where N = 1, k = 1", "not_equivalent",
+     "Graded your final value, `3`; your working, `3N - k, where N = 1, k = 1`, does not hold."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "sentence"), COUNTS_WORKED)
+def test_a_count_worked_out_with_values_that_do_not_come_to_it_is_for_a_person(submitted, status, sentence):
+    verdict = compare("1", submitted, kind="integer", name="n")
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict
