@@ -573,7 +573,7 @@ class _Parser:
             op = self.advance()
             term = self.term()
             terms.append(-term if op.value == "-" else term)
-        return sympy.Add(*terms)
+        return _sum(terms)
 
     def term(self):
         factors = [self.signed()]
@@ -600,7 +600,7 @@ class _Parser:
             else:
                 break
             previous_was_number = self.tokens[self.i - 1].kind == "num"
-        product = sympy.Mul(*factors)
+        product = _product(factors)
         _check_size(product, self.tokens[self.i - 1])  # 9^99·9^99·… is within every limit but one
         return product
 
@@ -632,7 +632,7 @@ class _Parser:
             *prefix, base = self.name(self.advance())
         else:
             base = self.primary()
-        return sympy.Mul(*prefix, self.exponent_of(base))
+        return _product([*prefix, self.exponent_of(base)])
 
     def exponent_of(self, base):
         token = self.token
@@ -659,7 +659,7 @@ class _Parser:
             self.advance()
             return sympy.Rational(token.value)
         if token.kind == "name":
-            return sympy.Mul(*self.name(self.advance()))
+            return _product(self.name(self.advance()))
         if token.kind == "func":
             self.advance()
             return self.function(token)
@@ -1453,6 +1453,22 @@ def holds_any(value, atoms: frozenset) -> bool:
     ``value.has(*atoms)`` hashes every node, then walks once more for each atom to match it, and a
     new answer's value is new to its cache."""
     return any(node.is_Atom and node in atoms for node in iterargs(value))
+
+
+def _product(factors: list):
+    """``sympy.Mul(*factors)``: most products the grammar builds have one factor, which is the
+    product itself; sympy would hash it for its cache to say so. A non-expression goes to
+    sympy, which refuses it as before."""
+    if len(factors) == 1 and isinstance(factors[0], sympy.Expr):
+        return factors[0]
+    return sympy.Mul(*factors)
+
+
+def _sum(terms: list):
+    """``sympy.Add(*terms)``, as :func:`_product`: most sums the grammar builds have one term."""
+    if len(terms) == 1 and isinstance(terms[0], sympy.Expr):
+        return terms[0]
+    return sympy.Add(*terms)
 
 
 def _quotient(numerator, denominator, token: Token):
