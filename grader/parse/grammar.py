@@ -2,6 +2,7 @@
 
 Contents:
     TIME                  the symbol ``t`` the coordinates depend on
+    coordinate(name)      a coordinate as a function of t, one object per name (time_derivative: its rates)
     Context               what a problem defines: coordinates and known symbols
     parse_tokens(...)     tokens → an expression, an ``Eq``, or a tuple of ``Eq``
 
@@ -50,12 +51,28 @@ from grader.parse.names import (
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
-__all__ = ["ANSWER", "TIME", "Context", "holds_any", "parse_tokens", "too_many_digits"]
+__all__ = ["ANSWER", "TIME", "Context", "coordinate", "holds_any", "parse_tokens", "time_derivative", "too_many_digits"]
 
 TIME = sympy.Symbol("t", real=True)
 # The name an expression followed by the definitions of its names stands under: ``½ m v², v = l θ̇``
 # reads as answer = ½ m v²; v = l θ̇, as ``L = ½ m v², v = l θ̇`` reads L = …
 ANSWER = sympy.Symbol("answer")
+
+
+@lru_cache(maxsize=256)
+def coordinate(name: str) -> sympy.Expr:
+    """The coordinate ``name`` (canonical) as a function of :data:`TIME`, one object for every
+    context and setting that has it: the checker looks an answer's θ(t) and θ̇ up in dictionaries
+    of its own (plain symbols, compiled variables), and the same object is found at once, where
+    an equal one built apart is compared with it node by node."""
+    return sympy.Function(name, real=True)(TIME)
+
+
+@lru_cache(maxsize=1024)
+def time_derivative(q: sympy.Expr, order: int) -> sympy.Expr:
+    """d^order q/dt^order, one object for each, as :func:`coordinate` is (and slow to build)."""
+    return sympy.Derivative(q, (TIME, order))
+
 
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
 _ANGLE_FUNCTIONS = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
@@ -106,7 +123,7 @@ class Context:
         for coord in coords:
             if isinstance(coord, str):
                 name = canonical_name(coord)
-                coord_map[name] = sympy.Function(name, real=True)(TIME)
+                coord_map[name] = coordinate(name)
             else:
                 coord_map[coord.func.__name__] = coord
         known_map = {}
@@ -126,7 +143,7 @@ class Context:
         ``Derivative`` is slow to build, and every θ̇ of every answer needs one."""
         key = (coordinate, order)
         if key not in self._derivatives:
-            self._derivatives[key] = sympy.Derivative(coordinate, (TIME, order))
+            self._derivatives[key] = time_derivative(coordinate, order)
         return self._derivatives[key]
 
     def applied(self, name: str, argument) -> sympy.Expr:
