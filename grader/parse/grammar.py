@@ -2,6 +2,7 @@
 
 Contents:
     TIME                  the symbol ``t`` the coordinates depend on
+    coordinate(name)      a coordinate as a function of t, one object per name (time_derivative: its rates)
     Context               what a problem defines: coordinates and known symbols
     parse_tokens(...)     tokens → an expression, an ``Eq``, or a tuple of ``Eq``
 
@@ -51,12 +52,28 @@ from grader.parse.names import (
 )
 from grader.parse.tokens import LIMITS, Name, Token
 
-__all__ = ["ANSWER", "TIME", "Context", "holds_any", "parse_tokens", "too_many_digits"]
+__all__ = ["ANSWER", "TIME", "Context", "coordinate", "holds_any", "parse_tokens", "time_derivative", "too_many_digits"]
 
 TIME = sympy.Symbol("t", real=True)
 # The name an expression followed by the definitions of its names stands under: ``½ m v², v = l θ̇``
 # reads as answer = ½ m v²; v = l θ̇, as ``L = ½ m v², v = l θ̇`` reads L = …
 ANSWER = sympy.Symbol("answer")
+
+
+@lru_cache(maxsize=256)
+def coordinate(name: str) -> sympy.Expr:
+    """The coordinate ``name`` (canonical) as a function of :data:`TIME`, one object for every
+    context and setting that has it: the checker looks an answer's θ(t) and θ̇ up in dictionaries
+    of its own (plain symbols, compiled variables), and the same object is found at once, where
+    an equal one built apart is compared with it node by node."""
+    return sympy.Function(name, real=True)(TIME)
+
+
+@lru_cache(maxsize=1024)
+def time_derivative(q: sympy.Expr, order: int) -> sympy.Expr:
+    """d^order q/dt^order, one object for each, as :func:`coordinate` is (and slow to build)."""
+    return sympy.Derivative(q, (TIME, order))
+
 
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
 _ANGLE_FUNCTIONS = frozenset({"sin", "cos", "tan", "cot", "sec", "csc"})
@@ -107,7 +124,7 @@ class Context:
         for coord in coords:
             if isinstance(coord, str):
                 name = canonical_name(coord)
-                coord_map[name] = sympy.Function(name, real=True)(TIME)
+                coord_map[name] = coordinate(name)
             else:
                 coord_map[coord.func.__name__] = coord
         known_map = {}
@@ -127,7 +144,7 @@ class Context:
         ``Derivative`` is slow to build, and every θ̇ of every answer needs one."""
         key = (coordinate, order)
         if key not in self._derivatives:
-            self._derivatives[key] = sympy.Derivative(coordinate, (TIME, order))
+            self._derivatives[key] = time_derivative(coordinate, order)
         return self._derivatives[key]
 
     def applied(self, name: str, argument) -> sympy.Expr:
@@ -601,7 +618,7 @@ class _Parser:
             op = self.advance()
             term = self.term()
             terms.append(-term if op.value == "-" else term)
-        return sympy.Add(*terms)
+        return _sum(terms)
 
     def term(self):
         factors = [self.signed()]
@@ -629,7 +646,7 @@ class _Parser:
             else:
                 break
             previous_was_number = self.tokens[self.i - 1].kind == "num"
-        product = sympy.Mul(*factors)
+        product = _product(factors)
         _check_size(product, self.tokens[self.i - 1])  # 9^99·9^99·… is within every limit but one
         return product
 
@@ -661,7 +678,7 @@ class _Parser:
             *prefix, base = self.name(self.advance())
         else:
             base = self.primary()
-        return sympy.Mul(*prefix, self.exponent_of(base))
+        return _product([*prefix, self.exponent_of(base)])
 
     def exponent_of(self, base):
         token = self.token
@@ -688,7 +705,7 @@ class _Parser:
             self.advance()
             return sympy.Rational(token.value)
         if token.kind == "name":
-            return sympy.Mul(*self.name(self.advance()))
+            return _product(self.name(self.advance()))
         if token.kind == "func":
             self.advance()
             return self.function(token)
@@ -1490,6 +1507,22 @@ def holds_any(value, atoms: frozenset) -> bool:
     ``value.has(*atoms)`` hashes every node, then walks once more for each atom to match it, and a
     new answer's value is new to its cache."""
     return any(node.is_Atom and node in atoms for node in iterargs(value))
+
+
+def _product(factors: list):
+    """``sympy.Mul(*factors)``: most products the grammar builds have one factor, which is the
+    product itself; sympy would hash it for its cache to say so. A non-expression goes to
+    sympy, which refuses it as before."""
+    if len(factors) == 1 and isinstance(factors[0], sympy.Expr):
+        return factors[0]
+    return sympy.Mul(*factors)
+
+
+def _sum(terms: list):
+    """``sympy.Add(*terms)``, as :func:`_product`: most sums the grammar builds have one term."""
+    if len(terms) == 1 and isinstance(terms[0], sympy.Expr):
+        return terms[0]
+    return sympy.Add(*terms)
 
 
 def _quotient(numerator, denominator, token: Token):
