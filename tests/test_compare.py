@@ -5521,6 +5521,24 @@ DEFINITION_BEFORE = (
     (ATWOOD_A, "Let M = m₁ + m₂. Then ẍ = g (m₁ − m₂)/(m₁ − m₂)", ATWOOD, "not_equivalent",
      ("Your answer depends on g as the right answer does, but not on m₁ and m₂: check how your answer depends on"
       " m₁ and m₂.", _unused("Let … Then", "M = m₁ + m₂"))),
+    # several names defined, after `,` or `and`, as after the formula: before, the second's colon refused
+    ("m xddot + b xdot + k x = 0", "With γ = b/(2m), ω0² = k/m: ẍ + 2γẋ + ω0² x = 0", {**DAMPED, "kind": "equation"},
+     "equivalent", ("Correct.", _defined_before("With", "γ = b/(2m) and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "With γ = b/(2m), ω0² = k/(2m): ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "not_equivalent",
+     ("A term differs: the term in x has the wrong factor.", _defined_before("With", "γ = b/(2m) and ω0² = k/(2m)"))),
+    ("m xddot + b xdot + k x = 0", "With γ = b/(2m) and ω0² = k/m: ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "equivalent",
+     ("Correct.", _defined_before("With", "γ = b/(2m) and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "With γ = b/m and ω0² = k/m: ẍ + 2γẋ + ω0² x = 0", {**DAMPED, "kind": "equation"},
+     "not_equivalent", ("A term differs: the velocity-dependent term in ẋ has the wrong factor.",
+                        _defined_before("With", "γ = b/m and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "Let γ = b/(2m), and ω0² = k/m, then ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "equivalent",
+     ("Correct.", _defined_before("Let … then", "γ = b/(2m) and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "Let γ = b/(2m), and ω0² = −k/m, then ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "not_equivalent",
+     ("A term differs: the term in x has the wrong sign.", _defined_before("Let … then", "γ = b/(2m) and ω0² = −k/m"))),
 )  # fmt: skip
 
 
