@@ -4939,6 +4939,15 @@ def test_a_right_value_under_another_quantitys_name_goes_to_a_person(submitted, 
         ("∂T/∂θ̇ = −m g r sin θ", "undecided",
          "Your answer is labelled ∂T/∂θ̇, but the quantity asked for is Q_θ. Read as Q_θ, it is right; a person will"
          " check which you meant."),
+        # −∂V/∂θ is Q_θ, as the prompt defines it; −∂V/∂r is Q_r, another quantity: before, `∂` refused
+        ("−∂V/∂θ = −m g r sin θ", "equivalent", "Correct."),
+        ("−∂V/∂θ = m g r sin θ", "not_equivalent", "The overall sign is wrong."),
+        ("-\\frac{\\partial V}{\\partial \\theta} = -m g r \\sin\\theta", "equivalent", "Correct."),
+        ("−∂V/∂r = −m g r sin θ", "undecided",
+         "Your answer is labelled −∂V/∂r, but the quantity asked for is Q_θ. Read as Q_θ, it is right; a person will"
+         " check which you meant."),
+        ("−∂V/∂r = m g r sin θ", "not_equivalent",
+         "Your answer is labelled −∂V/∂r, but the quantity asked for is Q_θ."),
     ],
 )  # fmt: skip
 def test_a_label_that_is_a_partial_derivative_is_shown_as_typed(submitted, status, first):

@@ -1303,6 +1303,8 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
         return ParsedAnswer(answer.text, value.rhs, "expression")  # ½ m v², where v = l θ̇: an expression
     if spec.shape != "expression" or not isinstance(value, sympy.Eq) or value.rhs.has(value.lhs):
         return answer
+    if _force_named(value.lhs) is not None:  # −∂V/∂θ = …: Q_θ's value, not ∂V/∂θ's
+        return ParsedAnswer(answer.text, value.rhs, "expression")
     named = isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
     undefined = {symbol.name for symbol in value.lhs.free_symbols} - expected.names
     defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
@@ -1347,7 +1349,12 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     lhs = _label_of(side)
     described = expected.setting.describe
     rates = dict(_rates_named(names, expected))
-    if isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
+    force = _force_named(side)
+    if force is not None:  # −∂V/∂r where Q_θ is asked: as typed
+        if _is_asked(force, names):
+            return None
+        said = f"−{_quotient_shown(lhs.name)}"
+    elif isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
         # where the quantity is named as a coordinate's rate (ẍ), another rate is another quantity:
         # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity
         name, order = lhs.expr.func.__name__, lhs.derivative_count
@@ -1363,6 +1370,14 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         return None  # T − V = …, and ẍ = … where the quantity is not named as a rate: no name of one quantity
     asked = _rates_named(names[:1], expected)
     return ("label_for_a_person", {"label": said, "name": unicode_name(*asked[0]) if asked else described(names[:1])})
+
+
+def _force_named(side) -> str | None:
+    """``Q_θ`` for the left side ``−∂V/∂θ`` (or ``−∂U/∂θ``), the generalized force as the prompts define
+    it (``Q_j = −∂V/∂q_j``); None for any other side."""
+    coefficient, quotient = side.as_coeff_Mul()
+    found = re.fullmatch(r"d[VU]_d(\w+)", quotient.name) if coefficient == -1 and quotient.is_Symbol else None
+    return canonical_name(f"Q_{found[1]}") if found else None
 
 
 def _rates_named(names: tuple, expected: Expected) -> list[tuple[str, int]]:
