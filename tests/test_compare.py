@@ -4972,6 +4972,31 @@ def test_a_value_may_come_before_its_name(submitted, status):
     assert "not define" not in " ".join(verdict.feedback), verdict
 
 
+_ATWOOD_NAMED = {"coords": ["x"], "known": ["m1", "m2", "g"], "name": ["xddot", "a", "a_1"]}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # the asked rate negated, or after its value: before, "An expression is asked for here"
+        ("−ẍ = (m2 − m1) g/(m1 + m2)", "equivalent", ("Correct.",)),
+        ("−ẍ = (m1 − m2) g/(m1 + m2)", "not_equivalent", ("The overall sign is wrong.",)),
+        ("g (m1 − m2)/(m1 + m2) = ẍ", "equivalent", ("Correct.",)),
+        ("g (m2 − m1)/(m1 + m2) = ẍ", "not_equivalent", ("The overall sign is wrong.",)),
+        # another rate so is another quantity's value: for a person
+        ("−ẋ = (m2 − m1) g/(m1 + m2)", "undecided",
+         ("Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+          " which you meant.",)),
+        ("g (m1 − m2)/(m1 + m2) = ẋ", "undecided",
+         ("Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+          " which you meant.",)),
+    ],
+)  # fmt: skip
+def test_a_rate_named_negated_or_after_its_value_is_the_name_of_the_value(submitted, status, feedback):
+    verdict = compare(ATWOOD_A, submitted, **_ATWOOD_NAMED)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status", "score", "feedback"),
     [

@@ -1283,12 +1283,16 @@ def _said_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tupl
 
 def _name_on_the_left(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``m l² sin²θ φ̇ = p_φ``: a quantity's value, then its name, read as ``p_φ = m l² sin²θ φ̇``
-    where an expression is asked. The right side is a name the problem does not define, alone,
-    and the left side is in the problem's names (else it is an equation between two of the student's)."""
+    where an expression is asked. The right side is a name the problem does not define, alone, or a
+    coordinate's rate (``… = ẍ``), and the left side is in the problem's names (else it is an equation
+    between two of the student's)."""
     value = answer.value
-    if spec.shape != "expression" or not isinstance(value, sympy.Eq) or not value.rhs.is_Symbol:
+    if spec.shape != "expression" or not isinstance(value, sympy.Eq):
         return answer
-    if value.rhs == ANSWER or value.rhs.name in expected.names:
+    rate = isinstance(value.rhs, sympy.Derivative) and isinstance(value.rhs.expr, AppliedUndef)
+    if not (value.rhs.is_Symbol or rate):
+        return answer
+    if value.rhs == ANSWER or (not rate and value.rhs.name in expected.names):
         return answer
     if not value.lhs.free_symbols or any(symbol.name not in expected.names for symbol in value.lhs.free_symbols):
         return answer
@@ -1305,6 +1309,9 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
         return answer
     if _force_named(value.lhs) is not None:  # −∂V/∂θ = …: Q_θ's value, not ∂V/∂θ's
         return ParsedAnswer(answer.text, value.rhs, "expression")
+    coefficient, rest = value.lhs.as_coeff_Mul()
+    if coefficient == -1 and isinstance(rest, sympy.Derivative | AppliedUndef) and not value.rhs.has(rest):
+        return ParsedAnswer(answer.text, -value.rhs, "expression")  # −ẍ = …: the rate's value, negated
     named = isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
     undefined = {symbol.name for symbol in value.lhs.free_symbols} - expected.names
     defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
