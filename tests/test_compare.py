@@ -1371,6 +1371,13 @@ H_PIVOT = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"  #
          "lagrangian", "equivalent", ("Correct.", _words("(taking V = 0 at the pivot)"))),
         (EOM_PENDULUM, "m l² θ̈ + m g l sin θ = 0 (V = 0 at the pivot)", "equation", "equivalent",
          ("Correct.", _words("(V = 0 at the pivot)"))),
+        # or after a comma, where a word begins it: before, V and `taking` undefined
+        (L_PENDULUM, f"{L_GIVEN}, taking V = 0 at the pivot", "lagrangian", "equivalent",
+         ("Correct.", _words("taking V = 0 at the pivot"))),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ, taking V = 0 at the pivot", "lagrangian", "not_equivalent",
+         ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _words("taking V = 0 at the pivot"))),
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, with the pivot at U = 0.", "lagrangian", "equivalent",
+         ("Correct.", _words("with the pivot at U = 0"))),
         # words that doubt it: for a person, as after any formula
         (L_PENDULUM, f"{L_GIVEN} (V = 0 at the pivot, I think)", "lagrangian", "undecided",
          (_for_a_person("(V = 0 at the pivot, I think)"),)),
@@ -1992,6 +1999,18 @@ def _working(*names):
          (_working("T", "V"), MOTION_LEFT_OUT.replace("equation", "equations").replace("was", "were"))),
         (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ; m l² θ̈ − m g l sin θ = 0", "lagrangian", "not_equivalent",
          (MOTION_LEFT_OUT,)),
+        # so after a step, ⇒ or `so`: before, the equation after it was graded as the Lagrangian, wrong
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ", "lagrangian", "equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ, so m l² θ̈ = −m g l sin θ", "lagrangian", "not_equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ ⇒ θ̈ = −(g/l) sin θ", "lagrangian", "equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l ⇒ θ̈ = −(g/l) sin θ", "lagrangian", "not_equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, r"L = \frac12 m l^2 \dot\theta^2 + m g l \cos\theta \implies m l^2 \ddot\theta = -m g l \sin\theta"
+         r" \Rightarrow \ddot\theta = -\frac{g}{l} \sin\theta", "lagrangian", "equivalent",
+         (MOTION_LEFT_OUT.replace("equation", "equations").replace("was", "were"),)),
     ],
 )  # fmt: skip
 def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):

@@ -1675,6 +1675,7 @@ def _read(
             # only where it splits a glued name: xdot, where x = l sin θ, is the rate of x as read
             if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
                 answer = again
+        answer = _lagrangian_then_motion(answer, submitted, spec, expected, names, deadline)
         answer, notes = _without_words(answer, submitted, expected, names, deadline)
         said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
         if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
@@ -1696,6 +1697,32 @@ def _read(
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)
     return answer, notes
+
+
+def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expected, names: list, deadline):
+    """``L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ`` (or ``⇒``) where a Lagrangian is asked:
+    the parser keeps the step's conclusion, an equation of motion; read as the Lagrangian, then the
+    equations it derives, which are left out and said so (:func:`_without_working`). ``answer`` where
+    the text is not ``L = …`` and then, after each step, an equation with an acceleration and no L."""
+    if spec.name != "lagrangian" or not answer.ok or answer.kind != "equation" or len(submitted) > _STEPS_LENGTH:
+        return answer
+    lines = _STEP.sub("\n", submitted)
+    if lines == submitted or answer.value.lhs == _LAGRANGIAN:
+        return answer
+    read = parse_answer(lines, coords=expected.setting.coords, known=names, deadline=deadline)
+    if not read.ok or read.kind != "equations" or read.value[0].lhs != _LAGRANGIAN:
+        return answer
+    derived = read.value[1:]
+    if any(item.has(_LAGRANGIAN) or not accelerations_in(item, expected) for item in derived):
+        return answer
+    return read
+
+
+# a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)
+_STEP = re.compile(
+    r"\s*(?:⇒|⟹|→|=>|->|\\(?:Rightarrow|Longrightarrow|implies)(?![A-Za-z])|,?\s*\b(?:so|hence|thus|therefore)\b,?)\s*"
+)
+_STEPS_LENGTH = 400  # characters: a longer answer is read as typed
 
 
 def _names_defined(answer: ParsedAnswer, names: list) -> list[str]:

@@ -706,17 +706,22 @@ _CLOSERS = {")": "(", "]": "["}
 
 def formula_then_convention(text: str, names: Collection[str]) -> tuple[str, str] | None:
     """``L = ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)``: the formula, and the remark in
-    brackets that ends the answer, where it states the zero of potential energy and is otherwise
-    prose (:func:`is_prose`): one ``V = 0`` or ``U = 0``, the name not the problem's, and words
-    around it. None for any other text: ``(V = 0 or V = m g l)``, ``(θ = 0 at the top)``, a bracket
+    brackets that ends the answer, or after its last comma where a word begins it (``…, taking V = 0
+    at the pivot``), where it states the zero of potential energy and is otherwise prose
+    (:func:`is_prose`): one ``V = 0`` or ``U = 0``, the name not the problem's, and words around it.
+    None for any other text: ``(V = 0 or V = m g l)``, ``(θ = 0 at the top)``, ``…, V = 0``, a bracket
     that does not end the answer, or one without words."""
     if len(text) > _LENGTH:
         return None
     text = text.rstrip().removesuffix(".").rstrip()
     opener = _opening_of_last_bracket(text)
-    if opener is None:
-        return None
-    inner = text[opener + 1 : -1]
+    if opener is not None:
+        inner, remark = text[opener + 1 : -1], text[opener:]
+    else:  # …, taking V = 0 at the pivot: a word after the comma begins a remark, not an equation
+        opener = _last_comma(text)
+        inner = remark = text[opener + 1 :].strip() if opener is not None else ""
+        if _PROSE_WORD.match(remark) is None:
+            return None
     zeros = list(_ZERO_OF_POTENTIAL.finditer(inner))
     if len(zeros) != 1 or zeros[0]["name"] in names:
         return None
@@ -725,7 +730,17 @@ def formula_then_convention(text: str, names: Collection[str]) -> tuple[str, str
     formula = text[:opener].rstrip(" ,;")
     if not formula or not is_prose(words, names, doubt=True):
         return None
-    return formula, text[opener:]
+    return formula, remark
+
+
+def _last_comma(text: str) -> int | None:
+    """Where the last comma of ``text`` outside brackets is; None where there is none."""
+    depth = 0
+    for i in range(len(text) - 1, -1, -1):
+        depth += (text[i] in _CLOSERS) - (text[i] in _CLOSERS.values())
+        if not depth and text[i] == ",":
+            return i
+    return None
 
 
 def _opening_of_last_bracket(text: str) -> int | None:
