@@ -2108,11 +2108,12 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
     """``− m g r sin θ N·m``, ``… [N m]``, ``…, kg m²/s²``, ``½ m v² + m g h joules``: the formula and
     the unit written after it, where as read the two were one product, or the unit its last term's.
     The unit is the longest end of the text that is a product of units alone, set apart by a bracket
-    or a comma, or of two units or more or a name of several letters (a lone N or J may be the
-    student's own name; kg or joules is none); what comes before it must be a formula in the
-    problem's names (``Q_θ = …`` too, as :func:`_unwrap_named` reads it). None where there is no such
-    end. Returns the formula read, the unit and :func:`in_units` of it. Only an end whose every word
-    is a unit's name is read."""
+    or a comma, or of two units or more or a name of several letters (kg, joules), or newtons or joules
+    alone (N, J: what mechanics measures forces and energies in, where the problem has no such name and
+    its dimensions check the unit; a lone V or T is sooner an energy); what comes before it must be a
+    formula in the problem's names (``Q_θ = …`` too, as :func:`_unwrap_named` reads it). None where
+    there is no such end. Returns the formula read, the unit and :func:`in_units` of it. Only an end
+    whose every word is a unit's name is read."""
     if len(text) > _UNIT_TAIL_LENGTH:
         return None
     for cut in _UNIT_CUTS.finditer(text):
@@ -2135,7 +2136,10 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
         names = {symbol.name for symbol in unit.symbols}
         several = len(sympy.Mul.make_args(unit.value)) > 1 or any(len(name) > 1 for name in names)  # N m, joules
         said = bool(re.search(r"\bin\b", cut.group()))  # "in g" names a unit, grams, whatever else g may be
-        if found is None or found[0] != 1 or (found[1] != 1 and not said) or not (set_apart or several):
+        # − m g r sin θ N: newtons or joules after a formula, as N m is, where the problem has no N or J
+        # and gives the dimensions that check it (a normal force N, or an inertia J, is then no unit's size)
+        lone = unit.value.is_Symbol and unit.value.name in _LONE_UNITS and _expected_units(spec, expected) is not None
+        if found is None or found[0] != 1 or (found[1] != 1 and not said) or not (set_apart or several or lone):
             continue
         if names <= expected.names and not said:
             continue  # nothing here but the problem's names: no unit was written (but "in m" says one)
@@ -2149,6 +2153,7 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
 
 
 _UNIT_TAIL_LENGTH = 300
+_LONE_UNITS = frozenset({"N", "J"})  # units read alone after a formula, as a product of units is
 # where a unit may begin after a formula: a comma, an opening bracket, or a space; and "in" may say it is one
 _UNIT_CUTS = re.compile(r"(?:\s*[,;]\s*\(?\s*|\s*[(\[]\s*|\s+)(?:in\s+)?")
 _IN_UNIT = re.compile(r"(?:^|[\s,;(\[])in\s+\S")
