@@ -1371,6 +1371,13 @@ H_PIVOT = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"  #
          "lagrangian", "equivalent", ("Correct.", _words("(taking V = 0 at the pivot)"))),
         (EOM_PENDULUM, "m l² θ̈ + m g l sin θ = 0 (V = 0 at the pivot)", "equation", "equivalent",
          ("Correct.", _words("(V = 0 at the pivot)"))),
+        # or after a comma, where a word begins it: before, V and `taking` undefined
+        (L_PENDULUM, f"{L_GIVEN}, taking V = 0 at the pivot", "lagrangian", "equivalent",
+         ("Correct.", _words("taking V = 0 at the pivot"))),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ, taking V = 0 at the pivot", "lagrangian", "not_equivalent",
+         ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", _words("taking V = 0 at the pivot"))),
+        (L_PENDULUM, "½ m l² θ̇² + m g l cos θ, with the pivot at U = 0.", "lagrangian", "equivalent",
+         ("Correct.", _words("with the pivot at U = 0"))),
         # words that doubt it: for a person, as after any formula
         (L_PENDULUM, f"{L_GIVEN} (V = 0 at the pivot, I think)", "lagrangian", "undecided",
          (_for_a_person("(V = 0 at the pivot, I think)"),)),
@@ -1992,6 +1999,18 @@ def _working(*names):
          (_working("T", "V"), MOTION_LEFT_OUT.replace("equation", "equations").replace("was", "were"))),
         (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ; m l² θ̈ − m g l sin θ = 0", "lagrangian", "not_equivalent",
          (MOTION_LEFT_OUT,)),
+        # so after a step, ⇒ or `so`: before, the equation after it was graded as the Lagrangian, wrong
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ", "lagrangian", "equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ, so m l² θ̈ = −m g l sin θ", "lagrangian", "not_equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ ⇒ θ̈ = −(g/l) sin θ", "lagrangian", "equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l ⇒ θ̈ = −(g/l) sin θ", "lagrangian", "not_equivalent",
+         (MOTION_LEFT_OUT,)),
+        (L_PENDULUM, r"L = \frac12 m l^2 \dot\theta^2 + m g l \cos\theta \implies m l^2 \ddot\theta = -m g l \sin\theta"
+         r" \Rightarrow \ddot\theta = -\frac{g}{l} \sin\theta", "lagrangian", "equivalent",
+         (MOTION_LEFT_OUT.replace("equation", "equations").replace("was", "were"),)),
     ],
 )  # fmt: skip
 def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):
@@ -4939,6 +4958,15 @@ def test_a_right_value_under_another_quantitys_name_goes_to_a_person(submitted, 
         ("∂T/∂θ̇ = −m g r sin θ", "undecided",
          "Your answer is labelled ∂T/∂θ̇, but the quantity asked for is Q_θ. Read as Q_θ, it is right; a person will"
          " check which you meant."),
+        # −∂V/∂θ is Q_θ, as the prompt defines it; −∂V/∂r is Q_r, another quantity: before, `∂` refused
+        ("−∂V/∂θ = −m g r sin θ", "equivalent", "Correct."),
+        ("−∂V/∂θ = m g r sin θ", "not_equivalent", "The overall sign is wrong."),
+        ("-\\frac{\\partial V}{\\partial \\theta} = -m g r \\sin\\theta", "equivalent", "Correct."),
+        ("−∂V/∂r = −m g r sin θ", "undecided",
+         "Your answer is labelled −∂V/∂r, but the quantity asked for is Q_θ. Read as Q_θ, it is right; a person will"
+         " check which you meant."),
+        ("−∂V/∂r = m g r sin θ", "not_equivalent",
+         "Your answer is labelled −∂V/∂r, but the quantity asked for is Q_θ."),
     ],
 )  # fmt: skip
 def test_a_label_that_is_a_partial_derivative_is_shown_as_typed(submitted, status, first):
@@ -4961,6 +4989,31 @@ def test_a_value_may_come_before_its_name(submitted, status):
     verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)
     assert verdict.status == status, verdict
     assert "not define" not in " ".join(verdict.feedback), verdict
+
+
+_ATWOOD_NAMED = {"coords": ["x"], "known": ["m1", "m2", "g"], "name": ["xddot", "a", "a_1"]}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # the asked rate negated, or after its value: before, "An expression is asked for here"
+        ("−ẍ = (m2 − m1) g/(m1 + m2)", "equivalent", ("Correct.",)),
+        ("−ẍ = (m1 − m2) g/(m1 + m2)", "not_equivalent", ("The overall sign is wrong.",)),
+        ("g (m1 − m2)/(m1 + m2) = ẍ", "equivalent", ("Correct.",)),
+        ("g (m2 − m1)/(m1 + m2) = ẍ", "not_equivalent", ("The overall sign is wrong.",)),
+        # another rate so is another quantity's value: for a person
+        ("−ẋ = (m2 − m1) g/(m1 + m2)", "undecided",
+         ("Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+          " which you meant.",)),
+        ("g (m1 − m2)/(m1 + m2) = ẋ", "undecided",
+         ("Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
+          " which you meant.",)),
+    ],
+)  # fmt: skip
+def test_a_rate_named_negated_or_after_its_value_is_the_name_of_the_value(submitted, status, feedback):
+    verdict = compare(ATWOOD_A, submitted, **_ATWOOD_NAMED)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
 @pytest.mark.parametrize(
@@ -5521,6 +5574,24 @@ DEFINITION_BEFORE = (
     (ATWOOD_A, "Let M = m₁ + m₂. Then ẍ = g (m₁ − m₂)/(m₁ − m₂)", ATWOOD, "not_equivalent",
      ("Your answer depends on g as the right answer does, but not on m₁ and m₂: check how your answer depends on"
       " m₁ and m₂.", _unused("Let … Then", "M = m₁ + m₂"))),
+    # several names defined, after `,` or `and`, as after the formula: before, the second's colon refused
+    ("m xddot + b xdot + k x = 0", "With γ = b/(2m), ω0² = k/m: ẍ + 2γẋ + ω0² x = 0", {**DAMPED, "kind": "equation"},
+     "equivalent", ("Correct.", _defined_before("With", "γ = b/(2m) and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "With γ = b/(2m), ω0² = k/(2m): ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "not_equivalent",
+     ("A term differs: the term in x has the wrong factor.", _defined_before("With", "γ = b/(2m) and ω0² = k/(2m)"))),
+    ("m xddot + b xdot + k x = 0", "With γ = b/(2m) and ω0² = k/m: ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "equivalent",
+     ("Correct.", _defined_before("With", "γ = b/(2m) and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "With γ = b/m and ω0² = k/m: ẍ + 2γẋ + ω0² x = 0", {**DAMPED, "kind": "equation"},
+     "not_equivalent", ("A term differs: the velocity-dependent term in ẋ has the wrong factor.",
+                        _defined_before("With", "γ = b/m and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "Let γ = b/(2m), and ω0² = k/m, then ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "equivalent",
+     ("Correct.", _defined_before("Let … then", "γ = b/(2m) and ω0² = k/m"))),
+    ("m xddot + b xdot + k x = 0", "Let γ = b/(2m), and ω0² = −k/m, then ẍ + 2γẋ + ω0² x = 0",
+     {**DAMPED, "kind": "equation"}, "not_equivalent",
+     ("A term differs: the term in x has the wrong sign.", _defined_before("Let … then", "γ = b/(2m) and ω0² = −k/m"))),
 )  # fmt: skip
 
 

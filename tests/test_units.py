@@ -498,9 +498,10 @@ Q_R = ("m g cos(theta) - k (r - l0)", {"coords": ["r", "theta"], "known": ["m", 
 @pytest.mark.parametrize(
     ("expected", "submitted", "name"),
     [
-        # N may be a normal force and J a moment of inertia: not set apart, they are names still, not read past;
-        # but at the end, a unit's letter is said to be one, and how to write it (before, only a name to define)
-        ((TORQUE, PENDULUM), "−m g l sin θ J", "J"),
+        # N may be a normal force and J a moment of inertia: not set apart, they are names still, not read past,
+        # where no dimensions check them as units (or not N or J); but at the end, a unit's letter is said to be
+        # one, and how to write it (before, only a name to define)
+        ((TORQUE, {"coords": ["theta"], "known": ["m", "g", "l"]}), "−m g l sin θ J", "J"),
         (Q_R, "m g cos θ − k (r − l0) N", "N"),
         (Q_R, "(m g cos θ − k (r − l0)) N.", "N"),
         (Q_R, "m g cos θ − k (r − l0) W", "W"),
@@ -511,6 +512,37 @@ def test_a_lone_unit_letter_after_a_formula_is_said_to_be_a_name_or_a_unit(expec
     verdict = compare(answer, submitted, **setting)
     assert (verdict.status, verdict.diagnosis) == ("not_equivalent", "undefined_unit_letter")
     assert verdict.feedback == (_unit_letter(name),)
+
+
+_Q_R_DIMENSIONS = {"r": "length", "theta": "angle", "m": "mass", "g": "acceleration", "k": "force per length"}
+Q_R_MEASURED = {**Q_R[1], "dimensions": {**_Q_R_DIMENSIONS, "l0": "length"}}
+_NOT_MEASURED_SO = "Your answer is in {}, which is not how the quantity asked for is measured: check its dimensions."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "status", "feedback"),
+    [
+        # newtons or joules alone after a formula, where the dimensions check them, as N m is read: before,
+        # "Your answer ends in `N`, which this problem does not define"
+        ((TORQUE, PENDULUM), "−m g l sin θ J", "equivalent", ("Correct.", LEFT_OUT.format("J"))),
+        ((TORQUE, PENDULUM), "−m g sin θ J", "not_equivalent",
+         ("Your answer is measured in kg·m/s², but the quantity asked for is measured in kg·m²/s²: check the"
+          " dimensions of each factor.", "Your answer depends on g, m and θ as the right answer does, but not on l:"
+          " check how your answer depends on l.", LEFT_OUT.format("J"))),
+        ((TORQUE, PENDULUM), "−m g l sin θ N", "not_equivalent", (_NOT_MEASURED_SO.format("kg·m/s²"),)),
+        ((Q_R[0], Q_R_MEASURED), "m g cos θ − k (r − l0) N", "equivalent", ("Correct.", LEFT_OUT.format("N"))),
+        ((Q_R[0], Q_R_MEASURED), "m g cos θ + k (r − l0) N", "not_equivalent",
+         ("A term differs: the term in r has the wrong sign.", LEFT_OUT.format("N"))),
+        ((Q_R[0], Q_R_MEASURED), "m g cos θ − k (r − l0) J", "not_equivalent",
+         (_NOT_MEASURED_SO.format("kg·m²/s²"),)),
+    ],
+)  # fmt: skip
+def test_newtons_or_joules_alone_after_a_formula_are_its_unit_where_dimensions_check_it(
+    expected, submitted, status, feedback
+):
+    answer, setting = expected
+    verdict = compare(answer, submitted, **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
 @pytest.mark.parametrize(

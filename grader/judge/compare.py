@@ -1283,12 +1283,16 @@ def _said_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tupl
 
 def _name_on_the_left(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``m l² sin²θ φ̇ = p_φ``: a quantity's value, then its name, read as ``p_φ = m l² sin²θ φ̇``
-    where an expression is asked. The right side is a name the problem does not define, alone,
-    and the left side is in the problem's names (else it is an equation between two of the student's)."""
+    where an expression is asked. The right side is a name the problem does not define, alone, or a
+    coordinate's rate (``… = ẍ``), and the left side is in the problem's names (else it is an equation
+    between two of the student's)."""
     value = answer.value
-    if spec.shape != "expression" or not isinstance(value, sympy.Eq) or not value.rhs.is_Symbol:
+    if spec.shape != "expression" or not isinstance(value, sympy.Eq):
         return answer
-    if value.rhs == ANSWER or value.rhs.name in expected.names:
+    rate = isinstance(value.rhs, sympy.Derivative) and isinstance(value.rhs.expr, AppliedUndef)
+    if not (value.rhs.is_Symbol or rate):
+        return answer
+    if value.rhs == ANSWER or (not rate and value.rhs.name in expected.names):
         return answer
     if not value.lhs.free_symbols or any(symbol.name not in expected.names for symbol in value.lhs.free_symbols):
         return answer
@@ -1303,6 +1307,11 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
         return ParsedAnswer(answer.text, value.rhs, "expression")  # ½ m v², where v = l θ̇: an expression
     if spec.shape != "expression" or not isinstance(value, sympy.Eq) or value.rhs.has(value.lhs):
         return answer
+    if _force_named(value.lhs) is not None:  # −∂V/∂θ = …: Q_θ's value, not ∂V/∂θ's
+        return ParsedAnswer(answer.text, value.rhs, "expression")
+    coefficient, rest = value.lhs.as_coeff_Mul()
+    if coefficient == -1 and isinstance(rest, sympy.Derivative | AppliedUndef) and not value.rhs.has(rest):
+        return ParsedAnswer(answer.text, -value.rhs, "expression")  # −ẍ = …: the rate's value, negated
     named = isinstance(value.lhs, sympy.Symbol | sympy.Derivative | AppliedUndef)
     undefined = {symbol.name for symbol in value.lhs.free_symbols} - expected.names
     defined = value.lhs.free_symbols - {sympy.Symbol(name) for name in undefined}
@@ -1347,7 +1356,12 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     lhs = _label_of(side)
     described = expected.setting.describe
     rates = dict(_rates_named(names, expected))
-    if isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
+    force = _force_named(side)
+    if force is not None:  # −∂V/∂r where Q_θ is asked: as typed
+        if _is_asked(force, names):
+            return None
+        said = f"−{_quotient_shown(lhs.name)}"
+    elif isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
         # where the quantity is named as a coordinate's rate (ẍ), another rate is another quantity:
         # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity
         name, order = lhs.expr.func.__name__, lhs.derivative_count
@@ -1363,6 +1377,14 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         return None  # T − V = …, and ẍ = … where the quantity is not named as a rate: no name of one quantity
     asked = _rates_named(names[:1], expected)
     return ("label_for_a_person", {"label": said, "name": unicode_name(*asked[0]) if asked else described(names[:1])})
+
+
+def _force_named(side) -> str | None:
+    """``Q_θ`` for the left side ``−∂V/∂θ`` (or ``−∂U/∂θ``), the generalized force as the prompts define
+    it (``Q_j = −∂V/∂q_j``); None for any other side."""
+    coefficient, quotient = side.as_coeff_Mul()
+    found = re.fullmatch(r"d[VU]_d(\w+)", quotient.name) if coefficient == -1 and quotient.is_Symbol else None
+    return canonical_name(f"Q_{found[1]}") if found else None
 
 
 def _rates_named(names: tuple, expected: Expected) -> list[tuple[str, int]]:
@@ -1653,6 +1675,7 @@ def _read(
             # only where it splits a glued name: xdot, where x = l sin θ, is the rate of x as read
             if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
                 answer = again
+        answer = _lagrangian_then_motion(answer, submitted, spec, expected, names, deadline)
         answer, notes = _without_words(answer, submitted, expected, names, deadline)
         said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
         if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
@@ -1674,6 +1697,32 @@ def _read(
     if answer is None:  # what read_number could not read: as typed, and said why
         answer = parse_answer(text, coords=coords, known=names, deadline=deadline)
     return answer, notes
+
+
+def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expected, names: list, deadline):
+    """``L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ`` (or ``⇒``) where a Lagrangian is asked:
+    the parser keeps the step's conclusion, an equation of motion; read as the Lagrangian, then the
+    equations it derives, which are left out and said so (:func:`_without_working`). ``answer`` where
+    the text is not ``L = …`` and then, after each step, an equation with an acceleration and no L."""
+    if spec.name != "lagrangian" or not answer.ok or answer.kind != "equation" or len(submitted) > _STEPS_LENGTH:
+        return answer
+    lines = _STEP.sub("\n", submitted)
+    if lines == submitted or answer.value.lhs == _LAGRANGIAN:
+        return answer
+    read = parse_answer(lines, coords=expected.setting.coords, known=names, deadline=deadline)
+    if not read.ok or read.kind != "equations" or read.value[0].lhs != _LAGRANGIAN:
+        return answer
+    derived = read.value[1:]
+    if any(item.has(_LAGRANGIAN) or not accelerations_in(item, expected) for item in derived):
+        return answer
+    return read
+
+
+# a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)
+_STEP = re.compile(
+    r"\s*(?:⇒|⟹|→|=>|->|\\(?:Rightarrow|Longrightarrow|implies)(?![A-Za-z])|,?\s*\b(?:so|hence|thus|therefore)\b,?)\s*"
+)
+_STEPS_LENGTH = 400  # characters: a longer answer is read as typed
 
 
 def _names_defined(answer: ParsedAnswer, names: list) -> list[str]:
@@ -2059,11 +2108,12 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
     """``− m g r sin θ N·m``, ``… [N m]``, ``…, kg m²/s²``, ``½ m v² + m g h joules``: the formula and
     the unit written after it, where as read the two were one product, or the unit its last term's.
     The unit is the longest end of the text that is a product of units alone, set apart by a bracket
-    or a comma, or of two units or more or a name of several letters (a lone N or J may be the
-    student's own name; kg or joules is none); what comes before it must be a formula in the
-    problem's names (``Q_θ = …`` too, as :func:`_unwrap_named` reads it). None where there is no such
-    end. Returns the formula read, the unit and :func:`in_units` of it. Only an end whose every word
-    is a unit's name is read."""
+    or a comma, or of two units or more or a name of several letters (kg, joules), or newtons or joules
+    alone (N, J: what mechanics measures forces and energies in, where the problem has no such name and
+    its dimensions check the unit; a lone V or T is sooner an energy); what comes before it must be a
+    formula in the problem's names (``Q_θ = …`` too, as :func:`_unwrap_named` reads it). None where
+    there is no such end. Returns the formula read, the unit and :func:`in_units` of it. Only an end
+    whose every word is a unit's name is read."""
     if len(text) > _UNIT_TAIL_LENGTH:
         return None
     for cut in _UNIT_CUTS.finditer(text):
@@ -2086,7 +2136,10 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
         names = {symbol.name for symbol in unit.symbols}
         several = len(sympy.Mul.make_args(unit.value)) > 1 or any(len(name) > 1 for name in names)  # N m, joules
         said = bool(re.search(r"\bin\b", cut.group()))  # "in g" names a unit, grams, whatever else g may be
-        if found is None or found[0] != 1 or (found[1] != 1 and not said) or not (set_apart or several):
+        # − m g r sin θ N: newtons or joules after a formula, as N m is, where the problem has no N or J
+        # and gives the dimensions that check it (a normal force N, or an inertia J, is then no unit's size)
+        lone = unit.value.is_Symbol and unit.value.name in _LONE_UNITS and _expected_units(spec, expected) is not None
+        if found is None or found[0] != 1 or (found[1] != 1 and not said) or not (set_apart or several or lone):
             continue
         if names <= expected.names and not said:
             continue  # nothing here but the problem's names: no unit was written (but "in m" says one)
@@ -2100,6 +2153,7 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
 
 
 _UNIT_TAIL_LENGTH = 300
+_LONE_UNITS = frozenset({"N", "J"})  # units read alone after a formula, as a product of units is
 # where a unit may begin after a formula: a comma, an opening bracket, or a space; and "in" may say it is one
 _UNIT_CUTS = re.compile(r"(?:\s*[,;]\s*\(?\s*|\s*[(\[]\s*|\s+)(?:in\s+)?")
 _IN_UNIT = re.compile(r"(?:^|[\s,;(\[])in\s+\S")

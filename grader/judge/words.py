@@ -392,7 +392,7 @@ def definition_then_formula(
     sentence = _defining_sentence(text, names, coords)
     if sentence is None:
         return
-    said, left, side, stop, after, handed = sentence
+    said, left, side, stop, after, handed, _ = sentence
     value = text[after:].strip()
     value_equals = _first_equals(value)
     name = _name(left, names, coords)
@@ -415,27 +415,35 @@ def definition_before_formula(
     sentence as :func:`definition_then_formula` reads one (``Using ω₀ = √(g/l), we have ω = ω₀``); None
     for any other text, and where the value is the defined name's own (that is a chain). The value is
     named (``H = …``) or handed over to (``… : p_θ²/(2 m R²) − …``). Neither is checked here."""
-    sentence = _defining_sentence(text, names, coords)
+    sentence = _defining_sentence(text, names, coords, several=True)
     if sentence is None or text[sentence[3]] == "=":
         return None  # Since L = T − V = …: a chain
-    said, left, side, _, after, handed = sentence
+    said, left, side, _, after, handed, more = sentence
     # ω₀² = g/l: the name squared, as a frequency is defined (the answer's reading takes the root)
     value, name = text[after:].strip(), _name(_SQUARED.sub("", left), names, coords)
     value_equals = _first_equals(value)
     named = _name(value[:value_equals], names, coords) if value_equals is not None else None
     if name is None or not value or named == name or not (named or handed):
         return None
-    return said, f"{left} = {side}", value
+    if named is not None and named in {_name(_SQUARED.sub("", other[0]), names, coords) for other in more}:
+        return None  # With γ = …, ω₀² = …: ω₀ = …: the value is a defined name's own
+    return said, " and ".join(f"{one} = {its}" for one, its in ((left, side), *more)), value
 
 
+_DEFINITIONS = 4  # names defined in one sentence, at the most
 _FULL_STOP = re.compile(r"(?<!\.)\.(?=\s)")  # a point before a space ends a sentence: no number's, nor …
 _SQUARED = re.compile(r"\s*(?:²|\^\s*2|\^\s*\{\s*2\s*\}|\*\*\s*2)\s*$")
 
 
-def _defining_sentence(text: str, names: Collection[str], coords: Collection[str]) -> tuple | None:
+def _defining_sentence(
+    text: str, names: Collection[str], coords: Collection[str], *, several: bool = False
+) -> tuple | None:
     """A sentence that states a definition, then hands over to a value (:func:`definition_then_formula`):
     (the words, the definition's left side and its side, where the side stops, where the value starts,
-    whether words or a colon hand over to it); None where ``text`` begins with no such sentence."""
+    whether words or a colon hand over to it, the further definitions as (left side, side)); None where
+    ``text`` begins with no such sentence. With ``several``, more definitions may follow the first, after
+    ``,``, ``;`` or ``and`` (``With γ = b/(2m), ω₀² = k/m: …``), where a colon or words hand over after the
+    last; else, and where they do not, the sentence defines one name."""
     first = _PROSE_WORD.match(text, len(text) - len(text.lstrip()))
     if len(text) > _LENGTH or first is None or first[0].lower() not in _STATING:
         return None  # as nearly every answer: no sentence that states
@@ -453,6 +461,19 @@ def _defining_sentence(text: str, names: Collection[str], coords: Collection[str
     side = text[equals + 1 : stop].strip() if stop is not None else ""
     if not side or any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
         return None  # L = T − V (not T + V): words in the definition may make it another
+    if several:
+        more, last = _more_definitions(text, stop, names, coords)
+        if more:
+            sentence = _handing_over(text, start, last, names, coords, lead)
+            if sentence is not None and sentence[-1]:
+                return sentence[0], left, side, last, *sentence[1:], tuple(more)
+    sentence = _handing_over(text, start, stop, names, coords, lead)
+    return None if sentence is None else (sentence[0], left, side, stop, *sentence[1:], ())
+
+
+def _handing_over(text: str, start: int, stop: int, names, coords, lead: list[str]) -> tuple | None:
+    """How the definitions from ``start`` to ``stop`` hand over to the value (:func:`_defining_sentence`):
+    (the words, where the value starts, whether words or a colon hand over to it); None where they do not."""
     if text[stop] == "=":  # Since L = T − V = …: the chain as typed
         between, after, handed = [], stop + 1, True
     else:
@@ -463,7 +484,33 @@ def _defining_sentence(text: str, names: Collection[str], coords: Collection[str
     if not is_prose(" ".join((*lead, *between)), names, doubt=True):
         return None
     said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=.")) if part)
-    return re.sub(r"\s+", " ", said), left, side, stop, after, handed
+    return re.sub(r"\s+", " ", said), after, handed
+
+
+def _more_definitions(text: str, stop: int, names, coords) -> tuple[list[tuple[str, str]], int]:
+    """The definitions after the one that stops at ``stop``, each after ``,``, ``;`` or ``and`` (``, and``),
+    as (left side, side), and where the last stops: a name (or its square), ``=`` and a side without words,
+    that ends at ``,``, ``;``, ``:`` or a word, not at a chain's next ``=``."""
+    more: list[tuple[str, str]] = []
+    while len(more) < _DEFINITIONS and (text[stop] in ",;" or text[stop].isalpha()):
+        between, start = _words_from(text, stop + (text[stop] in ",;"), names, coords)
+        if [word.lower() for word in between] not in ([], ["and"]) or (not between and text[stop] not in ",;"):
+            break
+        equals = _stop(text, start, names, coords)
+        if equals is None or text[equals] != "=":
+            break
+        left = text[start:equals].strip()
+        end = _stop(text, equals + 1, names, coords)
+        full_stop = _FULL_STOP.search(text, equals + 1, len(text) if end is None else end)
+        end = full_stop.start() if full_stop else end
+        side = text[equals + 1 : end].strip() if end is not None else ""
+        if end is None or text[end] == "=" or not side or _name(_SQUARED.sub("", left), names, coords) is None:
+            break
+        if any(_is_word(word[0], names, coords) for word in _WORD.finditer(side)):
+            break
+        more.append((left, side))
+        stop = end
+    return more, stop
 
 
 def euler_lagrange_then_formula(
@@ -659,17 +706,22 @@ _CLOSERS = {")": "(", "]": "["}
 
 def formula_then_convention(text: str, names: Collection[str]) -> tuple[str, str] | None:
     """``L = ½ m l² θ̇² + m g l cos θ (taking V = 0 at the pivot)``: the formula, and the remark in
-    brackets that ends the answer, where it states the zero of potential energy and is otherwise
-    prose (:func:`is_prose`): one ``V = 0`` or ``U = 0``, the name not the problem's, and words
-    around it. None for any other text: ``(V = 0 or V = m g l)``, ``(θ = 0 at the top)``, a bracket
+    brackets that ends the answer, or after its last comma where a word begins it (``…, taking V = 0
+    at the pivot``), where it states the zero of potential energy and is otherwise prose
+    (:func:`is_prose`): one ``V = 0`` or ``U = 0``, the name not the problem's, and words around it.
+    None for any other text: ``(V = 0 or V = m g l)``, ``(θ = 0 at the top)``, ``…, V = 0``, a bracket
     that does not end the answer, or one without words."""
     if len(text) > _LENGTH:
         return None
     text = text.rstrip().removesuffix(".").rstrip()
     opener = _opening_of_last_bracket(text)
-    if opener is None:
-        return None
-    inner = text[opener + 1 : -1]
+    if opener is not None:
+        inner, remark = text[opener + 1 : -1], text[opener:]
+    else:  # …, taking V = 0 at the pivot: a word after the comma begins a remark, not an equation
+        opener = _last_comma(text)
+        inner = remark = text[opener + 1 :].strip() if opener is not None else ""
+        if _PROSE_WORD.match(remark) is None:
+            return None
     zeros = list(_ZERO_OF_POTENTIAL.finditer(inner))
     if len(zeros) != 1 or zeros[0]["name"] in names:
         return None
@@ -678,7 +730,17 @@ def formula_then_convention(text: str, names: Collection[str]) -> tuple[str, str
     formula = text[:opener].rstrip(" ,;")
     if not formula or not is_prose(words, names, doubt=True):
         return None
-    return formula, text[opener:]
+    return formula, remark
+
+
+def _last_comma(text: str) -> int | None:
+    """Where the last comma of ``text`` outside brackets is; None where there is none."""
+    depth = 0
+    for i in range(len(text) - 1, -1, -1):
+        depth += (text[i] in _CLOSERS) - (text[i] in _CLOSERS.values())
+        if not depth and text[i] == ",":
+            return i
+    return None
 
 
 def _opening_of_last_bracket(text: str) -> int | None:

@@ -551,18 +551,20 @@ class _Parser:
                 return bottom[0], f"d{top[1]}_d{bottom[1]}"
         return None
 
-    def label(self) -> sympy.Symbol | None:
+    def label(self) -> sympy.Expr | None:
         """The name of the quantity an answer writes out, as in ``L(θ, θ̇) = …`` or ``L = T − V = …``:
-        a name the problem does not define, alone or with a bracket of names, before ``=``.
+        a name the problem does not define, alone or with a bracket of names, before ``=``; or a
+        quotient of ∂s, negated too (``−∂V/∂θ = …``, a generalized force as the prompts define one).
 
         A defined name is never a label: ``m(ẍ) = −k x`` is m·ẍ, and ``ml = …`` is m·l.
         """
         tokens, i = self.tokens, self.i
         token = tokens[i]
-        quotient = self._partial_quotient(i)
+        negated = token.is_op("-")
+        quotient = self._partial_quotient(i + negated)
         if quotient is not None and tokens[quotient[0]].is_op("="):  # ∂L/∂φ̇ = …
             self.i, name = quotient
-            return sympy.Symbol(name)
+            return -sympy.Symbol(name) if negated else sympy.Symbol(name)
         if token.kind != "name" or token.value.dots or token.value.primes:
             return None
         j = i + 1
