@@ -4978,6 +4978,17 @@ def test_a_label_that_is_a_partial_derivative_is_shown_as_typed(submitted, statu
 
 
 @pytest.mark.parametrize(
+    "submitted", ["∂V/∂θ = m g l sin θ", "−∂V/∂θ = −m g l sin θ", r"\frac{\partial V}{\partial \theta} = mgl\sin\theta"]
+)
+def test_a_partial_derivative_where_an_equation_is_asked_is_named_as_typed(submitted):
+    # before: "Your answer uses `dV_dtheta`", and read as dV_dtheta = …
+    verdict = compare("m l^2 thetaddot + m g l sin(theta) = 0", submitted, kind="equation", coords=["theta"])
+    assert verdict.status == "not_equivalent"
+    assert verdict.feedback[0].startswith("Your answer uses `∂V/∂θ`, which this problem does not define")
+    assert "∂V/∂θ = " in verdict.read_as and "dV" not in verdict.read_as
+
+
+@pytest.mark.parametrize(
     ("submitted", "status"),
     [
         ("m l² sin²θ φ̇ = p_φ", "equivalent"),  # before: p_φ was not defined

@@ -763,26 +763,14 @@ def _misstated(answer: ParsedAnswer, expected: Expected, given: tuple = ()) -> t
 def _shown_statement(statement: sympy.Eq) -> str:
     """A definition as a student wrote it: ∂L/∂φ̇ for the name the parser reads it as, Σ p q̇ for the
     product of its sum's symbol."""
-    replacements = {}
-    for symbol in statement.rhs.free_symbols:
-        shown = _quotient_shown(symbol.name)
-        if shown:
-            replacements[symbol] = sympy.Symbol(shown)
-    terms = []
-    for term in sympy.Add.make_args(statement.rhs.xreplace(replacements)):
+    terms = []  # a quotient's name is shown as typed by the printer (see unicode_name)
+    for term in sympy.Add.make_args(statement.rhs):
         if any(symbol.name in _SUMS for symbol in term.free_symbols):
             rest = sympy.Mul(*(f for f in sympy.Mul.make_args(term) if not (f.is_Symbol and f.name in _SUMS)))
             coefficient, rest = rest.as_coeff_Mul()
             term = coefficient * sympy.Symbol("Σ " + to_text(rest).replace("*", " "))
         terms.append(term)
     return to_text(sympy.Eq(statement.lhs, sympy.Add(*terms), evaluate=False))
-
-
-def _quotient_shown(name: str) -> str | None:
-    """``∂V/∂θ`` for the name the parser reads it as, ``dV_dtheta``, and ``∂L/∂φ̇`` for ``dL_dphidot``;
-    None for any other name."""
-    found = re.fullmatch(r"d([LTVU])_d(\w+?)(_?dot)?", name)
-    return f"∂{found[1]}/∂{unicode_name(found[2], 1 if found[3] else 0)}" if found else None
 
 
 def _said_wrong(submitted: str, expected: Expected) -> tuple[str, str] | None:
@@ -1360,7 +1348,7 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     if force is not None:  # −∂V/∂r where Q_θ is asked: as typed
         if _is_asked(force, names):
             return None
-        said = f"−{_quotient_shown(lhs.name)}"
+        said = f"−{unicode_name(lhs.name)}"
     elif isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
         # where the quantity is named as a coordinate's rate (ẍ), another rate is another quantity:
         # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity
@@ -1372,7 +1360,7 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
         if _is_asked(label, names):
             return None  # pφ for p_φ, and p
-        said = _quotient_shown(label) or described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed
+        said = described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed (see unicode_name)
     else:
         return None  # T − V = …, and ẍ = … where the quantity is not named as a rate: no name of one quantity
     asked = _rates_named(names[:1], expected)

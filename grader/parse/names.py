@@ -238,6 +238,10 @@ _GLUED_GREEK = re.compile(
 )
 
 
+# ∂V/∂θ and ∂L/∂φ̇ as the grammar names them (dV_dtheta, dL_dphidot): a letter, then a coordinate
+_QUOTIENT = re.compile(r"d([A-Za-z])_d([A-Za-z]\w*?)(_?dot)?")
+
+
 def unicode_name(name: str, dots: int = 0) -> str:
     """A canonical name as a student would write it by hand, in Unicode.
 
@@ -245,7 +249,15 @@ def unicode_name(name: str, dots: int = 0) -> str:
     ('θ̇₁', 'p_θ', 'x_cm')
     >>> unicode_name("itheta"), unicode_name("xomega_0"), unicode_name("sinu")
     ('iθ', 'xω₀', 'sinu')
+
+    A partial derivative the parser reads as one name, as a chain's label, is shown as typed:
+
+    >>> unicode_name("dV_dtheta"), unicode_name("dL_dphidot"), unicode_name("dF_dxdot")
+    ('∂V/∂θ', '∂L/∂φ̇', '∂F/∂ẋ')
     """
+    quotient = _QUOTIENT.fullmatch(name)
+    if quotient:
+        return f"∂{unicode_name(quotient[1])}/∂{unicode_name(quotient[2], 1 if quotient[3] else 0)}"
     base, _, sub = name.partition("_")
     glued = None if base in GREEK_NAMES else _GLUED_GREEK.fullmatch(base)
     text = glued["head"] + GREEK_NAMES[glued["greek"]] if glued else GREEK_NAMES.get(base, base)
