@@ -72,6 +72,9 @@ NUMBERS = [
     # a remark that names another unit, or per cent, says what the number is in
     ("2.006 (in minutes)", "invalid", ("A number is asked for here; your answer contains `in` and `minutes`.",)),
     ("2.006 percent", "invalid", ("A number is asked for here; your answer contains `percent`.",)),
+    # a value, then its reason: read as 2.5·because·2π√(1/9.81) = 2.006 s, the reason's last side was graded
+    ("2.5 s because 2π√(1/9.81) = 2.006 s", "not_equivalent", ("Not within the accepted tolerance.",
+     "Graded your final value, `2.5 s`; your working, `2.5 s because 2π√(1/9.81) = 2.006 s`, does not hold.")),
 ]  # fmt: skip
 
 
@@ -211,6 +214,28 @@ COUNTS_WORKED = [
      " person will check this answer."),
     ("n = 3N - k = 3, where N = 1, k = 1", "not_equivalent",
      "Graded your final value, `3`; your working, `3N - k, where N = 1, k = 1`, does not hold."),
+    # the count before because, then its reason: read as 3·because − 1 = 1, the reason's last side was graded
+    ("1 because 3 − 1 = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `1 because 3 − 1 = 1`, does not hold: a"
+     " person will check this answer."),
+    ("2 because 3 − 1 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 because 3 − 1 = 1`, does not hold."),
+    ("n = 2 because 3 − 1 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `n = 2 because 3 − 1 = 1`, does not hold."),
+    ("2 because 3 coordinates minus 2 constraints = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 because 3 coordinates minus 2 constraints = 1`, does not"
+     " hold."),
+    # the reason was checked, but not against the count before it
+    ("2, since 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2, since 3 − 2 = 1`, does not hold."),
+    ("n = 1 because 3 − 1 = 2", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `n = 1 because 3 − 1 = 2`, does not hold:"
+     " a person will check this answer."),
+    # a reason that holds, and one that gives the values of names, as before
+    ("1 because 3 − 2 = 1", "equivalent",
+     "Graded the number `1`; what follows it (`because 3 − 2 = 1`) is not graded."),
+    ("1, since 3 − 2 = 1", "equivalent", "Graded the number `1`; what follows it (`since 3 − 2 = 1`) is not graded."),
+    ("n = 3N − k = 1 because N = 1 and k = 2", "equivalent", "Correct."),
 ]  # fmt: skip
 
 

@@ -209,6 +209,9 @@ def _read_number(
         )
         if worked is not None:
             return worked
+    reasoned = _reasoned(text, reads, names, decimal_comma, unit, count, asked) if len(text) <= _LENGTH else None
+    if reasoned is not None:
+        return reasoned
     # n = 2 since k = 4: read as typed, a list whose last new name, k, would be taken for the answer
     given = _given(text, reads, names, decimal_comma, unit, count, asked) if len(text) <= _LENGTH else None
     if given is not None and given[1] is not None:
@@ -687,6 +690,39 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
 
 # the word that gives a value its reason, whose arithmetic follows: 1 because 3 − 2 = 1, 1, since 3 − 2 = 1
 _REASON = re.compile(r"\b(?:because|since)\b", re.I)
+
+
+def _reasoned(
+    text: str, reads, names, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
+) -> tuple[str, ParsedAnswer | None, tuple] | None:
+    """``1 because 3 − 2 = 1``, ``2, since 3 − 2 = 1``: a value, then the arithmetic that is its reason.
+    The value before the reason word is the answer, and the reason its working: where a side of it that
+    reads as a number is another value, the note says the working does not hold. As typed, the parser
+    makes the word a factor (``3·because − 1 = 1``) and the reason's last side the value, whatever came
+    before it. None where no value comes before the word, or the reason states values of names
+    (``because N = 1 and k = 2``, as :func:`_given` reads them) or ends in no number."""
+    found = _REASON.search(text)
+    if found is None:
+        return None
+    head, (*sides, last) = text[: found.start()].rstrip(" ,;:"), _sides(text[found.end() :])[0]
+    if not head or _QUANTITY.fullmatch((sides or [last])[0]) or len(sides) > _SIDES:
+        return None
+    value = reads(_spelled(last, decimal_comma, unit)[0])
+    if value is None:
+        return None
+    prepared, answer, notes = read_number(
+        head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+    )
+    if answer is None:
+        return None
+    stated = _last_side(answer)
+    typed = next((details["value"] for _, details in notes if "value" in details), _sides(head)[0][-1])
+    read = [reads(_spelled(side, decimal_comma, unit)[0]) for side in sides if side]
+    if not all(_agree(_last_side(side), stated, count) for side in (*read, value) if side is not None):
+        return prepared, answer, (("working_false_for_a_person", {"value": typed, "working": shown(text.strip())}),)
+    rest = shown(text[found.start() :].strip())
+    return prepared, answer, notes or (("remark_ignored", {"value": typed, "rest": rest}),)
+
 
 # a count, then brackets and nothing after them: 2 (6 − 4), 1 (2), 15 (5 particles), two (2)
 _COUNT_THEN_BRACKET = re.compile(
