@@ -713,8 +713,8 @@ def _reasoned(
     prepared, answer, notes = read_number(
         head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
     )
-    if answer is None:
-        return None
+    if answer is None:  # 10^400 because 1 = 1: a number too long to read is no reason to grade the 1
+        return (head, None, ()) if _NUMBER.search(head) else None
     stated = _last_side(answer)
     typed = next((details["value"] for _, details in notes if "value" in details), _sides(head)[0][-1])
     read = [reads(_spelled(side, decimal_comma, unit)[0]) for side in sides if side]
