@@ -246,3 +246,34 @@ def test_a_count_worked_out_with_values_that_do_not_come_to_it_is_for_a_person(s
     verdict = compare("1", submitted, kind="integer", name="n")
     assert verdict.status == status, verdict
     assert sentence in verdict.feedback, verdict
+
+
+QUALIFIED = "which may make it another number, or no one number: a person will decide what your answer is."
+
+COUNTS_SAID_OTHERWISE = [
+    # (expected, submitted, status, feedback): a count whose own words say another number, or another thing
+    ("1", "It has 2 degrees of freedom, so 1 generalized coordinate.", "undecided",
+     "Your answer gives two counts of the same thing, 2 and then 1: a person will decide which number is your"
+     " answer."),
+    ("2", "It has 2 degrees of freedom, so 1 generalized coordinate.", "undecided",
+     "Your answer gives two counts of the same thing, 2 and then 1: a person will decide which number is your"
+     " answer."),
+    ("2", "2 (three angles)", "undecided",
+     "Your count `2` is followed by `(three angles)`, which does not come to 2: a person will decide which number"
+     " is your answer."),
+    ("1", "1 constraint", "undecided", f"Your number `1` comes with `constraint`, {QUALIFIED}"),
+    ("1", "one angle and one length", "undecided", f"Your number `one` comes with `angle and one length`, {QUALIFIED}"),
+    # a count worked from others, what it counts, and how many things it was counted from: as before
+    ("1", "3 degrees of freedom, minus 2 constraints, so 1", "equivalent", "Correct."),
+    ("1", "It has 1 degree of freedom, so 1 generalized coordinate.", "equivalent", "Correct."),
+    ("2", "2 (two angles)", "equivalent", "Correct."),
+    ("1", "1 angle", "equivalent", "Correct."),
+    ("15", "15 (5 particles)", "equivalent", "Correct."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "sentence"), COUNTS_SAID_OTHERWISE)
+def test_a_count_whose_words_say_another_goes_to_a_person(expected, submitted, status, sentence):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict

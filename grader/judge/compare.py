@@ -1600,7 +1600,12 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
 
 # the readings of a number that leave which number is meant to a person (see grader.judge.numbers.read_number)
 _NUMBER_FOR_A_PERSON = frozenset(
-    {"count_bracket_for_a_person", "number_doubted_for_a_person", "number_qualified_for_a_person"}
+    {
+        "count_bracket_for_a_person",
+        "counts_differ_for_a_person",
+        "number_doubted_for_a_person",
+        "number_qualified_for_a_person",
+    }
 )
 
 

@@ -103,6 +103,8 @@ FEEDBACK: dict[str, str] = {
     " graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
+    "counts_differ_for_a_person": "Your answer gives two counts of the same thing, {first} and then {value}: a"
+    " person will decide which number is your answer.",
     "count_bracket_for_a_person": "Your count `{value}` is followed by `{rest}`, which does not come to {value}:"
     " a person will decide which number is your answer.",
     "number_doubted_for_a_person": "Your answer says `{words}`, which may take back or doubt a number of it: a"

@@ -252,13 +252,21 @@ def _read_number(
                 return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
             # 4 − 1 = 2, 3·5 = 16 → 15: working that does not hold, a slip or a value not worked out
             working = _false_working(pieces, runs, _last_side(answer), numbers) if last and index == last else None
+            first = (
+                _count_said(pieces[:last], _last_side(answer)) if count and said and last and index == last else None
+            )
+            if first and _ASKED.match(rest.lstrip(",:;–—- ")):
+                # 2 degrees of freedom, so 1 generalized coordinate: the count said twice, once otherwise
+                return prepared, answer, (("counts_differ_for_a_person", {"first": first, "value": typed}),)
             if working:
                 notes += (("working_false_for_a_person", {"value": typed, "working": shown(working)}),)
             elif before:
                 notes += (("number_in_sentence", {"value": typed}),)
             elif rest:
                 rest = rest.lstrip(",:;–—- ")
-                notes += (("remark_ignored", {"value": typed, "rest": shown(rest)}),)
+                other = count and _counts_other(words or typed, rest, names)
+                key, details = ("number_qualified_for_a_person", "words") if other else ("remark_ignored", "rest")
+                notes += ((key, {"value": typed, details: shown(rest)}),)
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
             elif last:
@@ -739,6 +747,19 @@ _THING = [
 ]  # fmt: skip
 _THINGS = frozenset({*_THING, *(f"{thing}s" for thing in _THING), "mass", "masses", "body", "bodies", "axis", "axes"})
 _DESCRIBED = re.compile(r"\s*(?:[0-9]+|[A-Za-z]+)\s+(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\s*")  # 5 free particles
+# of those, what a count of degrees of freedom may count, one each (1 angle, not 1 constraint); angles always
+# are: 2 (three angles) is another count, where 2 (6 Cartesian coordinates) says what it was counted from
+_COORDINATE = ["coordinate", "angle", "translation", "rotation", "position", "equation"]
+_COORDINATES = frozenset({*_COORDINATE, *(f"{thing}s" for thing in _COORDINATE)})
+_ANGLES = frozenset({"angle", "angles"})
+# a count of what is asked, at the end of a side of working: It has 2 degrees of freedom
+_STATES_COUNT = re.compile(
+    rf"(?<![\w.])(?P<count>[0-9]{{1,4}}|{'|'.join(_WORDS)})\s+(?:[A-Za-z]{{2,}}\s+)?"
+    r"(?:degrees?\s+of\s+freedom|dofs?|generali[sz]ed\s+coordinates?)$",
+    re.I,
+)
+# a count then what it counts, as a remark: 1 constraint, 5 free particles (not 1 degree of freedom)
+_COUNTS_THING = re.compile(r"\s*(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\b")
 
 
 def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | None, tuple] | None:
@@ -784,11 +805,34 @@ def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | N
     value, summed = counted
     described = _DESCRIBED.fullmatch(groups[0])
     thing = described and not summed and described["thing"].lower() in _THINGS
-    if value == number or (thing and not _ASKED.search(groups[0])):
+    angles = thing and described["thing"].lower() in _ANGLES
+    if value == number or (thing and not angles and not _ASKED.search(groups[0])):
         return str(number), answer, (remark,)
-    if summed or _ASKED.search(groups[0]):
+    if summed or angles or _ASKED.search(groups[0]):
         return str(number), answer, (unclear,)
     return None  # 2 (one coordinate for each bob): words, read as remarks are
+
+
+def _count_said(pieces: list[str], final) -> str | None:
+    """The count of what is asked that a side of working ends by stating, where it is not ``final``, as
+    typed: ``It has 2 degrees of freedom``; not ``3 degrees of freedom, minus 2 constraints``, a count
+    worked from. None where there is none."""
+    for piece in pieces:
+        found = _STATES_COUNT.search(piece.rstrip(" ,.;:"))
+        if found and int(NUMBER_WORDS.get(found["count"].lower(), found["count"])) != final:
+            return found["count"]
+    return None
+
+
+def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
+    """Whether the words after a count say it counts something else (``1 constraint``, ``5 particles``), or
+    more counts with it that add up to another number (``one angle and one length``): which number is the
+    answer is for a person. Not ``1 degree of freedom``, ``1 generalized coordinate``, ``1 angle``."""
+    found = _COUNTS_THING.match(rest)
+    if found and found["thing"].lower() in _THINGS - _COORDINATES:
+        return True
+    counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
+    return counted is not None and counted[1] and counted[0] != int(number)
 
 
 def _groups(text: str) -> list[str] | None:
