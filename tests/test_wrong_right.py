@@ -277,3 +277,30 @@ def test_a_count_whose_words_say_another_goes_to_a_person(expected, submitted, s
     verdict = compare(expected, submitted, kind="integer", name="n")
     assert verdict.status == status, verdict
     assert sentence in verdict.feedback, verdict
+
+
+ENERGIES = "Your working gives T and V, but T − V with them is not the value your answer gives L."
+WORKING_READ = "The lines that define `T` and `V` were read as your working: they are not graded."
+
+ENERGIES_WORKED = [
+    # (submitted, status, feedback): the energies, then a Lagrangian their difference is not; the lines of
+    # working were read past, and the stated value graded alone
+    ("T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.", WORKING_READ)),
+    ("T = ½ m l² θ̇²; V = m g l cos θ; L = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.", WORKING_READ)),
+    ("L = T − V = ½ m l² θ̇² + m g l cos θ, where T = m l² θ̇² and V = −m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.",
+      "The lines that define `T` and `V` were not graded: L is what is asked for here.")),
+    ("T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² − m g l cos θ", "not_equivalent",
+     ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", ENERGIES, WORKING_READ)),
+    # working that comes to the value, or to it but for a constant: as before
+    ("T = ½ m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
+    ("T = ½ m l² θ̇²; V = m g l (1 − cos θ); L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), ENERGIES_WORKED)
+def test_energies_in_the_working_that_do_not_make_the_lagrangian_go_to_a_person(submitted, status, feedback):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
