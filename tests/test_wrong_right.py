@@ -304,3 +304,37 @@ ENERGIES_WORKED = [
 def test_energies_in_the_working_that_do_not_make_the_lagrangian_go_to_a_person(submitted, status, feedback):
     verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+DAMPED = {"coords": ["x"], "known": ["m", "k", "b"]}
+EOM_DAMPED = "m xddot + b xdot + k x = 0"
+NOT_LAGRANGE = (
+    "on the way to its equation, which is not Lagrange's equation. The equation was graded and is right; a person"
+    " will check this answer."
+)
+
+OPERATORS_WITHOUT_FRICTION = [
+    # (submitted, status, feedback): Lagrange's operator without Rayleigh's term, said to equal a side with the
+    # friction in it, which no L gives (∂(b ẋ)/∂ẋ is not d/dt of m): the step was read past
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0", "undecided",
+     (f"Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ` {NOT_LAGRANGE}",)),
+    ("∂L/∂x − d/dt(∂L/∂ẋ) = −m ẍ − k x − b ẋ = 0", "undecided",
+     (f"Your answer says `∂L/∂x − d/dt(∂L/∂ẋ) = −m ẍ − k x − b ẋ` {NOT_LAGRANGE}",
+      "Read without the words before it, `∂L/∂x − d/dt(∂L/∂ẋ) =`: the formula is what is graded.")),
+    # with Rayleigh's term in the operator, or the friction on the far side: as before
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x = −b ẋ", "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), OPERATORS_WITHOUT_FRICTION)
+def test_an_operator_said_to_give_what_no_lagrangian_gives_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(EOM_DAMPED, submitted, kind="equation", **DAMPED)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+def test_an_operator_that_gives_the_pendulum_equation_stays_right():
+    # m l² θ̈ + m g l sin θ is what d/dt(∂L/∂θ̇) − ∂L/∂θ gives for the pendulum's L: no friction to leave out
+    submitted = "d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0"
+    verdict = compare("m l^2 thetaddot + m g l sin(theta) = 0", submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.",)), verdict

@@ -37,7 +37,7 @@ from grader.judge.chains import (
 from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
-from grader.judge.euler_lagrange import euler_lagrange
+from grader.judge.euler_lagrange import dissipative, euler_lagrange, from_a_lagrangian
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression, same_values
 from grader.judge.feedback import say, shown
@@ -807,9 +807,17 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
     if "dt" not in submitted:
         return None  # as nearly every answer: no d/dt, no operator
     coords = expected.setting.coords
-    for _, operator, _ in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
-        if euler_lagrange(operator, coords, expected.names) is False:
+    for words, operator, equation in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
+        judged = euler_lagrange(operator, coords, expected.names)
+        if judged is False:
             return re.sub(r"\s+", " ", operator) + " = 0"
+        if judged and words.endswith("=") and not dissipative(operator) and len(coords) == 1:
+            # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0: a side no L gives, but the operator without
+            # Rayleigh's term is said to give it
+            side = equation.split("=")[0].strip()
+            read = parse_answer(side, coords=coords, known=sorted(expected.names))
+            if read.ok and read.kind == "expression" and from_a_lagrangian(read.value, coords[0]) is False:
+                return re.sub(r"\s+", " ", f"{operator} = {side}")
         return None
     return None
 
