@@ -236,6 +236,15 @@ COUNTS_WORKED = [
      "Graded the number `1`; what follows it (`because 3 − 2 = 1`) is not graded."),
     ("1, since 3 − 2 = 1", "equivalent", "Graded the number `1`; what follows it (`since 3 − 2 = 1`) is not graded."),
     ("n = 3N − k = 1 because N = 1 and k = 2", "equivalent", "Correct."),
+    # as and given that give a reason too; and n, the count's name, may label the reason's working
+    ("2, as 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2, as 3 − 2 = 1`, does not hold."),
+    ("2 given that 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 given that 3 − 2 = 1`, does not hold."),
+    ("2 because n = 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 because n = 3 − 2 = 1`, does not hold."),
+    ("1 because n = 3 − 2 = 1", "equivalent",
+     "Graded the number `1`; what follows it (`because n = 3 − 2 = 1`) is not graded."),
     # a count too long to read is refused, not passed over for the reason's last side
     (f"{'9' * 40} because 1 = 1", "invalid", "This number is too large to handle (40 digits; the limit is 30)."),
 ]  # fmt: skip

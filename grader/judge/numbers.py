@@ -697,7 +697,7 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
 
 
 # the word that gives a value its reason, whose arithmetic follows: 1 because 3 − 2 = 1, 1, since 3 − 2 = 1
-_REASON = re.compile(r"\b(?:because|since)\b", re.I)
+_REASON = re.compile(r"\b(?:because|since|as|given(?:\s+that)?)\b", re.I)
 
 
 def _reasoned(
@@ -713,7 +713,11 @@ def _reasoned(
     if found is None:
         return None
     head, (*sides, last) = text[: found.start()].rstrip(" ,;:"), _sides(text[found.end() :])[0]
-    if not head or _QUANTITY.fullmatch((sides or [last])[0]) or len(sides) > _SIDES:
+    if sides and sides[0].strip() in asked:
+        sides = sides[1:]  # 2 because n = 3 − 2 = 1: the asked count's name labels the working
+    elif not sides or _QUANTITY.fullmatch(sides[0]):
+        sides = sides if not sides else None
+    if not head or sides is None or len(sides) > _SIDES:
         return None
     value = reads(_spelled(last, decimal_comma, unit)[0])
     if value is None:
