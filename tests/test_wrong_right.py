@@ -347,3 +347,18 @@ def test_an_operator_that_gives_the_pendulum_equation_stays_right():
     submitted = "d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0"
     verdict = compare("m l^2 thetaddot + m g l sin(theta) = 0", submitted, kind="equation", **PENDULUM)
     assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.",)), verdict
+
+
+SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"], "name": "H"}
+H_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"
+
+
+def test_energies_in_the_working_that_do_not_make_the_hamiltonian_go_to_a_person():
+    # H = T + V, as T − V was for L: the T before it, twice the kinetic energy, was read past
+    submitted = "T = m l² (θ̇² + sin²θ φ̇²); V = −m g l cos θ; H = T + V = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ"
+    verdict = compare(H_SPHERICAL, submitted, kind="expression", **SPHERICAL)
+    assert (verdict.status, verdict.feedback) == ("undecided", (
+        "Your working gives T and V, but T + V with them is not the value your answer gives H. Its value was graded"
+        " and is right; a person will check this answer.",
+        WORKING_READ,
+    )), verdict  # fmt: skip
