@@ -272,7 +272,11 @@ COUNTS_SAID_OTHERWISE = [
      " is your answer."),
     ("1", "1 constraint", "undecided", f"Your number `1` comes with `constraint`, {QUALIFIED}"),
     ("1", "one angle and one length", "undecided", f"Your number `one` comes with `angle and one length`, {QUALIFIED}"),
+    ("1", "1 (θ and φ)", "undecided", f"Your number `1` comes with `(θ and φ)`, {QUALIFIED}"),
+    ("1", "1 (x, y)", "undecided", f"Your number `1` comes with `(x, y)`, {QUALIFIED}"),
     # a count worked from others, what it counts, and how many things it was counted from: as before
+    ("2", "2 (θ₁, θ₂)", "equivalent", "Correct."),
+    ("1", "1 (θ)", "equivalent", "Correct."),
     ("1", "3 degrees of freedom, minus 2 constraints, so 1", "equivalent", "Correct."),
     ("1", "It has 1 degree of freedom, so 1 generalized coordinate.", "equivalent", "Correct."),
     ("2", "2 (two angles)", "equivalent", "Correct."),

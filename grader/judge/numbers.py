@@ -762,6 +762,9 @@ _STATES_COUNT = re.compile(
     r"(?:degrees?\s+of\s+freedom|dofs?|generali[sz]ed\s+coordinates?)$",
     re.I,
 )
+# coordinates named one by one after a count, in brackets or not: (θ and φ), θ₁, θ₂
+_LISTED_NAMES = re.compile(r"\s*(?:,|\band\b|&)\s*", re.I)
+_COORDINATE_NAME = re.compile(r"[^\W\d_][0-9₀-₉']*")
 # a count then what it counts, as a remark: 1 constraint, 5 free particles (not 1 degree of freedom)
 _COUNTS_THING = re.compile(r"\s*(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\b")
 
@@ -830,11 +833,15 @@ def _count_said(pieces: list[str], final) -> str | None:
 
 def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
     """Whether the words after a count say it counts something else (``1 constraint``, ``5 particles``), or
-    more counts with it that add up to another number (``one angle and one length``): which number is the
-    answer is for a person. Not ``1 degree of freedom``, ``1 generalized coordinate``, ``1 angle``."""
+    more counts with it that add up to another number (``one angle and one length``), or name more or fewer
+    coordinates than it (``1 (θ and φ)``): which number is the answer is for a person. Not ``1 degree of
+    freedom``, ``1 generalized coordinate``, ``1 angle``, ``2 (θ₁ and θ₂)``."""
     found = _COUNTS_THING.match(rest)
     if found and found["thing"].lower() in _THINGS - _COORDINATES:
         return True
+    listed = _LISTED_NAMES.split(rest.strip(" .").removeprefix("(").removesuffix(")").strip())
+    if len(listed) > 1 and all(_COORDINATE_NAME.fullmatch(name) for name in listed):
+        return number.isdigit() and len(listed) != int(number)  # 1 (θ and φ): two coordinates named
     counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
     return counted is not None and counted[1] and counted[0] != int(number)
 
