@@ -72,6 +72,9 @@ NUMBERS = [
     # a remark that names another unit, or per cent, says what the number is in
     ("2.006 (in minutes)", "invalid", ("A number is asked for here; your answer contains `in` and `minutes`.",)),
     ("2.006 percent", "invalid", ("A number is asked for here; your answer contains `percent`.",)),
+    # a value, then its reason: read as 2.5·because·2π√(1/9.81) = 2.006 s, the reason's last side was graded
+    ("2.5 s because 2π√(1/9.81) = 2.006 s", "not_equivalent", ("Not within the accepted tolerance.",
+     "Graded your final value, `2.5 s`; your working, `2.5 s because 2π√(1/9.81) = 2.006 s`, does not hold.")),
 ]  # fmt: skip
 
 
@@ -211,6 +214,39 @@ COUNTS_WORKED = [
      " person will check this answer."),
     ("n = 3N - k = 3, where N = 1, k = 1", "not_equivalent",
      "Graded your final value, `3`; your working, `3N - k, where N = 1, k = 1`, does not hold."),
+    # the count before because, then its reason: read as 3·because − 1 = 1, the reason's last side was graded
+    ("1 because 3 − 1 = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `1 because 3 − 1 = 1`, does not hold: a"
+     " person will check this answer."),
+    ("2 because 3 − 1 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 because 3 − 1 = 1`, does not hold."),
+    ("n = 2 because 3 − 1 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `n = 2 because 3 − 1 = 1`, does not hold."),
+    ("2 because 3 coordinates minus 2 constraints = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 because 3 coordinates minus 2 constraints = 1`, does not"
+     " hold."),
+    # the reason was checked, but not against the count before it
+    ("2, since 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2, since 3 − 2 = 1`, does not hold."),
+    ("n = 1 because 3 − 1 = 2", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `n = 1 because 3 − 1 = 2`, does not hold:"
+     " a person will check this answer."),
+    # a reason that holds, and one that gives the values of names, as before
+    ("1 because 3 − 2 = 1", "equivalent",
+     "Graded the number `1`; what follows it (`because 3 − 2 = 1`) is not graded."),
+    ("1, since 3 − 2 = 1", "equivalent", "Graded the number `1`; what follows it (`since 3 − 2 = 1`) is not graded."),
+    ("n = 3N − k = 1 because N = 1 and k = 2", "equivalent", "Correct."),
+    # as and given that give a reason too; and n, the count's name, may label the reason's working
+    ("2, as 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2, as 3 − 2 = 1`, does not hold."),
+    ("2 given that 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 given that 3 − 2 = 1`, does not hold."),
+    ("2 because n = 3 − 2 = 1", "not_equivalent",
+     "Graded your final value, `2`; your working, `2 because n = 3 − 2 = 1`, does not hold."),
+    ("1 because n = 3 − 2 = 1", "equivalent",
+     "Graded the number `1`; what follows it (`because n = 3 − 2 = 1`) is not graded."),
+    # a count too long to read is refused, not passed over for the reason's last side
+    (f"{'9' * 40} because 1 = 1", "invalid", "This number is too large to handle (40 digits; the limit is 30)."),
 ]  # fmt: skip
 
 
@@ -219,3 +255,114 @@ def test_a_count_worked_out_with_values_that_do_not_come_to_it_is_for_a_person(s
     verdict = compare("1", submitted, kind="integer", name="n")
     assert verdict.status == status, verdict
     assert sentence in verdict.feedback, verdict
+
+
+QUALIFIED = "which may make it another number, or no one number: a person will decide what your answer is."
+
+COUNTS_SAID_OTHERWISE = [
+    # (expected, submitted, status, feedback): a count whose own words say another number, or another thing
+    ("1", "It has 2 degrees of freedom, so 1 generalized coordinate.", "undecided",
+     "Your answer gives two counts of the same thing, 2 and then 1: a person will decide which number is your"
+     " answer."),
+    ("2", "It has 2 degrees of freedom, so 1 generalized coordinate.", "undecided",
+     "Your answer gives two counts of the same thing, 2 and then 1: a person will decide which number is your"
+     " answer."),
+    ("2", "2 (three angles)", "undecided",
+     "Your count `2` is followed by `(three angles)`, which does not come to 2: a person will decide which number"
+     " is your answer."),
+    ("1", "1 constraint", "undecided", f"Your number `1` comes with `constraint`, {QUALIFIED}"),
+    ("1", "one angle and one length", "undecided", f"Your number `one` comes with `angle and one length`, {QUALIFIED}"),
+    ("1", "1 (θ and φ)", "undecided", f"Your number `1` comes with `(θ and φ)`, {QUALIFIED}"),
+    ("1", "1 (x, y)", "undecided", f"Your number `1` comes with `(x, y)`, {QUALIFIED}"),
+    # a count worked from others, what it counts, and how many things it was counted from: as before
+    ("2", "2 (θ₁, θ₂)", "equivalent", "Correct."),
+    ("1", "1 (θ)", "equivalent", "Correct."),
+    ("1", "3 degrees of freedom, minus 2 constraints, so 1", "equivalent", "Correct."),
+    ("1", "It has 1 degree of freedom, so 1 generalized coordinate.", "equivalent", "Correct."),
+    ("2", "2 (two angles)", "equivalent", "Correct."),
+    ("1", "1 angle", "equivalent", "Correct."),
+    ("15", "15 (5 particles)", "equivalent", "Correct."),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "sentence"), COUNTS_SAID_OTHERWISE)
+def test_a_count_whose_words_say_another_goes_to_a_person(expected, submitted, status, sentence):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert verdict.status == status, verdict
+    assert sentence in verdict.feedback, verdict
+
+
+ENERGIES = "Your working gives T and V, but T − V with them is not the value your answer gives L."
+WORKING_READ = "The lines that define `T` and `V` were read as your working: they are not graded."
+
+ENERGIES_WORKED = [
+    # (submitted, status, feedback): the energies, then a Lagrangian their difference is not; the lines of
+    # working were read past, and the stated value graded alone
+    ("T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.", WORKING_READ)),
+    ("T = ½ m l² θ̇²; V = m g l cos θ; L = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.", WORKING_READ)),
+    ("L = T − V = ½ m l² θ̇² + m g l cos θ, where T = m l² θ̇² and V = −m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.",
+      "The lines that define `T` and `V` were not graded: L is what is asked for here.")),
+    ("T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² − m g l cos θ", "not_equivalent",
+     ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", ENERGIES, WORKING_READ)),
+    # working that comes to the value, or to it but for a constant: as before
+    ("T = ½ m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
+    ("T = ½ m l² θ̇²; V = m g l (1 − cos θ); L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), ENERGIES_WORKED)
+def test_energies_in_the_working_that_do_not_make_the_lagrangian_go_to_a_person(submitted, status, feedback):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+DAMPED = {"coords": ["x"], "known": ["m", "k", "b"]}
+EOM_DAMPED = "m xddot + b xdot + k x = 0"
+NOT_LAGRANGE = (
+    "on the way to its equation, which is not Lagrange's equation. The equation was graded and is right; a person"
+    " will check this answer."
+)
+
+OPERATORS_WITHOUT_FRICTION = [
+    # (submitted, status, feedback): Lagrange's operator without Rayleigh's term, said to equal a side with the
+    # friction in it, which no L gives (∂(b ẋ)/∂ẋ is not d/dt of m): the step was read past
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0", "undecided",
+     (f"Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ` {NOT_LAGRANGE}",)),
+    ("∂L/∂x − d/dt(∂L/∂ẋ) = −m ẍ − k x − b ẋ = 0", "undecided",
+     (f"Your answer says `∂L/∂x − d/dt(∂L/∂ẋ) = −m ẍ − k x − b ẋ` {NOT_LAGRANGE}",
+      "Read without the words before it, `∂L/∂x − d/dt(∂L/∂ẋ) =`: the formula is what is graded.")),
+    # with Rayleigh's term in the operator, or the friction on the far side: as before
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x = −b ẋ", "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), OPERATORS_WITHOUT_FRICTION)
+def test_an_operator_said_to_give_what_no_lagrangian_gives_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(EOM_DAMPED, submitted, kind="equation", **DAMPED)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+def test_an_operator_that_gives_the_pendulum_equation_stays_right():
+    # m l² θ̈ + m g l sin θ is what d/dt(∂L/∂θ̇) − ∂L/∂θ gives for the pendulum's L: no friction to leave out
+    submitted = "d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + m g l sin θ = 0"
+    verdict = compare("m l^2 thetaddot + m g l sin(theta) = 0", submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.",)), verdict
+
+
+SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"], "name": "H"}
+H_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"
+
+
+def test_energies_in_the_working_that_do_not_make_the_hamiltonian_go_to_a_person():
+    # H = T + V, as T − V was for L: the T before it, twice the kinetic energy, was read past
+    submitted = "T = m l² (θ̇² + sin²θ φ̇²); V = −m g l cos θ; H = T + V = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ"
+    verdict = compare(H_SPHERICAL, submitted, kind="expression", **SPHERICAL)
+    assert (verdict.status, verdict.feedback) == ("undecided", (
+        "Your working gives T and V, but T + V with them is not the value your answer gives H. Its value was graded"
+        " and is right; a person will check this answer.",
+        WORKING_READ,
+    )), verdict  # fmt: skip

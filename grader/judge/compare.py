@@ -37,7 +37,7 @@ from grader.judge.chains import (
 from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
-from grader.judge.euler_lagrange import euler_lagrange
+from grader.judge.euler_lagrange import dissipative, euler_lagrange, from_a_lagrangian
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression, same_values
 from grader.judge.feedback import say, shown
@@ -47,6 +47,7 @@ from grader.judge.motion import accelerations_in, check_equation, check_equation
 from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
 from grader.judge.rounded import exact_readings
+from grader.judge.sampling import GROUP, all_equal, constant_difference, evaluate_pairs
 from grader.judge.scalar import check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import (
@@ -555,6 +556,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += stated
                 read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _with_definitions(answer, expected, deadline)
+                read_notes += _energies_disagree(answer, spec, expected, deadline)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += working
                 energies = _energies_alone(answer, spec, expected, deadline)
@@ -793,9 +795,17 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
     if "dt" not in submitted:
         return None  # as nearly every answer: no d/dt, no operator
     coords = expected.setting.coords
-    for _, operator, _ in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
-        if euler_lagrange(operator, coords, expected.names) is False:
+    for words, operator, equation in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
+        judged = euler_lagrange(operator, coords, expected.names)
+        if judged is False:
             return re.sub(r"\s+", " ", operator) + " = 0"
+        if judged and words.endswith("=") and not dissipative(operator) and len(coords) == 1:
+            # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0: a side no L gives, but the operator without
+            # Rayleigh's term is said to give it
+            side = equation.split("=")[0].strip()
+            read = parse_answer(side, coords=coords, known=sorted(expected.names))
+            if read.ok and read.kind == "expression" and from_a_lagrangian(read.value, coords[0]) is False:
+                return re.sub(r"\s+", " ", f"{operator} = {side}")
         return None
     return None
 
@@ -1033,6 +1043,44 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
     if len(items) == 1:
         return ParsedAnswer(answer.text, items[0], "equation")
     return ParsedAnswer(answer.text, tuple(items), "equations")
+
+
+def _energies_disagree(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
+    """``T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ``: lines of working that give
+    the energies, then the Lagrangian (or H or E, where they are T + V) with a value that their difference
+    (sum) is not. The value
+    may be right, but the working says otherwise, as a chain's wrong earlier side does: a note for a
+    person. None where the energies come to it, are the problem's names, or cannot be compared."""
+    if (
+        answer.kind != "equations"
+        or spec.name not in ("lagrangian", "expression")
+        or _DEFINING_LETTERS & expected.names
+    ):
+        return ()
+    sums = _energy_sums(expected)
+    named = [item for item in answer.value if item.lhs.is_Symbol and item.lhs.name in sums]
+    if len(named) != 1:
+        return ()
+    (last,) = named  # L = T − V = …, where T = …: the energies may come after it
+    energies = {item.lhs: item.rhs for item in answer.value if item.lhs in (_KINETIC, _POTENTIAL, _POTENTIAL_U)}
+    potential = _POTENTIAL_U if _POTENTIAL_U in energies else _POTENTIAL
+    if _KINETIC not in energies or potential not in energies or len(energies) != 2:
+        return ()
+    made = sums[last.lhs.name].xreplace({_POTENTIAL: _POTENTIAL_U} if potential == _POTENTIAL_U else {})
+    made = made.xreplace(energies)
+    if {symbol.name for symbol in (made - last.rhs).free_symbols} - expected.names - {TIME.name}:
+        return ()  # a name of the student's own: no value to compare
+    try:
+        points = expected.points(expected.point_count, group=GROUP)
+        pairs = evaluate_pairs(expected.compile(made), expected.compile(last.rhs), points, deadline)
+    except _CHECK_FAILURES:
+        return ()
+    # V = m g l (1 − cos θ), then L without the m g l: a constant of the motion changes no Lagrangian
+    if all_equal(pairs) is not False or constant_difference(pairs) is not False:
+        return ()
+    label, sign = last.lhs.name, "−" if last.lhs.name == "L" else "+"
+    details = {"kinetic": "T", "potential": potential.name, "label": label, "sum": f"T {sign} {potential.name}"}
+    return (("energies_disagree_for_a_person", details),)
 
 
 def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple]:
@@ -1554,6 +1602,7 @@ _FOR_A_PERSON = {
     "label_for_a_person": "label_other",
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
+    "energies_disagree_for_a_person": "energies_disagree",
     "constant_said_for_a_person": "constant_said",
     "given_redefined_for_a_person": "given_redefined",
 }
@@ -1610,7 +1659,12 @@ def _for_a_person(outcome: Outcome, notes: tuple) -> tuple[Outcome, tuple]:
 
 # the readings of a number that leave which number is meant to a person (see grader.judge.numbers.read_number)
 _NUMBER_FOR_A_PERSON = frozenset(
-    {"count_bracket_for_a_person", "number_doubted_for_a_person", "number_qualified_for_a_person"}
+    {
+        "count_bracket_for_a_person",
+        "counts_differ_for_a_person",
+        "number_doubted_for_a_person",
+        "number_qualified_for_a_person",
+    }
 )
 
 

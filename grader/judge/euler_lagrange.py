@@ -3,6 +3,8 @@
 Contents:
     euler_lagrange(text, coords, names)   whether ``text`` is d/dt(∂L/∂q̇) − ∂L/∂q: True, False, or None
     moved_left(operator, side)            ``… = −∂F/∂ẋ`` as the operator ``… + ∂F/∂ẋ``, its side moved left
+    dissipative(operator)                 whether an operator holds Rayleigh's ``∂F/∂q̇``
+    from_a_lagrangian(side, q)            whether a side the operator is said to equal can be what it gives
 
 ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0``: the operator says how the equation was
 found, and is read past before it (:func:`grader.judge.words.euler_lagrange_then_formula`). Only the true
@@ -18,11 +20,13 @@ import re
 from collections.abc import Collection
 from typing import NamedTuple
 
+import sympy
+
 from grader.parse.messages import ParseFailure
 from grader.parse.names import canonical_name
 from grader.parse.tokens import Token, tokenize
 
-__all__ = ["euler_lagrange", "moved_left"]
+__all__ = ["dissipative", "euler_lagrange", "from_a_lagrangian", "moved_left"]
 
 _LENGTH = 200  # characters: an operator is short; anything longer is not read as one
 _DISSIPATION = frozenset({"F", "R", "D"})  # Rayleigh's function, as texts name it (TeX's \mathcal{F} is F)
@@ -84,6 +88,66 @@ def moved_left(operator: str, side: str) -> str | None:
         return None
     term = side.strip().lstrip("+-−").strip()
     return f"{operator.strip()} {'+' if terms[0].sign < 0 else '−'} {term}"
+
+
+def dissipative(operator: str) -> bool:
+    """Whether an operator of Lagrange's shape holds a term of Rayleigh's function (``+ ∂F/∂ẋ``).
+
+    >>> dissipative("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ"), dissipative("d/dt(∂L/∂ẋ) − ∂L/∂x")
+    (True, False)
+    """
+    try:
+        terms = _terms(tokenize(operator)) if len(operator) <= _LENGTH else None
+    except ParseFailure:
+        return False
+    return any(not term.rate and term.top in _DISSIPATION for term in terms or ())
+
+
+# values the names take where a condition is tested: two sets, of no special value (not 0 or 1)
+_TRIALS = ((0.7, 1.3, 0.45), (1.9, 0.35, 2.6))
+_NEAR_ZERO = 1e-9
+
+
+def from_a_lagrangian(side: sympy.Expr, coordinate: str) -> bool | None:
+    """Whether ``side``, in one coordinate q(t) (its name), its rates and the time, can be what d/dt(∂L/∂q̇) − ∂L/∂q
+    gives for some L(q, q̇, t): linear in q̈, as A q̈ + B, with ∂B/∂q̇ = dA/dt (Helmholtz's condition for one
+    coordinate). ``m ẍ + b ẋ + k x`` cannot be, where b is not 0: friction comes from no L of this kind, and
+    needs Rayleigh's term. None where ``side`` is no such expression (a rate above q̈, another function).
+
+    >>> t, m, k, b = sympy.symbols("t m k b")
+    >>> x = sympy.Function("x")(t)
+    >>> spring, damped = m * x.diff(t, 2) + k * x, m * x.diff(t, 2) + b * x.diff(t) + k * x
+    >>> from_a_lagrangian(spring, "x"), from_a_lagrangian(damped, "x")
+    (True, False)
+    """
+    functions = side.atoms(sympy.core.function.AppliedUndef)
+    if len(functions) != 1 or next(iter(functions)).func.__name__ != coordinate:
+        return None
+    (coordinate,) = functions
+    (time,) = coordinate.args
+    q, velocity, acceleration = sympy.symbols("q_ v_ a_", cls=sympy.Dummy)
+    plain = side.xreplace({coordinate.diff(time, 2): acceleration, coordinate.diff(time): velocity})
+    plain = plain.xreplace({coordinate: q})
+    if plain.atoms(sympy.Derivative, sympy.core.function.AppliedUndef):
+        return None
+    factor = plain.diff(acceleration)
+    if factor.has(acceleration):
+        return None
+    rest = plain - factor * acceleration
+    rate = factor.diff(time) + factor.diff(q) * velocity + factor.diff(velocity) * acceleration
+    condition = sympy.expand(rest.diff(velocity) - rate)
+    if condition == 0:
+        return True
+    names = sorted(condition.free_symbols, key=str)
+    for trial in _TRIALS:
+        values = {name: trial[number % len(trial)] + number / 10 for number, name in enumerate(names)}
+        try:
+            value = complex(condition.evalf(15, subs=values))
+        except (TypeError, ValueError, ArithmeticError):
+            return None
+        if abs(value) < _NEAR_ZERO:
+            return True  # cos² + sin² − 1, unexpanded: zero somewhere it is no condition
+    return False
 
 
 def _true(terms: list[_Term], coords: Collection[str], names: Collection[str]) -> bool:

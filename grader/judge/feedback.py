@@ -95,6 +95,10 @@ FEEDBACK: dict[str, str] = {
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "working_false_for_a_person": "Your final value, `{value}`, was graded and is right, but your working,"
     " `{working}`, does not hold: a person will check this answer.",
+    "energies_disagree_for_a_person": "Your working gives {kinetic} and {potential}, but {sum} with them is not"
+    " the value your answer gives {label}. Its value was graded and is right; a person will check this answer.",
+    "energies_disagree": "Your working gives {kinetic} and {potential}, but {sum} with them is not the value your"
+    " answer gives {label}.",
     "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
@@ -103,6 +107,8 @@ FEEDBACK: dict[str, str] = {
     " graded.",
     "number_read": "Graded the number `{value}`; the rest of your answer is not graded.",
     "number_word": "Read `{typed}` as {number}.",
+    "counts_differ_for_a_person": "Your answer gives two counts of the same thing, {first} and then {value}: a"
+    " person will decide which number is your answer.",
     "count_bracket_for_a_person": "Your count `{value}` is followed by `{rest}`, which does not come to {value}:"
     " a person will decide which number is your answer.",
     "number_doubted_for_a_person": "Your answer says `{words}`, which may take back or doubt a number of it: a"

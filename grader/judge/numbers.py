@@ -209,6 +209,9 @@ def _read_number(
         )
         if worked is not None:
             return worked
+    reasoned = _reasoned(text, reads, names, decimal_comma, unit, count, asked) if len(text) <= _LENGTH else None
+    if reasoned is not None:
+        return reasoned
     # n = 2 since k = 4: read as typed, a list whose last new name, k, would be taken for the answer
     given = _given(text, reads, names, decimal_comma, unit, count, asked) if len(text) <= _LENGTH else None
     if given is not None and given[1] is not None:
@@ -249,13 +252,21 @@ def _read_number(
                 return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
             # 4 − 1 = 2, 3·5 = 16 → 15: working that does not hold, a slip or a value not worked out
             working = _false_working(pieces, runs, _last_side(answer), numbers) if last and index == last else None
+            first = (
+                _count_said(pieces[:last], _last_side(answer)) if count and said and last and index == last else None
+            )
+            if first and _ASKED.match(rest.lstrip(",:;–—- ")):
+                # 2 degrees of freedom, so 1 generalized coordinate: the count said twice, once otherwise
+                return prepared, answer, (("counts_differ_for_a_person", {"first": first, "value": typed}),)
             if working:
                 notes += (("working_false_for_a_person", {"value": typed, "working": shown(working)}),)
             elif before:
                 notes += (("number_in_sentence", {"value": typed}),)
             elif rest:
                 rest = rest.lstrip(",:;–—- ")
-                notes += (("remark_ignored", {"value": typed, "rest": shown(rest)}),)
+                other = count and _counts_other(words or typed, rest, names)
+                key, details = ("number_qualified_for_a_person", "words") if other else ("remark_ignored", "rest")
+                notes += ((key, {"value": typed, details: shown(rest)}),)
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
             elif last:
@@ -686,7 +697,44 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
 
 
 # the word that gives a value its reason, whose arithmetic follows: 1 because 3 − 2 = 1, 1, since 3 − 2 = 1
-_REASON = re.compile(r"\b(?:because|since)\b", re.I)
+_REASON = re.compile(r"\b(?:because|since|as|given(?:\s+that)?)\b", re.I)
+
+
+def _reasoned(
+    text: str, reads, names, decimal_comma: bool, unit: str, count: bool, asked: Collection[str]
+) -> tuple[str, ParsedAnswer | None, tuple] | None:
+    """``1 because 3 − 2 = 1``, ``2, since 3 − 2 = 1``: a value, then the arithmetic that is its reason.
+    The value before the reason word is the answer, and the reason its working: where a side of it that
+    reads as a number is another value, the note says the working does not hold. As typed, the parser
+    makes the word a factor (``3·because − 1 = 1``) and the reason's last side the value, whatever came
+    before it. None where no value comes before the word, or the reason states values of names
+    (``because N = 1 and k = 2``, as :func:`_given` reads them) or ends in no number."""
+    found = _REASON.search(text)
+    if found is None:
+        return None
+    head, (*sides, last) = text[: found.start()].rstrip(" ,;:"), _sides(text[found.end() :])[0]
+    if sides and sides[0].strip() in asked:
+        sides = sides[1:]  # 2 because n = 3 − 2 = 1: the asked count's name labels the working
+    elif not sides or _QUANTITY.fullmatch(sides[0]):
+        sides = sides if not sides else None
+    if not head or sides is None or len(sides) > _SIDES:
+        return None
+    value = reads(_spelled(last, decimal_comma, unit)[0])
+    if value is None:
+        return None
+    prepared, answer, notes = read_number(
+        head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
+    )
+    if answer is None:  # 10^400 because 1 = 1: a number too long to read is no reason to grade the 1
+        return (head, None, ()) if _NUMBER.search(head) else None
+    stated = _last_side(answer)
+    typed = next((details["value"] for _, details in notes if "value" in details), _sides(head)[0][-1])
+    read = [reads(_spelled(side, decimal_comma, unit)[0]) for side in sides if side]
+    if not all(_agree(_last_side(side), stated, count) for side in (*read, value) if side is not None):
+        return prepared, answer, (("working_false_for_a_person", {"value": typed, "working": shown(text.strip())}),)
+    rest = shown(text[found.start() :].strip())
+    return prepared, answer, notes or (("remark_ignored", {"value": typed, "rest": rest}),)
+
 
 # a count, then brackets and nothing after them: 2 (6 − 4), 1 (2), 15 (5 particles), two (2)
 _COUNT_THEN_BRACKET = re.compile(
@@ -703,6 +751,22 @@ _THING = [
 ]  # fmt: skip
 _THINGS = frozenset({*_THING, *(f"{thing}s" for thing in _THING), "mass", "masses", "body", "bodies", "axis", "axes"})
 _DESCRIBED = re.compile(r"\s*(?:[0-9]+|[A-Za-z]+)\s+(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\s*")  # 5 free particles
+# of those, what a count of degrees of freedom may count, one each (1 angle, not 1 constraint); angles always
+# are: 2 (three angles) is another count, where 2 (6 Cartesian coordinates) says what it was counted from
+_COORDINATE = ["coordinate", "angle", "translation", "rotation", "position", "equation"]
+_COORDINATES = frozenset({*_COORDINATE, *(f"{thing}s" for thing in _COORDINATE)})
+_ANGLES = frozenset({"angle", "angles"})
+# a count of what is asked, at the end of a side of working: It has 2 degrees of freedom
+_STATES_COUNT = re.compile(
+    rf"(?<![\w.])(?P<count>[0-9]{{1,4}}|{'|'.join(_WORDS)})\s+(?:[A-Za-z]{{2,}}\s+)?"
+    r"(?:degrees?\s+of\s+freedom|dofs?|generali[sz]ed\s+coordinates?)$",
+    re.I,
+)
+# coordinates named one by one after a count, in brackets or not: (θ and φ), θ₁, θ₂
+_LISTED_NAMES = re.compile(r"\s*(?:,|\band\b|&)\s*", re.I)
+_COORDINATE_NAME = re.compile(r"[^\W\d_][0-9₀-₉']*")
+# a count then what it counts, as a remark: 1 constraint, 5 free particles (not 1 degree of freedom)
+_COUNTS_THING = re.compile(r"\s*(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\b")
 
 
 def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | None, tuple] | None:
@@ -748,11 +812,38 @@ def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | N
     value, summed = counted
     described = _DESCRIBED.fullmatch(groups[0])
     thing = described and not summed and described["thing"].lower() in _THINGS
-    if value == number or (thing and not _ASKED.search(groups[0])):
+    angles = thing and described["thing"].lower() in _ANGLES
+    if value == number or (thing and not angles and not _ASKED.search(groups[0])):
         return str(number), answer, (remark,)
-    if summed or _ASKED.search(groups[0]):
+    if summed or angles or _ASKED.search(groups[0]):
         return str(number), answer, (unclear,)
     return None  # 2 (one coordinate for each bob): words, read as remarks are
+
+
+def _count_said(pieces: list[str], final) -> str | None:
+    """The count of what is asked that a side of working ends by stating, where it is not ``final``, as
+    typed: ``It has 2 degrees of freedom``; not ``3 degrees of freedom, minus 2 constraints``, a count
+    worked from. None where there is none."""
+    for piece in pieces:
+        found = _STATES_COUNT.search(piece.rstrip(" ,.;:"))
+        if found and int(NUMBER_WORDS.get(found["count"].lower(), found["count"])) != final:
+            return found["count"]
+    return None
+
+
+def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
+    """Whether the words after a count say it counts something else (``1 constraint``, ``5 particles``), or
+    more counts with it that add up to another number (``one angle and one length``), or name more or fewer
+    coordinates than it (``1 (θ and φ)``): which number is the answer is for a person. Not ``1 degree of
+    freedom``, ``1 generalized coordinate``, ``1 angle``, ``2 (θ₁ and θ₂)``."""
+    found = _COUNTS_THING.match(rest)
+    if found and found["thing"].lower() in _THINGS - _COORDINATES:
+        return True
+    listed = _LISTED_NAMES.split(rest.strip(" .").removeprefix("(").removesuffix(")").strip())
+    if len(listed) > 1 and all(_COORDINATE_NAME.fullmatch(name) for name in listed):
+        return number.isdigit() and len(listed) != int(number)  # 1 (θ and φ): two coordinates named
+    counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
+    return counted is not None and counted[1] and counted[0] != int(number)
 
 
 def _groups(text: str) -> list[str] | None:
