@@ -5521,6 +5521,17 @@ DEFINITION_BEFORE = (
     (ATWOOD_A, "Let M = m₁ + m₂. Then ẍ = g (m₁ − m₂)/(m₁ − m₂)", ATWOOD, "not_equivalent",
      ("Your answer depends on g as the right answer does, but not on m₁ and m₂: check how your answer depends on"
       " m₁ and m₂.", _unused("Let … Then", "M = m₁ + m₂"))),
+    # a name the part asks for is no name of the student's own: a second value of the asked quantity (before,
+    # right, the definition called unused)
+    (ATWOOD_A, "Let a = g. Then ẍ = g (m₁ − m₂)/(m₁ + m₂)", {**ATWOOD, "name": ["xddot", "a", "a_1"]},
+     "not_equivalent", ("Your answer uses `a`, which this problem does not define (it uses g, m₁, m₂, x). Write your"
+      " answer in those, or say what it stands for: …, where a = ….",)),
+    ("sqrt(g/l)", "With w = 2 √(g/l): ω = √(g/l)", {**PENDULUM, "name": ["omega", "omega_0", "w", "w_0"]},
+     "not_equivalent", ("Your answer uses `ω` and `w`, which this problem does not define (it uses g, l, m, θ). Write"
+      " your answer in those, or say what each stands for: …, where ω = ….",)),
+    (SPHERICAL_P_PHI, "Let p_φ = 0. Then m l² sin²θ φ̇", {**SPHERICAL, "name": ["p_phi"]}, "invalid",
+     ("The first item of your answer has no `=`. An expression may be followed only by definitions of the names it"
+      " uses (…, where v = l θ̇); in a list of equations, every item needs an `=`.",)),
 )  # fmt: skip
 
 

@@ -1784,6 +1784,8 @@ def _unused_definition(
     name, side = defined.value.lhs, defined.value.rhs
     if name.name in names or name.name in _INGREDIENTS or _definition_judged(name, side, expected) is not None:
         return read, ()  # With L = …: m l² θ̈ = …: L is working, which a note on the lines says, not put in
+    if _is_asked(name.name, expected.option("name") or ()):
+        return read, ()  # Let a = g. Then ẍ = …: a second value of the asked quantity, no name of the student's own
     if _undefined(_without_label(alone), names):
         return read, ()  # ω = √(g/l): the label the answer names, the part judges (see _another_name)
     return alone, (("definition_unused", {"words": shown(words), "definition": definition}),)
