@@ -72,6 +72,14 @@ NUMBERS = [
     # a remark that names another unit, or per cent, says what the number is in
     ("2.006 (in minutes)", "invalid", ("A number is asked for here; your answer contains `in` and `minutes`.",)),
     ("2.006 percent", "invalid", ("A number is asked for here; your answer contains `percent`.",)),
+    # in any case, and years as yr: before, each word a remark and the number right
+    ("2.006 (MINUTES)", "invalid", ("A number is asked for here; your answer contains `MINUTES`.",)),
+    ("2.006 Min", "invalid", ("A number is asked for here; your answer contains `Min`.",)),
+    ("2.006 hz", "invalid", ("A number is asked for here; your answer contains `hz`.",)),
+    ("2.006 Hr", "invalid", ("A number is asked for here; your answer contains `Hr`.",)),
+    ("2.006 yrs", "not_equivalent", ("Not within the accepted tolerance.", "Read as 6.33045e+07 s.")),
+    ("2.006 s (Second try)", "equivalent",
+     ("Correct.", "Graded the number `2.006 s`; what follows it (`(Second try)`) is not graded.")),
 ]  # fmt: skip
 
 
