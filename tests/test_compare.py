@@ -5287,6 +5287,10 @@ def _misstated(statement: str, label: str) -> str:
         (SPHERICAL_H, f"H = p_φ θ̇ + p_θ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
          _misstated("H = -L + p_φ*θ̇ + p_θ*φ̇", "H")),
         (L_PENDULUM, f"L = θ̇ ∂L/∂θ̇ + H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H + p_θ*θ̇", "L")),
+        # a sum that is one energy once L or H is put in: H = T − L is V, L = H − T is V (before, Correct)
+        (SPHERICAL_H, f"H = T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = -L + T", "H")),
+        (SPHERICAL_H, f"H = L + V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = L + V", "H")),
+        (L_PENDULUM, f"L = H − T = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H - T", "L")),
         # judged by its values, not multiplied out: a power of a sum in it costs nothing
         (HOOP_H, f"H = (p_θ θ̇ + L + T + V + m + R + g)^40 − L = {HOOP_H_TYPED}", "expression",
          {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
@@ -5316,6 +5320,8 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
         (SPHERICAL_H, f"H = 2T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),  # T + V, where H is that
         (SPHERICAL_H, f"E = 2T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (L_PENDULUM, f"L = 2T − E = {L_TYPED}", "lagrangian", PENDULUM),
+        (L_PENDULUM, f"L = H − 2V = {L_TYPED}", "lagrangian", PENDULUM),
+        (SPHERICAL_H, f"H = L + 2V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (HOOP_H, f"H = Σ p q̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY),  # where it is not too
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
         (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it

@@ -850,7 +850,9 @@ def _definition_judged(label, side, expected: Expected, given: tuple = ()) -> bo
         if _KINETIC_K.name not in expected.names:
             side = side.xreplace({_KINETIC_K: _KINETIC})
         in_energies = _others_in_energies(side, name, expected)
-        if _in_energies(in_energies, expected.names):
+        # H = T − L is V: a sum the swaps leave one energy says the quantity is that energy
+        alone = in_energies is not side and in_energies in _ENERGIES and in_energies.name not in expected.names
+        if alone or _in_energies(in_energies, expected.names):
             # where H is not the energy, no sum of T and V is H: nor is 2T − L, which is T + V
             return _energy_multiple(in_energies, [name], sums) == 1
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
