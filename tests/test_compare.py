@@ -4949,6 +4949,28 @@ def test_a_label_that_is_a_partial_derivative_is_shown_as_typed(submitted, statu
     assert first in verdict.feedback
 
 
+_OMEGA = {**PENDULUM, "name": ["omega", "omega_0", "w", "w_0"]}
+_Q_R = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": ["Q_r"]}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status", "feedback"),
+    [
+        # a coordinate's rate, where the quantity asked for is not one, is another quantity: before, Correct
+        ("sqrt(g/l)", "θ̇ = √(g/l)", _OMEGA, "undecided",
+         ("Your answer is labelled θ̇, but the quantity asked for is ω. Read as ω, it is right; a person will check"
+          " which you meant.",)),
+        ("m g cos(theta) - k (r - l0)", "r̈ = m g cos θ − k (r − l0)", _Q_R, "undecided",
+         ("Your answer is labelled r̈, but the quantity asked for is Q_r. Read as Q_r, it is right; a person will"
+          " check which you meant.",)),
+        ("sqrt(g/l)", "ω = √(g/l)", _OMEGA, "equivalent", ("Correct.",)),
+    ],
+)  # fmt: skip
+def test_a_label_that_is_a_rate_where_none_is_asked_goes_to_a_person(expected, submitted, options, status, feedback):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 @pytest.mark.parametrize(
     ("submitted", "status"),
     [

@@ -1349,9 +1349,9 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     lhs = _label_of(side)
     described = expected.setting.describe
     rates = dict(_rates_named(names, expected))
-    if isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
+    if isinstance(lhs, sympy.Derivative) and isinstance(lhs.expr, AppliedUndef):
         # where the quantity is named as a coordinate's rate (ẍ), another rate is another quantity:
-        # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity
+        # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity; and where it is not, any rate is (θ̇ = √(g/l) for ω)
         name, order = lhs.expr.func.__name__, lhs.derivative_count
         if rates.get(name) == order:
             return None
