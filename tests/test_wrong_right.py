@@ -41,6 +41,9 @@ LAGRANGIANS = [
     # the momentum m l² (θ̇ + sgn θ̇) steps where θ̇ passes 0, which no sample state sees: for a person
     (L_PENDULUM, f"{L_PENDULUM} + m l^2 |θ̇|", PENDULUM, "undecided", 0.0, UNDECIDED),
     (L_PENDULUM, f"{L_PENDULUM} + m l sqrt(l^2 θ̇^2)", PENDULUM, "undecided", 0.0, UNDECIDED),
+    # |θ̇| in other words: acos(cos θ̇) where the states are drawn (before, Correct), asin(sin θ̇) to π/2
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 acos(cos θ̇)", PENDULUM, "undecided", 0.0, UNDECIDED),
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 asin(sin θ̇)", PENDULUM, "undecided", 0.0, UNDECIDED),
     # |θ̇|² is θ̇², with no kink: 2 (T − V) so written earns its half, and goes to no person
     (L_PENDULUM, "m l^2 |θ̇|^2 + 2 m g l cos θ", PENDULUM, "not_equivalent", 0.5,
      "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention L = T − V fixes"
