@@ -5483,6 +5483,17 @@ def _defined_before(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
 
 
+def _momentum_spelt(definition: str) -> str:
+    return (
+        f"Your answer defines `{definition}`, which is not the problem's p_θ, then uses p_θ itself. Read with the"
+        " problem's p_θ, it is right; a person will check which you meant."
+    )
+
+
+def _not_graded_p(label: str) -> str:
+    return f"The line that defines `{label}` was not graded: H is what is asked for here."
+
+
 def _unused(words: str, definition: str) -> str:
     return (
         f"Read without the words `{words}`: your `{definition}` is not used in the formula after it, which was"
@@ -5557,6 +5568,16 @@ DEFINITION_BEFORE = (
     ("sqrt(g/l)", "With w = 2 √(g/l): ω = √(g/l)", {**PENDULUM, "name": ["omega", "omega_0", "w", "w_0"]},
      "not_equivalent", ("Your answer uses `ω` and `w`, which this problem does not define (it uses g, l, m, θ). Write"
       " your answer in those, or say what each stands for: …, where ω = ….",)),
+    # the momentum the formula uses, spelt another way, is no name of the student's own: wrong, it goes to a
+    # person (before, right, the definition called unused); right, the line is working
+    (HOOP_H, f"Let P_θ = 2 m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+     "undecided", (_momentum_spelt("P_θ = 2*R^2*m*θ̇"), _not_graded_p("P_θ"), "Read with the problem's own meaning of"
+     " `p_θ`.")),
+    (HOOP_H, f"Let P = 2 m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+     "undecided", (_momentum_spelt("P = 2*R^2*m*θ̇"), _not_graded_p("P"), "Read with the problem's own meaning of"
+     " `p_θ`.")),
+    (HOOP_H, f"Let p_1 = m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+     "equivalent", ("Correct.", _not_graded_p("p₁"), "Read with the problem's own meaning of `p_θ`.")),
     (SPHERICAL_P_PHI, "Let p_φ = 0. Then m l² sin²θ φ̇", {**SPHERICAL, "name": ["p_phi"]}, "invalid",
      ("The first item of your answer has no `=`. An expression may be followed only by definitions of the names it"
       " uses (…, where v = l θ̇); in a list of equations, every item needs an `=`.",)),
