@@ -4977,6 +4977,28 @@ def test_a_label_that_is_a_partial_derivative_is_shown_as_typed(submitted, statu
     assert first in verdict.feedback
 
 
+_OMEGA = {**PENDULUM, "name": ["omega", "omega_0", "w", "w_0"]}
+_Q_R = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": ["Q_r"]}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status", "feedback"),
+    [
+        # a coordinate's rate, where the quantity asked for is not one, is another quantity: before, Correct
+        ("sqrt(g/l)", "θ̇ = √(g/l)", _OMEGA, "undecided",
+         ("Your answer is labelled θ̇, but the quantity asked for is ω. Read as ω, it is right; a person will check"
+          " which you meant.",)),
+        ("m g cos(theta) - k (r - l0)", "r̈ = m g cos θ − k (r − l0)", _Q_R, "undecided",
+         ("Your answer is labelled r̈, but the quantity asked for is Q_r. Read as Q_r, it is right; a person will"
+          " check which you meant.",)),
+        ("sqrt(g/l)", "ω = √(g/l)", _OMEGA, "equivalent", ("Correct.",)),
+    ],
+)  # fmt: skip
+def test_a_label_that_is_a_rate_where_none_is_asked_goes_to_a_person(expected, submitted, options, status, feedback):
+    verdict = compare(expected, submitted, **options)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 @pytest.mark.parametrize(
     "submitted", ["∂V/∂θ = m g l sin θ", "−∂V/∂θ = −m g l sin θ", r"\frac{\partial V}{\partial \theta} = mgl\sin\theta"]
 )
@@ -5351,6 +5373,10 @@ def _misstated(statement: str, label: str) -> str:
         (SPHERICAL_H, f"H = p_φ θ̇ + p_θ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
          _misstated("H = -L + p_φ*θ̇ + p_θ*φ̇", "H")),
         (L_PENDULUM, f"L = θ̇ ∂L/∂θ̇ + H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H + p_θ*θ̇", "L")),
+        # a sum that is one energy once L or H is put in: H = T − L is V, L = H − T is V (before, Correct)
+        (SPHERICAL_H, f"H = T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = -L + T", "H")),
+        (SPHERICAL_H, f"H = L + V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = L + V", "H")),
+        (L_PENDULUM, f"L = H − T = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H - T", "L")),
         # judged by its values, not multiplied out: a power of a sum in it costs nothing
         (HOOP_H, f"H = (p_θ θ̇ + L + T + V + m + R + g)^40 − L = {HOOP_H_TYPED}", "expression",
          {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
@@ -5380,6 +5406,8 @@ def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expecte
         (SPHERICAL_H, f"H = 2T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),  # T + V, where H is that
         (SPHERICAL_H, f"E = 2T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (L_PENDULUM, f"L = 2T − E = {L_TYPED}", "lagrangian", PENDULUM),
+        (L_PENDULUM, f"L = H − 2V = {L_TYPED}", "lagrangian", PENDULUM),
+        (SPHERICAL_H, f"H = L + 2V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL),
         (HOOP_H, f"H = Σ p q̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY),  # where it is not too
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),
         (SPHERICAL_P_PHI, "p_φ = ∂T/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL),  # V has no φ̇ in it
@@ -5519,6 +5547,17 @@ def _defined_before(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
 
 
+def _momentum_spelt(definition: str) -> str:
+    return (
+        f"Your answer defines `{definition}`, which is not the problem's p_θ, then uses p_θ itself. Read with the"
+        " problem's p_θ, it is right; a person will check which you meant."
+    )
+
+
+def _not_graded_p(label: str) -> str:
+    return f"The line that defines `{label}` was not graded: H is what is asked for here."
+
+
 def _unused(words: str, definition: str) -> str:
     return (
         f"Read without the words `{words}`: your `{definition}` is not used in the formula after it, which was"
@@ -5603,6 +5642,27 @@ DEFINITION_BEFORE = (
     ("m xddot + b xdot + k x = 0", "Let γ = b/(2m), and ω0² = −k/m, then ẍ + 2γẋ + ω0² x = 0",
      {**DAMPED, "kind": "equation"}, "not_equivalent",
      ("A term differs: the term in x has the wrong sign.", _defined_before("Let … then", "γ = b/(2m) and ω0² = −k/m"))),
+    # a name the part asks for is no name of the student's own: a second value of the asked quantity (before,
+    # right, the definition called unused)
+    (ATWOOD_A, "Let a = g. Then ẍ = g (m₁ − m₂)/(m₁ + m₂)", {**ATWOOD, "name": ["xddot", "a", "a_1"]},
+     "not_equivalent", ("Your answer uses `a`, which this problem does not define (it uses g, m₁, m₂, x). Write your"
+      " answer in those, or say what it stands for: …, where a = ….",)),
+    ("sqrt(g/l)", "With w = 2 √(g/l): ω = √(g/l)", {**PENDULUM, "name": ["omega", "omega_0", "w", "w_0"]},
+     "not_equivalent", ("Your answer uses `ω` and `w`, which this problem does not define (it uses g, l, m, θ). Write"
+      " your answer in those, or say what each stands for: …, where ω = ….",)),
+    # the momentum the formula uses, spelt another way, is no name of the student's own: wrong, it goes to a
+    # person (before, right, the definition called unused); right, the line is working
+    (HOOP_H, f"Let P_θ = 2 m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+     "undecided", (_momentum_spelt("P_θ = 2*R^2*m*θ̇"), _not_graded_p("P_θ"), "Read with the problem's own meaning of"
+     " `p_θ`.")),
+    (HOOP_H, f"Let P = 2 m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+     "undecided", (_momentum_spelt("P = 2*R^2*m*θ̇"), _not_graded_p("P"), "Read with the problem's own meaning of"
+     " `p_θ`.")),
+    (HOOP_H, f"Let p_1 = m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
+     "equivalent", ("Correct.", _not_graded_p("p₁"), "Read with the problem's own meaning of `p_θ`.")),
+    (SPHERICAL_P_PHI, "Let p_φ = 0. Then m l² sin²θ φ̇", {**SPHERICAL, "name": ["p_phi"]}, "invalid",
+     ("The first item of your answer has no `=`. An expression may be followed only by definitions of the names it"
+      " uses (…, where v = l θ̇); in a list of equations, every item needs an `=`.",)),
 )  # fmt: skip
 
 

@@ -86,6 +86,25 @@ def test_ctrl_c_in_a_terminal_is_the_servers_to_handle_not_its_workers():
     assert after is not None and _pid(after) == worker
 
 
+@pytest.mark.parametrize("starts", [2, 3])
+def test_a_ctrl_c_while_workers_start_stops_those_started(monkeypatch, starts):
+    # before: they ran on, ended by multiprocessing at exit, and `grader serve` said a worker did not start
+    started = []
+    start = CheckPool._start
+
+    def interrupted(pool):
+        if len(started) == starts - 1:
+            raise KeyboardInterrupt
+        before = set(pool._all)
+        start(pool)
+        started.extend(worker.process for worker in pool._all - before)
+
+    monkeypatch.setattr(CheckPool, "_start", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        CheckPool(BANK, timeout=1.0, workers=starts, run=_stuck)
+    assert [process.is_alive() for process in started] == [False] * (starts - 1)
+
+
 def test_workers_are_recycled(monkeypatch):
     monkeypatch.setattr(grader.serve.workers, "CHECKS_PER_WORKER", 2)
     pool = CheckPool(BANK, timeout=1.0, workers=1, run=_stuck)

@@ -41,6 +41,9 @@ LAGRANGIANS = [
     # the momentum m l² (θ̇ + sgn θ̇) steps where θ̇ passes 0, which no sample state sees: for a person
     (L_PENDULUM, f"{L_PENDULUM} + m l^2 |θ̇|", PENDULUM, "undecided", 0.0, UNDECIDED),
     (L_PENDULUM, f"{L_PENDULUM} + m l sqrt(l^2 θ̇^2)", PENDULUM, "undecided", 0.0, UNDECIDED),
+    # |θ̇| in other words: acos(cos θ̇) where the states are drawn (before, Correct), asin(sin θ̇) to π/2
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 acos(cos θ̇)", PENDULUM, "undecided", 0.0, UNDECIDED),
+    (L_PENDULUM, f"{L_PENDULUM} + m l^2 asin(sin θ̇)", PENDULUM, "undecided", 0.0, UNDECIDED),
     # |θ̇|² is θ̇², with no kink: 2 (T − V) so written earns its half, and goes to no person
     (L_PENDULUM, "m l^2 |θ̇|^2 + 2 m g l cos θ", PENDULUM, "not_equivalent", 0.5,
      "Your Lagrangian gives the right equations of motion, but it is 2 × (T − V); the convention L = T − V fixes"
@@ -75,6 +78,14 @@ NUMBERS = [
     # a value, then its reason: read as 2.5·because·2π√(1/9.81) = 2.006 s, the reason's last side was graded
     ("2.5 s because 2π√(1/9.81) = 2.006 s", "not_equivalent", ("Not within the accepted tolerance.",
      "Graded your final value, `2.5 s`; your working, `2.5 s because 2π√(1/9.81) = 2.006 s`, does not hold.")),
+    # in any case, and years as yr: before, each word a remark and the number right
+    ("2.006 (MINUTES)", "invalid", ("A number is asked for here; your answer contains `MINUTES`.",)),
+    ("2.006 Min", "invalid", ("A number is asked for here; your answer contains `Min`.",)),
+    ("2.006 hz", "invalid", ("A number is asked for here; your answer contains `hz`.",)),
+    ("2.006 Hr", "invalid", ("A number is asked for here; your answer contains `Hr`.",)),
+    ("2.006 yrs", "not_equivalent", ("Not within the accepted tolerance.", "Read as 6.33045e+07 s.")),
+    ("2.006 s (Second try)", "equivalent",
+     ("Correct.", "Graded the number `2.006 s`; what follows it (`(Second try)`) is not graded.")),
 ]  # fmt: skip
 
 

@@ -848,7 +848,9 @@ def _definition_judged(label, side, expected: Expected, given: tuple = ()) -> bo
         if _KINETIC_K.name not in expected.names:
             side = side.xreplace({_KINETIC_K: _KINETIC})
         in_energies = _others_in_energies(side, name, expected)
-        if _in_energies(in_energies, expected.names):
+        # H = T − L is V: a sum the swaps leave one energy says the quantity is that energy
+        alone = in_energies is not side and in_energies in _ENERGIES and in_energies.name not in expected.names
+        if alone or _in_energies(in_energies, expected.names):
             # where H is not the energy, no sum of T and V is H: nor is 2T − L, which is T + V
             return _energy_multiple(in_energies, [name], sums) == 1
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
@@ -979,9 +981,15 @@ def _given_redefined(answer: ParsedAnswer, expected: Expected, given: tuple, mom
     if momentum:  # p, where it means p_θ
         values[sympy.Symbol(momentum[0])] = values.get(sympy.Symbol(momentum[1]))
     for item in answer.value:
-        value = values.get(item.lhs) if item.lhs.is_Symbol else None
+        if not item.lhs.is_Symbol:
+            continue
+        # Let pθ = 2 m l² θ̇. Then H = p_θ²/…: the momentum given, spelt otherwise, and not put in place
+        spelt = _momentum_spelt(item.lhs.name, expected) if item.lhs not in values else None
+        value = values.get(item.lhs if spelt is None else sympy.Symbol(spelt))
         if value is None or any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
             continue
+        if spelt is not None and not _same_value(item.rhs, value, expected):
+            return (("momentum_spelt_for_a_person", {"name": unicode_name(spelt), "definition": to_text(item)}),)
         if not _same_value(item.rhs, value, expected):
             name = unicode_name(momentum[1] if momentum and item.lhs.name == momentum[0] else item.lhs.name)
             return (("given_redefined_for_a_person", {"name": name, "definition": to_text(item)}),)
@@ -1397,9 +1405,9 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         if _is_asked(force, names):
             return None
         said = f"−{unicode_name(lhs.name)}"
-    elif isinstance(lhs, sympy.Derivative) and rates and isinstance(lhs.expr, AppliedUndef):
+    elif isinstance(lhs, sympy.Derivative) and isinstance(lhs.expr, AppliedUndef):
         # where the quantity is named as a coordinate's rate (ẍ), another rate is another quantity:
-        # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity
+        # ẋ = (m₁ − m₂) g/(m₁ + m₂) gives a velocity; and where it is not, any rate is (θ̇ = √(g/l) for ω)
         name, order = lhs.expr.func.__name__, lhs.derivative_count
         if rates.get(name) == order:
             return None
@@ -1605,6 +1613,7 @@ _FOR_A_PERSON = {
     "energies_disagree_for_a_person": "energies_disagree",
     "constant_said_for_a_person": "constant_said",
     "given_redefined_for_a_person": "given_redefined",
+    "momentum_spelt_for_a_person": "momentum_spelt",
 }
 
 
@@ -1875,9 +1884,23 @@ def _unused_definition(
     name, side = defined.value.lhs, defined.value.rhs
     if name.name in names or name.name in _INGREDIENTS or _definition_judged(name, side, expected) is not None:
         return read, ()  # With L = …: m l² θ̈ = …: L is working, which a note on the lines says, not put in
+    if _is_asked(name.name, expected.option("name") or ()) or _momentum_spelt(name.name, expected):
+        # Let a = g. Then ẍ = …: a second value of the asked quantity; Let pθ = 2 m l² θ̇. Then H = p_θ²/…: the
+        # momentum the formula uses, spelt another way. Neither is a name of the student's own
+        return read, ()
     if _undefined(_without_label(alone), names):
         return read, ()  # ω = √(g/l): the label the answer names, the part judges (see _another_name)
     return alone, (("definition_unused", {"words": shown(words), "definition": definition}),)
+
+
+def _momentum_spelt(label: str, expected: Expected) -> str | None:
+    """The momentum (``p_theta``) a label may name spelt another way: pθ or P_θ for p_θ, p₁ for the first
+    coordinate's, and P where there is one coordinate; None for any other label."""
+    coords = expected.setting.coords
+    spellings = {f"p{q}".replace("_", "").lower(): q for q in coords}
+    spellings |= {f"p{i}": q for i, q in enumerate(coords, 1)} | ({"p": coords[0]} if len(coords) == 1 else {})
+    q = spellings.get(label.replace("_", "").lower())
+    return canonical_name(f"p_{q}") if q else None
 
 
 def _uses_defined(formula: str, definition: str, coords, names: list) -> bool:

@@ -89,6 +89,9 @@ FEEDBACK: dict[str, str] = {
     "given_redefined_for_a_person": "Your answer defines `{definition}`, which is not the problem's {name}. Read"
     " with your definition put in place, it is right; a person will check this answer.",
     "given_redefined": "Your answer defines `{definition}`, which is not the problem's {name}.",
+    "momentum_spelt_for_a_person": "Your answer defines `{definition}`, which is not the problem's {name}, then"
+    " uses {name} itself. Read with the problem's {name}, it is right; a person will check which you meant.",
+    "momentum_spelt": "Your answer defines `{definition}`, which is not the problem's {name}, then uses {name} itself.",
     "operator_for_a_person": "Your answer says `{statement}` on the way to its equation, which is not Lagrange's"
     " equation. The equation was graded and is right; a person will check this answer.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",

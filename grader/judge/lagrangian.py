@@ -160,13 +160,18 @@ def _beyond_velocities(value, setting: Setting) -> list[str]:
     return [unicode_name(q, order) for q in setting.coords for order in orders if setting.node(q, order) in present]
 
 
+_INVERSE_TRIGONOMETRIC = (sympy.asin, sympy.acos, sympy.atan, sympy.acot, sympy.asec, sympy.acsc)
+
+
 def _kinked_in_velocity(value) -> bool:
-    """Whether ``value`` (as parsed) has |…| of a velocity, or √(θ̇²) (which the parser keeps as
-    typed): ∂L/∂q̇ then steps along the motion."""
+    """Whether ``value`` (as parsed) has |…| of a velocity, √(θ̇²) (which the parser keeps as
+    typed), or an inverse trigonometric function of one (acos(cos θ̇)): ∂L/∂q̇ then steps along the motion."""
     even = {power: power.base.args[0] ** power.exp for power in value.atoms(sympy.Pow)
             if isinstance(power.base, sympy.Abs) and power.exp.is_even}  # fmt: skip
     if any(kink.args[0].has(sympy.Derivative) for kink in value.xreplace(even).atoms(sympy.Abs)):
         return True  # |θ̇|, not |θ̇|², which is θ̇²
+    if any(inverse.args[0].has(sympy.Derivative) for inverse in value.atoms(*_INVERSE_TRIGONOMETRIC)):
+        return True  # acos(cos θ̇) is |θ̇| where the states are drawn, and asin(sin θ̇) kinks at π/2
     return any(
         power.exp.is_Rational and not power.exp.is_integer and any(
             factor.is_Pow and factor.exp.is_even and factor.base.has(sympy.Derivative)

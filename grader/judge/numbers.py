@@ -1036,6 +1036,12 @@ def _number_then_remark(piece: str):
             yield number, rest
 
 
+def _unit_of(word: str):
+    """The unit a word of a remark names, in any case a student types it (Min, MINUTES, hz); or None."""
+    spelling = next((each for each in (word, word.lower(), word.capitalize()) if each in SI_UNITS), None)
+    return SI_UNITS[spelling] if spelling else None
+
+
 def _is_remark(rest: str, names: Collection[str], number: str = "", unit: str = "") -> bool:
     """Whether ``rest`` is words about the number, not more of the answer: after the mark that
     opens it, prose (:func:`~grader.judge.words.is_prose`) that does not begin with a digit, is not
@@ -1050,7 +1056,7 @@ def _is_remark(rest: str, names: Collection[str], number: str = "", unit: str = 
         return False  # 2,01, 3 is a list; 2 sec a unit
     if _PER_CENT.search(words):
         return False
-    if unit and any(SI_UNITS[word] != unit_named(unit) for word in _UNIT_NAMED.findall(words) if word in SI_UNITS):
+    if unit and any(_unit_of(word) not in (None, unit_named(unit)) for word in _UNIT_NAMED.findall(words)):
         return False
     if any(NUMBER_WORDS[word.lower()] != number for word in _NUMBER_WORD.findall(_PER_EACH.sub(" ", words))):
         return False

@@ -222,7 +222,7 @@ _SPELLED = {
     **dict.fromkeys(("kilosecond", "kiloseconds"), SI_UNITS["ks"]),
     **dict.fromkeys(("day", "days"), _si_unit(86400, "time")),
     **dict.fromkeys(("week", "weeks"), _si_unit(7 * 86400, "time")),
-    **dict.fromkeys(("year", "years"), _si_unit(31557600, "time")),  # a Julian year
+    **dict.fromkeys(("year", "years", "yr", "yrs"), _si_unit(31557600, "time")),  # a Julian year
 }
 _CAPITALIZED = ("second", "seconds", "minute", "minutes", "hour", "hours", "hertz", "day", "days")
 SI_UNITS |= _SPELLED

@@ -139,8 +139,14 @@ class CheckPool:
         self._all: set[_Worker] = set()
         self._lock = threading.Lock()
         self._closed = False
-        for _ in range(max(1, workers or os.cpu_count() or 1)):
-            self._start()
+        try:
+            for _ in range(max(1, workers or os.cpu_count() or 1)):
+                self._start()
+        except BaseException:
+            # a Ctrl-C between two starts: the workers started are stopped here, not ended at exit by
+            # multiprocessing, which each one's thread would report as a worker that did not start
+            self.close()
+            raise
 
     def _start(self) -> None:
         """Start a worker; it joins the idle ones when it says it is ready (a thread waits for that,
