@@ -1056,9 +1056,9 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
 def _energies_disagree(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
     """``T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ``: lines of working that give
     the energies, then the Lagrangian (or H or E, where they are T + V) with a value that their difference
-    (sum) is not. The value
-    may be right, but the working says otherwise, as a chain's wrong earlier side does: a note for a
-    person. None where the energies come to it, are the problem's names, or cannot be compared."""
+    (sum) is not. The value may be right, but the working says otherwise, as a chain's wrong earlier side
+    does: a note for a person. None where the energies come to it, are the problem's names, or cannot be
+    compared."""
     if (
         answer.kind != "equations"
         or spec.name not in ("lagrangian", "expression")
