@@ -4218,6 +4218,12 @@ def test_words_that_say_what_was_counted_are_a_remark_not_a_qualifier(expected, 
     assert verdict.feedback == ("Correct.", _remark(expected, submitted[len(expected) :].strip()))
 
 
+@pytest.mark.parametrize(("submitted", "value"), [("1, the angle θ", "1"), ("one, the angle θ", "one")])
+def test_the_number_graded_is_shown_without_the_comma_after_it(submitted, value):
+    # before: "Graded the number `1,`" and `one,`
+    assert compare("1", submitted, kind="integer").feedback == ("Correct.", _remark(value, "the angle θ"))
+
+
 @pytest.mark.parametrize(
     "submitted",
     [

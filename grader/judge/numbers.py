@@ -244,7 +244,7 @@ def _read_number(
             answer = reads(prepared)
             if answer is None or (rest and not _is_remark(rest, names, words or typed, unit)):
                 continue
-            typed = _SENTENCE_END.sub("", typed)  # The period is 2.01 s.
+            typed = _SENTENCE_END.sub("", typed).rstrip(" ,;")  # The period is 2.01 s. 1, the angle θ
             said = _words_beside(f"{before} {rest}") if last and index == last else ""
             numbers = (reads, decimal_comma, unit, count)
             if said and _other_values(pieces[:last], answer, *numbers):
