@@ -36,7 +36,7 @@ from grader.bank import Problem
 from grader.grade.batch import limit_memory
 from grader.grade.part import expected_answer
 from grader.grade.selfcheck import CheckResult, check, find_part
-from grader.interrupt import ctrl_c_deferred
+from grader.interrupt import ctrl_c_deferred, ctrl_c_ignored
 
 __all__ = ["CHECKS_PER_WORKER", "GRACE", "OVERRUN", "CheckPool", "PoolBusy"]
 
@@ -55,19 +55,6 @@ OVERRUN = (
 
 class PoolBusy(Exception):  # a condition reported to the handler, not an error of the grader
     """Every worker stayed busy for as long as a request may wait."""
-
-
-def _start_fork_server() -> None:
-    """Start the fork server with Ctrl-C ignored, which it keeps across its exec: a Ctrl-C while it
-    loads sympy, a second or two, would otherwise print the traceback of an import it did not need
-    to finish. It needs no Ctrl-C of its own; it ends when this process does."""
-    if threading.current_thread() is not threading.main_thread():
-        return  # signal dispositions are the main thread's to set; the server starts as it would
-    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
-    try:
-        multiprocessing.forkserver.ensure_running()
-    finally:
-        signal.signal(signal.SIGINT, previous)
 
 
 def _serve(
@@ -134,7 +121,10 @@ class CheckPool:
         self.bank, self.keys, self.timeout, self.run = bank, tuple(keys), timeout, run
         self._context = multiprocessing.get_context("forkserver")
         self._context.set_forkserver_preload(["grader.grade.selfcheck"])
-        _start_fork_server()
+        # a Ctrl-C while the fork server loads sympy, a second or two, would print the traceback of an
+        # import it did not need to finish: it ignores Ctrl-C, and ends when this process does
+        with ctrl_c_ignored():
+            multiprocessing.forkserver.ensure_running()
         self._idle: queue.Queue[_Worker] = queue.Queue()
         self._all: set[_Worker] = set()
         self._lock = threading.Lock()
