@@ -9,7 +9,7 @@ Contents:
 The format is documented for authors in docs/problem-format.md.
 """
 
-from grader.bank.load import default_bank_path, load_assignment, load_bank, load_problem, read_yaml
+from grader.bank.load import default_bank_path, load_assignment, load_bank, load_problem, read_yaml, repeated_keys
 from grader.bank.schema import (
     DIMENSIONS,
     PART_KINDS,
@@ -43,4 +43,5 @@ __all__ = [
     "load_bank",
     "load_problem",
     "read_yaml",
+    "repeated_keys",
 ]

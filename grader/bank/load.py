@@ -2,6 +2,7 @@
 
 Contents:
     read_yaml(path)             data and a map from each field's path to its line
+    repeated_keys(node)         each key a YAML mapping gives twice, which YAML would keep the last of
     load_problem(path)          one validated Problem
     load_bank(folder)           every problem under a folder, by id (duplicates refused)
     load_assignment(path, bank) one Assignment, its problems and parts checked against the bank
@@ -15,7 +16,7 @@ import yaml
 
 from grader.bank.schema import Assignment, BankError, Problem, assignment_from_data, problem_from_data
 
-__all__ = ["default_bank_path", "load_assignment", "load_bank", "load_problem", "read_yaml"]
+__all__ = ["default_bank_path", "load_assignment", "load_bank", "load_problem", "read_yaml", "repeated_keys"]
 
 MAX_FILE_BYTES = 1_000_000  # a problem is a page, not a data dump
 # Values in a file once its aliases are expanded: the bank's largest problem has under 1,000. Nine
@@ -68,23 +69,36 @@ def _index(node, location: tuple, lines: dict, count: list[int], path: Path) -> 
         raise BankError(f"the file holds more than {MAX_VALUES} values once its aliases are expanded", path=str(path))
     lines[location] = node.start_mark.line + 1
     if isinstance(node, yaml.MappingNode):
-        seen: dict[object, int] = {}
+        for key, line, first in repeated_keys(node)[:1]:
+            raise BankError(
+                f"field {key!r} is given a second time (first on line {first}); YAML would silently keep only the last",
+                path=str(path),
+                line=line,
+            )
         for key, value in node.value:
             line = key.start_mark.line + 1
-            if key.value in seen and key.tag != "tag:yaml.org,2002:merge":
-                raise BankError(
-                    f"field {key.value!r} is given a second time (first on line {seen[key.value]}); YAML"
-                    " would silently keep only the last",
-                    path=str(path),
-                    line=line,
-                )
-            seen[key.value] = line
             lines[(*location, key.value)] = line
             _index(value, (*location, key.value), lines, count, path)
             lines[(*location, key.value)] = line
     elif isinstance(node, yaml.SequenceNode):
         for index, item in enumerate(node.value):
             _index(item, (*location, index), lines, count, path)
+
+
+def repeated_keys(node: yaml.MappingNode) -> list[tuple[str, int, int]]:
+    """Each key a YAML mapping gives again, with the line it is given again on and the line it was first
+    given on: YAML itself keeps the last value, silently. A merge key (``<<``) may be given again."""
+    first: dict[str, int] = {}
+    repeated = []
+    for key, _ in node.value:
+        if not isinstance(key, yaml.ScalarNode) or key.tag == "tag:yaml.org,2002:merge":
+            continue
+        line = key.start_mark.line + 1
+        if key.value in first:
+            repeated.append((key.value, line, first[key.value]))
+        else:
+            first[key.value] = line
+    return repeated
 
 
 def default_bank_path() -> Path:

@@ -31,6 +31,7 @@ from pathlib import Path
 
 import yaml
 
+from grader.bank import repeated_keys
 from grader.errors import GraderError
 from grader.grade.results import Student
 
@@ -441,11 +442,7 @@ class _RepeatsNoted(yaml.SafeLoader):
         self.repeated: list[tuple[object, int | None]] = []
 
     def construct_mapping(self, node, deep=False):
-        seen = set()
-        for key, _ in node.value:
-            if isinstance(key, yaml.ScalarNode) and key.value in seen:
-                self.repeated.append((key.value, key.start_mark.line + 1))
-            seen.add(key.value if isinstance(key, yaml.ScalarNode) else id(key))
+        self.repeated += [(key, line) for key, line, _ in repeated_keys(node)]
         return super().construct_mapping(node, deep)
 
 
