@@ -88,6 +88,7 @@ BROKEN_MESSAGES = [
      "line 17: field 'answer' is given a second time (first on line 16); YAML would silently keep only the last"),
     ("aliases_expand_too_far", "", "", "the file holds more than 100000 values once its aliases are expanded"),
     ("nested_too_deeply", "", "", "the file is nested too deeply to read"),
+    ("field_name_a_list", "", "", "line 3: a field's name must be a word, not a list or a mapping"),  # was a TypeError
     ("test_gets_another_score", "test_gets_another_score", "lagrangian",
      "test '1/2 m l^2 thetadot^2' gets 0, not 1 (not_equivalent: A term is missing: a term in cos(θ).)"),
 ]  # fmt: skip

@@ -77,6 +77,8 @@ def _index(node, location: tuple, lines: dict, count: list[int], path: Path) -> 
             )
         for key, value in node.value:
             line = key.start_mark.line + 1
+            if not isinstance(key, yaml.ScalarNode):  # ? [a, b] : 1, which no field of the format is
+                raise BankError("a field's name must be a word, not a list or a mapping", path=str(path), line=line)
             lines[(*location, key.value)] = line
             _index(value, (*location, key.value), lines, count, path)
             lines[(*location, key.value)] = line
