@@ -5592,7 +5592,7 @@ DEFINITION_BEFORE = (
     ("sqrt(g/l)", "With ω₀ = √(g/l): ω = ω₀", PENDULUM, "equivalent",
      ("Correct.", _defined_before("With", "ω₀ = √(g/l)"))),
     # a name the formula does not use is working, not put in place: the note says so, and not that it was
-    (EOM_PENDULUM, "With L = ½ m l² θ̇² − m g l cos θ: m l² θ̈ = −m g l sin θ", {**PENDULUM, "kind": "equation"},
+    (EOM_PENDULUM, "With L = ½ m l² θ̇² + m g l cos θ: m l² θ̈ = −m g l sin θ", {**PENDULUM, "kind": "equation"},
      "equivalent",
      ("Correct.", "The line that defines `L` was read as your working: it is not graded.")),
     # the name defined by its square, as a frequency is: before, `Using` and ω₀ undefined, and wrong

@@ -377,3 +377,62 @@ def test_energies_in_the_working_that_do_not_make_the_hamiltonian_go_to_a_person
         " and is right; a person will check this answer.",
         WORKING_READ,
     )), verdict  # fmt: skip
+
+
+EOM_PENDULUM = "m l^2 thetaddot + m g l sin(theta) = 0"
+EOM_DOUBLE = (
+    "(m1 + m2) l1 theta1ddot + m2 l2 theta2ddot cos(theta1 - theta2) + m2 l2 theta2dot^2 sin(theta1 - theta2)"
+    " + (m1 + m2) g sin(theta1) = 0;"
+    " l2 theta2ddot + l1 theta1ddot cos(theta1 - theta2) - l1 theta1dot^2 sin(theta1 - theta2) + g sin(theta2) = 0"
+)
+L_DOUBLE_WRONG = L_DOUBLE.replace("1/2 (m1 + m2) l1^2", "1/2 m1 l1^2")
+DISAGREES = "but Lagrange's equation with {} does not give the equation of motion your answer gives. Your equation"
+FOR_A_PERSON = " was graded and is right; a person will check this answer."
+L_READ = "The line that defines `L` was read as your working: it is not graded."
+L_AND_F_READ = "The lines that define `F` and `L` were read as your working: they are not graded."
+
+LAGRANGIAN_IN_THE_WORKING = [
+    # (expected, submitted, setting, kind, status, feedback): working that states a Lagrangian (or T and V, or
+    # L and Rayleigh's F), then a right equation of motion that Lagrange's equation with it does not give
+    (EOM_PENDULUM, f"L = m l^2 thetadot^2 - m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    # a sentence that defines L before the equation: its L was read as working, and no value of it judged
+    (EOM_PENDULUM, "With L = ½ m l² θ̇² − m g l cos θ: m l² θ̈ = −m g l sin θ", PENDULUM, "equation", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_PENDULUM, f"T = 1/2 m l^2 thetadot^2; V = m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation",
+     "undecided", (f"Your working gives T − V, {DISAGREES.format('it')}{FOR_A_PERSON}", WORKING_READ)),
+    (EOM_DOUBLE, f"L = {L_DOUBLE_WRONG}; {EOM_DOUBLE}", DOUBLE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_DAMPED, f"L = m xdot^2 + 1/2 k x^2; {EOM_DAMPED}", DAMPED, "equation", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; F = b xdot^2; {EOM_DAMPED}", DAMPED, "equation", "undecided",
+     (f"Your working gives L and F, {DISAGREES.format('them')}{FOR_A_PERSON}", L_AND_F_READ)),
+    # a wrong equation after a wrong L: wrong, and told the L is no help either
+    (EOM_PENDULUM, "L = m l^2 thetadot^2 - m g l cos(theta); m l^2 thetaddot - m g l sin(theta) = 0", PENDULUM,
+     "equation", "not_equivalent",
+     ("A term differs: the term in sin(θ) has the wrong sign.",
+      "Your working gives L, but Lagrange's equation with it does not give a right equation of motion either.",
+      L_READ)),
+    # a right L, or one off by a constant, a factor or d/dt of a function of θ and t, and the friction's F or
+    # none: as before
+    (EOM_PENDULUM, f"L = {L_PENDULUM}; {EOM_PENDULUM}", PENDULUM, "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_PENDULUM, f"L = m l^2 thetadot^2 + 2 m g l cos(theta) + 7; {EOM_PENDULUM}", PENDULUM, "equation",
+     "equivalent", ("Correct.", L_READ)),
+    (EOM_PENDULUM, f"L = {L_PENDULUM} + m l^2 sin(theta) thetadot; thetaddot + g/l sin(theta) = 0", PENDULUM,
+     "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_PENDULUM, f"T = 1/2 m l^2 thetadot^2; V = -m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation",
+     "equivalent", ("Correct.", WORKING_READ)),
+    (EOM_DOUBLE, f"L = {L_DOUBLE}; {EOM_DOUBLE}", DOUBLE, "equations", "equivalent", ("Correct.", L_READ)),
+    (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_DAMPED, f"L = m xdot^2 - k x^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; F = 1/2 b xdot^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent",
+     ("Correct.", L_AND_F_READ)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "setting", "kind", "status", "feedback"), LAGRANGIAN_IN_THE_WORKING)
+def test_a_lagrangian_in_the_working_that_does_not_give_the_equation_goes_to_a_person(
+    expected, submitted, setting, kind, status, feedback
+):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

@@ -43,6 +43,7 @@ from grader.judge.expression import check_expression, same_values
 from grader.judge.feedback import say, shown
 from grader.judge.given import given_values, in_given_names
 from grader.judge.lagrangian import check_lagrangian
+from grader.judge.lagrangian import euler_lagrange as lagrange_equations
 from grader.judge.motion import accelerations_in, check_equation, check_equations
 from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
@@ -557,6 +558,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _with_definitions(answer, expected, deadline)
                 read_notes += _energies_disagree(answer, spec, expected, deadline)
+                read_notes += _lagrangian_disagrees(answer, spec, expected, deadline)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += working
                 energies = _energies_alone(answer, spec, expected, deadline)
@@ -1091,6 +1093,88 @@ def _energies_disagree(answer: ParsedAnswer, spec: Kind, expected: Expected, dea
     return (("energies_disagree_for_a_person", details),)
 
 
+def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
+    """``L = m l² θ̇² − m g l cos θ; m l² θ̈ + m g l sin θ = 0``: working that states the Lagrangian (or T and V),
+    and Rayleigh's F where there is one, then equations of motion that Lagrange's equations with them do not
+    give. The equations may be right, but the working says otherwise: a note for a person. A Lagrangian off by
+    a constant, a factor or d/dt of a function gives the same equations, and agrees. Where friction is in the
+    equations and no F is written, the Lagrangian's equations must agree with them at rest, where friction
+    vanishes. None where the working states no one Lagrangian, holds names of the student's own, or cannot
+    be judged."""
+    if answer.kind != "equations" or spec.name not in ("equation", "equations") or _DEFINING_LETTERS & expected.names:
+        return ()
+    lines: dict = {}
+    for item in answer.value:
+        if item.lhs.is_Symbol and item.lhs.name in _WORKING_NAMES:
+            lines.setdefault(item.lhs, []).append(item.rhs)
+    if any(len(values) > 1 for values in lines.values()):
+        return ()  # two values of one name: which is the working is not ours to say
+    found = {symbol: values[0] for symbol, values in lines.items()}
+    potential = found.get(_POTENTIAL, found.get(_POTENTIAL_U))
+    if _LAGRANGIAN in found:
+        lagrangian, label = found[_LAGRANGIAN], "L"
+    elif _KINETIC in found and potential is not None and not {_POTENTIAL, _POTENTIAL_U} <= set(found):
+        lagrangian, label = found[_KINETIC] - potential, "T − V" if _POTENTIAL in found else "T − U"
+    else:
+        return ()
+    friction = [(symbol, found[symbol]) for symbol in _RAYLEIGH if symbol in found]
+    if len(friction) > 1:
+        return ()
+    label = f"{label} and {friction[0][0].name}" if friction else label
+    friction = [value for _, value in friction]
+    names = expected.names | {TIME.name}
+    if any(symbol.name not in names for value in (lagrangian, *friction) for symbol in value.free_symbols):
+        return ()  # L = T − V where T = …, or a name of the student's own: no equations to compare
+    setting = expected.setting
+    try:
+        plain = setting.plain(lagrangian)
+        equations = lagrange_equations(plain, setting)
+        if friction:
+            dissipation = setting.plain(friction[0])
+            rates = [sympy.diff(dissipation, setting.velocity(q)) for q in setting.coords]
+            equations = [e + rate for e, rate in zip(equations, rates, strict=True)]
+        deadline.check()
+        if not friction and len(setting.coords) == 1 and _dissipative(expected):
+            agrees = _agrees_at_rest(equations[0], expected)
+        else:
+            typed = [sympy.Eq(setting.as_typed(e), 0, evaluate=False) for e in equations]
+            given = ParsedAnswer(answer.text, typed[0] if len(typed) == 1 else tuple(typed), _SHAPES[len(typed) > 1])
+            agrees = spec.check(expected, given, deadline).status != "not_equivalent"
+    except _CHECK_FAILURES:
+        return ()
+    details = {"label": label, "it": "them" if friction else "it"}
+    return () if agrees else (("lagrangian_disagrees_for_a_person", details),)
+
+
+_WORKING_NAMES = frozenset({"L", "T", "V", "U", "F", "R", "D"})
+_RAYLEIGH = sympy.symbols("F R D")  # Rayleigh's dissipation function, as texts name it
+_SHAPES = {False: "equation", True: "equations"}
+
+
+def _dissipative(expected: Expected) -> bool:
+    """Whether the expected equation of one coordinate has friction in it: no Lagrangian gives it."""
+    if "dissipative" not in expected.cache:
+        (equation,) = expected.value if isinstance(expected.value, tuple) else (expected.value,)
+        side = equation.lhs - equation.rhs if isinstance(equation, sympy.Eq) else equation
+        typed = expected.setting.as_typed(side)  # the reference is kept in plain symbols
+        expected.cache["dissipative"] = from_a_lagrangian(typed, expected.setting.coords[0]) is False
+    return expected.cache["dissipative"]
+
+
+def _agrees_at_rest(equation, expected: Expected) -> bool:
+    """Whether a Lagrangian's equation (plain symbols) and the expected one, which has friction, are the same
+    multiple of one another wherever the velocity is 0: the friction of a dissipation function vanishes there."""
+    (q,) = expected.setting.coords
+    velocity, acceleration = expected.setting.velocity(q), expected.setting.acceleration(q)
+    (reference,) = expected.value if isinstance(expected.value, tuple) else (expected.value,)
+    reference = expected.setting.plain(reference.lhs - reference.rhs if isinstance(reference, sympy.Eq) else reference)
+    mine, theirs = equation.xreplace({velocity: 0}), reference.xreplace({velocity: 0})
+    if not mine.has(acceleration):
+        return False  # no kinetic energy: no equation of motion at all
+    # A q̈ + B against A' q̈ + B': A' (A q̈ + B) = A (A' q̈ + B') wherever ẋ = 0
+    return _same_value(mine * sympy.diff(theirs, acceleration), theirs * sympy.diff(mine, acceleration), expected)
+
+
 def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple]:
     """``T = ½ m l² θ̇²; V = −m g l cos θ; L = ½ m l² θ̇² + m g l cos θ`` for a Lagrangian, or
     ``L = ½ m l² θ̇² + m g l cos θ; m l² θ̈ + m g l sin θ = 0`` for an equation of motion: lines that
@@ -1611,6 +1695,7 @@ _FOR_A_PERSON = {
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
     "energies_disagree_for_a_person": "energies_disagree",
+    "lagrangian_disagrees_for_a_person": "lagrangian_disagrees",
     "constant_said_for_a_person": "constant_said",
     "given_redefined_for_a_person": "given_redefined",
     "momentum_spelt_for_a_person": "momentum_spelt",

@@ -102,6 +102,11 @@ FEEDBACK: dict[str, str] = {
     " the value your answer gives {label}. Its value was graded and is right; a person will check this answer.",
     "energies_disagree": "Your working gives {kinetic} and {potential}, but {sum} with them is not the value your"
     " answer gives {label}.",
+    "lagrangian_disagrees_for_a_person": "Your working gives {label}, but Lagrange's equation with {it} does not"
+    " give the equation of motion your answer gives. Your equation was graded and is right; a person will check"
+    " this answer.",
+    "lagrangian_disagrees": "Your working gives {label}, but Lagrange's equation with {it} does not give a right"
+    " equation of motion either.",
     "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
