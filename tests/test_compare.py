@@ -87,6 +87,9 @@ def test_a_malformed_expected_answer_is_described_to_its_author_not_to_a_student
         (lambda: compare("x", "x", rtol=0.1), "option rtol does not apply to kind 'expression'"),
         (lambda: compare("x", "x", domains={"x": "complex"}), "domain of 'x' is 'complex'"),
         (lambda: compare("x", "x", timeout=-1), "timeout must be a positive number of seconds, not -1"),
+        (lambda: compare("2", "2", kind="number", known=["l"], values={"g": 9.81}), "option values names 'g'"),
+        (lambda: compare("2", "2", kind="number", known=["l"], values={"l": "1 m"}), "gives 'l' the value '1 m'"),
+        (lambda: compare("2", "2", kind="number", values=[1.0]), "option values maps the problem's names"),
         (lambda: compare("x", "x", timeout=float("nan")), "timeout must be a positive number of seconds"),
         (
             lambda: compare("x = 1", "x", kind="expression"),

@@ -436,3 +436,36 @@ def test_a_lagrangian_in_the_working_that_does_not_give_the_equation_goes_to_a_p
 ):
     verdict = compare(expected, submitted, kind=kind, **setting)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+GIVEN_VALUES = {"coords": ["theta"], "known": ["m", "g", "l"], "values": {"l": 1.00, "g": 9.81}}
+
+WORKED_IN_SYMBOLS = [
+    # (submitted, status, feedback): the period for l = 1.00 m and g = 9.81 m/s², worked in the problem's names
+    # first: read at those values, working that does not come to the number goes to a person, as in numbers
+    ("T = 2 pi sqrt(g/l) = 2.006 s", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2 pi sqrt(g/l) = 2.006 s`,"
+      " does not hold: a person will check this answer.",)),
+    ("T = 2π√(g/l); T = 2.006 s", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(g/l) = 2.006 s`, does not"
+      " hold: a person will check this answer.",
+      "Your 2 lines, each `T = …`, were read as one chain, T = … = …: its last side was graded.")),
+    ("T = 2 pi sqrt(l/g) = 2.5 s", "not_equivalent",
+     ("Not within the accepted tolerance.",
+      "Graded your final value, `2.5 s`; your working, `T = 2 pi sqrt(l/g) = 2.5 s`, does not hold.")),
+    # working that comes to it: as before; and the formula alone is still no number
+    ("T = 2 pi sqrt(l/g) = 2.006 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.")),
+    ("T = 2π√(l/g) = 2π√(1/9.81) ≈ 2.01 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.01 s`; the working before it is not graded.")),
+    ("T = 2 pi sqrt(l/g)", "invalid", ("A number is asked for here; your answer contains `g` and `l`.",)),
+    # a name the problem gives no value: not read, as before
+    ("T = 2 pi sqrt(m/g) = 2.006 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.")),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), WORKED_IN_SYMBOLS)
+def test_working_in_names_the_problem_gives_values_is_read_at_them(submitted, status, feedback):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s", **GIVEN_VALUES)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

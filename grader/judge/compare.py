@@ -130,7 +130,12 @@ KINDS: dict[str, Kind] = {
         Kind("equations", check_equations, shape="equations"),
         Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
         Kind("integer", check_integer, {"name": None}, shape="expression"),
-        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None, "name": None}, shape="expression"),
+        Kind(
+            "number",
+            check_number,
+            {"rtol": 1e-6, "atol": 0.0, "unit": None, "name": None, "values": None},
+            shape="expression",
+        ),
         Kind(
             "choice",
             check_choice,
@@ -206,6 +211,8 @@ def compare(
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
     if settings.get("unit"):
         _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
+    if settings.get("values") is not None:
+        _given_numbers(settings["values"], prepared)  # said now too
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
@@ -2088,9 +2095,13 @@ def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
     return answer
 
 
-def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadline) -> ParsedAnswer | None:
+def _as_number(
+    text: str, *, spec: Kind, expected: Expected, names: list, deadline, working: bool = False
+) -> ParsedAnswer | None:
     """``text`` read, if it is a number, a number with units where the part has a unit, or a name
-    for one (``n = 2``); else None."""
+    for one (``n = 2``); else None. A side of ``working`` may be a formula in names whose values the
+    problem gives (the option ``values``: ``2π√(g/l)`` before ``= 2.006 s``), read at those values; not
+    the answer itself, which must be a number."""
     answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
     if not answer.ok:
         return None
@@ -2101,7 +2112,33 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
         return None
     if not value.free_symbols or (spec.name == "number" and expected.option("unit") and in_units(value)):
         return answer
+    given = _given_numbers(expected.option("values"), expected) if working and spec.name == "number" else {}
+    if given and {symbol.name for symbol in value.free_symbols} <= set(given):
+        replacement = {symbol: given[symbol.name] for symbol in value.free_symbols}
+        return ParsedAnswer(answer.text, value.xreplace(replacement), "expression")
     return None
+
+
+def _given_numbers(values, expected: Expected) -> dict[str, sympy.Float]:
+    """The option ``values`` (``{l: 1.00, g: 9.81}``, the problem's names with the values its prompt
+    gives them, in SI units) by name; empty where there is none.
+
+    Raises:
+        AuthorError: for values that are no such mapping, or a name the problem does not define."""
+    if not values:
+        return {}
+    # a mapping as the author writes it, or the pairs compare() keeps it as (see _hashable)
+    pairs = tuple(values.items()) if isinstance(values, Mapping) else values
+    if not isinstance(pairs, tuple) or not all(isinstance(pair, tuple) and len(pair) == 2 for pair in pairs):
+        raise AuthorError(f"option values maps the problem's names to numbers, as {{l: 1.00, g: 9.81}}, not {values!r}")
+    given = {}
+    for name, number in pairs:
+        if not isinstance(name, str) or canonical_name(name) not in expected.names:
+            raise AuthorError(f"option values names {name!r}, which is no name of this problem")
+        if isinstance(number, bool) or not isinstance(number, int | float) or not math.isfinite(number):
+            raise AuthorError(f"option values gives {name!r} the value {number!r}, which is no finite number")
+        given[canonical_name(name)] = sympy.Float(number)
+    return given
 
 
 def _final_of_working(answer: ParsedAnswer, asked: tuple = ()) -> ParsedAnswer:

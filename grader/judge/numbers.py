@@ -681,10 +681,11 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
         run = pieces[start:end]
         values = [final] if end == len(pieces) else []
         for side in reversed(run[:-1] if values else run):
-            read = reads(_spelled(side, decimal_comma, unit)[0]) if side else None
+            # a side of working may be a formula in names the problem gives values (2π√(l/g) = 2.006 s)
+            read = reads(_spelled(side, decimal_comma, unit)[0], working=True) if side else None
             reason = _REASON.split(side)[-1] if read is None and side and _REASON.search(side) else None
             if reason:  # 1 because 3 − 1 = 1: the reason's arithmetic is working too, and the first of it
-                read = reads(_spelled(reason, decimal_comma, unit)[0])
+                read = reads(_spelled(reason, decimal_comma, unit)[0], working=True)
                 if read is not None:
                     values.append(_last_side(read))
                 break
