@@ -3902,7 +3902,6 @@ def _false_for_a_person(value, working):
          ("Not equivalent to the expected answer.", _false(3, "6 - 4 = 3"))),
         # working that holds: graded at its final value, as before
         ("2", "6 - 4 = 2 = 2", {}, "equivalent", 1.0, ("Correct.", _final(2))),
-        ("2", "6 - 2 = 4 → 2", {}, "equivalent", 1.0, ("Correct.", _final(2))),  # a step says no equality
         ("2", "6 - 2 = 4; 6 - 4 = 2", {}, "equivalent", 1.0, ("Correct.", _final(2))),
         (PERIOD, "2π√(1/9.81) = 2.0 s", PERIOD_PART, "equivalent", 1.0, ("Correct.", _final("2.0 s"))),  # rounded
         (PERIOD, "2.006 s = 2006 ms", PERIOD_PART, "equivalent", 1.0,
@@ -3919,6 +3918,8 @@ def _false_for_a_person(value, working):
          (_false_for_a_person("2.006 s", "2π√(1/9.81) = 2.006 kg = 2.006 s"),)),
         ("15", "3·5 = 16 → 15", {}, "undecided", 1.0, (_false_for_a_person(15, "3·5 = 16"),)),
         ("15", "3·5 = 16, so 15", {}, "undecided", 1.0, (_false_for_a_person(15, "3·5 = 16"),)),
+        # a step says what follows from the run before it: 4, then 2, is two numbers (before, right)
+        ("2", "6 - 2 = 4 → 2", {}, "undecided", 1.0, (_false_for_a_person(2, "6 - 2 = 4 → 2"),)),
         ("3", "4 - 1 = 2 d.o.f.", {}, "not_equivalent", 0.0,
          ("Not equivalent to the expected answer.", _false(2, "4 - 1 = 2 d.o.f."))),  # a remark after it too
     ],
@@ -3933,11 +3934,14 @@ def test_working_that_does_not_hold_goes_to_a_person_where_the_final_value_is_ri
 @pytest.mark.parametrize(
     ("expected", "submitted", "status", "read_as", "notes"),
     [
-        # working with steps, as on paper: the value after the last is the answer, whatever came before it
-        ("2", "6 − 4 = 2 → 4", "not_equivalent", "4", (_final(4),)),  # before, the first side, 6 − 4, was graded
-        ("2", "6 − 2 = 4 → 2", "equivalent", "2", (_final(2),)),  # → is a step of the count, not an equals sign
-        ("2", "6 -> 4 -> 2", "equivalent", "2", (_final(2),)),
-        ("2", "6 \\to 2", "equivalent", "2", (_final(2),)),
+        # working with steps, as on paper: the value after the last is the answer; but a step says that what
+        # follows it follows from what came before, and two numbers are working that does not hold (before,
+        # right: the last number was taken whatever came before it), for a person where the last is right
+        ("2", "6 − 4 = 2 → 4", "not_equivalent", "4", (_false(4, "6 − 4 = 2 → 4"),)),  # before, 6 − 4 was graded
+        ("2", "6 − 2 = 4 → 2", "undecided", "2", ()),
+        ("2", "6 -> 4 -> 2", "undecided", "2", ()),
+        ("2", "6 \\to 2", "undecided", "2", ()),
+        ("2", "6 − 4 → 2", "equivalent", "2", (_final(2),)),  # → is a step of the count, not an equals sign
         ("2", "6 − 4 ⇒ 2", "equivalent", "2", ()),  # the parser reads ⇒ as the step it is
         ("1", "Two constraints, so 1", "equivalent", "1", (_final(1),)),
         ("1", "Two constraints, hence 1 degree of freedom", "equivalent", "1", (_remark(1, "degree of freedom"),)),

@@ -256,6 +256,24 @@ COUNTS_WORKED = [
      "Graded your final value, `2`; your working, `2 because n = 3 − 2 = 1`, does not hold."),
     ("1 because n = 3 − 2 = 1", "equivalent",
      "Graded the number `1`; what follows it (`because n = 3 − 2 = 1`) is not graded."),
+    # a step says what follows from what came before it: a number, then another after the step, is working
+    # that does not hold (before, right: the last number was taken)
+    ("2 hence 3 − 2 = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `2 hence 3 − 2 = 1`, does not hold: a"
+     " person will check this answer."),
+    ("n = 2, so n = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `n = 2, so n = 1`, does not hold: a"
+     " person will check this answer."),
+    ("3 − 1 = 2 ⇒ 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `3 − 1 = 2 ⇒ 1`, does not hold: a"
+     " person will check this answer."),
+    ("6 − 4 → 3", "not_equivalent", "Graded your final value, `3`; your working, `6 − 4 → 3`, does not hold."),
+    ("1 hence 2", "not_equivalent", "Graded your final value, `2`; your working, `1 hence 2`, does not hold."),
+    # steps between the same number, or from words: as before
+    ("3 − 2 → 1", "equivalent", "Graded your final value, `1`; the working before it is not graded."),
+    ("1 hence 3 − 2 = 1", "equivalent", "Correct."),
+    ("3 − 2 = 1, so n = 1", "equivalent", "Correct."),
+    ("Two constraints, so 1", "equivalent", "Graded your final value, `1`; the working before it is not graded."),
     # a count too long to read is refused, not passed over for the reason's last side
     (f"{'9' * 40} because 1 = 1", "invalid", "This number is too large to handle (40 digits; the limit is 30)."),
 ]  # fmt: skip

@@ -218,6 +218,8 @@ def _read_number(
         return given
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
+    if answer is not None and len(text) <= _LENGTH and not _SEPARATED.search(text):
+        notes += _steps_false(text, answer, (reads, decimal_comma, unit, count))
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
         return prepared, answer, notes  # x = 1; y = 2 is a system, not working
     if given is not None:
@@ -251,7 +253,8 @@ def _read_number(
                 # 6 − 4 = 2, so also 4: words beside a value the working does not come to may offer a second
                 return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
             # 4 − 1 = 2, 3·5 = 16 → 15: working that does not hold, a slip or a value not worked out
-            working = _false_working(pieces, runs, _last_side(answer), numbers) if last and index == last else None
+            at_last = last and index == last
+            working = _false_working(pieces, runs, _last_side(answer), numbers, bare.strip()) if at_last else None
             first = (
                 _count_said(pieces[:last], _last_side(answer)) if count and said and last and index == last else None
             )
@@ -307,7 +310,7 @@ def _worked_over_lines(
         if None in read:
             return None
         values.append(_last_side(read[-1]))
-        if false is None and _false_working(pieces, runs, values[-1], (reads, decimal_comma, unit, count)):
+        if false is None and _false_working(pieces, runs, values[-1], (reads, decimal_comma, unit, count), line):
             false = line
     prepared, answer, notes = _read_number(
         final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count, asked=asked
@@ -652,7 +655,8 @@ def _sides(text: str) -> tuple[list[str], tuple[int, ...]]:
     """The sides of a chain of working (``6 − 4 = 2 → 4``: 6 − 4, 2 and 4), split where an equals sign
     or a step stands outside brackets (``2 (so two angles)`` is one side); and where each run of sides
     joined by equals signs alone begins, the runs a step separates (``(0, 2)``; ``(0,)`` where no step
-    stands): the sides of a run claim to be equal, and a step claims nothing."""
+    stands): the sides of a run claim to be equal, and a step that what follows it follows from the run
+    before (see :func:`_false_working`)."""
     marks = [(found, False) for found in _EQUALS.finditer(text)] + [(found, True) for found in _STEPS.finditer(text)]
     marks.sort(key=lambda mark: mark[0].start())
     depth = [0] * (len(text) + 1)
@@ -668,19 +672,28 @@ def _sides(text: str) -> tuple[list[str], tuple[int, ...]]:
     return [*pieces, text[start:].strip()], tuple(runs)
 
 
-def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str | None:
+def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple, typed: str = "") -> str | None:
     """The first run of working (``pieces`` and ``runs``, as :func:`_sides` gives them) whose sides are
     not equal, as typed; None where each holds. ``final`` is the value of the last side as graded, and
     ``numbers`` how sides are read (``reads``, ``decimal_comma``, ``unit``, ``count``). A run is checked
     from its last side back to the first side that is no number: in ``ω = √(9.81) = 3.13, T = 2π/3.13 =
-    2.006 s`` the sides after ``3.13, T``, which ends one statement and begins the next."""
+    2.006 s`` the sides after ``3.13, T``, which ends one statement and begins the next. A step says what
+    follows from the run before it: where that run is arithmetic alone (perhaps after a name) and the run
+    after it comes to another number (``6 − 4 → 3``, ``2 hence 3 − 2 = 1``, ``n = 2 ⇒ n = 1``), the working
+    does not hold, and the chain is shown as ``typed``. Not where the two runs name different quantities:
+    ``g = 9.81 ⇒ T = 2.006 s`` gives a value, then another."""
     reads, decimal_comma, unit, count = numbers
     if len(pieces) > _SIDES:
         return None
+    previous = None  # what the run before a step comes to, where it is arithmetic alone, and its label
     for start, end in zip(runs, [*runs[1:], len(pieces)], strict=True):
         run = pieces[start:end]
         values = [final] if end == len(pieces) else []
+        read_all = True
+        label = run[0] if len(run) > 1 and _QUANTITY.fullmatch(run[0]) else None  # g = 9.81: not 9.81 grams
         for side in reversed(run[:-1] if values else run):
+            if side is run[0] and label is not None:
+                break
             # a side of working may be a formula in names the problem gives values (2π√(l/g) = 2.006 s)
             read = reads(_spelled(side, decimal_comma, unit)[0], working=True) if side else None
             reason = _REASON.split(side)[-1] if read is None and side and _REASON.search(side) else None
@@ -688,13 +701,29 @@ def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str
                 read = reads(_spelled(reason, decimal_comma, unit)[0], working=True)
                 if read is not None:
                     values.append(_last_side(read))
+                read_all = False
                 break
             if read is None:
+                read_all = False
                 break
             values.append(_last_side(read))
         if not all(_agree(value, values[0], count) for value in values[1:]):
             return " = ".join(run).rstrip(",;: ")  # 3·5 = 16, so 15: the comma is the step's
+        if previous is not None and values and label == previous[1] and not _agree(previous[0], values[0], count):
+            return typed or " = ".join(pieces)
+        previous = (values[0], label) if values and read_all else None
     return None
+
+
+def _steps_false(text: str, answer: ParsedAnswer, numbers: tuple) -> tuple:
+    """The note on a chain with a step that reads as typed (``2 hence 3 − 2 = 1``: the parser keeps what
+    follows the step, or takes the words before it for a name) where its runs do not come to one number
+    (:func:`_false_working`); none where they do, or no step stands in it."""
+    pieces, runs = _sides(text)
+    if len(runs) < 2:
+        return ()
+    false = _false_working(pieces, runs, _last_side(answer), numbers, text.strip())
+    return (("working_false_for_a_person", {"value": pieces[-1], "working": shown(false)}),) if false else ()
 
 
 # the word that gives a value its reason, whose arithmetic follows: 1 because 3 − 2 = 1, 1, since 3 − 2 = 1
