@@ -303,6 +303,14 @@ COUNTS_SAID_OTHERWISE = [
     ("1", "one angle and one length", "undecided", f"Your number `one` comes with `angle and one length`, {QUALIFIED}"),
     ("1", "1 (θ and φ)", "undecided", f"Your number `1` comes with `(θ and φ)`, {QUALIFIED}"),
     ("1", "1 (x, y)", "undecided", f"Your number `1` comes with `(x, y)`, {QUALIFIED}"),
+    # the coordinates listed after what is counted, or one where two are counted, or spelt out (before, right)
+    ("1", "1 dof: θ and r", "undecided", f"Your number `1` comes with `dof: θ and r`, {QUALIFIED}"),
+    ("1", "1 degree of freedom (θ, r)", "undecided",
+     f"Your number `1` comes with `degree of freedom (θ, r)`, {QUALIFIED}"),
+    ("1", "1, namely θ and r", "undecided", f"Your number `1` comes with `namely θ and r`, {QUALIFIED}"),
+    ("1", "1 (theta and r)", "undecided", f"Your number `1` comes with `(theta and r)`, {QUALIFIED}"),
+    ("2", "2 (θ)", "undecided", f"Your number `2` comes with `(θ)`, {QUALIFIED}"),
+    ("2", "2 dof: θ₁", "undecided", f"Your number `2` comes with `dof: θ₁`, {QUALIFIED}"),
     # a count worked from others, what it counts, and how many things it was counted from: as before
     ("2", "2 (θ₁, θ₂)", "equivalent", "Correct."),
     ("1", "1 (θ)", "equivalent", "Correct."),
@@ -311,6 +319,10 @@ COUNTS_SAID_OTHERWISE = [
     ("2", "2 (two angles)", "equivalent", "Correct."),
     ("1", "1 angle", "equivalent", "Correct."),
     ("15", "15 (5 particles)", "equivalent", "Correct."),
+    ("1", "1 dof: θ", "equivalent", "Correct."),
+    ("2", "2 degrees of freedom: θ₁, θ₂", "equivalent", "Correct."),
+    ("2", "2 (theta1, theta2)", "equivalent", "Correct."),
+    ("1", "1, namely θ", "equivalent", "Correct."),
 ]  # fmt: skip
 
 

@@ -34,7 +34,7 @@ from grader.judge.feedback import SHOWN, shown
 from grader.judge.units import SI_UNITS, in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
-from grader.parse.names import IMPLYING_WORDS
+from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = ["NUMBER_WORDS", "read_number"]
 
@@ -795,6 +795,13 @@ _STATES_COUNT = re.compile(
 # coordinates named one by one after a count, in brackets or not: (θ and φ), θ₁, θ₂
 _LISTED_NAMES = re.compile(r"\s*(?:,|\band\b|&)\s*", re.I)
 _COORDINATE_NAME = re.compile(r"[^\W\d_][0-9₀-₉']*")
+# what a list of coordinates after a count may follow: what is counted, then a colon, a dash or a bracket, or
+# words that say the list names them (1 dof: θ and r; 2 degrees of freedom (θ₁, θ₂); 1, namely θ)
+_LIST_LEAD = re.compile(
+    r"\s*(?:(?:degrees?\s+of\s+freedom|freedoms?|dofs?|d\.o\.f\.|(?:generali[sz]ed\s+)?coordinates?)\s*)?"
+    r"(?:[:(\-–—]\s*)?(?:(?:namely|i\.e\.|viz\.?|that\s+is)\s*[:,]?\s*)?",
+    re.I,
+)
 # a count then what it counts, as a remark: 1 constraint, 5 free particles (not 1 degree of freedom)
 _COUNTS_THING = re.compile(r"\s*(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\b")
 
@@ -869,11 +876,32 @@ def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
     found = _COUNTS_THING.match(rest)
     if found and found["thing"].lower() in _THINGS - _COORDINATES:
         return True
-    listed = _LISTED_NAMES.split(rest.strip(" .").removeprefix("(").removesuffix(")").strip())
-    if len(listed) > 1 and all(_COORDINATE_NAME.fullmatch(name) for name in listed):
-        return number.isdigit() and len(listed) != int(number)  # 1 (θ and φ): two coordinates named
+    listed = _names_listed(rest, names)
+    if listed:  # 1 (θ and φ), 1 dof: θ and r, 2 (θ): more or fewer coordinates named than counted
+        return number.isdigit() and len(listed) != int(number)
     counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
     return counted is not None and counted[1] and counted[0] != int(number)
+
+
+def _names_listed(rest: str, names: Collection[str]) -> list[str] | None:
+    """The coordinates a remark after a count lists, where it is such a list, perhaps after what is
+    counted and a colon or a bracket (``(θ and φ)``, ``dof: θ and r``, ``degrees of freedom (θ)``,
+    ``namely θ and r``); None where it holds anything else. A coordinate is named by a letter (θ, φ₁,
+    x') or by a name of the problem (theta)."""
+    inside = _LIST_LEAD.sub("", rest, count=1).strip(" .").removeprefix("(").removesuffix(")").strip()
+    listed = _LISTED_NAMES.split(inside) if inside else []
+    if not listed or not all(_COORDINATE_NAME.fullmatch(name) or _spelled_name(name, names) for name in listed):
+        return None
+    return listed
+
+
+def _spelled_name(name: str, names: Collection[str]) -> bool:
+    """Whether ``name`` is a coordinate spelt out: a name of the problem, or a Greek letter's (theta, theta_1, phi2)."""
+    found = _SPELLED_GREEK.fullmatch(name)
+    return name in names or (found is not None and found[1].lower() in GREEK_NAMES)
+
+
+_SPELLED_GREEK = re.compile(r"([A-Za-z]{2,})_?[0-9₀-₉]*")
 
 
 def _groups(text: str) -> list[str] | None:
