@@ -499,3 +499,30 @@ WORKED_IN_SYMBOLS = [
 def test_working_in_names_the_problem_gives_values_is_read_at_them(submitted, status, feedback):
     verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s", **GIVEN_VALUES)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+L_HOOP = "1/2 m R^2 thetadot^2 + 1/2 m R^2 omega^2 sin(theta)^2 + m g R cos(theta)"
+HOOP_LAGRANGIAN = {**HOOP, "h_is_energy": False}
+ON_THE_WAY = (
+    "on the way to its value, which is not what L is. Its value was graded and is right; a person will check"
+    " this answer."
+)
+
+LAGRANGIAN_FROM_H = [
+    # (submitted, setting, status, feedback): where H is not the energy (a hoop turned at a fixed rate, where
+    # H = T₂ − T₀ + V), L = 2T − H is a false identity on the way to a right value (before, right)
+    (f"L = 2T - H = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = -H + 2*T` {ON_THE_WAY}",)),
+    (f"L = H - 2V = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = H - 2*V` {ON_THE_WAY}",)),
+    # true on the hoop too: E is T + V, and L = p θ̇ − H is the Legendre transform; and where H is the energy
+    (f"L = 2T - E = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
+    (f"L = p_theta thetadot - H = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
+    (f"L = T - V = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
+    (f"L = 2T - H = {L_PENDULUM}", PENDULUM, "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "setting", "status", "feedback"), LAGRANGIAN_FROM_H)
+def test_l_as_2t_minus_h_where_h_is_not_the_energy_goes_to_a_person(submitted, setting, status, feedback):
+    expected = L_PENDULUM if setting is PENDULUM else L_HOOP
+    verdict = compare(expected, submitted, kind="lagrangian", **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

@@ -48,7 +48,7 @@ PART_KINDS: dict[str, frozenset[str]] = {
     "expression": frozenset({"up_to_constant", "name", "h_is_energy", "asks_more"}),
     "equation": frozenset(),
     "equations": frozenset(),
-    "lagrangian": frozenset({"factor_credit", "name"}),
+    "lagrangian": frozenset({"factor_credit", "name", "h_is_energy"}),
     "text": frozenset(),
 }
 # options that are true or false, checked so when the bank loads

@@ -128,7 +128,9 @@ KINDS: dict[str, Kind] = {
         ),
         Kind("equation", check_equation, shape="equation"),
         Kind("equations", check_equations, shape="equations"),
-        Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
+        Kind(
+            "lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L", "h_is_energy": True}, shape="expression"
+        ),
         Kind("integer", check_integer, {"name": None}, shape="expression"),
         Kind(
             "number",
@@ -862,6 +864,11 @@ def _definition_judged(label, side, expected: Expected, given: tuple = ()) -> bo
         if alone or _in_energies(in_energies, expected.names):
             # where H is not the energy, no sum of T and V is H: nor is 2T − L, which is T + V
             return _energy_multiple(in_energies, [name], sums) == 1
+        others = in_energies.free_symbols - {_HAMILTONIAN}
+        unknown_h = _HAMILTONIAN.name not in sums and _HAMILTONIAN.name not in expected.names
+        if unknown_h and in_energies.has(_HAMILTONIAN) and others <= _ENERGIES:
+            # L = 2T − H, L = H − 2V: true where H is T + V, but here H = T₂ − T₀ + V, which no sum of T and V is
+            return False
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
             # L = E, L = H, H = L are wrong; H = E is right where H is the energy
             return name == side.name or (name in sums and sums[name] == sums.get(side.name))
