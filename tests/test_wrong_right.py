@@ -526,3 +526,34 @@ def test_l_as_2t_minus_h_where_h_is_not_the_energy_goes_to_a_person(submitted, s
     expected = L_PENDULUM if setting is PENDULUM else L_HOOP
     verdict = compare(expected, submitted, kind="lagrangian", **setting)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+L_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
+L_SPHERICAL_WRONG = "m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
+P_PHI = "m l^2 sin(theta)^2 phidot"
+MOMENTUM_SPHERICAL = {**SPHERICAL, "name": "p_phi"}
+DERIVED = (
+    "with it is not the value your answer gives. Its value was graded and is right; a person will check this answer."
+)
+SPHERICAL_L_READ = "The line that defines `L` was read as your working: it is not graded."
+
+DERIVED_FROM_L = [
+    # (expected, submitted, setting, status, feedback): working that states L, then the momentum or the
+    # Hamiltonian asked for, which that L does not give (before, right)
+    (P_PHI, f"L = {L_SPHERICAL_WRONG}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "undecided",
+     (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL_WRONG}; H = {H_SPHERICAL}", SPHERICAL, "undecided",
+     (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
+    # the L that gives them, or that plus a constant: as before
+    (P_PHI, f"L = {L_SPHERICAL}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL} + 5 m g l; H = {H_SPHERICAL}", SPHERICAL, "equivalent",
+     ("Correct.", SPHERICAL_L_READ)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "setting", "status", "feedback"), DERIVED_FROM_L)
+def test_a_lagrangian_in_the_working_that_does_not_give_the_momentum_goes_to_a_person(
+    expected, submitted, setting, status, feedback
+):
+    verdict = compare(expected, submitted, kind="expression", **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

@@ -568,6 +568,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer = _with_definitions(answer, expected, deadline)
                 read_notes += _energies_disagree(answer, spec, expected, deadline)
                 read_notes += _lagrangian_disagrees(answer, spec, expected, deadline)
+                read_notes += _derived_disagrees(answer, spec, expected)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += working
                 energies = _energies_alone(answer, spec, expected, deadline)
@@ -1160,6 +1161,38 @@ def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, 
     return () if agrees else (("lagrangian_disagrees_for_a_person", details),)
 
 
+def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple:
+    """``L = m l² (θ̇² + sin²θ φ̇²) + …; p_φ = m l² sin²θ φ̇``: working that states the Lagrangian, then the
+    momentum, or the Hamiltonian, that the part asks for, with a value that ∂L/∂q̇ (Σ p q̇ − L) of that L is
+    not. The value may be right, but the working says otherwise: a note for a person, as for an equation of
+    motion (:func:`_lagrangian_disagrees`). None where no one line states L in the problem's names, or the
+    part asks for another quantity."""
+    if answer.kind != "equations" or spec.name != "expression" or _DEFINING_LETTERS & expected.names:
+        return ()
+    stated = [item.rhs for item in answer.value if item.lhs == _LAGRANGIAN]
+    asked = expected.option("name") or ()
+    setting = expected.setting
+    momenta = [q for q in setting.coords if canonical_name(f"p_{q}") in asked]
+    if len(stated) != 1 or not (momenta or "H" in asked):
+        return ()
+    if any(symbol.name not in expected.names | {TIME.name} for symbol in stated[0].free_symbols):
+        return ()
+    try:
+        plain = setting.plain(stated[0])
+        if momenta:
+            derived, quantity = sympy.diff(plain, setting.velocity(momenta[0])), f"∂L/∂{unicode_name(momenta[0], 1)}"
+        else:
+            rates = [setting.velocity(q) * sympy.diff(plain, setting.velocity(q)) for q in setting.coords]
+            derived, quantity = sympy.Add(*rates) - plain, "Σ p q̇ − L"
+        # L = … + 5 m g l: another zero of potential, which moves H by a constant and no momentum at all
+        difference = derived - expected.value
+        states = [setting.state[(q, order)] for q in setting.coords for order in (0, 1)]
+        agrees = all(_same_value(sympy.diff(difference, state), sympy.S.Zero, expected) for state in (*states, TIME))
+    except _CHECK_FAILURES:
+        return ()
+    return () if agrees else (("derived_disagrees_for_a_person", {"quantity": quantity}),)
+
+
 _WORKING_NAMES = frozenset({"L", "T", "V", "U", "F", "R", "D"})
 _RAYLEIGH = sympy.symbols("F R D")  # Rayleigh's dissipation function, as texts name it
 _SHAPES = {False: "equation", True: "equations"}
@@ -1710,6 +1743,7 @@ _FOR_A_PERSON = {
     "working_false_for_a_person": "working_false",
     "energies_disagree_for_a_person": "energies_disagree",
     "lagrangian_disagrees_for_a_person": "lagrangian_disagrees",
+    "derived_disagrees_for_a_person": "derived_disagrees",
     "constant_said_for_a_person": "constant_said",
     "given_redefined_for_a_person": "given_redefined",
     "momentum_spelt_for_a_person": "momentum_spelt",

@@ -107,6 +107,9 @@ FEEDBACK: dict[str, str] = {
     " this answer.",
     "lagrangian_disagrees": "Your working gives {label}, but Lagrange's equation with {it} does not give a right"
     " equation of motion either.",
+    "derived_disagrees_for_a_person": "Your working gives L, but {quantity} with it is not the value your answer"
+    " gives. Its value was graded and is right; a person will check this answer.",
+    "derived_disagrees": "Your working gives L, but {quantity} with it is not right either.",
     "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
