@@ -909,7 +909,9 @@ def test_a_momentum_may_be_written_as_its_derivation(submitted):
     [
         ("m l² θ̈ = −m g l sin θ ⇒ θ̈ = −(g/l) sin θ", "equivalent"),
         ("m l² θ̈ = −m g l sin θ\n⇒ θ̈ = −(g/l) cos θ", "not_equivalent"),  # the conclusion is judged
-        ("m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ", "equivalent"),  # as it would be on paper
+        # the conclusion is right, but the premise, which it does not follow from, says otherwise: a person reads
+        # it (before, right, as it would be graded on paper)
+        ("m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ", "undecided"),
         ("EOM: θ̈ = −(g/l) sin θ", "equivalent"),
         (r"\ddot\theta = -\frac gl \sin\theta \quad\Rightarrow", "equivalent"),
         ("m l² θ̈ = −m g l sin θ -> θ̈ = −(g/l) sin θ", "equivalent"),

@@ -557,3 +557,34 @@ def test_a_lagrangian_in_the_working_that_does_not_give_the_momentum_goes_to_a_p
 ):
     verdict = compare(expected, submitted, kind="expression", **setting)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+PREMISE = (
+    "before the equation it gives, as what that equation follows from, but the two do not agree. The equation was"
+    " graded and is right; a person will check this answer."
+)
+L_WRONG = "L = m l^2 thetadot^2 - m g l cos(theta)"
+
+PREMISES = [
+    # (expected, submitted, status, feedback): an equation of motion, or an L, before a step (⇒, so) to the right
+    # equation, which the reading leaves behind the step: where it does not give it, for a person (before, right)
+    (EOM_PENDULUM, "m l^2 thetaddot = m g l sin(theta) ⇒ thetaddot = -(g/l) sin(theta)", "undecided",
+     (f"Your answer says `m l^2 thetaddot = m g l sin(theta)` {PREMISE}",)),
+    (EOM_PENDULUM, "m l^2 thetaddot - m g l sin(theta) = 0, so thetaddot + (g/l) sin(theta) = 0", "undecided",
+     (f"Your answer says `m l^2 thetaddot - m g l sin(theta) = 0` {PREMISE}",)),
+    (EOM_PENDULUM, f"{L_WRONG} ⇒ {EOM_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG}` {PREMISE}",)),
+    (EOM_PENDULUM, f"{L_WRONG}, so {EOM_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG}` {PREMISE}",)),
+    # a premise that gives it, or the full form before the small-angle one asked for: as before
+    (EOM_PENDULUM, "m l thetaddot = -m g sin(theta) ⇒ thetaddot = -(g/l) sin(theta)", "equivalent", ("Correct.",)),
+    (EOM_PENDULUM, f"L = {L_PENDULUM} ⇒ {EOM_PENDULUM}", "equivalent", ("Correct.",)),
+    ("thetaddot = -(g/l) theta", "thetaddot = -(g/l) sin(theta) ⇒ thetaddot = -(g/l) theta", "equivalent",
+     ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), PREMISES)
+def test_an_equation_after_a_step_from_one_it_does_not_follow_from_goes_to_a_person(
+    expected, submitted, status, feedback
+):
+    verdict = compare(expected, submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

@@ -272,6 +272,10 @@ def compare(
     if operator is not None:  # Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …: right, but not from Lagrange's equation
         return _right_but_said(verdict, "operator_for_a_person", statement=operator)
     left = timeout - (time.monotonic() - started)
+    premise = _premise_said_wrong(spec, prepared, submitted, left) if verdict.status == "equivalent" else None
+    if premise is not None:  # m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ: right, but not from what it says it follows
+        return _right_but_said(verdict, "premise_for_a_person", statement=premise)
+    left = timeout - (time.monotonic() - started)
     rounded = _rounded(spec, prepared, submitted, left, values) if verdict.status == "not_equivalent" else None
     if rounded is not None:  # 0.333 m l² θ̇²: right with the decimal written as the 1/3 it rounds
         return _verdict(rounded, verdict.answer)
@@ -282,6 +286,57 @@ def compare(
     if _judge(spec, prepared, listed, left, values).status != "equivalent":
         return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout: float) -> str | None:
+    """``m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ``, or ``…, so …``: an equation of motion the answer says
+    the one it gives follows from, which the parser leaves behind the step, where the two do not agree (the
+    first is judged wrong); as typed, or None. Only an equation in the problem's names, with an acceleration
+    in it, is judged so; ``L = … ⇒ …`` says where the equation came from, and Lagrange's equation with that L
+    must give it (:func:`_lagrangian_disagrees`)."""
+    if spec.shape != "equation" or len(submitted) > _PREMISE_LENGTH or not _PREMISE_STEP.search(submitted):
+        return None
+    started = time.monotonic()
+    names, coords = sorted(expected.names), expected.setting.coords
+    *premises, conclusion = _PREMISE_STEP.split(submitted)
+    for premise in premises:
+        premise = premise.strip(" ,;:.")
+        read = parse_answer(premise, coords=coords, known=names)
+        stated = read.ok and read.kind == "equation" and read.value.lhs == _LAGRANGIAN and "L" not in expected.names
+        if stated:  # L = … ⇒ m l² θ̈ + … = 0: the equation must be what that L gives
+            derived = parse_answer(conclusion, coords=coords, known=names)
+            left = timeout - (time.monotonic() - started)
+            if not (derived.ok and derived.kind == "equation") or left <= 0:
+                continue
+            both = ParsedAnswer(submitted, (read.value, derived.value), "equations")
+            try:
+                with time_limit(left) as deadline:
+                    if _lagrangian_disagrees(both, spec, expected, deadline):
+                        return premise
+            except CheckTimeout:
+                return None
+            continue
+        if not (read.ok and read.kind == "equation" and accelerations_in(read.value, expected)):
+            continue
+        if {symbol.name for symbol in read.symbols} - expected.names - {TIME.name}:
+            continue
+        left = timeout - (time.monotonic() - started)
+        if left <= 0:
+            return None
+        judged = _judge(spec, expected, premise, left)
+        # θ̈ = −(g/l) sin θ ⇒ θ̈ = −(g/l) θ: the full form, then the small-angle one asked for, is a derivation
+        if judged.status == "not_equivalent" and judged.diagnosis not in _SMALL_FORMS | _FULL_FORMS:
+            return premise
+    return None
+
+
+# the steps of a derivation, as the tokenizer reads them (grader.parse.tokens): what stands before one is left
+_PREMISE_STEP = re.compile(
+    r"==>|-->|=>|->|[→⟶⇒⟹∴]|\\(?:to|rightarrow|longrightarrow|Rightarrow|Longrightarrow|implies|therefore)(?![A-Za-z])"
+    r"|\b(?:so|hence|thus|therefore)\b",
+    re.I,
+)
+_PREMISE_LENGTH = 400  # characters: a longer answer is read as typed
 
 
 def _rounded(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple) -> Outcome | None:
