@@ -588,3 +588,29 @@ def test_an_equation_after_a_step_from_one_it_does_not_follow_from_goes_to_a_per
 ):
     verdict = compare(expected, submitted, kind="equation", **PENDULUM)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+ATWOOD_ACCELERATION = {**ATWOOD, "name": ["xddot", "a", "a_1"]}
+A_ATWOOD = "(m1 - m2) g/(m1 + m2)"
+PREMISE_VALUE = (
+    "before the value it gives, as what that value follows from, but the two do not agree. Its value was graded"
+    " and is right; a person will check this answer."
+)
+
+PREMISES_OF_A_VALUE = [
+    # (submitted, status, feedback): the acceleration asked for, after a step from an equation it does not
+    # solve (before, right)
+    (f"2 (m1 + m2) xddot = (m1 - m2) g, so xddot = {A_ATWOOD}", "undecided",
+     (f"Your answer says `2 (m1 + m2) xddot = (m1 - m2) g` {PREMISE_VALUE}",)),
+    (f"(m1 + m2) xddot = (m1 + m2) g ⇒ a = {A_ATWOOD}", "undecided",
+     (f"Your answer says `(m1 + m2) xddot = (m1 + m2) g` {PREMISE_VALUE}",)),
+    # an equation it solves: as before
+    (f"(m1 + m2) xddot = (m1 - m2) g, so xddot = {A_ATWOOD}", "equivalent", ("Correct.",)),
+    (f"(m1 + m2) xddot = (m1 - m2) g ⇒ a = {A_ATWOOD}", "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), PREMISES_OF_A_VALUE)
+def test_a_value_after_a_step_from_an_equation_it_does_not_solve_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(A_ATWOOD, submitted, kind="expression", **ATWOOD_ACCELERATION)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

@@ -274,7 +274,8 @@ def compare(
     left = timeout - (time.monotonic() - started)
     premise = _premise_said_wrong(spec, prepared, submitted, left) if verdict.status == "equivalent" else None
     if premise is not None:  # m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ: right, but not from what it says it follows
-        return _right_but_said(verdict, "premise_for_a_person", statement=premise)
+        key = "premise_for_a_person" if spec.shape == "equation" else "premise_value_for_a_person"
+        return _right_but_said(verdict, key, statement=premise)
     left = timeout - (time.monotonic() - started)
     rounded = _rounded(spec, prepared, submitted, left, values) if verdict.status == "not_equivalent" else None
     if rounded is not None:  # 0.333 m l² θ̇²: right with the decimal written as the 1/3 it rounds
@@ -294,11 +295,15 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
     first is judged wrong); as typed, or None. Only an equation in the problem's names, with an acceleration
     in it, is judged so; ``L = … ⇒ …`` says where the equation came from, and Lagrange's equation with that L
     must give it (:func:`_lagrangian_disagrees`)."""
-    if spec.shape != "equation" or len(submitted) > _PREMISE_LENGTH or not _PREMISE_STEP.search(submitted):
+    if spec.shape not in ("equation", "expression") or len(submitted) > _PREMISE_LENGTH:
+        return None
+    if not _PREMISE_STEP.search(submitted):
         return None
     started = time.monotonic()
     names, coords = sorted(expected.names), expected.setting.coords
     *premises, conclusion = _PREMISE_STEP.split(submitted)
+    if spec.shape == "expression":
+        return _premise_of_acceleration(premises, expected)
     for premise in premises:
         premise = premise.strip(" ,;:.")
         read = parse_answer(premise, coords=coords, known=names)
@@ -326,6 +331,28 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
         judged = _judge(spec, expected, premise, left)
         # θ̈ = −(g/l) sin θ ⇒ θ̈ = −(g/l) θ: the full form, then the small-angle one asked for, is a derivation
         if judged.status == "not_equivalent" and judged.diagnosis not in _SMALL_FORMS | _FULL_FORMS:
+            return premise
+    return None
+
+
+def _premise_of_acceleration(premises: list[str], expected: Expected) -> str | None:
+    """``2 (m₁ + m₂) ẍ = (m₁ − m₂) g, so ẍ = …`` where an acceleration is asked for (the option ``name``
+    holds ``xddot``): an equation before the step, in the problem's names and with that acceleration in
+    it, which the expected value does not solve; as typed, or None."""
+    asked = expected.option("name") or ()
+    wanted = [q for q in expected.setting.coords if canonical_name(f"{q}ddot") in asked]
+    if len(wanted) != 1:
+        return None
+    acceleration = expected.setting.acceleration(wanted[0])
+    for premise in premises:
+        premise = premise.strip(" ,;:.")
+        read = parse_answer(premise, coords=expected.setting.coords, known=sorted(expected.names))
+        if not (read.ok and read.kind == "equation") or {s.name for s in read.symbols} - expected.names - {TIME.name}:
+            continue
+        plain = expected.setting.plain(read.value.lhs - read.value.rhs)
+        if not plain.has(acceleration) or plain.free_symbols & (expected.setting.varying - {acceleration}):
+            continue  # an equation of ẍ alone: of θ or ẋ too, the expected value is no solution to test
+        if not _same_value(plain.xreplace({acceleration: expected.value}), sympy.S.Zero, expected):
             return premise
     return None
 
@@ -1810,8 +1837,13 @@ _TRUE_IN_PART = frozenset({"constant_unsure", "words_for_a_person"})
 
 
 # the diagnoses of a value that is right as read, where how it was read is for a person to confirm (a wrong
-# Euler–Lagrange operator before it too, which compare finds once the value is judged)
-READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {"operator_for_a_person"}
+# Euler–Lagrange operator before it too, or a premise it does not follow from, which compare finds once the
+# value is judged)
+READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {
+    "operator_for_a_person",
+    "premise_for_a_person",
+    "premise_value_for_a_person",
+}
 # the diagnoses of a value that is wrong only for the decimals that round its exact numbers (6.28 for 2π)
 ROUNDED = frozenset({"rounded_decimal", "rounded_decimals"})
 
