@@ -537,14 +537,23 @@ DERIVED = (
 )
 SPHERICAL_L_READ = "The line that defines `L` was read as your working: it is not graded."
 
+Q_R = "m g cos(theta) - k (r - l0)"
+FORCES = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_r"}
+V_READ = "The line that defines `V` was read as your working: it is not graded."
+
 DERIVED_FROM_L = [
     # (expected, submitted, setting, status, feedback): working that states L, then the momentum or the
-    # Hamiltonian asked for, which that L does not give (before, right)
+    # Hamiltonian asked for, which that L does not give; or V, then a generalized force (before, right)
     (P_PHI, f"L = {L_SPHERICAL_WRONG}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "undecided",
      (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
     (H_SPHERICAL, f"L = {L_SPHERICAL_WRONG}; H = {H_SPHERICAL}", SPHERICAL, "undecided",
      (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
-    # the L that gives them, or that plus a constant: as before
+    (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2; Q_r = {Q_R}", FORCES, "undecided",
+     (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
+    (Q_R, f"V = -m g r cos(theta) + 1/2 k r^2; Q_r = {Q_R}", FORCES, "undecided",
+     (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
+    # the L (V) that gives them, or that plus a constant: as before
+    (Q_R, f"V = -m g r cos(theta) + 1/2 k (r - l0)^2 + 7; Q_r = {Q_R}", FORCES, "equivalent", ("Correct.", V_READ)),
     (P_PHI, f"L = {L_SPHERICAL}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
     (H_SPHERICAL, f"L = {L_SPHERICAL} + 5 m g l; H = {H_SPHERICAL}", SPHERICAL, "equivalent",
      ("Correct.", SPHERICAL_L_READ)),

@@ -1246,16 +1246,17 @@ def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, 
 def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple:
     """``L = m l² (θ̇² + sin²θ φ̇²) + …; p_φ = m l² sin²θ φ̇``: working that states the Lagrangian, then the
     momentum, or the Hamiltonian, that the part asks for, with a value that ∂L/∂q̇ (Σ p q̇ − L) of that L is
-    not. The value may be right, but the working says otherwise: a note for a person, as for an equation of
-    motion (:func:`_lagrangian_disagrees`). None where no one line states L in the problem's names, or the
-    part asks for another quantity."""
+    not; or that states V, then a generalized force that −∂V/∂q is not. The value may be right, but the
+    working says otherwise: a note for a person, as for an equation of motion (:func:`_lagrangian_disagrees`).
+    None where no one line states L (V) in the problem's names, or the part asks for another quantity."""
     if answer.kind != "equations" or spec.name != "expression" or _DEFINING_LETTERS & expected.names:
         return ()
-    stated = [item.rhs for item in answer.value if item.lhs == _LAGRANGIAN]
-    asked = expected.option("name") or ()
-    setting = expected.setting
+    asked, setting = expected.option("name") or (), expected.setting
     momenta = [q for q in setting.coords if canonical_name(f"p_{q}") in asked]
-    if len(stated) != 1 or not (momenta or "H" in asked):
+    forces = [q for q in setting.coords if canonical_name(f"Q_{q}") in asked]
+    label = _LAGRANGIAN if momenta or "H" in asked else _POTENTIAL if forces else None
+    stated = [item.rhs for item in answer.value if item.lhs in ({label, _POTENTIAL_U} if forces else {label})]
+    if label is None or len(stated) != 1:
         return ()
     if any(symbol.name not in expected.names | {TIME.name} for symbol in stated[0].free_symbols):
         return ()
@@ -1263,16 +1264,21 @@ def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> 
         plain = setting.plain(stated[0])
         if momenta:
             derived, quantity = sympy.diff(plain, setting.velocity(momenta[0])), f"∂L/∂{unicode_name(momenta[0], 1)}"
+        elif forces:
+            derived, quantity = -sympy.diff(plain, setting.state[(forces[0], 0)]), f"−∂V/∂{unicode_name(forces[0])}"
         else:
             rates = [setting.velocity(q) * sympy.diff(plain, setting.velocity(q)) for q in setting.coords]
             derived, quantity = sympy.Add(*rates) - plain, "Σ p q̇ − L"
-        # L = … + 5 m g l: another zero of potential, which moves H by a constant and no momentum at all
-        difference = derived - expected.value
-        states = [setting.state[(q, order)] for q in setting.coords for order in (0, 1)]
-        agrees = all(_same_value(sympy.diff(difference, state), sympy.S.Zero, expected) for state in (*states, TIME))
+        if momenta or forces:
+            agrees = _same_value(derived, expected.value, expected)
+        else:  # L = … + 5 m g l: another zero of potential, which moves H by a constant
+            difference = derived - expected.value
+            states = [setting.state[(q, order)] for q in setting.coords for order in (0, 1)]
+            agrees = all(_same_value(sympy.diff(difference, s), sympy.S.Zero, expected) for s in (*states, TIME))
     except _CHECK_FAILURES:
         return ()
-    return () if agrees else (("derived_disagrees_for_a_person", {"quantity": quantity}),)
+    details = {"label": "V" if forces else "L", "quantity": quantity}
+    return () if agrees else (("derived_disagrees_for_a_person", details),)
 
 
 _WORKING_NAMES = frozenset({"L", "T", "V", "U", "F", "R", "D"})

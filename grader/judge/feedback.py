@@ -107,9 +107,9 @@ FEEDBACK: dict[str, str] = {
     " this answer.",
     "lagrangian_disagrees": "Your working gives {label}, but Lagrange's equation with {it} does not give a right"
     " equation of motion either.",
-    "derived_disagrees_for_a_person": "Your working gives L, but {quantity} with it is not the value your answer"
+    "derived_disagrees_for_a_person": "Your working gives {label}, but {quantity} with it is not the value your answer"
     " gives. Its value was graded and is right; a person will check this answer.",
-    "derived_disagrees": "Your working gives L, but {quantity} with it is not right either.",
+    "derived_disagrees": "Your working gives {label}, but {quantity} with it is not right either.",
     "premise_for_a_person": "Your answer says `{statement}` before the equation it gives, as what that equation"
     " follows from, but the two do not agree. The equation was graded and is right; a person will check this"
     " answer.",
