@@ -256,6 +256,24 @@ COUNTS_WORKED = [
      "Graded your final value, `2`; your working, `2 because n = 3 − 2 = 1`, does not hold."),
     ("1 because n = 3 − 2 = 1", "equivalent",
      "Graded the number `1`; what follows it (`because n = 3 − 2 = 1`) is not graded."),
+    # a step says what follows from what came before it: a number, then another after the step, is working
+    # that does not hold (before, right: the last number was taken)
+    ("2 hence 3 − 2 = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `2 hence 3 − 2 = 1`, does not hold: a"
+     " person will check this answer."),
+    ("n = 2, so n = 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `n = 2, so n = 1`, does not hold: a"
+     " person will check this answer."),
+    ("3 − 1 = 2 ⇒ 1", "undecided",
+     "Your final value, `1`, was graded and is right, but your working, `3 − 1 = 2 ⇒ 1`, does not hold: a"
+     " person will check this answer."),
+    ("6 − 4 → 3", "not_equivalent", "Graded your final value, `3`; your working, `6 − 4 → 3`, does not hold."),
+    ("1 hence 2", "not_equivalent", "Graded your final value, `2`; your working, `1 hence 2`, does not hold."),
+    # steps between the same number, or from words: as before
+    ("3 − 2 → 1", "equivalent", "Graded your final value, `1`; the working before it is not graded."),
+    ("1 hence 3 − 2 = 1", "equivalent", "Correct."),
+    ("3 − 2 = 1, so n = 1", "equivalent", "Correct."),
+    ("Two constraints, so 1", "equivalent", "Graded your final value, `1`; the working before it is not graded."),
     # a count too long to read is refused, not passed over for the reason's last side
     (f"{'9' * 40} because 1 = 1", "invalid", "This number is too large to handle (40 digits; the limit is 30)."),
 ]  # fmt: skip
@@ -285,6 +303,14 @@ COUNTS_SAID_OTHERWISE = [
     ("1", "one angle and one length", "undecided", f"Your number `one` comes with `angle and one length`, {QUALIFIED}"),
     ("1", "1 (θ and φ)", "undecided", f"Your number `1` comes with `(θ and φ)`, {QUALIFIED}"),
     ("1", "1 (x, y)", "undecided", f"Your number `1` comes with `(x, y)`, {QUALIFIED}"),
+    # the coordinates listed after what is counted, or one where two are counted, or spelt out (before, right)
+    ("1", "1 dof: θ and r", "undecided", f"Your number `1` comes with `dof: θ and r`, {QUALIFIED}"),
+    ("1", "1 degree of freedom (θ, r)", "undecided",
+     f"Your number `1` comes with `degree of freedom (θ, r)`, {QUALIFIED}"),
+    ("1", "1, namely θ and r", "undecided", f"Your number `1` comes with `namely θ and r`, {QUALIFIED}"),
+    ("1", "1 (theta and r)", "undecided", f"Your number `1` comes with `(theta and r)`, {QUALIFIED}"),
+    ("2", "2 (θ)", "undecided", f"Your number `2` comes with `(θ)`, {QUALIFIED}"),
+    ("2", "2 dof: θ₁", "undecided", f"Your number `2` comes with `dof: θ₁`, {QUALIFIED}"),
     # a count worked from others, what it counts, and how many things it was counted from: as before
     ("2", "2 (θ₁, θ₂)", "equivalent", "Correct."),
     ("1", "1 (θ)", "equivalent", "Correct."),
@@ -293,6 +319,10 @@ COUNTS_SAID_OTHERWISE = [
     ("2", "2 (two angles)", "equivalent", "Correct."),
     ("1", "1 angle", "equivalent", "Correct."),
     ("15", "15 (5 particles)", "equivalent", "Correct."),
+    ("1", "1 dof: θ", "equivalent", "Correct."),
+    ("2", "2 degrees of freedom: θ₁, θ₂", "equivalent", "Correct."),
+    ("2", "2 (theta1, theta2)", "equivalent", "Correct."),
+    ("1", "1, namely θ", "equivalent", "Correct."),
 ]  # fmt: skip
 
 
@@ -377,3 +407,219 @@ def test_energies_in_the_working_that_do_not_make_the_hamiltonian_go_to_a_person
         " and is right; a person will check this answer.",
         WORKING_READ,
     )), verdict  # fmt: skip
+
+
+EOM_PENDULUM = "m l^2 thetaddot + m g l sin(theta) = 0"
+EOM_DOUBLE = (
+    "(m1 + m2) l1 theta1ddot + m2 l2 theta2ddot cos(theta1 - theta2) + m2 l2 theta2dot^2 sin(theta1 - theta2)"
+    " + (m1 + m2) g sin(theta1) = 0;"
+    " l2 theta2ddot + l1 theta1ddot cos(theta1 - theta2) - l1 theta1dot^2 sin(theta1 - theta2) + g sin(theta2) = 0"
+)
+L_DOUBLE_WRONG = L_DOUBLE.replace("1/2 (m1 + m2) l1^2", "1/2 m1 l1^2")
+DISAGREES = "but Lagrange's equation with {} does not give the equation of motion your answer gives. Your equation"
+FOR_A_PERSON = " was graded and is right; a person will check this answer."
+L_READ = "The line that defines `L` was read as your working: it is not graded."
+L_AND_F_READ = "The lines that define `F` and `L` were read as your working: they are not graded."
+
+LAGRANGIAN_IN_THE_WORKING = [
+    # (expected, submitted, setting, kind, status, feedback): working that states a Lagrangian (or T and V, or
+    # L and Rayleigh's F), then a right equation of motion that Lagrange's equation with it does not give
+    (EOM_PENDULUM, f"L = m l^2 thetadot^2 - m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    # a sentence that defines L before the equation: its L was read as working, and no value of it judged
+    (EOM_PENDULUM, "With L = ½ m l² θ̇² − m g l cos θ: m l² θ̈ = −m g l sin θ", PENDULUM, "equation", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_PENDULUM, f"T = 1/2 m l^2 thetadot^2; V = m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation",
+     "undecided", (f"Your working gives T − V, {DISAGREES.format('it')}{FOR_A_PERSON}", WORKING_READ)),
+    (EOM_DOUBLE, f"L = {L_DOUBLE_WRONG}; {EOM_DOUBLE}", DOUBLE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_DAMPED, f"L = m xdot^2 + 1/2 k x^2; {EOM_DAMPED}", DAMPED, "equation", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; F = b xdot^2; {EOM_DAMPED}", DAMPED, "equation", "undecided",
+     (f"Your working gives L and F, {DISAGREES.format('them')}{FOR_A_PERSON}", L_AND_F_READ)),
+    # a wrong equation after a wrong L: wrong, and told the L is no help either
+    (EOM_PENDULUM, "L = m l^2 thetadot^2 - m g l cos(theta); m l^2 thetaddot - m g l sin(theta) = 0", PENDULUM,
+     "equation", "not_equivalent",
+     ("A term differs: the term in sin(θ) has the wrong sign.",
+      "Your working gives L, but Lagrange's equation with it does not give a right equation of motion either.",
+      L_READ)),
+    # a right L, or one off by a constant, a factor or d/dt of a function of θ and t, and the friction's F or
+    # none: as before
+    (EOM_PENDULUM, f"L = {L_PENDULUM}; {EOM_PENDULUM}", PENDULUM, "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_PENDULUM, f"L = m l^2 thetadot^2 + 2 m g l cos(theta) + 7; {EOM_PENDULUM}", PENDULUM, "equation",
+     "equivalent", ("Correct.", L_READ)),
+    (EOM_PENDULUM, f"L = {L_PENDULUM} + m l^2 sin(theta) thetadot; thetaddot + g/l sin(theta) = 0", PENDULUM,
+     "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_PENDULUM, f"T = 1/2 m l^2 thetadot^2; V = -m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation",
+     "equivalent", ("Correct.", WORKING_READ)),
+    (EOM_DOUBLE, f"L = {L_DOUBLE}; {EOM_DOUBLE}", DOUBLE, "equations", "equivalent", ("Correct.", L_READ)),
+    (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_DAMPED, f"L = m xdot^2 - k x^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent", ("Correct.", L_READ)),
+    (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; F = 1/2 b xdot^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent",
+     ("Correct.", L_AND_F_READ)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "setting", "kind", "status", "feedback"), LAGRANGIAN_IN_THE_WORKING)
+def test_a_lagrangian_in_the_working_that_does_not_give_the_equation_goes_to_a_person(
+    expected, submitted, setting, kind, status, feedback
+):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+GIVEN_VALUES = {"coords": ["theta"], "known": ["m", "g", "l"], "values": {"l": 1.00, "g": 9.81}}
+
+WORKED_IN_SYMBOLS = [
+    # (submitted, status, feedback): the period for l = 1.00 m and g = 9.81 m/s², worked in the problem's names
+    # first: read at those values, working that does not come to the number goes to a person, as in numbers
+    ("T = 2 pi sqrt(g/l) = 2.006 s", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2 pi sqrt(g/l) = 2.006 s`,"
+      " does not hold: a person will check this answer.",)),
+    ("T = 2π√(g/l); T = 2.006 s", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(g/l) = 2.006 s`, does not"
+      " hold: a person will check this answer.",
+      "Your 2 lines, each `T = …`, were read as one chain, T = … = …: its last side was graded.")),
+    ("T = 2 pi sqrt(l/g) = 2.5 s", "not_equivalent",
+     ("Not within the accepted tolerance.",
+      "Graded your final value, `2.5 s`; your working, `T = 2 pi sqrt(l/g) = 2.5 s`, does not hold.")),
+    # working that comes to it: as before; and the formula alone is still no number
+    ("T = 2 pi sqrt(l/g) = 2.006 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.")),
+    ("T = 2π√(l/g) = 2π√(1/9.81) ≈ 2.01 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.01 s`; the working before it is not graded.")),
+    ("T = 2 pi sqrt(l/g)", "invalid", ("A number is asked for here; your answer contains `g` and `l`.",)),
+    # a name the problem gives no value: not read, as before
+    ("T = 2 pi sqrt(m/g) = 2.006 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.")),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), WORKED_IN_SYMBOLS)
+def test_working_in_names_the_problem_gives_values_is_read_at_them(submitted, status, feedback):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s", **GIVEN_VALUES)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+L_HOOP = "1/2 m R^2 thetadot^2 + 1/2 m R^2 omega^2 sin(theta)^2 + m g R cos(theta)"
+HOOP_LAGRANGIAN = {**HOOP, "h_is_energy": False}
+ON_THE_WAY = (
+    "on the way to its value, which is not what L is. Its value was graded and is right; a person will check"
+    " this answer."
+)
+
+LAGRANGIAN_FROM_H = [
+    # (submitted, setting, status, feedback): where H is not the energy (a hoop turned at a fixed rate, where
+    # H = T₂ − T₀ + V), L = 2T − H is a false identity on the way to a right value (before, right)
+    (f"L = 2T - H = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = -H + 2*T` {ON_THE_WAY}",)),
+    (f"L = H - 2V = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = H - 2*V` {ON_THE_WAY}",)),
+    # true on the hoop too: E is T + V, and L = p θ̇ − H is the Legendre transform; and where H is the energy
+    (f"L = 2T - E = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
+    (f"L = p_theta thetadot - H = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
+    (f"L = T - V = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
+    (f"L = 2T - H = {L_PENDULUM}", PENDULUM, "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "setting", "status", "feedback"), LAGRANGIAN_FROM_H)
+def test_l_as_2t_minus_h_where_h_is_not_the_energy_goes_to_a_person(submitted, setting, status, feedback):
+    expected = L_PENDULUM if setting is PENDULUM else L_HOOP
+    verdict = compare(expected, submitted, kind="lagrangian", **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+L_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
+L_SPHERICAL_WRONG = "m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
+P_PHI = "m l^2 sin(theta)^2 phidot"
+MOMENTUM_SPHERICAL = {**SPHERICAL, "name": "p_phi"}
+DERIVED = (
+    "with it is not the value your answer gives. Its value was graded and is right; a person will check this answer."
+)
+SPHERICAL_L_READ = "The line that defines `L` was read as your working: it is not graded."
+
+Q_R = "m g cos(theta) - k (r - l0)"
+FORCES = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_r"}
+V_READ = "The line that defines `V` was read as your working: it is not graded."
+
+DERIVED_FROM_L = [
+    # (expected, submitted, setting, status, feedback): working that states L, then the momentum or the
+    # Hamiltonian asked for, which that L does not give; or V, then a generalized force (before, right)
+    (P_PHI, f"L = {L_SPHERICAL_WRONG}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "undecided",
+     (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL_WRONG}; H = {H_SPHERICAL}", SPHERICAL, "undecided",
+     (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
+    (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2; Q_r = {Q_R}", FORCES, "undecided",
+     (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
+    (Q_R, f"V = -m g r cos(theta) + 1/2 k r^2; Q_r = {Q_R}", FORCES, "undecided",
+     (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
+    # the L (V) that gives them, or that plus a constant: as before
+    (Q_R, f"V = -m g r cos(theta) + 1/2 k (r - l0)^2 + 7; Q_r = {Q_R}", FORCES, "equivalent", ("Correct.", V_READ)),
+    (P_PHI, f"L = {L_SPHERICAL}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL} + 5 m g l; H = {H_SPHERICAL}", SPHERICAL, "equivalent",
+     ("Correct.", SPHERICAL_L_READ)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "setting", "status", "feedback"), DERIVED_FROM_L)
+def test_a_lagrangian_in_the_working_that_does_not_give_the_momentum_goes_to_a_person(
+    expected, submitted, setting, status, feedback
+):
+    verdict = compare(expected, submitted, kind="expression", **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+PREMISE = (
+    "before the equation it gives, as what that equation follows from, but the two do not agree. The equation was"
+    " graded and is right; a person will check this answer."
+)
+L_WRONG = "L = m l^2 thetadot^2 - m g l cos(theta)"
+
+PREMISES = [
+    # (expected, submitted, status, feedback): an equation of motion, or an L, before a step (⇒, so) to the right
+    # equation, which the reading leaves behind the step: where it does not give it, for a person (before, right)
+    (EOM_PENDULUM, "m l^2 thetaddot = m g l sin(theta) ⇒ thetaddot = -(g/l) sin(theta)", "undecided",
+     (f"Your answer says `m l^2 thetaddot = m g l sin(theta)` {PREMISE}",)),
+    (EOM_PENDULUM, "m l^2 thetaddot - m g l sin(theta) = 0, so thetaddot + (g/l) sin(theta) = 0", "undecided",
+     (f"Your answer says `m l^2 thetaddot - m g l sin(theta) = 0` {PREMISE}",)),
+    (EOM_PENDULUM, f"{L_WRONG} ⇒ {EOM_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG}` {PREMISE}",)),
+    (EOM_PENDULUM, f"{L_WRONG}, so {EOM_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG}` {PREMISE}",)),
+    # a premise that gives it, or the full form before the small-angle one asked for: as before
+    (EOM_PENDULUM, "m l thetaddot = -m g sin(theta) ⇒ thetaddot = -(g/l) sin(theta)", "equivalent", ("Correct.",)),
+    (EOM_PENDULUM, f"L = {L_PENDULUM} ⇒ {EOM_PENDULUM}", "equivalent", ("Correct.",)),
+    ("thetaddot = -(g/l) theta", "thetaddot = -(g/l) sin(theta) ⇒ thetaddot = -(g/l) theta", "equivalent",
+     ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), PREMISES)
+def test_an_equation_after_a_step_from_one_it_does_not_follow_from_goes_to_a_person(
+    expected, submitted, status, feedback
+):
+    verdict = compare(expected, submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+ATWOOD_ACCELERATION = {**ATWOOD, "name": ["xddot", "a", "a_1"]}
+A_ATWOOD = "(m1 - m2) g/(m1 + m2)"
+PREMISE_VALUE = (
+    "before the value it gives, as what that value follows from, but the two do not agree. Its value was graded"
+    " and is right; a person will check this answer."
+)
+
+PREMISES_OF_A_VALUE = [
+    # (submitted, status, feedback): the acceleration asked for, after a step from an equation it does not
+    # solve (before, right)
+    (f"2 (m1 + m2) xddot = (m1 - m2) g, so xddot = {A_ATWOOD}", "undecided",
+     (f"Your answer says `2 (m1 + m2) xddot = (m1 - m2) g` {PREMISE_VALUE}",)),
+    (f"(m1 + m2) xddot = (m1 + m2) g ⇒ a = {A_ATWOOD}", "undecided",
+     (f"Your answer says `(m1 + m2) xddot = (m1 + m2) g` {PREMISE_VALUE}",)),
+    # an equation it solves: as before
+    (f"(m1 + m2) xddot = (m1 - m2) g, so xddot = {A_ATWOOD}", "equivalent", ("Correct.",)),
+    (f"(m1 + m2) xddot = (m1 - m2) g ⇒ a = {A_ATWOOD}", "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), PREMISES_OF_A_VALUE)
+def test_a_value_after_a_step_from_an_equation_it_does_not_solve_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(A_ATWOOD, submitted, kind="expression", **ATWOOD_ACCELERATION)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

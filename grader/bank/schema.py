@@ -43,12 +43,12 @@ SCHEMA_VERSION = 1
 # answer kinds; a test keeps the two in step, since the bank may not import the checker).
 PART_KINDS: dict[str, frozenset[str]] = {
     "integer": frozenset({"name"}),
-    "number": frozenset({"rtol", "atol", "unit", "name"}),
+    "number": frozenset({"rtol", "atol", "unit", "name", "values"}),
     "choice": frozenset({"multiple", "asks_false"}),
     "expression": frozenset({"up_to_constant", "name", "h_is_energy", "asks_more"}),
     "equation": frozenset(),
     "equations": frozenset(),
-    "lagrangian": frozenset({"factor_credit", "name"}),
+    "lagrangian": frozenset({"factor_credit", "name", "h_is_energy"}),
     "text": frozenset(),
 }
 # options that are true or false, checked so when the bank loads

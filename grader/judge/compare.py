@@ -43,6 +43,7 @@ from grader.judge.expression import check_expression, same_values
 from grader.judge.feedback import say, shown
 from grader.judge.given import given_values, in_given_names
 from grader.judge.lagrangian import check_lagrangian
+from grader.judge.lagrangian import euler_lagrange as lagrange_equations
 from grader.judge.motion import accelerations_in, check_equation, check_equations
 from grader.judge.numbers import read_number
 from grader.judge.numeric import NotCompilable
@@ -127,9 +128,16 @@ KINDS: dict[str, Kind] = {
         ),
         Kind("equation", check_equation, shape="equation"),
         Kind("equations", check_equations, shape="equations"),
-        Kind("lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L"}, shape="expression"),
+        Kind(
+            "lagrangian", check_lagrangian, {"factor_credit": 0.5, "name": "L", "h_is_energy": True}, shape="expression"
+        ),
         Kind("integer", check_integer, {"name": None}, shape="expression"),
-        Kind("number", check_number, {"rtol": 1e-6, "atol": 0.0, "unit": None, "name": None}, shape="expression"),
+        Kind(
+            "number",
+            check_number,
+            {"rtol": 1e-6, "atol": 0.0, "unit": None, "name": None, "values": None},
+            shape="expression",
+        ),
         Kind(
             "choice",
             check_choice,
@@ -205,6 +213,8 @@ def compare(
         raise AuthorError(f"option given does not apply to kind {kind!r}: its answers are not mathematics")
     if settings.get("unit"):
         _unit(str(settings["unit"]))  # an author's unit we cannot read is said now, not at the first answer
+    if settings.get("values") is not None:
+        _given_numbers(settings["values"], prepared)  # said now too
     values = given_values(prepared, given) if given else ()
     started = time.monotonic()
     verdict = _judge(spec, prepared, submitted, timeout, values)
@@ -262,6 +272,11 @@ def compare(
     if operator is not None:  # Using d/dt(∂V/∂θ̇) − ∂V/∂θ = 0 we get …: right, but not from Lagrange's equation
         return _right_but_said(verdict, "operator_for_a_person", statement=operator)
     left = timeout - (time.monotonic() - started)
+    premise = _premise_said_wrong(spec, prepared, submitted, left) if verdict.status == "equivalent" else None
+    if premise is not None:  # m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ: right, but not from what it says it follows
+        key = "premise_for_a_person" if spec.shape == "equation" else "premise_value_for_a_person"
+        return _right_but_said(verdict, key, statement=premise)
+    left = timeout - (time.monotonic() - started)
     rounded = _rounded(spec, prepared, submitted, left, values) if verdict.status == "not_equivalent" else None
     if rounded is not None:  # 0.333 m l² θ̇²: right with the decimal written as the 1/3 it rounds
         return _verdict(rounded, verdict.answer)
@@ -272,6 +287,83 @@ def compare(
     if _judge(spec, prepared, listed, left, values).status != "equivalent":
         return verdict  # a bulleted list that is wrong too: as typed
     return _verdict(Outcome("invalid", 0.0, "dashes_ambiguous", method="parse"), verdict.answer)
+
+
+def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout: float) -> str | None:
+    """``m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ``, or ``…, so …``: an equation of motion the answer says
+    the one it gives follows from, which the parser leaves behind the step, where the two do not agree (the
+    first is judged wrong); as typed, or None. Only an equation in the problem's names, with an acceleration
+    in it, is judged so; ``L = … ⇒ …`` says where the equation came from, and Lagrange's equation with that L
+    must give it (:func:`_lagrangian_disagrees`)."""
+    if spec.shape not in ("equation", "expression") or len(submitted) > _PREMISE_LENGTH:
+        return None
+    if not _PREMISE_STEP.search(submitted):
+        return None
+    started = time.monotonic()
+    names, coords = sorted(expected.names), expected.setting.coords
+    *premises, conclusion = _PREMISE_STEP.split(submitted)
+    if spec.shape == "expression":
+        return _premise_of_acceleration(premises, expected)
+    for premise in premises:
+        premise = premise.strip(" ,;:.")
+        read = parse_answer(premise, coords=coords, known=names)
+        stated = read.ok and read.kind == "equation" and read.value.lhs == _LAGRANGIAN and "L" not in expected.names
+        if stated:  # L = … ⇒ m l² θ̈ + … = 0: the equation must be what that L gives
+            derived = parse_answer(conclusion, coords=coords, known=names)
+            left = timeout - (time.monotonic() - started)
+            if not (derived.ok and derived.kind == "equation") or left <= 0:
+                continue
+            both = ParsedAnswer(submitted, (read.value, derived.value), "equations")
+            try:
+                with time_limit(left) as deadline:
+                    if _lagrangian_disagrees(both, spec, expected, deadline):
+                        return premise
+            except CheckTimeout:
+                return None
+            continue
+        if not (read.ok and read.kind == "equation" and accelerations_in(read.value, expected)):
+            continue
+        if {symbol.name for symbol in read.symbols} - expected.names - {TIME.name}:
+            continue
+        left = timeout - (time.monotonic() - started)
+        if left <= 0:
+            return None
+        judged = _judge(spec, expected, premise, left)
+        # θ̈ = −(g/l) sin θ ⇒ θ̈ = −(g/l) θ: the full form, then the small-angle one asked for, is a derivation
+        if judged.status == "not_equivalent" and judged.diagnosis not in _SMALL_FORMS | _FULL_FORMS:
+            return premise
+    return None
+
+
+def _premise_of_acceleration(premises: list[str], expected: Expected) -> str | None:
+    """``2 (m₁ + m₂) ẍ = (m₁ − m₂) g, so ẍ = …`` where an acceleration is asked for (the option ``name``
+    holds ``xddot``): an equation before the step, in the problem's names and with that acceleration in
+    it, which the expected value does not solve; as typed, or None."""
+    asked = expected.option("name") or ()
+    wanted = [q for q in expected.setting.coords if canonical_name(f"{q}ddot") in asked]
+    if len(wanted) != 1:
+        return None
+    acceleration = expected.setting.acceleration(wanted[0])
+    for premise in premises:
+        premise = premise.strip(" ,;:.")
+        read = parse_answer(premise, coords=expected.setting.coords, known=sorted(expected.names))
+        if not (read.ok and read.kind == "equation") or {s.name for s in read.symbols} - expected.names - {TIME.name}:
+            continue
+        plain = expected.setting.plain(read.value.lhs - read.value.rhs)
+        if not plain.has(acceleration) or plain.free_symbols & (expected.setting.varying - {acceleration}):
+            continue  # an equation of ẍ alone: of θ or ẋ too, the expected value is no solution to test
+        if not _same_value(plain.xreplace({acceleration: expected.value}), sympy.S.Zero, expected):
+            return premise
+    return None
+
+
+# the steps of a derivation, as the tokenizer reads them (grader.parse.tokens): what stands before one is left
+_PREMISE_STEP = re.compile(
+    r"==>|-->|=>|->|[→⟶⇒⟹∴]|\\(?:to|rightarrow|longrightarrow|Rightarrow|Longrightarrow|implies|therefore)(?![A-Za-z])"
+    r"|\b(?:so|hence|thus|therefore)\b",
+    re.I,
+)
+_PREMISE_LENGTH = 400  # characters: a longer answer is read as typed
 
 
 def _rounded(spec: Kind, expected: Expected, submitted: str, timeout: float, given: tuple) -> Outcome | None:
@@ -557,6 +649,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _with_definitions(answer, expected, deadline)
                 read_notes += _energies_disagree(answer, spec, expected, deadline)
+                read_notes += _lagrangian_disagrees(answer, spec, expected, deadline)
+                read_notes += _derived_disagrees(answer, spec, expected)
                 answer, working = _without_working(answer, spec, expected)
                 read_notes += working
                 energies = _energies_alone(answer, spec, expected, deadline)
@@ -853,6 +947,11 @@ def _definition_judged(label, side, expected: Expected, given: tuple = ()) -> bo
         if alone or _in_energies(in_energies, expected.names):
             # where H is not the energy, no sum of T and V is H: nor is 2T − L, which is T + V
             return _energy_multiple(in_energies, [name], sums) == 1
+        others = in_energies.free_symbols - {_HAMILTONIAN}
+        unknown_h = _HAMILTONIAN.name not in sums and _HAMILTONIAN.name not in expected.names
+        if unknown_h and in_energies.has(_HAMILTONIAN) and others <= _ENERGIES:
+            # L = 2T − H, L = H − 2V: true where H is T + V, but here H = T₂ − T₀ + V, which no sum of T and V is
+            return False
         if side.is_Symbol and side.name in _ENERGY_SUMS and side.name not in expected.names:
             # L = E, L = H, H = L are wrong; H = E is right where H is the energy
             return name == side.name or (name in sums and sums[name] == sums.get(side.name))
@@ -1089,6 +1188,126 @@ def _energies_disagree(answer: ParsedAnswer, spec: Kind, expected: Expected, dea
     label, sign = last.lhs.name, "−" if last.lhs.name == "L" else "+"
     details = {"kinetic": "T", "potential": potential.name, "label": label, "sum": f"T {sign} {potential.name}"}
     return (("energies_disagree_for_a_person", details),)
+
+
+def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
+    """``L = m l² θ̇² − m g l cos θ; m l² θ̈ + m g l sin θ = 0``: working that states the Lagrangian (or T and V),
+    and Rayleigh's F where there is one, then equations of motion that Lagrange's equations with them do not
+    give. The equations may be right, but the working says otherwise: a note for a person. A Lagrangian off by
+    a constant, a factor or d/dt of a function gives the same equations, and agrees. Where friction is in the
+    equations and no F is written, the Lagrangian's equations must agree with them at rest, where friction
+    vanishes. None where the working states no one Lagrangian, holds names of the student's own, or cannot
+    be judged."""
+    if answer.kind != "equations" or spec.name not in ("equation", "equations") or _DEFINING_LETTERS & expected.names:
+        return ()
+    lines: dict = {}
+    for item in answer.value:
+        if item.lhs.is_Symbol and item.lhs.name in _WORKING_NAMES:
+            lines.setdefault(item.lhs, []).append(item.rhs)
+    if any(len(values) > 1 for values in lines.values()):
+        return ()  # two values of one name: which is the working is not ours to say
+    found = {symbol: values[0] for symbol, values in lines.items()}
+    potential = found.get(_POTENTIAL, found.get(_POTENTIAL_U))
+    if _LAGRANGIAN in found:
+        lagrangian, label = found[_LAGRANGIAN], "L"
+    elif _KINETIC in found and potential is not None and not {_POTENTIAL, _POTENTIAL_U} <= set(found):
+        lagrangian, label = found[_KINETIC] - potential, "T − V" if _POTENTIAL in found else "T − U"
+    else:
+        return ()
+    friction = [(symbol, found[symbol]) for symbol in _RAYLEIGH if symbol in found]
+    if len(friction) > 1:
+        return ()
+    label = f"{label} and {friction[0][0].name}" if friction else label
+    friction = [value for _, value in friction]
+    names = expected.names | {TIME.name}
+    if any(symbol.name not in names for value in (lagrangian, *friction) for symbol in value.free_symbols):
+        return ()  # L = T − V where T = …, or a name of the student's own: no equations to compare
+    setting = expected.setting
+    try:
+        plain = setting.plain(lagrangian)
+        equations = lagrange_equations(plain, setting)
+        if friction:
+            dissipation = setting.plain(friction[0])
+            rates = [sympy.diff(dissipation, setting.velocity(q)) for q in setting.coords]
+            equations = [e + rate for e, rate in zip(equations, rates, strict=True)]
+        deadline.check()
+        if not friction and len(setting.coords) == 1 and _dissipative(expected):
+            agrees = _agrees_at_rest(equations[0], expected)
+        else:
+            typed = [sympy.Eq(setting.as_typed(e), 0, evaluate=False) for e in equations]
+            given = ParsedAnswer(answer.text, typed[0] if len(typed) == 1 else tuple(typed), _SHAPES[len(typed) > 1])
+            agrees = spec.check(expected, given, deadline).status != "not_equivalent"
+    except _CHECK_FAILURES:
+        return ()
+    details = {"label": label, "it": "them" if friction else "it"}
+    return () if agrees else (("lagrangian_disagrees_for_a_person", details),)
+
+
+def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple:
+    """``L = m l² (θ̇² + sin²θ φ̇²) + …; p_φ = m l² sin²θ φ̇``: working that states the Lagrangian, then the
+    momentum, or the Hamiltonian, that the part asks for, with a value that ∂L/∂q̇ (Σ p q̇ − L) of that L is
+    not; or that states V, then a generalized force that −∂V/∂q is not. The value may be right, but the
+    working says otherwise: a note for a person, as for an equation of motion (:func:`_lagrangian_disagrees`).
+    None where no one line states L (V) in the problem's names, or the part asks for another quantity."""
+    if answer.kind != "equations" or spec.name != "expression" or _DEFINING_LETTERS & expected.names:
+        return ()
+    asked, setting = expected.option("name") or (), expected.setting
+    momenta = [q for q in setting.coords if canonical_name(f"p_{q}") in asked]
+    forces = [q for q in setting.coords if canonical_name(f"Q_{q}") in asked]
+    label = _LAGRANGIAN if momenta or "H" in asked else _POTENTIAL if forces else None
+    stated = [item.rhs for item in answer.value if item.lhs in ({label, _POTENTIAL_U} if forces else {label})]
+    if label is None or len(stated) != 1:
+        return ()
+    if any(symbol.name not in expected.names | {TIME.name} for symbol in stated[0].free_symbols):
+        return ()
+    try:
+        plain = setting.plain(stated[0])
+        if momenta:
+            derived, quantity = sympy.diff(plain, setting.velocity(momenta[0])), f"∂L/∂{unicode_name(momenta[0], 1)}"
+        elif forces:
+            derived, quantity = -sympy.diff(plain, setting.state[(forces[0], 0)]), f"−∂V/∂{unicode_name(forces[0])}"
+        else:
+            rates = [setting.velocity(q) * sympy.diff(plain, setting.velocity(q)) for q in setting.coords]
+            derived, quantity = sympy.Add(*rates) - plain, "Σ p q̇ − L"
+        if momenta or forces:
+            agrees = _same_value(derived, expected.value, expected)
+        else:  # L = … + 5 m g l: another zero of potential, which moves H by a constant
+            difference = derived - expected.value
+            states = [setting.state[(q, order)] for q in setting.coords for order in (0, 1)]
+            agrees = all(_same_value(sympy.diff(difference, s), sympy.S.Zero, expected) for s in (*states, TIME))
+    except _CHECK_FAILURES:
+        return ()
+    details = {"label": "V" if forces else "L", "quantity": quantity}
+    return () if agrees else (("derived_disagrees_for_a_person", details),)
+
+
+_WORKING_NAMES = frozenset({"L", "T", "V", "U", "F", "R", "D"})
+_RAYLEIGH = sympy.symbols("F R D")  # Rayleigh's dissipation function, as texts name it
+_SHAPES = {False: "equation", True: "equations"}
+
+
+def _dissipative(expected: Expected) -> bool:
+    """Whether the expected equation of one coordinate has friction in it: no Lagrangian gives it."""
+    if "dissipative" not in expected.cache:
+        (equation,) = expected.value if isinstance(expected.value, tuple) else (expected.value,)
+        side = equation.lhs - equation.rhs if isinstance(equation, sympy.Eq) else equation
+        typed = expected.setting.as_typed(side)  # the reference is kept in plain symbols
+        expected.cache["dissipative"] = from_a_lagrangian(typed, expected.setting.coords[0]) is False
+    return expected.cache["dissipative"]
+
+
+def _agrees_at_rest(equation, expected: Expected) -> bool:
+    """Whether a Lagrangian's equation (plain symbols) and the expected one, which has friction, are the same
+    multiple of one another wherever the velocity is 0: the friction of a dissipation function vanishes there."""
+    (q,) = expected.setting.coords
+    velocity, acceleration = expected.setting.velocity(q), expected.setting.acceleration(q)
+    (reference,) = expected.value if isinstance(expected.value, tuple) else (expected.value,)
+    reference = expected.setting.plain(reference.lhs - reference.rhs if isinstance(reference, sympy.Eq) else reference)
+    mine, theirs = equation.xreplace({velocity: 0}), reference.xreplace({velocity: 0})
+    if not mine.has(acceleration):
+        return False  # no kinetic energy: no equation of motion at all
+    # A q̈ + B against A' q̈ + B': A' (A q̈ + B) = A (A' q̈ + B') wherever ẋ = 0
+    return _same_value(mine * sympy.diff(theirs, acceleration), theirs * sympy.diff(mine, acceleration), expected)
 
 
 def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple]:
@@ -1611,6 +1830,8 @@ _FOR_A_PERSON = {
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
     "energies_disagree_for_a_person": "energies_disagree",
+    "lagrangian_disagrees_for_a_person": "lagrangian_disagrees",
+    "derived_disagrees_for_a_person": "derived_disagrees",
     "constant_said_for_a_person": "constant_said",
     "given_redefined_for_a_person": "given_redefined",
     "momentum_spelt_for_a_person": "momentum_spelt",
@@ -1622,8 +1843,13 @@ _TRUE_IN_PART = frozenset({"constant_unsure", "words_for_a_person"})
 
 
 # the diagnoses of a value that is right as read, where how it was read is for a person to confirm (a wrong
-# Euler–Lagrange operator before it too, which compare finds once the value is judged)
-READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {"operator_for_a_person"}
+# Euler–Lagrange operator before it too, or a premise it does not follow from, which compare finds once the
+# value is judged)
+READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {
+    "operator_for_a_person",
+    "premise_for_a_person",
+    "premise_value_for_a_person",
+}
 # the diagnoses of a value that is wrong only for the decimals that round its exact numbers (6.28 for 2π)
 ROUNDED = frozenset({"rounded_decimal", "rounded_decimals"})
 
@@ -2003,9 +2229,13 @@ def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
     return answer
 
 
-def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadline) -> ParsedAnswer | None:
+def _as_number(
+    text: str, *, spec: Kind, expected: Expected, names: list, deadline, working: bool = False
+) -> ParsedAnswer | None:
     """``text`` read, if it is a number, a number with units where the part has a unit, or a name
-    for one (``n = 2``); else None."""
+    for one (``n = 2``); else None. A side of ``working`` may be a formula in names whose values the
+    problem gives (the option ``values``: ``2π√(g/l)`` before ``= 2.006 s``), read at those values; not
+    the answer itself, which must be a number."""
     answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
     if not answer.ok:
         return None
@@ -2016,7 +2246,33 @@ def _as_number(text: str, *, spec: Kind, expected: Expected, names: list, deadli
         return None
     if not value.free_symbols or (spec.name == "number" and expected.option("unit") and in_units(value)):
         return answer
+    given = _given_numbers(expected.option("values"), expected) if working and spec.name == "number" else {}
+    if given and {symbol.name for symbol in value.free_symbols} <= set(given):
+        replacement = {symbol: given[symbol.name] for symbol in value.free_symbols}
+        return ParsedAnswer(answer.text, value.xreplace(replacement), "expression")
     return None
+
+
+def _given_numbers(values, expected: Expected) -> dict[str, sympy.Float]:
+    """The option ``values`` (``{l: 1.00, g: 9.81}``, the problem's names with the values its prompt
+    gives them, in SI units) by name; empty where there is none.
+
+    Raises:
+        AuthorError: for values that are no such mapping, or a name the problem does not define."""
+    if not values:
+        return {}
+    # a mapping as the author writes it, or the pairs compare() keeps it as (see _hashable)
+    pairs = tuple(values.items()) if isinstance(values, Mapping) else values
+    if not isinstance(pairs, tuple) or not all(isinstance(pair, tuple) and len(pair) == 2 for pair in pairs):
+        raise AuthorError(f"option values maps the problem's names to numbers, as {{l: 1.00, g: 9.81}}, not {values!r}")
+    given = {}
+    for name, number in pairs:
+        if not isinstance(name, str) or canonical_name(name) not in expected.names:
+            raise AuthorError(f"option values names {name!r}, which is no name of this problem")
+        if isinstance(number, bool) or not isinstance(number, int | float) or not math.isfinite(number):
+            raise AuthorError(f"option values gives {name!r} the value {number!r}, which is no finite number")
+        given[canonical_name(name)] = sympy.Float(number)
+    return given
 
 
 def _final_of_working(answer: ParsedAnswer, asked: tuple = ()) -> ParsedAnswer:

@@ -102,6 +102,19 @@ FEEDBACK: dict[str, str] = {
     " the value your answer gives {label}. Its value was graded and is right; a person will check this answer.",
     "energies_disagree": "Your working gives {kinetic} and {potential}, but {sum} with them is not the value your"
     " answer gives {label}.",
+    "lagrangian_disagrees_for_a_person": "Your working gives {label}, but Lagrange's equation with {it} does not"
+    " give the equation of motion your answer gives. Your equation was graded and is right; a person will check"
+    " this answer.",
+    "lagrangian_disagrees": "Your working gives {label}, but Lagrange's equation with {it} does not give a right"
+    " equation of motion either.",
+    "derived_disagrees_for_a_person": "Your working gives {label}, but {quantity} with it is not the value your answer"
+    " gives. Its value was graded and is right; a person will check this answer.",
+    "derived_disagrees": "Your working gives {label}, but {quantity} with it is not right either.",
+    "premise_for_a_person": "Your answer says `{statement}` before the equation it gives, as what that equation"
+    " follows from, but the two do not agree. The equation was graded and is right; a person will check this"
+    " answer.",
+    "premise_value_for_a_person": "Your answer says `{statement}` before the value it gives, as what that value"
+    " follows from, but the two do not agree. Its value was graded and is right; a person will check this answer.",
     "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",

@@ -34,7 +34,7 @@ from grader.judge.feedback import SHOWN, shown
 from grader.judge.units import SI_UNITS, in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
-from grader.parse.names import IMPLYING_WORDS
+from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = ["NUMBER_WORDS", "read_number"]
 
@@ -218,6 +218,8 @@ def _read_number(
         return given
     prepared, notes = _spelled(text, decimal_comma, unit)
     answer = reads(prepared)
+    if answer is not None and len(text) <= _LENGTH and not _SEPARATED.search(text):
+        notes += _steps_false(text, answer, (reads, decimal_comma, unit, count))
     if answer is not None or len(text) > _LENGTH or _SEPARATED.search(text):
         return prepared, answer, notes  # x = 1; y = 2 is a system, not working
     if given is not None:
@@ -251,7 +253,8 @@ def _read_number(
                 # 6 − 4 = 2, so also 4: words beside a value the working does not come to may offer a second
                 return prepared, answer, (("number_doubted_for_a_person", {"words": said}),)
             # 4 − 1 = 2, 3·5 = 16 → 15: working that does not hold, a slip or a value not worked out
-            working = _false_working(pieces, runs, _last_side(answer), numbers) if last and index == last else None
+            at_last = last and index == last
+            working = _false_working(pieces, runs, _last_side(answer), numbers, bare.strip()) if at_last else None
             first = (
                 _count_said(pieces[:last], _last_side(answer)) if count and said and last and index == last else None
             )
@@ -307,7 +310,7 @@ def _worked_over_lines(
         if None in read:
             return None
         values.append(_last_side(read[-1]))
-        if false is None and _false_working(pieces, runs, values[-1], (reads, decimal_comma, unit, count)):
+        if false is None and _false_working(pieces, runs, values[-1], (reads, decimal_comma, unit, count), line):
             false = line
     prepared, answer, notes = _read_number(
         final, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=False, count=count, asked=asked
@@ -652,7 +655,8 @@ def _sides(text: str) -> tuple[list[str], tuple[int, ...]]:
     """The sides of a chain of working (``6 − 4 = 2 → 4``: 6 − 4, 2 and 4), split where an equals sign
     or a step stands outside brackets (``2 (so two angles)`` is one side); and where each run of sides
     joined by equals signs alone begins, the runs a step separates (``(0, 2)``; ``(0,)`` where no step
-    stands): the sides of a run claim to be equal, and a step claims nothing."""
+    stands): the sides of a run claim to be equal, and a step that what follows it follows from the run
+    before (see :func:`_false_working`)."""
     marks = [(found, False) for found in _EQUALS.finditer(text)] + [(found, True) for found in _STEPS.finditer(text)]
     marks.sort(key=lambda mark: mark[0].start())
     depth = [0] * (len(text) + 1)
@@ -668,32 +672,58 @@ def _sides(text: str) -> tuple[list[str], tuple[int, ...]]:
     return [*pieces, text[start:].strip()], tuple(runs)
 
 
-def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple) -> str | None:
+def _false_working(pieces: list[str], runs: tuple, final, numbers: tuple, typed: str = "") -> str | None:
     """The first run of working (``pieces`` and ``runs``, as :func:`_sides` gives them) whose sides are
     not equal, as typed; None where each holds. ``final`` is the value of the last side as graded, and
     ``numbers`` how sides are read (``reads``, ``decimal_comma``, ``unit``, ``count``). A run is checked
     from its last side back to the first side that is no number: in ``ω = √(9.81) = 3.13, T = 2π/3.13 =
-    2.006 s`` the sides after ``3.13, T``, which ends one statement and begins the next."""
+    2.006 s`` the sides after ``3.13, T``, which ends one statement and begins the next. A step says what
+    follows from the run before it: where that run is arithmetic alone (perhaps after a name) and the run
+    after it comes to another number (``6 − 4 → 3``, ``2 hence 3 − 2 = 1``, ``n = 2 ⇒ n = 1``), the working
+    does not hold, and the chain is shown as ``typed``. Not where the two runs name different quantities:
+    ``g = 9.81 ⇒ T = 2.006 s`` gives a value, then another."""
     reads, decimal_comma, unit, count = numbers
     if len(pieces) > _SIDES:
         return None
+    previous = None  # what the run before a step comes to, where it is arithmetic alone, and its label
     for start, end in zip(runs, [*runs[1:], len(pieces)], strict=True):
         run = pieces[start:end]
         values = [final] if end == len(pieces) else []
+        read_all = True
+        label = run[0] if len(run) > 1 and _QUANTITY.fullmatch(run[0]) else None  # g = 9.81: not 9.81 grams
         for side in reversed(run[:-1] if values else run):
-            read = reads(_spelled(side, decimal_comma, unit)[0]) if side else None
+            if side is run[0] and label is not None:
+                break
+            # a side of working may be a formula in names the problem gives values (2π√(l/g) = 2.006 s)
+            read = reads(_spelled(side, decimal_comma, unit)[0], working=True) if side else None
             reason = _REASON.split(side)[-1] if read is None and side and _REASON.search(side) else None
             if reason:  # 1 because 3 − 1 = 1: the reason's arithmetic is working too, and the first of it
-                read = reads(_spelled(reason, decimal_comma, unit)[0])
+                read = reads(_spelled(reason, decimal_comma, unit)[0], working=True)
                 if read is not None:
                     values.append(_last_side(read))
+                read_all = False
                 break
             if read is None:
+                read_all = False
                 break
             values.append(_last_side(read))
         if not all(_agree(value, values[0], count) for value in values[1:]):
             return " = ".join(run).rstrip(",;: ")  # 3·5 = 16, so 15: the comma is the step's
+        if previous is not None and values and label == previous[1] and not _agree(previous[0], values[0], count):
+            return typed or " = ".join(pieces)
+        previous = (values[0], label) if values and read_all else None
     return None
+
+
+def _steps_false(text: str, answer: ParsedAnswer, numbers: tuple) -> tuple:
+    """The note on a chain with a step that reads as typed (``2 hence 3 − 2 = 1``: the parser keeps what
+    follows the step, or takes the words before it for a name) where its runs do not come to one number
+    (:func:`_false_working`); none where they do, or no step stands in it."""
+    pieces, runs = _sides(text)
+    if len(runs) < 2:
+        return ()
+    false = _false_working(pieces, runs, _last_side(answer), numbers, text.strip())
+    return (("working_false_for_a_person", {"value": pieces[-1], "working": shown(false)}),) if false else ()
 
 
 # the word that gives a value its reason, whose arithmetic follows: 1 because 3 − 2 = 1, 1, since 3 − 2 = 1
@@ -765,6 +795,13 @@ _STATES_COUNT = re.compile(
 # coordinates named one by one after a count, in brackets or not: (θ and φ), θ₁, θ₂
 _LISTED_NAMES = re.compile(r"\s*(?:,|\band\b|&)\s*", re.I)
 _COORDINATE_NAME = re.compile(r"[^\W\d_][0-9₀-₉']*")
+# what a list of coordinates after a count may follow: what is counted, then a colon, a dash or a bracket, or
+# words that say the list names them (1 dof: θ and r; 2 degrees of freedom (θ₁, θ₂); 1, namely θ)
+_LIST_LEAD = re.compile(
+    r"\s*(?:(?:degrees?\s+of\s+freedom|freedoms?|dofs?|d\.o\.f\.|(?:generali[sz]ed\s+)?coordinates?)\s*)?"
+    r"(?:[:(\-–—]\s*)?(?:(?:namely|i\.e\.|viz\.?|that\s+is)\s*[:,]?\s*)?",
+    re.I,
+)
 # a count then what it counts, as a remark: 1 constraint, 5 free particles (not 1 degree of freedom)
 _COUNTS_THING = re.compile(r"\s*(?:[A-Za-z]{2,}\s+)?(?P<thing>[A-Za-z]{2,})\b")
 
@@ -839,11 +876,32 @@ def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
     found = _COUNTS_THING.match(rest)
     if found and found["thing"].lower() in _THINGS - _COORDINATES:
         return True
-    listed = _LISTED_NAMES.split(rest.strip(" .").removeprefix("(").removesuffix(")").strip())
-    if len(listed) > 1 and all(_COORDINATE_NAME.fullmatch(name) for name in listed):
-        return number.isdigit() and len(listed) != int(number)  # 1 (θ and φ): two coordinates named
+    listed = _names_listed(rest, names)
+    if listed:  # 1 (θ and φ), 1 dof: θ and r, 2 (θ): more or fewer coordinates named than counted
+        return number.isdigit() and len(listed) != int(number)
     counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
     return counted is not None and counted[1] and counted[0] != int(number)
+
+
+def _names_listed(rest: str, names: Collection[str]) -> list[str] | None:
+    """The coordinates a remark after a count lists, where it is such a list, perhaps after what is
+    counted and a colon or a bracket (``(θ and φ)``, ``dof: θ and r``, ``degrees of freedom (θ)``,
+    ``namely θ and r``); None where it holds anything else. A coordinate is named by a letter (θ, φ₁,
+    x') or by a name of the problem (theta)."""
+    inside = _LIST_LEAD.sub("", rest, count=1).strip(" .").removeprefix("(").removesuffix(")").strip()
+    listed = _LISTED_NAMES.split(inside) if inside else []
+    if not listed or not all(_COORDINATE_NAME.fullmatch(name) or _spelled_name(name, names) for name in listed):
+        return None
+    return listed
+
+
+def _spelled_name(name: str, names: Collection[str]) -> bool:
+    """Whether ``name`` is a coordinate spelt out: a name of the problem, or a Greek letter's (theta, theta_1, phi2)."""
+    found = _SPELLED_GREEK.fullmatch(name)
+    return name in names or (found is not None and found[1].lower() in GREEK_NAMES)
+
+
+_SPELLED_GREEK = re.compile(r"([A-Za-z]{2,})_?[0-9₀-₉]*")
 
 
 def _groups(text: str) -> list[str] | None:
