@@ -5041,6 +5041,10 @@ _ATWOOD_NAMED = {"coords": ["x"], "known": ["m1", "m2", "g"], "name": ["xddot", 
         ("−ẍ = (m1 − m2) g/(m1 + m2)", "not_equivalent", ("The overall sign is wrong.",)),
         ("g (m1 − m2)/(m1 + m2) = ẍ", "equivalent", ("Correct.",)),
         ("g (m2 − m1)/(m1 + m2) = ẍ", "not_equivalent", ("The overall sign is wrong.",)),
+        # the asked rate negated after its value: before, "An expression is asked for here"
+        ("(m2 − m1) g/(m1 + m2) = −ẍ", "equivalent", ("Correct.",)),
+        ("(m1 − m2) g/(m1 + m2) = −ẍ", "not_equivalent", ("The overall sign is wrong.",)),
+        ("(m2-m1) g/(m1+m2) = -xddot", "equivalent", ("Correct.",)),
         # another rate so is another quantity's value: for a person
         ("−ẋ = (m2 − m1) g/(m1 + m2)", "undecided",
          ("Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"

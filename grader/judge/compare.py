@@ -1328,12 +1328,13 @@ def _said_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tupl
 def _name_on_the_left(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``m l² sin²θ φ̇ = p_φ``: a quantity's value, then its name, read as ``p_φ = m l² sin²θ φ̇``
     where an expression is asked. The right side is a name the problem does not define, alone, or a
-    coordinate's rate (``… = ẍ``), and the left side is in the problem's names (else it is an equation
-    between two of the student's)."""
+    coordinate's rate (``… = ẍ``, or ``… = −ẍ``, left for :func:`_unwrap_named` to negate as ``−ẍ = …``),
+    and the left side is in the problem's names (else it is an equation between two of the student's)."""
     value = answer.value
     if spec.shape != "expression" or not isinstance(value, sympy.Eq):
         return answer
-    rate = isinstance(value.rhs, sympy.Derivative) and isinstance(value.rhs.expr, AppliedUndef)
+    coefficient, rest = value.rhs.as_coeff_Mul()
+    rate = coefficient in (1, -1) and isinstance(rest, sympy.Derivative) and isinstance(rest.expr, AppliedUndef)
     if not (value.rhs.is_Symbol or rate):
         return answer
     if value.rhs == ANSWER or (not rate and value.rhs.name in expected.names):
