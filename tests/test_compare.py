@@ -1157,6 +1157,16 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ = 0` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
       _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ,"))),
+    # with d for ∂, as typed: before, `:` was refused, the side ending at dF, read as a word
+    ("d/dt(dL/dxdot) - dL/dx = -dF/dxdot: m xddot + k x = -b xdot", "equivalent",
+     ("Correct.", _general_read_past("d/dt(dL/dxdot) - dL/dx = -dF/dxdot:"))),
+    ("d/dt(dL/dxdot) - dL/dx = -dF/dxdot: m xddot + k x = b xdot", "not_equivalent",
+     ("A term differs: the velocity-dependent term in ẋ has the wrong sign.",
+      _general_read_past("d/dt(dL/dxdot) - dL/dx = -dF/dxdot:"))),
+    ("d/dt(dL/dxdot) - dL/dx = dF/dxdot: m xddot + k x = -b xdot", "undecided",
+     ("Your answer says `d/dt(dL/dxdot) - dL/dx − dF/dxdot = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(dL/dxdot) - dL/dx = dF/dxdot:"))),
 )  # fmt: skip
 
 

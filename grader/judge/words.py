@@ -547,6 +547,12 @@ def euler_lagrange_then_formula(
     side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
     between: list[str] = []
     moved = moved_left(operator, side) if side != "0" else None
+    if moved is None and side != "0":
+        # = −dF/dẋ: Rayleigh's term written with d, whose dF reads as a word of prose and so ends the side early
+        punctuated = _stop(text, equals + 1, names, coords, stops=",;:\n", prose=False)
+        if punctuated is not None:
+            moved = moved_left(operator, text[equals + 1 : punctuated].strip())
+            stop = punctuated if moved is not None else stop
     if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, as = 0 with it on the left
         operator, side = moved, "0"
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
@@ -588,11 +594,15 @@ def _hands_over(between: list[str]) -> bool:
     return bool(between) and between[-1].lower() in _HANDS_OVER_TO_VALUE and not set(map(str.lower, between)) - _BETWEEN
 
 
-def _stop(text: str, start: int, names: Collection[str], coords: Collection[str], stops: str = ",;:") -> int | None:
+def _stop(
+    text: str, start: int, names: Collection[str], coords: Collection[str], stops: str = ",;:", *, prose: bool = True
+) -> int | None:
     """Where a side that starts at ``start`` ends: at its first of ``stops`` (``,``, ``;``, ``:``) or ``=``
-    outside brackets, or a word of prose there; None where it runs to the end."""
-    words = {found.start() for found in _WORD.finditer(text, start) if _is_word(found[0], names, coords)}
-    words |= {found.start() for found in _WORD.finditer(text, start) if found[0].lower() in IMPLYING_WORDS}
+    outside brackets, or (with ``prose``) a word of prose there; None where it runs to the end."""
+    words = set()
+    if prose:
+        words = {found.start() for found in _WORD.finditer(text, start) if _is_word(found[0], names, coords)}
+        words |= {found.start() for found in _WORD.finditer(text, start) if found[0].lower() in IMPLYING_WORDS}
     depth = 0
     for i in range(start, len(text)):
         character = text[i]
