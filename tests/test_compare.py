@@ -4507,10 +4507,16 @@ ZERO_DECIMAL_COMMA = (
 ARITHMETIC_DECIMAL_COMMA = (
     (PERIOD, "2π/√9,81", "equivalent", ("Correct.", "Read `9,81` as 9.81: a decimal comma.")),
     (PERIOD, "2π/√9,18", "not_equivalent", ("Not within the accepted tolerance.", _comma("9,18"))),
-    (PERIOD, "2π √(1,00/9,81) s", "equivalent", ("Correct.", _comma("1,00 and 9,81"))),
+    # two numbers, each in its own backticks: before, both in one pair and "a decimal comma"
+    (PERIOD, "2π √(1,00/9,81) s", "equivalent",
+     ("Correct.", "Read `1,00` and `9,81` as 1.00 and 9.81: decimal commas.")),
     (PERIOD, "2π √(1,00/9,81) ms", "not_equivalent",
-     ("Not within the accepted tolerance.", "Read `1,00 and 9,81` as 1.00 and 9.81: a decimal comma.",
+     ("Not within the accepted tolerance.", "Read `1,00` and `9,81` as 1.00 and 9.81: decimal commas.",
       "Read as 0.00200607 s.")),
+    (PERIOD, "2π √(1,00/9,81)/√1,00", "equivalent",
+     ("Correct.", "Read `1,00`, `9,81` and `1,00` as 1.00, 9.81 and 1.00: decimal commas.")),
+    (PERIOD, "2π √(1,00/9,18)/√1,00", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `1,00`, `9,18` and `1,00` as 1.00, 9.18 and 1.00: decimal commas.")),
     (PERIOD, "1/0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
     (PERIOD, "1/0,489", "not_equivalent", ("Not within the accepted tolerance.", _comma("0,489"))),
     (PERIOD, "2π/√9,810", "invalid", (_COMMA_REFUSED,)),  # 9810 in English

@@ -997,11 +997,27 @@ def _decimal_points_inside(text: str) -> tuple[str, tuple | None]:
     found = list(_DECIMAL_COMMA_INSIDE.finditer(text))
     if not found or len(found) != text.count(","):
         return text, None
-    typed = " and ".join(number[0] for number in found)
-    return _DECIMAL_COMMA_INSIDE.sub(r"\1.\2", text), (
-        "decimal_comma",
-        {"typed": typed, "number": typed.replace(",", ".")},
+    read = _DECIMAL_COMMA_INSIDE.sub(r"\1.\2", text)
+    if len(found) == 1:
+        return read, ("decimal_comma", {"typed": found[0][0], "number": found[0][0].replace(",", ".")})
+    typed = [number[0] for number in found]
+    return read, (
+        "decimal_commas",
+        {"typed": _listed_as_typed(typed), "numbers": _joined([number.replace(",", ".") for number in typed])},
     )
+
+
+def _listed_as_typed(numbers: list[str]) -> str:
+    """``1,00`` and ``9,81``, each set in backticks as a note repeats what was typed.
+
+    >>> _listed_as_typed(["1,00", "9,81", "2,5"])
+    '`1,00`, `9,81` and `2,5`'
+    """
+    return _joined([f"`{number}`" for number in numbers])
+
+
+def _joined(items: list[str]) -> str:
+    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} and {items[-1]}"
 
 
 def _number_in(piece: str, names: Collection[str]):
