@@ -4521,6 +4521,17 @@ ARITHMETIC_DECIMAL_COMMA = (
     (PERIOD, "1/0,489", "not_equivalent", ("Not within the accepted tolerance.", _comma("0,489"))),
     (PERIOD, "2π/√9,810", "invalid", (_COMMA_REFUSED,)),  # 9810 in English
     (PERIOD, "2π/√9,81, 3", "invalid", (_COMMA_REFUSED,)),  # a list
+    # three digits after a comma, where the same answer writes 9,81: a decimal comma too (before, refused)
+    (PERIOD, "T = 2π/√9,81 ≈ 2,006 s", "equivalent",
+     ("Correct.", "Read `2,006` as 2.006: a decimal comma.",
+      "Graded your final value, `2,006 s`; the working before it is not graded.")),
+    (PERIOD, "T = 2π/√9,81 ≈ 3,006 s", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `3,006` as 3.006: a decimal comma.",
+      "Graded your final value, `3,006 s`; your working, `T = 2π/√9,81 = 3,006 s`, does not hold.")),
+    (PERIOD, "2π √(1,000/9,81)", "equivalent",
+     ("Correct.", "Read `1,000` and `9,81` as 1.000 and 9.81: decimal commas.")),
+    (PERIOD, "2π √(1,000/9,810)", "invalid", (_COMMA_REFUSED,)),  # each may be thousands
+    (PERIOD, "2,006 s", "invalid", (_COMMA_REFUSED,)),  # alone: 2006 in English
 )  # fmt: skip
 
 
