@@ -1973,6 +1973,9 @@ MOTION_LEFT_OUT = (
 )
 
 
+_OTHER_LEFT_OUT = "The line that defines `{}` was not graded: L is what is asked for here."
+
+
 def _working(*names):
     if len(names) == 1:
         return f"The line that defines `{names[0]}` was read as your working: it is not graded."
@@ -2021,6 +2024,13 @@ def _working(*names):
         (L_PENDULUM, r"L = \frac12 m l^2 \dot\theta^2 + m g l \cos\theta \implies m l^2 \ddot\theta = -m g l \sin\theta"
          r" \Rightarrow \ddot\theta = -\frac{g}{l} \sin\theta", "lagrangian", "equivalent",
          (MOTION_LEFT_OUT.replace("equation", "equations").replace("was", "were"),)),
+        # a quantity of its own derived after a step: before, the momentum was graded as the Lagrangian, wrong
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ ⇒ p = m l² θ̇", "lagrangian", "equivalent",
+         (_OTHER_LEFT_OUT.format("p"),)),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ ⇒ p = m l² θ̇", "lagrangian", "not_equivalent",
+         (_OTHER_LEFT_OUT.format("p"),)),
+        (L_PENDULUM, "L = 1/2 m l^2 thetadot^2 + m g l cos(theta), hence p_theta = m l^2 thetadot", "lagrangian",
+         "equivalent", (_OTHER_LEFT_OUT.format("p_θ"),)),
     ],
 )  # fmt: skip
 def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):

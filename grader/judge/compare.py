@@ -1755,7 +1755,8 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     """``L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ`` (or ``⇒``) where a Lagrangian is asked:
     the parser keeps the step's conclusion, an equation of motion; read as the Lagrangian, then the
     equations it derives, which are left out and said so (:func:`_without_working`). ``answer`` where
-    the text is not ``L = …`` and then, after each step, an equation with an acceleration and no L."""
+    the text is not ``L = …`` and then, after each step, an equation with an acceleration or a quantity
+    named (``⇒ p = m l² θ̇``: :func:`_quantity_named`), and no L."""
     if spec.name != "lagrangian" or not answer.ok or answer.kind != "equation" or len(submitted) > _STEPS_LENGTH:
         return answer
     lines = _STEP.sub("\n", submitted)
@@ -1765,7 +1766,12 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     if not read.ok or read.kind != "equations" or read.value[0].lhs != _LAGRANGIAN:
         return answer
     derived = read.value[1:]
-    if any(item.has(_LAGRANGIAN) or not accelerations_in(item, expected) for item in derived):
+    # L = …, so p = m l² θ̇: a quantity of its own derived from L, left out as after a semicolon
+    if any(
+        item.has(_LAGRANGIAN)
+        or not (accelerations_in(item, expected) or _quantity_named(item, read.value, expected) is not None)
+        for item in derived
+    ):
         return answer
     return read
 
