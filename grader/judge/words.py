@@ -479,12 +479,25 @@ def _handing_over(text: str, start: int, stop: int, names, coords, lead: list[st
     else:
         between, after = _words_from(text, stop + (text[stop] in ",;:."), names, coords, handing=True)
         if between and not _hands_over(between):
-            return None  # …, not L = …: words that do not hand over to the value
+            # Let ω₀² = g/l. The frequency is ω = ω₀: a sentence of its own that names the value, as one alone
+            named = _sentence_naming(text, stop, names, coords) if text[stop] in ".;" else None
+            if named is None:
+                return None  # …, not L = …: words that do not hand over to the value
+            between, after = named
         handed = bool(between) or text[stop] == ":"
     if not is_prose(" ".join((*lead, *between)), names, doubt=True):
         return None
     said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=.")) if part)
     return re.sub(r"\s+", " ", said), after, handed
+
+
+def _sentence_naming(text: str, stop: int, names, coords) -> tuple[list[str], int] | None:
+    """The words of the sentence after ``stop`` that hand over to a value, as :func:`words_then_formula`
+    reads a sentence alone (``The frequency is ω = …``), and where the value starts; None where there is none."""
+    rest = text[stop + 1 :]
+    for words, formula in words_then_formula(rest, names, coords):
+        return _PROSE_WORD.findall(words), stop + 1 + rest.rfind(formula)
+    return None
 
 
 def _more_definitions(text: str, stop: int, names, coords) -> tuple[list[tuple[str, str]], int]:
