@@ -1167,6 +1167,33 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Your answer says `d/dt(dL/dxdot) - dL/dx − dF/dxdot = 0` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
       _general_read_past("d/dt(dL/dxdot) - dL/dx = dF/dxdot:"))),
+    # the generalized force written out, which must be the one the equation after it needs: before, `:` refused
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: m ẍ + k x + b ẋ = 0", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: m ẍ + k x = −b ẋ", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    ("∂L/∂x − d/dt(∂L/∂ẋ) = b ẋ: m ẍ + k x + b ẋ = 0", "equivalent",
+     ("Correct.", _general_read_past("∂L/∂x − d/dt(∂L/∂ẋ) = b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: m ẍ + k x − b ẋ = 0", "not_equivalent",
+     ("A term differs: the velocity-dependent term in ẋ has the wrong sign.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    # a force the equation after it does not need (of the wrong sign, twice as large): a person reads it
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ:"))),
+    ("∂L/∂x − d/dt(∂L/∂ẋ) = −b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `∂L/∂x − d/dt(∂L/∂ẋ) = −b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("∂L/∂x − d/dt(∂L/∂ẋ) = −b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −2 b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = −2 b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −2 b ẋ:"))),
+    ("d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ:"))),
 )  # fmt: skip
 
 

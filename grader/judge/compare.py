@@ -37,7 +37,7 @@ from grader.judge.chains import (
 from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
-from grader.judge.euler_lagrange import dissipative, euler_lagrange, from_a_lagrangian
+from grader.judge.euler_lagrange import dissipative, euler_lagrange, force_agrees, from_a_lagrangian
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression, same_values
 from grader.judge.feedback import say, shown
@@ -795,10 +795,16 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
     if "dt" not in submitted:
         return None  # as nearly every answer: no d/dt, no operator
     coords = expected.setting.coords
-    for words, operator, equation in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
+    for words, operator, force, equation in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
         judged = euler_lagrange(operator, coords, expected.names)
         if judged is False:
-            return re.sub(r"\s+", " ", operator) + " = 0"
+            return re.sub(r"\s+", " ", f"{operator} = {force or 0}")
+        if force:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: the force must be the one the equation after it needs
+            return (
+                None
+                if _force_agrees(operator, force, equation, expected)
+                else re.sub(r"\s+", " ", f"{operator} = {force}")
+            )
         if judged and words.endswith("=") and not dissipative(operator) and len(coords) == 1:
             # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0: a side no L gives, but the operator without
             # Rayleigh's term is said to give it
@@ -808,6 +814,25 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
                 return re.sub(r"\s+", " ", f"{operator} = {side}")
         return None
     return None
+
+
+def _force_agrees(operator: str, force: str, equation: str, expected: Expected) -> bool:
+    """Whether the generalized force an answer writes out for Lagrange's equation agrees with the one
+    equation of motion it then gives (:func:`~grader.judge.euler_lagrange.force_agrees`); not where
+    either cannot be read, or the problem has more than one coordinate: that is for a person."""
+    coords, names = expected.setting.coords, sorted(expected.names)
+    said = parse_answer(force, coords=coords, known=names)
+    motion = parse_answer(equation, coords=coords, known=names)
+    if len(coords) != 1 or not said.ok or said.kind != "expression" or not motion.ok or motion.kind != "equation":
+        return False
+    try:  # after the verdict, outside its time limit: the force is the student's, so bound the work on it
+        with time_limit(_FORCE_SECONDS):
+            return force_agrees(operator, said.value, motion.value.lhs - motion.value.rhs, coords[0])
+    except (CheckTimeout, *_CHECK_FAILURES):
+        return False
+
+
+_FORCE_SECONDS = 0.5
 
 
 # What a chain or its working may say its quantity is, wrongly, in words or before ⇒: L = T + V, L = K + U,
@@ -1854,7 +1879,7 @@ def _without_words(
             return after[0], (before, *after[1])
         if read.ok and not _undefined(read, names):
             return read, (before,)
-    for words, _, equation in euler_lagrange_then_formula(submitted, names, coords):
+    for words, _, _, equation in euler_lagrange_then_formula(submitted, names, coords):
         # Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …, the operator read past (compare judges it)
         read, after = _read_with_remark(equation, expected, names, deadline)
         if read.ok and read.kind == "equation":

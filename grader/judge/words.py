@@ -57,6 +57,8 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
+from sympy import Derivative
+
 from grader.judge.euler_lagrange import euler_lagrange, moved_left
 from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
@@ -528,10 +530,11 @@ def _more_definitions(text: str, stop: int, names, coords) -> tuple[list[tuple[s
 
 def euler_lagrange_then_formula(
     text: str, names: Collection[str], coords: Collection[str]
-) -> Iterator[tuple[str, str, str]]:
+) -> Iterator[tuple[str, str, str, str]]:
     """``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0``: the ways to read ``text`` as (all
-    before the equation, the Euler–Lagrange operator as typed, the equation it gives). Words that state
-    may begin it (``Applying``, ``Using``, ``From``…); after the operator's ``= 0``, a ``,``, ``;`` or
+    before the equation, the Euler–Lagrange operator as typed, the generalized force it is said to equal
+    where that is written out, ``−b ẋ``, else "", the equation it gives). Words that state
+    may begin it (``Applying``, ``Using``, ``From``…); after the operator's ``= 0`` (or ``= −b ẋ``), a ``,``, ``;`` or
     ``:``, or words that hand over (``we get``), lead to the equation; or the equation is what the
     operator comes to, after its ``=`` (``d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0``). The operator is any
     of Lagrange's shape (:func:`~grader.judge.euler_lagrange.euler_lagrange`): whether it is the true one
@@ -568,6 +571,9 @@ def euler_lagrange_then_formula(
             stop = punctuated if moved is not None else stop
     if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, as = 0 with it on the left
         operator, side = moved, "0"
+    force = ""
+    if side != "0" and stop is not None and text[stop] in ",;:\n" and _written_force(side, names, coords):
+        force, side = side, "0"  # = −b ẋ: the generalized force written out, which the caller judges
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
         after = equals + 1
     elif stop is None or text[stop] == "=":
@@ -579,7 +585,18 @@ def euler_lagrange_then_formula(
     equation = text[after:].strip(" ,;:")
     words = " ".join((*_PROSE_WORD.findall(text[:start]), *between))
     if equation and _first_equals(equation) is not None and (not words or is_prose(words, names, doubt=True)):
-        yield re.sub(r"\s+", " ", text[:after].strip()), operator, equation
+        yield re.sub(r"\s+", " ", text[:after].strip()), operator, force, equation
+
+
+def _written_force(side: str, names: Collection[str], coords: Collection[str]) -> bool:
+    """Whether ``side`` is a generalized force written out in the problem's names (``−b ẋ``), not its
+    name (``Q``, ``Q_x``) nor what the operator comes to (``m l² θ̈ + …``, which holds an acceleration)."""
+    read = parse_answer(side, coords=coords, known=names)
+    if not read.ok or read.kind != "expression" or read.value.is_Symbol:
+        return False
+    if {symbol.name for symbol in read.value.free_symbols} - {*names, "t"}:
+        return False
+    return not any(rate.derivative_count > 1 for rate in read.value.atoms(Derivative))
 
 
 def _words_from(
