@@ -137,7 +137,7 @@ def force_agrees(operator: str, force: sympy.Expr, motion: sympy.Expr, coordinat
         values = {name: sympy.Float(trial[number % len(trial)] + number / 10) for number, name in enumerate(names)}
         values |= {item: sympy.Float(trial[number % len(trial)]) for number, item in enumerate(rates_and_coordinate)}
         try:
-            value = complex(sympy.sympify(factor).xreplace(values).evalf(15))
+            value = complex(factor.xreplace(values).evalf(15))
         except (TypeError, ValueError, ArithmeticError):
             return False
         if not (value.real > 0 and abs(value.imag) < _NEAR_ZERO):
