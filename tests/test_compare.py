@@ -5109,6 +5109,8 @@ _ATWOOD_NAMED = {"coords": ["x"], "known": ["m1", "m2", "g"], "name": ["xddot", 
         ("(m2 − m1) g/(m1 + m2) = −ẍ", "equivalent", ("Correct.",)),
         ("(m1 − m2) g/(m1 + m2) = −ẍ", "not_equivalent", ("The overall sign is wrong.",)),
         ("(m2-m1) g/(m1+m2) = -xddot", "equivalent", ("Correct.",)),
+        ("(m2 − m1) g/(m1 + m2) = −a", "equivalent", ("Correct.",)),  # the asked quantity's other name, negated
+        ("(m1 − m2) g/(m1 + m2) = −a", "not_equivalent", ("The overall sign is wrong.",)),
         # another rate so is another quantity's value: for a person
         ("−ẋ = (m2 − m1) g/(m1 + m2)", "undecided",
          ("Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"

@@ -1360,9 +1360,9 @@ def _name_on_the_left(answer: ParsedAnswer, spec: Kind, expected: Expected) -> P
         return answer
     coefficient, rest = value.rhs.as_coeff_Mul()
     rate = coefficient in (1, -1) and isinstance(rest, sympy.Derivative) and isinstance(rest.expr, AppliedUndef)
-    if not (value.rhs.is_Symbol or rate):
+    if not (value.rhs.is_Symbol or rate or (coefficient == -1 and rest.is_Symbol)):
         return answer
-    if value.rhs == ANSWER or (not rate and value.rhs.name in expected.names):
+    if rest == ANSWER or (not rate and rest.name in expected.names):
         return answer
     if not value.lhs.free_symbols or any(symbol.name not in expected.names for symbol in value.lhs.free_symbols):
         return answer
