@@ -1162,6 +1162,43 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x − ∂F/∂ẋ = 0` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
       _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = ∂F/∂ẋ,"))),
+    # with d for ∂, as typed: before, `:` was refused, the side ending at dF, read as a word
+    ("d/dt(dL/dxdot) - dL/dx = -dF/dxdot: m xddot + k x = -b xdot", "equivalent",
+     ("Correct.", _general_read_past("d/dt(dL/dxdot) - dL/dx = -dF/dxdot:"))),
+    ("d/dt(dL/dxdot) - dL/dx = -dF/dxdot: m xddot + k x = b xdot", "not_equivalent",
+     ("A term differs: the velocity-dependent term in ẋ has the wrong sign.",
+      _general_read_past("d/dt(dL/dxdot) - dL/dx = -dF/dxdot:"))),
+    ("d/dt(dL/dxdot) - dL/dx = dF/dxdot: m xddot + k x = -b xdot", "undecided",
+     ("Your answer says `d/dt(dL/dxdot) - dL/dx − dF/dxdot = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(dL/dxdot) - dL/dx = dF/dxdot:"))),
+    # the generalized force written out, which must be the one the equation after it needs: before, `:` refused
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: m ẍ + k x + b ẋ = 0", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: m ẍ + k x = −b ẋ", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    ("∂L/∂x − d/dt(∂L/∂ẋ) = b ẋ: m ẍ + k x + b ẋ = 0", "equivalent",
+     ("Correct.", _general_read_past("∂L/∂x − d/dt(∂L/∂ẋ) = b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: m ẍ + k x − b ẋ = 0", "not_equivalent",
+     ("A term differs: the velocity-dependent term in ẋ has the wrong sign.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    # a force the equation after it does not need (of the wrong sign, twice as large): a person reads it
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ:"))),
+    ("∂L/∂x − d/dt(∂L/∂ẋ) = −b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `∂L/∂x − d/dt(∂L/∂ẋ) = −b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("∂L/∂x − d/dt(∂L/∂ẋ) = −b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −2 b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = −2 b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −2 b ẋ:"))),
+    ("d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ:"))),
 )  # fmt: skip
 
 
@@ -1968,6 +2005,9 @@ MOTION_LEFT_OUT = (
 )
 
 
+_OTHER_LEFT_OUT = "The line that defines `{}` was not graded: L is what is asked for here."
+
+
 def _working(*names):
     if len(names) == 1:
         return f"The line that defines `{names[0]}` was read as your working: it is not graded."
@@ -2016,6 +2056,13 @@ def _working(*names):
         (L_PENDULUM, r"L = \frac12 m l^2 \dot\theta^2 + m g l \cos\theta \implies m l^2 \ddot\theta = -m g l \sin\theta"
          r" \Rightarrow \ddot\theta = -\frac{g}{l} \sin\theta", "lagrangian", "equivalent",
          (MOTION_LEFT_OUT.replace("equation", "equations").replace("was", "were"),)),
+        # a quantity of its own derived after a step: before, the momentum was graded as the Lagrangian, wrong
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ ⇒ p = m l² θ̇", "lagrangian", "equivalent",
+         (_OTHER_LEFT_OUT.format("p"),)),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ ⇒ p = m l² θ̇", "lagrangian", "not_equivalent",
+         (_OTHER_LEFT_OUT.format("p"),)),
+        (L_PENDULUM, "L = 1/2 m l^2 thetadot^2 + m g l cos(theta), hence p_theta = m l^2 thetadot", "lagrangian",
+         "equivalent", (_OTHER_LEFT_OUT.format("p_θ"),)),
     ],
 )  # fmt: skip
 def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):
@@ -4506,14 +4553,31 @@ ZERO_DECIMAL_COMMA = (
 ARITHMETIC_DECIMAL_COMMA = (
     (PERIOD, "2π/√9,81", "equivalent", ("Correct.", "Read `9,81` as 9.81: a decimal comma.")),
     (PERIOD, "2π/√9,18", "not_equivalent", ("Not within the accepted tolerance.", _comma("9,18"))),
-    (PERIOD, "2π √(1,00/9,81) s", "equivalent", ("Correct.", _comma("1,00 and 9,81"))),
+    # two numbers, each in its own backticks: before, both in one pair and "a decimal comma"
+    (PERIOD, "2π √(1,00/9,81) s", "equivalent",
+     ("Correct.", "Read `1,00` and `9,81` as 1.00 and 9.81: decimal commas.")),
     (PERIOD, "2π √(1,00/9,81) ms", "not_equivalent",
-     ("Not within the accepted tolerance.", "Read `1,00 and 9,81` as 1.00 and 9.81: a decimal comma.",
+     ("Not within the accepted tolerance.", "Read `1,00` and `9,81` as 1.00 and 9.81: decimal commas.",
       "Read as 0.00200607 s.")),
+    (PERIOD, "2π √(1,00/9,81)/√1,00", "equivalent",
+     ("Correct.", "Read `1,00`, `9,81` and `1,00` as 1.00, 9.81 and 1.00: decimal commas.")),
+    (PERIOD, "2π √(1,00/9,18)/√1,00", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `1,00`, `9,18` and `1,00` as 1.00, 9.18 and 1.00: decimal commas.")),
     (PERIOD, "1/0,498", "equivalent", ("Correct.", "Read `0,498` as 0.498: a decimal comma.")),
     (PERIOD, "1/0,489", "not_equivalent", ("Not within the accepted tolerance.", _comma("0,489"))),
     (PERIOD, "2π/√9,810", "invalid", (_COMMA_REFUSED,)),  # 9810 in English
     (PERIOD, "2π/√9,81, 3", "invalid", (_COMMA_REFUSED,)),  # a list
+    # three digits after a comma, where the same answer writes 9,81: a decimal comma too (before, refused)
+    (PERIOD, "T = 2π/√9,81 ≈ 2,006 s", "equivalent",
+     ("Correct.", "Read `2,006` as 2.006: a decimal comma.",
+      "Graded your final value, `2,006 s`; the working before it is not graded.")),
+    (PERIOD, "T = 2π/√9,81 ≈ 3,006 s", "not_equivalent",
+     ("Not within the accepted tolerance.", "Read `3,006` as 3.006: a decimal comma.",
+      "Graded your final value, `3,006 s`; your working, `T = 2π/√9,81 = 3,006 s`, does not hold.")),
+    (PERIOD, "2π √(1,000/9,81)", "equivalent",
+     ("Correct.", "Read `1,000` and `9,81` as 1.000 and 9.81: decimal commas.")),
+    (PERIOD, "2π √(1,000/9,810)", "invalid", (_COMMA_REFUSED,)),  # each may be thousands
+    (PERIOD, "2,006 s", "invalid", (_COMMA_REFUSED,)),  # alone: 2006 in English
 )  # fmt: skip
 
 
@@ -5050,6 +5114,12 @@ _ATWOOD_NAMED = {"coords": ["x"], "known": ["m1", "m2", "g"], "name": ["xddot", 
         ("−ẍ = (m1 − m2) g/(m1 + m2)", "not_equivalent", ("The overall sign is wrong.",)),
         ("g (m1 − m2)/(m1 + m2) = ẍ", "equivalent", ("Correct.",)),
         ("g (m2 − m1)/(m1 + m2) = ẍ", "not_equivalent", ("The overall sign is wrong.",)),
+        # the asked rate negated after its value: before, "An expression is asked for here"
+        ("(m2 − m1) g/(m1 + m2) = −ẍ", "equivalent", ("Correct.",)),
+        ("(m1 − m2) g/(m1 + m2) = −ẍ", "not_equivalent", ("The overall sign is wrong.",)),
+        ("(m2-m1) g/(m1+m2) = -xddot", "equivalent", ("Correct.",)),
+        ("(m2 − m1) g/(m1 + m2) = −a", "equivalent", ("Correct.",)),  # the asked quantity's other name, negated
+        ("(m1 − m2) g/(m1 + m2) = −a", "not_equivalent", ("The overall sign is wrong.",)),
         # another rate so is another quantity's value: for a person
         ("−ẋ = (m2 − m1) g/(m1 + m2)", "undecided",
          ("Your answer is labelled ẋ, but the quantity asked for is ẍ. Read as ẍ, it is right; a person will check"
@@ -5623,6 +5693,16 @@ DEFINITION_BEFORE = (
     ("sqrt(g/l)", "Let ω₀² = l/g, then ω = ω₀", PENDULUM, "not_equivalent",
      ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
       _defined_before("Let … then", "ω₀² = l/g"))),
+    # a sentence of its own that names the value, as one alone is read: before, `Let`, `The`… undefined
+    ("sqrt(g/l)", "Let ω₀² = g/l. The frequency is ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("Let … The frequency is", "ω₀² = g/l"))),
+    ("sqrt(g/l)", "Let ω₀² = l/g. The frequency is ω = ω₀", PENDULUM, "not_equivalent",
+     ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
+      _defined_before("Let … The frequency is", "ω₀² = l/g"))),
+    ("sqrt(g/l)", "Let ω₀² = g/l; the frequency is ω = −ω₀", PENDULUM, "not_equivalent",
+     ("The overall sign is wrong.", _defined_before("Let … the frequency is", "ω₀² = g/l"))),
+    ("sqrt(g/l)", "Let ω₀² = g/l; the frequency is ω = ω₀", PENDULUM, "equivalent",
+     ("Correct.", _defined_before("Let … the frequency is", "ω₀² = g/l"))),
     (HOOP_H, f"Let {_HOOP_P}. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
      ("Correct.", _defined_before("Let … Then", _HOOP_P))),
     (HOOP_H, f"Let p_θ = m R θ̇. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "not_equivalent",

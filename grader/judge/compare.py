@@ -37,7 +37,7 @@ from grader.judge.chains import (
 from grader.judge.choice import check_choice
 from grader.judge.deadline import CheckTimeout, time_limit
 from grader.judge.diagnose import TERM_KEYS, in_sentence
-from grader.judge.euler_lagrange import dissipative, euler_lagrange, from_a_lagrangian
+from grader.judge.euler_lagrange import dissipative, euler_lagrange, force_agrees, from_a_lagrangian
 from grader.judge.expected import Expected, Outcome, prepare
 from grader.judge.expression import check_expression, same_values
 from grader.judge.feedback import say, shown
@@ -889,10 +889,16 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
     if "dt" not in submitted:
         return None  # as nearly every answer: no d/dt, no operator
     coords = expected.setting.coords
-    for words, operator, equation in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
+    for words, operator, force, equation in euler_lagrange_then_formula(submitted, sorted(expected.names), coords):
         judged = euler_lagrange(operator, coords, expected.names)
         if judged is False:
-            return re.sub(r"\s+", " ", operator) + " = 0"
+            return re.sub(r"\s+", " ", f"{operator} = {force or 0}")
+        if force:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: the force must be the one the equation after it needs
+            return (
+                None
+                if _force_agrees(operator, force, equation, expected)
+                else re.sub(r"\s+", " ", f"{operator} = {force}")
+            )
         if judged and words.endswith("=") and not dissipative(operator) and len(coords) == 1:
             # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0: a side no L gives, but the operator without
             # Rayleigh's term is said to give it
@@ -902,6 +908,25 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
                 return re.sub(r"\s+", " ", f"{operator} = {side}")
         return None
     return None
+
+
+def _force_agrees(operator: str, force: str, equation: str, expected: Expected) -> bool:
+    """Whether the generalized force an answer writes out for Lagrange's equation agrees with the one
+    equation of motion it then gives (:func:`~grader.judge.euler_lagrange.force_agrees`); not where
+    either cannot be read, or the problem has more than one coordinate: that is for a person."""
+    coords, names = expected.setting.coords, sorted(expected.names)
+    said = parse_answer(force, coords=coords, known=names)
+    motion = parse_answer(equation, coords=coords, known=names)
+    if len(coords) != 1 or not said.ok or said.kind != "expression" or not motion.ok or motion.kind != "equation":
+        return False
+    try:  # after the verdict, outside its time limit: the force is the student's, so bound the work on it
+        with time_limit(_FORCE_SECONDS):
+            return force_agrees(operator, said.value, motion.value.lhs - motion.value.rhs, coords[0])
+    except (CheckTimeout, *_CHECK_FAILURES):
+        return False
+
+
+_FORCE_SECONDS = 0.5
 
 
 # What a chain or its working may say its quantity is, wrongly, in words or before ⇒: L = T + V, L = K + U,
@@ -1547,15 +1572,16 @@ def _said_constant(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tupl
 def _name_on_the_left(answer: ParsedAnswer, spec: Kind, expected: Expected) -> ParsedAnswer:
     """``m l² sin²θ φ̇ = p_φ``: a quantity's value, then its name, read as ``p_φ = m l² sin²θ φ̇``
     where an expression is asked. The right side is a name the problem does not define, alone, or a
-    coordinate's rate (``… = ẍ``), and the left side is in the problem's names (else it is an equation
-    between two of the student's)."""
+    coordinate's rate (``… = ẍ``, or ``… = −ẍ``, left for :func:`_unwrap_named` to negate as ``−ẍ = …``),
+    and the left side is in the problem's names (else it is an equation between two of the student's)."""
     value = answer.value
     if spec.shape != "expression" or not isinstance(value, sympy.Eq):
         return answer
-    rate = isinstance(value.rhs, sympy.Derivative) and isinstance(value.rhs.expr, AppliedUndef)
-    if not (value.rhs.is_Symbol or rate):
+    coefficient, rest = value.rhs.as_coeff_Mul()
+    rate = coefficient in (1, -1) and isinstance(rest, sympy.Derivative) and isinstance(rest.expr, AppliedUndef)
+    if not (value.rhs.is_Symbol or rate or (coefficient == -1 and rest.is_Symbol)):
         return answer
-    if value.rhs == ANSWER or (not rate and value.rhs.name in expected.names):
+    if rest == ANSWER or (not rate and rest.name in expected.names):
         return answer
     if not value.lhs.free_symbols or any(symbol.name not in expected.names for symbol in value.lhs.free_symbols):
         return answer
@@ -1980,7 +2006,8 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     """``L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ`` (or ``⇒``) where a Lagrangian is asked:
     the parser keeps the step's conclusion, an equation of motion; read as the Lagrangian, then the
     equations it derives, which are left out and said so (:func:`_without_working`). ``answer`` where
-    the text is not ``L = …`` and then, after each step, an equation with an acceleration and no L."""
+    the text is not ``L = …`` and then, after each step, an equation with an acceleration or a quantity
+    named (``⇒ p = m l² θ̇``: :func:`_quantity_named`), and no L."""
     if spec.name != "lagrangian" or not answer.ok or answer.kind != "equation" or len(submitted) > _STEPS_LENGTH:
         return answer
     lines = _STEP.sub("\n", submitted)
@@ -1990,7 +2017,12 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     if not read.ok or read.kind != "equations" or read.value[0].lhs != _LAGRANGIAN:
         return answer
     derived = read.value[1:]
-    if any(item.has(_LAGRANGIAN) or not accelerations_in(item, expected) for item in derived):
+    # L = …, so p = m l² θ̇: a quantity of its own derived from L, left out as after a semicolon
+    if any(
+        item.has(_LAGRANGIAN)
+        or not (accelerations_in(item, expected) or _quantity_named(item, read.value, expected) is not None)
+        for item in derived
+    ):
         return answer
     return read
 
@@ -2073,7 +2105,7 @@ def _without_words(
             return after[0], (before, *after[1])
         if read.ok and not _undefined(read, names):
             return read, (before,)
-    for words, _, equation in euler_lagrange_then_formula(submitted, names, coords):
+    for words, _, _, equation in euler_lagrange_then_formula(submitted, names, coords):
         # Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + …, the operator read past (compare judges it)
         read, after = _read_with_remark(equation, expected, names, deadline)
         if read.ok and read.kind == "equation":

@@ -5,6 +5,7 @@ Contents:
     moved_left(operator, side)            ``… = −∂F/∂ẋ`` as the operator ``… + ∂F/∂ẋ``, its side moved left
     dissipative(operator)                 whether an operator holds Rayleigh's ``∂F/∂q̇``
     from_a_lagrangian(side, q)            whether a side the operator is said to equal can be what it gives
+    force_agrees(operator, force, …)      whether ``operator = −b ẋ`` agrees with the equation said to follow
 
 ``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0``: the operator says how the equation was
 found, and is read past before it (:func:`grader.judge.words.euler_lagrange_then_formula`). Only the true
@@ -26,7 +27,7 @@ from grader.parse.messages import ParseFailure
 from grader.parse.names import canonical_name
 from grader.parse.tokens import Token, tokenize
 
-__all__ = ["dissipative", "euler_lagrange", "from_a_lagrangian", "moved_left"]
+__all__ = ["dissipative", "euler_lagrange", "force_agrees", "from_a_lagrangian", "moved_left"]
 
 _LENGTH = 200  # characters: an operator is short; anything longer is not read as one
 _DISSIPATION = frozenset({"F", "R", "D"})  # Rayleigh's function, as texts name it (TeX's \mathcal{F} is F)
@@ -101,6 +102,47 @@ def dissipative(operator: str) -> bool:
     except ParseFailure:
         return False
     return any(not term.rate and term.top in _DISSIPATION for term in terms or ())
+
+
+def force_agrees(operator: str, force: sympy.Expr, motion: sympy.Expr, coordinate: str) -> bool:
+    """Whether ``operator = force`` (``d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ``, the generalized force written out) and
+    the equation ``motion = 0`` it is said to give (left side minus right, as typed) agree: the operator
+    then comes to ``motion`` plus the force (its sign as the operator's), which must be what some L gives
+    (:func:`from_a_lagrangian`), with a positive factor of q̈, as a kinetic energy gives. The scale is the
+    equation's as typed: ``m ẍ + k x + b ẋ = 0`` with ``= −b ẋ`` agree, ``= +b ẋ`` and ``= −2 b ẋ`` do not.
+
+    >>> t, m, k, b = sympy.symbols("t m k b")
+    >>> x = sympy.Function("x")(t)
+    >>> motion = m * x.diff(t, 2) + b * x.diff(t) + k * x
+    >>> force_agrees("d/dt(∂L/∂ẋ) − ∂L/∂x", -b * x.diff(t), motion, "x")
+    True
+    >>> force_agrees("d/dt(∂L/∂ẋ) − ∂L/∂x", b * x.diff(t), motion, "x")
+    False
+    """
+    try:
+        terms = _terms(tokenize(operator)) if len(operator) <= _LENGTH else None
+    except ParseFailure:
+        return False
+    rates = [term for term in terms or () if term.rate]
+    if len(rates) != 1 or dissipative(operator):
+        return False  # Rayleigh's term and a force besides: for a person
+    comes_to = motion + rates[0].sign * force
+    if from_a_lagrangian(comes_to, coordinate) is not True:
+        return False
+    (function,) = comes_to.atoms(sympy.core.function.AppliedUndef)
+    factor = comes_to.diff(function.diff(function.args[0], 2))
+    names = sorted(factor.free_symbols, key=str)
+    rates_and_coordinate = sorted(factor.atoms(sympy.Derivative, sympy.core.function.AppliedUndef), key=str)
+    for trial in _TRIALS:
+        values = {name: sympy.Float(trial[number % len(trial)] + number / 10) for number, name in enumerate(names)}
+        values |= {item: sympy.Float(trial[number % len(trial)]) for number, item in enumerate(rates_and_coordinate)}
+        try:
+            value = complex(factor.xreplace(values).evalf(15))
+        except (TypeError, ValueError, ArithmeticError):
+            return False
+        if not (value.real > 0 and abs(value.imag) < _NEAR_ZERO):
+            return False
+    return True
 
 
 # values the names take where a condition is tested: two sets, of no special value (not 0 or 1)

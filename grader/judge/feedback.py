@@ -37,6 +37,7 @@ FEEDBACK: dict[str, str] = {
     "units_argument": "In your {where}, `{function}` is applied to a quantity measured in {units}:"
     " the argument of {function} must be a pure number.",
     "decimal_comma": "Read `{typed}` as {number}: a decimal comma.",
+    "decimal_commas": "Read {typed} as {numbers}: decimal commas.",
     "other_unit": "Not within the accepted tolerance. Is your number in {unit}? The answer is asked in {wanted}.",
     "unit_read": "Read as {value} {unit}.",
     "unit_read_cycles": "Read as {value} {unit}: a cycle is 2π rad, so 1 Hz is 2π rad/s (ω = 2πf).",

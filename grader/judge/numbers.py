@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Collection
+from enum import IntEnum
 from functools import lru_cache
 
 import sympy
@@ -46,6 +47,31 @@ _DECIMAL_COMMA = re.compile(
 
 # the same inside arithmetic (2π/√9,81), not in a name (m1,5) nor after a point (1.2,5)
 _DECIMAL_COMMA_INSIDE = re.compile(r"(?<![\w.,])([0-9]+),([0-9]{1,2}|[0-9]{4,}|(?<=(?<![0-9])0,)[0-9]{3})(?![\w,.])")
+# where the answer writes a decimal comma that is plainly one (2π/√9,81 ≈ 2,006 s), its 2,006 is one too: no
+# one writes 9,81 for 9.81 and 2,006 for 2006 in the same line
+_ANY_DECIMAL_COMMA = re.compile(r"\s*([+-]?[0-9]+),([0-9]+)(?![0-9,])(.*)", re.DOTALL)
+_ANY_DECIMAL_COMMA_INSIDE = re.compile(r"(?<![\w.,])([0-9]+),([0-9]+)(?![\w,.])")
+
+
+class _Commas(IntEnum):
+    """How a part reads a comma between digits: not at all, as a decimal comma where no thousands
+    separator can be, or as one before three digits too, where the answer writes another plainly."""
+
+    NONE = 0
+    DECIMAL = 1
+    EVERY = 2
+
+
+def _commas(text: str, decimal_comma: bool) -> _Commas:
+    """:class:`_Commas` for ``text``: EVERY where every comma in it stands between digits and one of them
+    can be no thousands separator (9,81)."""
+    if not decimal_comma:
+        return _Commas.NONE
+    plain = len(text) < _LENGTH and _DECIMAL_COMMA_INSIDE.search(text)
+    if plain and len(_ANY_DECIMAL_COMMA_INSIDE.findall(text)) == text.count(","):
+        return _Commas.EVERY
+    return _Commas.DECIMAL
+
 
 # ``2.006 sec``, ``2006 msec``, ``2.006 seconds``: after a number, at the end, the word for seconds, not the secant
 _SEC = re.compile(r"([0-9.]\s*)(m?)(?:secs?|seconds?)\.?\s*$")
@@ -134,6 +160,7 @@ def read_number(
     """
     # a side of working is read again: for the final value, for working that does not hold, and beside words
     reads = lru_cache(maxsize=None)(reads)
+    decimal_comma = max(decimal_comma, _commas(text, decimal_comma))  # EVERY, as decided for the whole answer
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
     )
@@ -1007,7 +1034,7 @@ _GIVEN = re.compile(r"\s*,?\s*\b(?:where|with|since|for|given|using|as)\s+(?=[^\
 def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
     notes = ()
     if decimal_comma:
-        text, comma = _decimal_point(text)
+        text, comma = _decimal_point(text, every=decimal_comma == _Commas.EVERY)
         notes = (comma,) if comma else ()
     if unit and len(text) < _LENGTH:
         # TeX's unit after a number: 2.006~\text{s}, 2.006\,\mathrm{ s}, 2006\,\mu\mathrm{s}; the tie ~ is
@@ -1032,13 +1059,13 @@ def _tex_unit(found: re.Match) -> str:
 _TIE = re.compile(r"(?<=[0-9.])~(?=\s*[A-Za-z\\])")
 
 
-def _decimal_point(text: str) -> tuple[str, tuple | None]:
+def _decimal_point(text: str, *, every: bool = False) -> tuple[str, tuple | None]:
     """A number written with a decimal comma, as much of Europe writes it, with a point; and the
     note that says so. Three digits after the comma may be thousands: those are left alone, and the
-    parser asks for a point."""
-    match = _DECIMAL_COMMA.fullmatch(text) if len(text) < _LENGTH else None
+    parser asks for a point; but not with ``every`` (see :func:`_commas`)."""
+    match = (_ANY_DECIMAL_COMMA if every else _DECIMAL_COMMA).fullmatch(text) if len(text) < _LENGTH else None
     if match is None:
-        return _decimal_points_inside(text)
+        return _decimal_points_inside(text, every=every)
     if "," in match.group(3):
         return text, None
     whole, fraction, rest = match.groups()
@@ -1046,20 +1073,37 @@ def _decimal_point(text: str) -> tuple[str, tuple | None]:
     return f"{number}{rest}", ("decimal_comma", {"typed": f"{whole},{fraction}", "number": number})
 
 
-def _decimal_points_inside(text: str) -> tuple[str, tuple | None]:
+def _decimal_points_inside(text: str, *, every: bool = False) -> tuple[str, tuple | None]:
     """``2π/√9,81``: numbers with a decimal comma inside the arithmetic, each read as
     :func:`_decimal_point` reads one alone, with the note that says so; ``text`` as typed where any
     of its commas is none (``T = 2,01 s, f = …`` lists; ``2π/√9,810`` may be 9810)."""
     if "," not in text or len(text) >= _LENGTH:
         return text, None
-    found = list(_DECIMAL_COMMA_INSIDE.finditer(text))
+    pattern = _ANY_DECIMAL_COMMA_INSIDE if every else _DECIMAL_COMMA_INSIDE
+    found = list(pattern.finditer(text))
     if not found or len(found) != text.count(","):
         return text, None
-    typed = " and ".join(number[0] for number in found)
-    return _DECIMAL_COMMA_INSIDE.sub(r"\1.\2", text), (
-        "decimal_comma",
-        {"typed": typed, "number": typed.replace(",", ".")},
+    read = pattern.sub(r"\1.\2", text)
+    if len(found) == 1:
+        return read, ("decimal_comma", {"typed": found[0][0], "number": found[0][0].replace(",", ".")})
+    typed = [number[0] for number in found]
+    return read, (
+        "decimal_commas",
+        {"typed": _listed_as_typed(typed), "numbers": _joined([number.replace(",", ".") for number in typed])},
     )
+
+
+def _listed_as_typed(numbers: list[str]) -> str:
+    """``1,00`` and ``9,81``, each set in backticks as a note repeats what was typed.
+
+    >>> _listed_as_typed(["1,00", "9,81", "2,5"])
+    '`1,00`, `9,81` and `2,5`'
+    """
+    return _joined([f"`{number}`" for number in numbers])
+
+
+def _joined(items: list[str]) -> str:
+    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} and {items[-1]}"
 
 
 def _number_in(piece: str, names: Collection[str]):

@@ -57,6 +57,8 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
+from sympy import Derivative
+
 from grader.judge.euler_lagrange import euler_lagrange, moved_left
 from grader.judge.units import SI_UNITS
 from grader.parse import parse_answer
@@ -479,12 +481,25 @@ def _handing_over(text: str, start: int, stop: int, names, coords, lead: list[st
     else:
         between, after = _words_from(text, stop + (text[stop] in ",;:."), names, coords, handing=True)
         if between and not _hands_over(between):
-            return None  # …, not L = …: words that do not hand over to the value
+            # Let ω₀² = g/l. The frequency is ω = ω₀: a sentence of its own that names the value, as one alone
+            named = _sentence_naming(text, stop, names, coords) if text[stop] in ".;" else None
+            if named is None:
+                return None  # …, not L = …: words that do not hand over to the value
+            between, after = named
         handed = bool(between) or text[stop] == ":"
     if not is_prose(" ".join((*lead, *between)), names, doubt=True):
         return None
     said = " … ".join(part for part in (text[:start].strip(), text[stop:after].strip(" ,;:=.")) if part)
     return re.sub(r"\s+", " ", said), after, handed
+
+
+def _sentence_naming(text: str, stop: int, names, coords) -> tuple[list[str], int] | None:
+    """The words of the sentence after ``stop`` that hand over to a value, as :func:`words_then_formula`
+    reads a sentence alone (``The frequency is ω = …``), and where the value starts; None where there is none."""
+    rest = text[stop + 1 :]
+    for words, formula in words_then_formula(rest, names, coords):
+        return _PROSE_WORD.findall(words), stop + 1 + rest.rfind(formula)
+    return None
 
 
 def _more_definitions(text: str, stop: int, names, coords) -> tuple[list[tuple[str, str]], int]:
@@ -515,10 +530,11 @@ def _more_definitions(text: str, stop: int, names, coords) -> tuple[list[tuple[s
 
 def euler_lagrange_then_formula(
     text: str, names: Collection[str], coords: Collection[str]
-) -> Iterator[tuple[str, str, str]]:
+) -> Iterator[tuple[str, str, str, str]]:
     """``Applying d/dt(∂L/∂θ̇) − ∂L/∂θ = 0: m l² θ̈ + m g l sin θ = 0``: the ways to read ``text`` as (all
-    before the equation, the Euler–Lagrange operator as typed, the equation it gives). Words that state
-    may begin it (``Applying``, ``Using``, ``From``…); after the operator's ``= 0``, a ``,``, ``;`` or
+    before the equation, the Euler–Lagrange operator as typed, the generalized force it is said to equal
+    where that is written out, ``−b ẋ``, else "", the equation it gives). Words that state
+    may begin it (``Applying``, ``Using``, ``From``…); after the operator's ``= 0`` (or ``= −b ẋ``), a ``,``, ``;`` or
     ``:``, or words that hand over (``we get``), lead to the equation; or the equation is what the
     operator comes to, after its ``=`` (``d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0``). The operator is any
     of Lagrange's shape (:func:`~grader.judge.euler_lagrange.euler_lagrange`): whether it is the true one
@@ -547,8 +563,17 @@ def euler_lagrange_then_formula(
     side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
     between: list[str] = []
     moved = moved_left(operator, side) if side != "0" else None
+    if moved is None and side != "0":
+        # = −dF/dẋ: Rayleigh's term written with d, whose dF reads as a word of prose and so ends the side early
+        punctuated = _stop(text, equals + 1, names, coords, stops=",;:\n", prose=False)
+        if punctuated is not None:
+            moved = moved_left(operator, text[equals + 1 : punctuated].strip())
+            stop = punctuated if moved is not None else stop
     if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, as = 0 with it on the left
         operator, side = moved, "0"
+    force = ""
+    if side != "0" and stop is not None and text[stop] in ",;:\n" and _written_force(side, names, coords):
+        force, side = side, "0"  # = −b ẋ: the generalized force written out, which the caller judges
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
         after = equals + 1
     elif stop is None or text[stop] == "=":
@@ -560,7 +585,18 @@ def euler_lagrange_then_formula(
     equation = text[after:].strip(" ,;:")
     words = " ".join((*_PROSE_WORD.findall(text[:start]), *between))
     if equation and _first_equals(equation) is not None and (not words or is_prose(words, names, doubt=True)):
-        yield re.sub(r"\s+", " ", text[:after].strip()), operator, equation
+        yield re.sub(r"\s+", " ", text[:after].strip()), operator, force, equation
+
+
+def _written_force(side: str, names: Collection[str], coords: Collection[str]) -> bool:
+    """Whether ``side`` is a generalized force written out in the problem's names (``−b ẋ``), not its
+    name (``Q``, ``Q_x``) nor what the operator comes to (``m l² θ̈ + …``, which holds an acceleration)."""
+    read = parse_answer(side, coords=coords, known=names)
+    if not read.ok or read.kind != "expression" or read.value.is_Symbol:
+        return False
+    if {symbol.name for symbol in read.value.free_symbols} - {*names, "t"}:
+        return False
+    return not any(rate.derivative_count > 1 for rate in read.value.atoms(Derivative))
 
 
 def _words_from(
@@ -588,11 +624,15 @@ def _hands_over(between: list[str]) -> bool:
     return bool(between) and between[-1].lower() in _HANDS_OVER_TO_VALUE and not set(map(str.lower, between)) - _BETWEEN
 
 
-def _stop(text: str, start: int, names: Collection[str], coords: Collection[str], stops: str = ",;:") -> int | None:
+def _stop(
+    text: str, start: int, names: Collection[str], coords: Collection[str], stops: str = ",;:", *, prose: bool = True
+) -> int | None:
     """Where a side that starts at ``start`` ends: at its first of ``stops`` (``,``, ``;``, ``:``) or ``=``
-    outside brackets, or a word of prose there; None where it runs to the end."""
-    words = {found.start() for found in _WORD.finditer(text, start) if _is_word(found[0], names, coords)}
-    words |= {found.start() for found in _WORD.finditer(text, start) if found[0].lower() in IMPLYING_WORDS}
+    outside brackets, or (with ``prose``) a word of prose there; None where it runs to the end."""
+    words = set()
+    if prose:
+        words = {found.start() for found in _WORD.finditer(text, start) if _is_word(found[0], names, coords)}
+        words |= {found.start() for found in _WORD.finditer(text, start) if found[0].lower() in IMPLYING_WORDS}
     depth = 0
     for i in range(start, len(text)):
         character = text[i]
