@@ -2010,9 +2010,9 @@ _OTHER_LEFT_OUT = "The line that defines `{}` was not graded: L is what is asked
 
 def _working(*names):
     if len(names) == 1:
-        return f"The line that defines `{names[0]}` was read as your working: it is not graded."
+        return f"The line that defines `{names[0]}` was read as your working, not as your answer."
     listed = " and ".join(f"`{name}`" for name in names)
-    return f"The lines that define {listed} were read as your working: they are not graded."
+    return f"The lines that define {listed} were read as your working, not as your answer."
 
 
 @pytest.mark.parametrize(
@@ -5673,7 +5673,7 @@ DEFINITION_BEFORE = (
     # a name the formula does not use is working, not put in place: the note says so, and not that it was
     (EOM_PENDULUM, "With L = ½ m l² θ̇² + m g l cos θ: m l² θ̈ = −m g l sin θ", {**PENDULUM, "kind": "equation"},
      "equivalent",
-     ("Correct.", "The line that defines `L` was read as your working: it is not graded.")),
+     ("Correct.", "The line that defines `L` was read as your working, not as your answer.")),
     # the name defined by its square, as a frequency is: before, `Using` and ω₀ undefined, and wrong
     ("sqrt(g/l)", "Using ω₀² = g/l, ω = ω₀", PENDULUM, "equivalent",
      ("Correct.", _defined_before("Using", "ω₀² = g/l"))),

@@ -334,7 +334,7 @@ def test_a_count_whose_words_say_another_goes_to_a_person(expected, submitted, s
 
 
 ENERGIES = "Your working gives T and V, but T − V with them is not the value your answer gives L."
-WORKING_READ = "The lines that define `T` and `V` were read as your working: they are not graded."
+WORKING_READ = "The lines that define `T` and `V` were read as your working, not as your answer."
 
 ENERGIES_WORKED = [
     # (submitted, status, feedback): the energies, then a Lagrangian their difference is not; the lines of
@@ -418,8 +418,17 @@ EOM_DOUBLE = (
 L_DOUBLE_WRONG = L_DOUBLE.replace("1/2 (m1 + m2) l1^2", "1/2 m1 l1^2")
 DISAGREES = "but Lagrange's equation with {} does not give the equation of motion your answer gives. Your equation"
 FOR_A_PERSON = " was graded and is right; a person will check this answer."
-L_READ = "The line that defines `L` was read as your working: it is not graded."
-L_AND_F_READ = "The lines that define `F` and `L` were read as your working: they are not graded."
+DISAGREE = "but Lagrange's equations with it do not give the equations of motion your answer gives."
+FOR_A_PERSON_ALL = " Your equations were graded and are right; a person will check this answer."
+SPHERE = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
+EOM_SPHERICAL = "l θ̈ − l sin θ cos θ φ̇² + g sin θ = 0; sin²θ φ̈ + 2 sin θ cos θ θ̇ φ̇ = 0"
+L_DOUBLE_NO_CROSS = (
+    "1/2 m1 l1^2 theta1dot^2 + 1/2 m2 l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2 + m1 g l1 cos(theta1)"
+    " + m2 g l1 cos(theta1) + m2 g l2 cos(theta2)"
+)
+L_UNFOLLOWED = "sqrt(1 + θ̇₁² + θ̇₂² + θ̇₁ θ̇₂ cos(θ₁ − θ₂))^(3/2) log(2 + cos θ₁)"
+L_READ = "The line that defines `L` was read as your working, not as your answer."
+L_AND_F_READ = "The lines that define `F` and `L` were read as your working, not as your answer."
 
 LAGRANGIAN_IN_THE_WORKING = [
     # (expected, submitted, setting, kind, status, feedback): working that states a Lagrangian (or T and V, or
@@ -432,7 +441,26 @@ LAGRANGIAN_IN_THE_WORKING = [
     (EOM_PENDULUM, f"T = 1/2 m l^2 thetadot^2; V = m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation",
      "undecided", (f"Your working gives T − V, {DISAGREES.format('it')}{FOR_A_PERSON}", WORKING_READ)),
     (EOM_DOUBLE, f"L = {L_DOUBLE_WRONG}; {EOM_DOUBLE}", DOUBLE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREE}{FOR_A_PERSON_ALL}", L_READ)),
+    (EOM_SPHERICAL, f"L = ½ m l² (θ̇² + φ̇²) + m g l cos θ; {EOM_SPHERICAL}", SPHERE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREE}{FOR_A_PERSON_ALL}", L_READ)),
+    (EOM_SPHERICAL, f"L = m g l cos θ; {EOM_SPHERICAL}", SPHERE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREE}{FOR_A_PERSON_ALL}", L_READ)),
+    (EOM_HOOP, "L = ½ m R² θ̇² + m g R cos θ; R θ̈ = R ω² sin θ cos θ − g sin θ", HOOP, "equation", "undecided",
      (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    # the same after `so`, `therefore` or ⇒, where the parser keeps only a derivation's conclusion (probe-k);
+    # an L and two equations run past the 400 characters a Lagrangian part reads again after a step
+    (EOM_SPHERICAL, f"L = ½ m l² (θ̇² + φ̇²) + m g l cos θ, so {EOM_SPHERICAL}", SPHERE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREE}{FOR_A_PERSON_ALL}", L_READ)),
+    (EOM_DOUBLE, f"L = {L_DOUBLE_NO_CROSS}, therefore {EOM_DOUBLE}", DOUBLE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREE}{FOR_A_PERSON_ALL}", L_READ)),
+    (EOM_DOUBLE, f"L = {L_UNFOLLOWED}; {EOM_DOUBLE}", DOUBLE, "equations", "undecided",
+     (f"Your working gives L, {DISAGREE}{FOR_A_PERSON_ALL}", L_READ)),
+    # an L whose equation cannot be compared with the answer's (|θ| has no derivative at 0): not taken on
+    # trust either (before, the answer was right)
+    (EOM_PENDULUM, f"L = {L_PENDULUM} + m g l |theta|; {EOM_PENDULUM}", PENDULUM, "equation", "undecided",
+     ("Your working gives L, but your equation could not be checked against Lagrange's equation with it. Your"
+      f" equation{FOR_A_PERSON}", L_READ)),
     (EOM_DAMPED, f"L = m xdot^2 + 1/2 k x^2; {EOM_DAMPED}", DAMPED, "equation", "undecided",
      (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
     (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; F = b xdot^2; {EOM_DAMPED}", DAMPED, "equation", "undecided",
@@ -453,6 +481,11 @@ LAGRANGIAN_IN_THE_WORKING = [
     (EOM_PENDULUM, f"T = 1/2 m l^2 thetadot^2; V = -m g l cos(theta); {EOM_PENDULUM}", PENDULUM, "equation",
      "equivalent", ("Correct.", WORKING_READ)),
     (EOM_DOUBLE, f"L = {L_DOUBLE}; {EOM_DOUBLE}", DOUBLE, "equations", "equivalent", ("Correct.", L_READ)),
+    (EOM_DOUBLE, f"L = {L_DOUBLE}, so {EOM_DOUBLE}", DOUBLE, "equations", "equivalent", ("Correct.", L_READ)),
+    (EOM_SPHERICAL, f"L = m l² (θ̇² + sin²θ φ̇²) + 2 m g l cos θ, so {EOM_SPHERICAL}", SPHERE, "equations",
+     "equivalent", ("Correct.", L_READ)),
+    (EOM_HOOP, "L = ½ m R² (θ̇² + ω² sin²θ) + m g R cos θ ⇒ m R² θ̈ = m R² ω² sin θ cos θ − m g R sin θ ⇒ R θ̈ ="
+     " R ω² sin θ cos θ − g sin θ", HOOP, "equation", "equivalent", ("Correct.", L_READ)),
     (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent", ("Correct.", L_READ)),
     (EOM_DAMPED, f"L = m xdot^2 - k x^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent", ("Correct.", L_READ)),
     (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; F = 1/2 b xdot^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent",
@@ -535,16 +568,19 @@ MOMENTUM_SPHERICAL = {**SPHERICAL, "name": "p_phi"}
 DERIVED = (
     "with it is not the value your answer gives. Its value was graded and is right; a person will check this answer."
 )
-SPHERICAL_L_READ = "The line that defines `L` was read as your working: it is not graded."
+SPHERICAL_L_READ = "The line that defines `L` was read as your working, not as your answer."
 
 Q_R = "m g cos(theta) - k (r - l0)"
 FORCES = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_r"}
-V_READ = "The line that defines `V` was read as your working: it is not graded."
+V_READ = "The line that defines `V` was read as your working, not as your answer."
 
 DERIVED_FROM_L = [
     # (expected, submitted, setting, status, feedback): working that states L, then the momentum or the
     # Hamiltonian asked for, which that L does not give; or V, then a generalized force (before, right)
     (P_PHI, f"L = {L_SPHERICAL_WRONG}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "undecided",
+     (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
+    # its ∂L/∂φ̇ said and worked out in a chain (probe-k)
+    (P_PHI, "L = ½ m l² φ̇², p_φ = ∂L/∂φ̇ = m l² sin²θ φ̇", MOMENTUM_SPHERICAL, "undecided",
      (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
     (H_SPHERICAL, f"L = {L_SPHERICAL_WRONG}; H = {H_SPHERICAL}", SPHERICAL, "undecided",
      (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
@@ -581,11 +617,16 @@ PREMISES = [
      (f"Your answer says `m l^2 thetaddot = m g l sin(theta)` {PREMISE}",)),
     (EOM_PENDULUM, "m l^2 thetaddot - m g l sin(theta) = 0, so thetaddot + (g/l) sin(theta) = 0", "undecided",
      (f"Your answer says `m l^2 thetaddot - m g l sin(theta) = 0` {PREMISE}",)),
-    (EOM_PENDULUM, f"{L_WRONG} ⇒ {EOM_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG}` {PREMISE}",)),
-    (EOM_PENDULUM, f"{L_WRONG}, so {EOM_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG}` {PREMISE}",)),
+    # an L: working, which must give the equation, as after a semicolon
+    (EOM_PENDULUM, f"{L_WRONG} ⇒ {EOM_PENDULUM}", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_PENDULUM, f"{L_WRONG}, so {EOM_PENDULUM}", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    (EOM_PENDULUM, f"{L_WRONG} ⇒ m l^2 thetaddot = -m g l sin(theta) ⇒ thetaddot = -(g/l) sin(theta)", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
     # a premise that gives it, or the full form before the small-angle one asked for: as before
     (EOM_PENDULUM, "m l thetaddot = -m g sin(theta) ⇒ thetaddot = -(g/l) sin(theta)", "equivalent", ("Correct.",)),
-    (EOM_PENDULUM, f"L = {L_PENDULUM} ⇒ {EOM_PENDULUM}", "equivalent", ("Correct.",)),
+    (EOM_PENDULUM, f"L = {L_PENDULUM} ⇒ {EOM_PENDULUM}", "equivalent", ("Correct.", L_READ)),
     ("thetaddot = -(g/l) theta", "thetaddot = -(g/l) sin(theta) ⇒ thetaddot = -(g/l) theta", "equivalent",
      ("Correct.",)),
 ]  # fmt: skip

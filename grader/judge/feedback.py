@@ -49,7 +49,7 @@ FEEDBACK: dict[str, str] = {
     " {them} in the problem's coordinates. A person will check this answer.",
     "motion_left_out": "The equation{s} of motion after your Lagrangian {were} not graded: the Lagrangian is what is"
     " asked for here.",
-    "working_left_out": "The {lines} {names} {were} read as your working: {they} not graded.",
+    "working_left_out": "The {lines} {names} {were} read as your working, not as your answer.",
     "lines_as_chain": "Your {count} lines, each `{label} = …`, were read as one chain, {label} = … = …: its last"
     " side was graded.",
     "lines_as_one_chain": "Your {count} lines, each `{label} = …`, were read as one chain, {label} = … = …, as if"
@@ -103,11 +103,16 @@ FEEDBACK: dict[str, str] = {
     " the value your answer gives {label}. Its value was graded and is right; a person will check this answer.",
     "energies_disagree": "Your working gives {kinetic} and {potential}, but {sum} with them is not the value your"
     " answer gives {label}.",
-    "lagrangian_disagrees_for_a_person": "Your working gives {label}, but Lagrange's equation with {it} does not"
-    " give the equation of motion your answer gives. Your equation was graded and is right; a person will check"
-    " this answer.",
-    "lagrangian_disagrees": "Your working gives {label}, but Lagrange's equation with {it} does not give a right"
-    " equation of motion either.",
+    "lagrangian_disagrees_for_a_person": "Your working gives {label}, but Lagrange's {equations} with {it} {does}"
+    " not give the {equations} of motion your answer gives. Your {equations} {were} graded and {are} right; a"
+    " person will check this answer.",
+    "lagrangian_disagrees": "Your working gives {label}, but Lagrange's {equations} with {it} {does} not give a"
+    " right {equations} of motion either.",
+    "lagrangian_unchecked_for_a_person": "Your working gives {label}, but your {equations} could not be checked"
+    " against Lagrange's {equations} with {it}. Your {equations} {were} graded and {are} right; a person will"
+    " check this answer.",
+    "lagrangian_unchecked": "Your working gives {label}, but your {equations} could not be checked against"
+    " Lagrange's {equations} with {it}.",
     "derived_disagrees_for_a_person": "Your working gives {label}, but {quantity} with it is not the value your answer"
     " gives. Its value was graded and is right; a person will check this answer.",
     "derived_disagrees": "Your working gives {label}, but {quantity} with it is not right either.",
