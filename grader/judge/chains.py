@@ -7,7 +7,6 @@ Contents:
     partials_read(text)    a chain whose steps write out a partial derivative (``H = θ̇ ∂L/∂θ̇ − L = …``)
     without_dashes(text)   lines that each start with a dash, without it
     ONE_NAME               a name alone: no product, no call
-    MOMENTUM_DEFINED       the name the parser gives ∂L/∂φ̇, and the coordinate in it
 
 Text in, text out: what each piece means is for ``grader.judge.compare`` to judge.
 """
@@ -18,10 +17,9 @@ import re
 from collections.abc import Callable
 
 from grader.parse import LIMITS, parse_answer
-from grader.parse.names import canonical_name, is_arbitrary_constant, unicode_name
+from grader.parse.names import canonical_name, is_arbitrary_constant, split_quotient, unicode_name
 
 __all__ = [
-    "MOMENTUM_DEFINED",
     "ONE_NAME",
     "answer_lines",
     "chain_sides",
@@ -195,10 +193,10 @@ def _momentum_named(found: re.Match, named: dict[str, str]) -> str:
     read = parse_answer(f"{found[0]} = 0")
     if not read.ok or read.kind != "equation" or not read.value.lhs.is_Symbol:
         return found[0]
-    momentum = MOMENTUM_DEFINED.fullmatch(read.value.lhs.name)
-    if not momentum:
+    quotient = split_quotient(read.value.lhs.name)
+    if not (quotient and quotient.top == "L" and quotient.dotted):
         return found[0]
-    name = f" p_{{{momentum[1].replace('_', '')}}} "  # θ₁'s p_{theta1}, read in TeX too
+    name = f" p_{{{quotient.by.replace('_', '')}}} "  # θ₁'s p_{theta1}, read in TeX too
     named[name] = found[0]
     return name
 
@@ -213,6 +211,3 @@ _MOMENTUM_QUOTIENT = re.compile(
     r"∂\s*L\s*/\s*∂\s*(?:\\dot\s*(?:\{[^{}]{1,20}\}|\\?[A-Za-z]+)|[^\s=+\-−*/·⋅()\[\]{}]{1,20})"
     r"|\\frac\s*\{\s*\\partial\s*L\s*\}\s*\{\s*\\partial\s*(?:[^{}]|\{[^{}]*\}){1,30}\}"
 )
-
-
-MOMENTUM_DEFINED = re.compile(r"dL_d(\w+?)_?dot")  # the name ∂L/∂φ̇ is read as

@@ -26,7 +26,6 @@ from sympy.core.function import AppliedUndef
 
 from grader.errors import AuthorError
 from grader.judge.chains import (
-    MOMENTUM_DEFINED,
     ONE_NAME,
     answer_lines,
     chain_sides,
@@ -90,7 +89,7 @@ from grader.parse import (
     within_diff_budget,
 )
 from grader.parse.messages import listed
-from grader.parse.names import canonical_name, is_arbitrary_constant, split_derivative, unicode_name
+from grader.parse.names import canonical_name, is_arbitrary_constant, split_derivative, split_quotient, unicode_name
 from grader.parse.readback import to_text
 
 __all__ = ["DEFAULT_TIMEOUT", "KINDS", "READINGS_FOR_A_PERSON", "ROUNDED", "Kind", "compare"]
@@ -977,23 +976,27 @@ def _definition_judged(label, side, expected: Expected, given: tuple = ()) -> bo
         written_out = _sum_written_out(side, lagrangian, expected) if name == "H" and side.has(lagrangian) else None
         return written_out if written_out is not None else _legendre_judged(name, side, expected, given)
     force = re.fullmatch(r"Q_?([A-Za-z]\w*)", name)
-    if force is not None:  # Q_r = −∂V/∂r; ∂V/∂r, or ∂V/∂θ for Q_r, is wrong
-        coefficient, quotient = side.as_coeff_Mul()
-        gradient = re.fullmatch(r"d[VU]_d(\w+)", quotient.name) if quotient.is_Symbol else None
-        if gradient is None or coefficient not in (1, -1):
-            return None
-        return coefficient == -1 and gradient[1].replace("_", "") == force[1].replace("_", "")
-    momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
     coefficient, quotient = side.as_coeff_Mul()
-    derivative = re.fullmatch(r"d([LTVU])_d(\w+)", quotient.name) if quotient.is_Symbol else None
+    derivative = split_quotient(quotient.name) if quotient.is_Symbol else None
+    if derivative is not None and derivative.top not in "LTVU":
+        derivative = None  # ∂F/∂ẋ, Rayleigh's: no momentum, no force
+    if force is not None:  # Q_r = −∂V/∂r; ∂V/∂r, ∂V/∂ṙ, or ∂V/∂θ for Q_r, is wrong
+        if derivative is None or derivative.top not in "VU" or coefficient not in (1, -1):
+            return None
+        return coefficient == -1 and not derivative.dotted and _same_name(derivative.by, force[1])
+    momentum = re.fullmatch(r"p_?([A-Za-z]\w*)", name)
     momenta = {sympy.Symbol(canonical_name(f"p_{q}")) for q in expected.setting.coords}
     if momentum and label in momenta and side.free_symbols and side.free_symbols <= momenta:
         return side == label  # p_φ = 2 ∂L/∂φ̇, its ∂L/∂φ̇ read as p_φ (see partials_read): not p_φ
     if not momentum or not derivative:
         return None
-    wanted = momentum[1].replace("_", "") + "dot"  # p_θ₁ is ∂L/∂θ̇₁: dL_dtheta_1dot
-    # −∂L/∂φ̇ and ∂V/∂φ̇ (zero: V has no velocity in it) are no momentum; ∂T/∂φ̇ is, as V has none
-    return coefficient == 1 and derivative[1] in "LT" and derivative[2].replace("_", "") == wanted
+    # p_θ₁ is ∂L/∂θ̇₁; −∂L/∂φ̇ and ∂V/∂φ̇ (zero: V has no velocity in it) are no momentum; ∂T/∂φ̇ is, as V has none
+    return coefficient == 1 and derivative.top in "LT" and derivative.dotted and _same_name(derivative.by, momentum[1])
+
+
+def _same_name(typed: str, other: str) -> bool:
+    """Whether two spellings of a name are one, with or without their ``_``: theta_1 and theta1."""
+    return typed.replace("_", "") == other.replace("_", "")
 
 
 def _legendre_judged(name: str, side, expected: Expected, given: tuple) -> bool | None:
@@ -1415,8 +1418,9 @@ def _asked_line(items, expected: Expected) -> int | None:
 def _is_asked(label: str, names: tuple) -> bool:
     """Whether a label names the asked quantity: one of ``names``, spelt with or without its ``_``
     (pφ for p_φ), its stem (p for p_φ), or ∂L/∂φ̇ for p_φ, by its definition."""
-    definition = MOMENTUM_DEFINED.fullmatch(label)
-    same = {label.replace("_", ""), f"p{definition[1]}" if definition else None}
+    definition = split_quotient(label)
+    momentum = definition.by if definition and definition.top == "L" and definition.dotted else None
+    same = {label.replace("_", ""), f"p{momentum}" if momentum else None}
     return bool(same & {name.replace("_", "") for name in names}) or label in {name.split("_")[0] for name in names}
 
 
@@ -1672,8 +1676,8 @@ def _force_named(side) -> str | None:
     """``Q_θ`` for the left side ``−∂V/∂θ`` (or ``−∂U/∂θ``), the generalized force as the prompts define
     it (``Q_j = −∂V/∂q_j``); None for any other side."""
     coefficient, quotient = side.as_coeff_Mul()
-    found = re.fullmatch(r"d[VU]_d(\w+)", quotient.name) if coefficient == -1 and quotient.is_Symbol else None
-    return canonical_name(f"Q_{found[1]}") if found else None
+    found = split_quotient(quotient.name) if coefficient == -1 and quotient.is_Symbol else None
+    return canonical_name(f"Q_{found.by}") if found and found.top in "VU" and not found.dotted else None
 
 
 def _rates_named(names: tuple, expected: Expected) -> list[tuple[str, int]]:

@@ -10,6 +10,7 @@ Contents:
     canonical_name(raw)            the one spelling of a name (``theta1`` → ``theta_1``)
     split_derivative(name)         ``theta1dot`` → (``theta_1``, 1)
     split_prefixed_derivative(name)  ``dtheta1`` → (``theta_1``, 1)
+    Quotient, split_quotient(name) ``dL_dphidot`` → (``L``, ``phi``, dotted): ∂L/∂φ̇ as the grammar names it
     is_arbitrary_constant(name)    ``C``, ``C_1``, ``const``: a name for any constant
     stand_in(name)                 ``w_0`` → ``omega_0``: ASCII letters typed for a Greek one
     unicode_name(name)             ``theta_1`` → ``θ₁``, for reading an answer back
@@ -26,6 +27,7 @@ from __future__ import annotations
 import re
 import unicodedata
 from functools import lru_cache
+from typing import NamedTuple
 
 __all__ = [
     "CONSTANT_WORDS",
@@ -37,11 +39,13 @@ __all__ = [
     "SUBSCRIPT_DIGITS",
     "SUBSCRIPT_LETTERS",
     "SUPERSCRIPTS",
+    "Quotient",
     "canonical_name",
     "function_name",
     "is_arbitrary_constant",
     "split_derivative",
     "split_prefixed_derivative",
+    "split_quotient",
     "stand_in",
     "superscript",
     "unicode_name",
@@ -242,6 +246,26 @@ _GLUED_GREEK = re.compile(
 _QUOTIENT = re.compile(r"d([A-Za-z])_d([A-Za-z]\w*?)(_?dot)?")
 
 
+class Quotient(NamedTuple):
+    """A partial derivative the grammar reads as one name: ∂``top``/∂``by``, or ∂``top``/∂(``by``)˙."""
+
+    top: str  # what is differentiated: L, T, V, U, F
+    by: str  # the coordinate, as the name was spelt: theta_1 or theta1
+    dotted: bool  # by its velocity
+
+
+def split_quotient(name: str) -> Quotient | None:
+    """The parts of a partial derivative's name (see :func:`unicode_name`); None for any other name.
+
+    >>> split_quotient("dL_dtheta_1dot"), split_quotient("dV_dr")
+    (Quotient(top='L', by='theta_1', dotted=True), Quotient(top='V', by='r', dotted=False))
+    >>> split_quotient("dx"), split_quotient("p_theta")
+    (None, None)
+    """
+    found = _QUOTIENT.fullmatch(name)
+    return Quotient(found[1], found[2], bool(found[3])) if found else None
+
+
 def unicode_name(name: str, dots: int = 0) -> str:
     """A canonical name as a student would write it by hand, in Unicode.
 
@@ -255,9 +279,9 @@ def unicode_name(name: str, dots: int = 0) -> str:
     >>> unicode_name("dV_dtheta"), unicode_name("dL_dphidot"), unicode_name("dF_dxdot")
     ('∂V/∂θ', '∂L/∂φ̇', '∂F/∂ẋ')
     """
-    quotient = _QUOTIENT.fullmatch(name)
+    quotient = split_quotient(name)
     if quotient:
-        return f"∂{unicode_name(quotient[1])}/∂{unicode_name(quotient[2], 1 if quotient[3] else 0)}"
+        return f"∂{unicode_name(quotient.top)}/∂{unicode_name(quotient.by, int(quotient.dotted))}"
     base, _, sub = name.partition("_")
     glued = None if base in GREEK_NAMES else _GLUED_GREEK.fullmatch(base)
     text = glued["head"] + GREEK_NAMES[glued["greek"]] if glued else GREEK_NAMES.get(base, base)
