@@ -1261,7 +1261,9 @@ def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, 
         else:
             typed = [sympy.Eq(setting.as_typed(e), 0, evaluate=False) for e in equations]
             given = ParsedAnswer(answer.text, typed[0] if len(typed) == 1 else tuple(typed), _SHAPES[len(typed) > 1])
-            agrees = spec.check(expected, given, deadline).status != "not_equivalent"
+            judged = spec.check(expected, given, deadline)
+            # L = ½ m l² θ̇² + m g l cos θ; θ̈ = −(g/l) θ: the full equation, linearized after, is a derivation
+            agrees = judged.status != "not_equivalent" or judged.key in _FULL_FORMS
     except _CHECK_FAILURES:
         return ()
     details = {"label": label, "it": "them" if friction else "it"}
