@@ -1199,6 +1199,16 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Your answer says `d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
       _general_read_past("d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ:"))),
+    # the right equation divided by m, or negated, after the right force: the part's own equation fixes the
+    # scale the force is read at (before, for a person); a force of the wrong sign still goes to one
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: ẍ + (b/m) ẋ + (k/m) x = 0", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: −m ẍ − k x − b ẋ = 0", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ: ẍ + (b/m) ẋ + (k/m) x = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ:"))),
 )  # fmt: skip
 
 

@@ -912,16 +912,23 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
 
 def _force_agrees(operator: str, force: str, equation: str, expected: Expected) -> bool:
     """Whether the generalized force an answer writes out for Lagrange's equation agrees with the one
-    equation of motion it then gives (:func:`~grader.judge.euler_lagrange.force_agrees`); not where
+    equation of motion it then gives (:func:`~grader.judge.euler_lagrange.force_agrees`), at that equation's
+    scale or at the part's own equation's, which the answer's was judged to be a multiple of; not where
     either cannot be read, or the problem has more than one coordinate: that is for a person."""
     coords, names = expected.setting.coords, sorted(expected.names)
     said = parse_answer(force, coords=coords, known=names)
     motion = parse_answer(equation, coords=coords, known=names)
     if len(coords) != 1 or not said.ok or said.kind != "expression" or not motion.ok or motion.kind != "equation":
         return False
+    (reference,) = expected.value if isinstance(expected.value, tuple) else (expected.value,)
+    reference = reference.lhs - reference.rhs if isinstance(reference, sympy.Eq) else reference
     try:  # after the verdict, outside its time limit: the force is the student's, so bound the work on it
         with time_limit(_FORCE_SECONDS):
-            return force_agrees(operator, said.value, motion.value.lhs - motion.value.rhs, coords[0])
+            if force_agrees(operator, said.value, motion.value.lhs - motion.value.rhs, coords[0]):
+                return True
+            # = −b ẋ: ẍ + (b/m) ẋ + (k/m) x = 0: the right equation divided by m, which fixes no scale of
+            # L, and so none of its force; the part's own equation, of the same motion, fixes one
+            return force_agrees(operator, said.value, expected.setting.as_typed(reference), coords[0])
     except (CheckTimeout, *_CHECK_FAILURES):
         return False
 
