@@ -2133,8 +2133,28 @@ def _without_words(
             if not _uses_defined(formula, definition, coords, names):
                 return _unused_definition(read, words, definition, formula, expected, names, deadline)
             said = {"words": shown(words), "definition": definition}
-            return read, ((_words_note("definition_before", words, expected), said),)
+            return _asked_put_in(read, expected), ((_words_note("definition_before", words, expected), said),)
     return without if without is not None else (answer, ())
+
+
+def _asked_put_in(read: ParsedAnswer, expected: Expected) -> ParsedAnswer:
+    """``Let ω₀² = g/l. The frequency is f = 2 ω₀``, read as ``f = 2 ω₀, where ω₀² = g/l``: a sentence that
+    defines the asked quantity, then hands over to the value of another. The value handed over to is the
+    answer, with the definitions put in (f = 2 √(g/l)), as for a name of the student's own; left as lines,
+    the definition of ω₀ would be graded, and the value the answer gives not at all. ``read`` where the
+    value is labelled with the asked quantity (ω = ω₀) or the problem's own name, or a definition is no
+    plain one."""
+    if read.kind != "equations":
+        return read
+    formula, *definitions = read.value
+    asked, label = expected.option("name") or (), formula.lhs
+    if not label.is_Symbol or label.name in expected.names or _is_asked(label.name, asked):
+        return read
+    found = [_definition(item, list(read.value), expected) for item in definitions]
+    if None in found or not any(_is_asked(name.name, asked) for name, _ in found):
+        return read
+    value = formula.rhs.xreplace(dict(found))
+    return ParsedAnswer(read.text, sympy.Eq(label, value, evaluate=False), "equation")
 
 
 def _unused_definition(
