@@ -1205,6 +1205,13 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
     ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: −m ẍ − k x − b ẋ = 0", "equivalent",
      ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    # the force, or Rayleigh's term, before a step ⇒ to the equation: before, the side ran on past the step, and
+    # the operator was said to equal all of it (`… = −b ẋ ⇒ m ẍ + k x + b ẋ`), for a person
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ ⇒ m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ ⇒ m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ ⇒ m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",)),
     ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ: ẍ + (b/m) ẋ + (k/m) x = 0", "undecided",
      ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
