@@ -1199,6 +1199,23 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Your answer says `d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
       _general_read_past("d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ:"))),
+    # the right equation divided by m, or negated, after the right force: the part's own equation fixes the
+    # scale the force is read at (before, for a person); a force of the wrong sign still goes to one
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: ẍ + (b/m) ẋ + (k/m) x = 0", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ: −m ẍ − k x − b ẋ = 0", "equivalent",
+     ("Correct.", _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ:"))),
+    # the force, or Rayleigh's term, before a step ⇒ to the equation: before, the side ran on past the step, and
+    # the operator was said to equal all of it (`… = −b ẋ ⇒ m ẍ + k x + b ẋ`), for a person
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ ⇒ m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ ⇒ m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ ⇒ m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ: ẍ + (b/m) ẋ + (k/m) x = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ:"))),
 )  # fmt: skip
 
 
@@ -5703,6 +5720,20 @@ DEFINITION_BEFORE = (
      ("The overall sign is wrong.", _defined_before("Let … the frequency is", "ω₀² = g/l"))),
     ("sqrt(g/l)", "Let ω₀² = g/l; the frequency is ω = ω₀", PENDULUM, "equivalent",
      ("Correct.", _defined_before("Let … the frequency is", "ω₀² = g/l"))),
+    # the asked quantity defined, then another's value handed over to: that value is the answer, the definition
+    # put in (before, the definition of ω₀ was graded, and f = 2 ω₀ left out, right)
+    ("sqrt(g/l)", "Let ω₀² = g/l. The frequency is f = 2 ω₀", _OMEGA, "not_equivalent",
+     ("Your answer is off by a constant factor: missing a factor 1/2?",
+      _defined_before("Let … The frequency is", "ω₀² = g/l"), "Your answer is labelled f, but the quantity asked for"
+      " is ω.")),
+    ("sqrt(g/l)", "With ω₀² = g/l: f = 2 ω₀", _OMEGA, "not_equivalent",
+     ("Your answer is off by a constant factor: missing a factor 1/2?", _defined_before("With", "ω₀² = g/l"),
+      "Your answer is labelled f, but the quantity asked for is ω.")),
+    ("sqrt(g/l)", "Let ω₀² = g/l. The frequency is ω = ω₀", _OMEGA, "equivalent",
+     ("Correct.", _defined_before("Let … The frequency is", "ω₀² = g/l"))),
+    ("sqrt(g/l)", "Let ω₀² = g/l. The frequency is f = ω₀", _OMEGA, "undecided",
+     ("Your answer is labelled f, but the quantity asked for is ω. Read as ω, it is right; a person will check"
+      " which you meant.", _defined_before("Let … The frequency is", "ω₀² = g/l"))),
     (HOOP_H, f"Let {_HOOP_P}. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
      ("Correct.", _defined_before("Let … Then", _HOOP_P))),
     (HOOP_H, f"Let p_θ = m R θ̇. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "not_equivalent",

@@ -410,6 +410,7 @@ def test_energies_in_the_working_that_do_not_make_the_hamiltonian_go_to_a_person
 
 
 EOM_PENDULUM = "m l^2 thetaddot + m g l sin(theta) = 0"
+SMALL_PENDULUM = "thetaddot = -(g/l) theta"
 EOM_DOUBLE = (
     "(m1 + m2) l1 theta1ddot + m2 l2 theta2ddot cos(theta1 - theta2) + m2 l2 theta2dot^2 sin(theta1 - theta2)"
     " + (m1 + m2) g sin(theta1) = 0;"
@@ -490,6 +491,11 @@ LAGRANGIAN_IN_THE_WORKING = [
     (EOM_DAMPED, f"L = m xdot^2 - k x^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent", ("Correct.", L_READ)),
     (EOM_DAMPED, f"L = 1/2 m xdot^2 - 1/2 k x^2; F = 1/2 b xdot^2; {EOM_DAMPED}", DAMPED, "equation", "equivalent",
      ("Correct.", L_AND_F_READ)),
+    # the pendulum's own L, then the small-angle equation asked for: its equation linearized, a derivation
+    # (before, for a person); an L that does not give the full one still goes to a person
+    (SMALL_PENDULUM, f"L = {L_PENDULUM}; {SMALL_PENDULUM}", PENDULUM, "equation", "equivalent", ("Correct.", L_READ)),
+    (SMALL_PENDULUM, f"L = {L_PENDULUM.replace('+ m g l', '+ 2 m g l')}; {SMALL_PENDULUM}", PENDULUM, "equation",
+     "undecided", (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
 ]  # fmt: skip
 
 
@@ -629,6 +635,9 @@ PREMISES = [
     (EOM_PENDULUM, f"L = {L_PENDULUM} ⇒ {EOM_PENDULUM}", "equivalent", ("Correct.", L_READ)),
     ("thetaddot = -(g/l) theta", "thetaddot = -(g/l) sin(theta) ⇒ thetaddot = -(g/l) theta", "equivalent",
      ("Correct.",)),
+    (SMALL_PENDULUM, f"L = {L_PENDULUM} ⇒ {SMALL_PENDULUM}", "equivalent", ("Correct.", L_READ)),  # before, a person
+    (SMALL_PENDULUM, f"{L_WRONG} ⇒ {SMALL_PENDULUM}", "undecided",
+     (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
 ]  # fmt: skip
 
 

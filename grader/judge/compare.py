@@ -898,16 +898,23 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
 
 def _force_agrees(operator: str, force: str, equation: str, expected: Expected) -> bool:
     """Whether the generalized force an answer writes out for Lagrange's equation agrees with the one
-    equation of motion it then gives (:func:`~grader.judge.euler_lagrange.force_agrees`); not where
+    equation of motion it then gives (:func:`~grader.judge.euler_lagrange.force_agrees`), at that equation's
+    scale or at the part's own equation's, which the answer's was judged to be a multiple of; not where
     either cannot be read, or the problem has more than one coordinate: that is for a person."""
     coords, names = expected.setting.coords, sorted(expected.names)
     said = parse_answer(force, coords=coords, known=names)
     motion = parse_answer(equation, coords=coords, known=names)
     if len(coords) != 1 or not said.ok or said.kind != "expression" or not motion.ok or motion.kind != "equation":
         return False
+    (reference,) = expected.value if isinstance(expected.value, tuple) else (expected.value,)
+    reference = reference.lhs - reference.rhs if isinstance(reference, sympy.Eq) else reference
     try:  # after the verdict, outside its time limit: the force is the student's, so bound the work on it
         with time_limit(_FORCE_SECONDS):
-            return force_agrees(operator, said.value, motion.value.lhs - motion.value.rhs, coords[0])
+            if force_agrees(operator, said.value, motion.value.lhs - motion.value.rhs, coords[0]):
+                return True
+            # = −b ẋ: ẍ + (b/m) ẋ + (k/m) x = 0: the right equation divided by m, which fixes no scale of
+            # L, and so none of its force; the part's own equation, of the same motion, fixes one
+            return force_agrees(operator, said.value, expected.setting.as_typed(reference), coords[0])
     except (CheckTimeout, *_CHECK_FAILURES):
         return False
 
@@ -1251,7 +1258,9 @@ def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, 
         else:
             typed = [sympy.Eq(setting.as_typed(e), 0, evaluate=False) for e in equations]
             given = ParsedAnswer(answer.text, typed[0] if len(typed) == 1 else tuple(typed), _SHAPES[len(typed) > 1])
-            agrees = spec.check(expected, given, deadline).status
+            judged = spec.check(expected, given, deadline)
+            # L = ½ m l² θ̇² + m g l cos θ; θ̈ = −(g/l) θ: the full equation, linearized after, is a derivation
+            agrees = "equivalent" if judged.key in _FULL_FORMS else judged.status
     except _CHECK_FAILURES:
         agrees = "undecided"
     many = len(setting.coords) > 1
@@ -2145,8 +2154,28 @@ def _without_words(
             if not _uses_defined(formula, definition, coords, names):
                 return _unused_definition(read, words, definition, formula, expected, names, deadline)
             said = {"words": shown(words), "definition": definition}
-            return read, ((_words_note("definition_before", words, expected), said),)
+            return _asked_put_in(read, expected), ((_words_note("definition_before", words, expected), said),)
     return without if without is not None else (answer, ())
+
+
+def _asked_put_in(read: ParsedAnswer, expected: Expected) -> ParsedAnswer:
+    """``Let ω₀² = g/l. The frequency is f = 2 ω₀``, read as ``f = 2 ω₀, where ω₀² = g/l``: a sentence that
+    defines the asked quantity, then hands over to the value of another. The value handed over to is the
+    answer, with the definitions put in (f = 2 √(g/l)), as for a name of the student's own; left as lines,
+    the definition of ω₀ would be graded, and the value the answer gives not at all. ``read`` where the
+    value is labelled with the asked quantity (ω = ω₀) or the problem's own name, or a definition is no
+    plain one."""
+    if read.kind != "equations":
+        return read
+    formula, *definitions = read.value
+    asked, label = expected.option("name") or (), formula.lhs
+    if not label.is_Symbol or label.name in expected.names or _is_asked(label.name, asked):
+        return read
+    found = [_definition(item, list(read.value), expected) for item in definitions]
+    if None in found or not any(_is_asked(name.name, asked) for name, _ in found):
+        return read
+    value = formula.rhs.xreplace(dict(found))
+    return ParsedAnswer(read.text, sympy.Eq(label, value, evaluate=False), "equation")
 
 
 def _unused_definition(

@@ -535,10 +535,11 @@ def euler_lagrange_then_formula(
     before the equation, the Euler–Lagrange operator as typed, the generalized force it is said to equal
     where that is written out, ``−b ẋ``, else "", the equation it gives). Words that state
     may begin it (``Applying``, ``Using``, ``From``…); after the operator's ``= 0`` (or ``= −b ẋ``), a ``,``, ``;`` or
-    ``:``, or words that hand over (``we get``), lead to the equation; or the equation is what the
-    operator comes to, after its ``=`` (``d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0``). The operator is any
-    of Lagrange's shape (:func:`~grader.judge.euler_lagrange.euler_lagrange`): whether it is the true one
-    is for the caller to judge. The words must be prose (:func:`is_prose`); the equation is not checked."""
+    ``:``, a step (``⇒``, not after ``= 0``), or words that hand over (``we get``), lead to the equation;
+    or the equation is what the operator comes to, after its ``=`` (``d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0``).
+    The operator is any of Lagrange's shape (:func:`~grader.judge.euler_lagrange.euler_lagrange`): whether it
+    is the true one is for the caller to judge. The words must be prose (:func:`is_prose`); the equation is
+    not checked."""
     if len(text) > _LENGTH or "dt" not in text:
         return  # as nearly every answer: no operator
     starts = [len(text) - len(text.lstrip())]
@@ -559,33 +560,42 @@ def euler_lagrange_then_formula(
             break
     else:
         return
-    stop = _stop(text, equals + 1, names, coords, stops=",;:\n")  # the operator's line, then the equation's
+    stop = _stop(text, equals + 1, names, coords, stops=_AFTER_OPERATOR)  # the operator's line, then the equation's
+    if stop is not None and text[stop] in _STEPS and text[equals + 1 : stop].strip() == "0":
+        # = 0 ⇒ m ẍ + k x + b ẋ = 0: as before, what the operator comes to, which the caller judges (no L gives b ẋ)
+        stop = _stop(text, equals + 1, names, coords, stops=_PUNCTUATION)
     side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
     between: list[str] = []
     moved = moved_left(operator, side) if side != "0" else None
     if moved is None and side != "0":
         # = −dF/dẋ: Rayleigh's term written with d, whose dF reads as a word of prose and so ends the side early
-        punctuated = _stop(text, equals + 1, names, coords, stops=",;:\n", prose=False)
+        punctuated = _stop(text, equals + 1, names, coords, stops=_AFTER_OPERATOR, prose=False)
         if punctuated is not None:
             moved = moved_left(operator, text[equals + 1 : punctuated].strip())
             stop = punctuated if moved is not None else stop
     if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, as = 0 with it on the left
         operator, side = moved, "0"
     force = ""
-    if side != "0" and stop is not None and text[stop] in ",;:\n" and _written_force(side, names, coords):
+    if side != "0" and stop is not None and text[stop] in _AFTER_OPERATOR and _written_force(side, names, coords):
         force, side = side, "0"  # = −b ẋ: the generalized force written out, which the caller judges
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
         after = equals + 1
     elif stop is None or text[stop] == "=":
         return
     else:
-        between, after = _words_from(text, stop + (text[stop] in ",;:\n"), names, coords, handing=True)
+        between, after = _words_from(text, stop + (text[stop] in _AFTER_OPERATOR), names, coords, handing=True)
         if between and not _hands_over(between):
             return  # …, not …: words that do not hand over to the equation
     equation = text[after:].strip(" ,;:")
     words = " ".join((*_PROSE_WORD.findall(text[:start]), *between))
     if equation and _first_equals(equation) is not None and (not words or is_prose(words, names, doubt=True)):
         yield re.sub(r"\s+", " ", text[:after].strip()), operator, force, equation
+
+
+# what ends the side after the operator and leads to the equation: punctuation, or a step (= −b ẋ ⇒ m ẍ + …),
+# which else is read into the side, as if the operator were said to equal all of it
+_PUNCTUATION, _STEPS = ",;:\n", "⇒→⟹"
+_AFTER_OPERATOR = _PUNCTUATION + _STEPS
 
 
 def _written_force(side: str, names: Collection[str], coords: Collection[str]) -> bool:
