@@ -1280,10 +1280,8 @@ def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> 
     None where no one line states L (V) in the problem's names, or the part asks for another quantity."""
     if answer.kind != "equations" or spec.name != "expression" or _DEFINING_LETTERS & expected.names:
         return ()
-    asked, setting = expected.option("name") or (), expected.setting
-    momenta = [q for q in setting.coords if canonical_name(f"p_{q}") in asked]
-    forces = [q for q in setting.coords if canonical_name(f"Q_{q}") in asked]
-    label = _LAGRANGIAN if momenta or "H" in asked else _POTENTIAL if forces else None
+    setting = expected.setting
+    momenta, forces, label = _derived_asked(expected)
     stated = [item.rhs for item in answer.value if item.lhs in ({label, _POTENTIAL_U} if forces else {label})]
     if label is None or len(stated) != 1:
         return ()
@@ -1308,6 +1306,15 @@ def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> 
         return ()
     details = {"label": "V" if forces else "L", "quantity": quantity}
     return () if agrees else (("derived_disagrees_for_a_person", details),)
+
+
+def _derived_asked(expected: Expected) -> tuple[list, list, sympy.Symbol | None]:
+    """The coordinates whose momenta, and those whose generalized forces, the part asks for (the option
+    ``name``), and the working they are derived from: L for a momentum or H, V for a force, else None."""
+    asked, coords = expected.option("name") or (), expected.setting.coords
+    momenta = [q for q in coords if canonical_name(f"p_{q}") in asked]
+    forces = [q for q in coords if canonical_name(f"Q_{q}") in asked]
+    return momenta, forces, _LAGRANGIAN if momenta or "H" in asked else _POTENTIAL if forces else None
 
 
 _WORKING_NAMES = frozenset({"L", "T", "V", "U", "F", "R", "D"})
@@ -2016,8 +2023,11 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
 
     Where equations of motion are asked, ``L = …, so eq₁; eq₂``: the conclusion the parser kept, after
     the L it says it came from, which is working (:func:`_lagrangian_disagrees` checks it); the steps
-    between are left out, as they were."""
+    between are left out, as they were. So too where a momentum or H is asked, after an L (``L = …, so
+    p_φ = …``), or a generalized force after a V: :func:`_derived_disagrees` checks that working."""
     motion = spec.shape in ("equation", "equations")
+    if spec.name == "expression":
+        return _working_then_derived(answer, submitted, expected, names, deadline)
     if (spec.name != "lagrangian" and not motion) or not answer.ok:
         return answer
     if answer.kind not in (("equation", "equations") if motion else ("equation",)):
@@ -2046,6 +2056,23 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     ):
         return answer
     return read
+
+
+def _working_then_derived(answer, submitted: str, expected: Expected, names: list, deadline):
+    """``L = ½ m l² φ̇², so p_φ = m l² sin²θ φ̇`` where the momentum is asked (or H after an L, a generalized
+    force after a V): the L the parser left behind the step, then the conclusion it kept, as after a
+    semicolon; the steps between are left out. ``answer`` where the text is not so."""
+    label = _derived_asked(expected)[2]
+    if label is None or not answer.ok or answer.kind != "equation" or len(submitted) > _STEPS_LENGTH:
+        return answer
+    stated = {label, _POTENTIAL_U} if label == _POTENTIAL else {label}
+    lines = _STEP.sub("\n", submitted)
+    if lines == submitted or answer.value.lhs in stated or answer.value.has(*stated):
+        return answer
+    read = parse_answer(lines, coords=expected.setting.coords, known=names, deadline=deadline)
+    if not read.ok or read.kind != "equations" or read.value[0].lhs not in stated or read.value[-1] != answer.value:
+        return answer
+    return ParsedAnswer(read.text, (read.value[0], answer.value), "equations")
 
 
 # a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)
