@@ -1199,6 +1199,24 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Your answer says `d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
       _general_read_past("d/dt(∂V/∂ẋ) − ∂V/∂x = −b ẋ:"))),
+    # ⇒ ends the operator's line as `:` does: before, the quote ran on into the equation
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = −b ẋ ⇒ m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ ⇒ m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",)),
+    # the operator without Rayleigh's term or a force, = 0, cannot give friction: before, right with no flag
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = 0: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = 0:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = 0, so m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = 0 ⇒ m ẍ = −k x − b ẋ", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",)),
+    # with Rayleigh's term: as before
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = 0, so m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
 )  # fmt: skip
 
 

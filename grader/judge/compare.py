@@ -885,13 +885,16 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
                 if _force_agrees(operator, force, equation, expected)
                 else re.sub(r"\s+", " ", f"{operator} = {force}")
             )
-        if judged and words.endswith("=") and not dissipative(operator) and len(coords) == 1:
-            # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0: a side no L gives, but the operator without
-            # Rayleigh's term is said to give it
-            side = equation.split("=")[0].strip()
-            read = parse_answer(side, coords=coords, known=sorted(expected.names))
-            if read.ok and read.kind == "expression" and from_a_lagrangian(read.value, coords[0]) is False:
-                return re.sub(r"\s+", " ", f"{operator} = {side}")
+        if judged and not dissipative(operator) and len(coords) == 1:
+            # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0, or = 0: m ẍ + k x + b ẋ = 0: what no L gives, but
+            # the operator without Rayleigh's term is said to give it
+            side = equation.split("=")[0].strip() if words.endswith("=") else None
+            read = parse_answer(side or equation, coords=coords, known=sorted(expected.names))
+            said = read.value if read.ok and read.kind == "expression" and side else None
+            if read.ok and read.kind == "equation" and not side:
+                said = read.value.lhs - read.value.rhs
+            if said is not None and from_a_lagrangian(said, coords[0]) is False:
+                return re.sub(r"\s+", " ", f"{operator} = {side or 0}")
         return None
     return None
 
