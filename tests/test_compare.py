@@ -2081,6 +2081,13 @@ def _working(*names):
          (_OTHER_LEFT_OUT.format("p"),)),
         (L_PENDULUM, "L = 1/2 m l^2 thetadot^2 + m g l cos(theta), hence p_theta = m l^2 thetadot", "lagrangian",
          "equivalent", (_OTHER_LEFT_OUT.format("p_θ"),)),
+        # a quantity, then the equation of motion: before, L and p were told undefined
+        (L_PENDULUM, "L = 1/2 m l^2 thetadot^2 + m g l cos(theta); p = m l^2 thetadot; m l^2 thetaddot = -m g l"
+         " sin(theta)", "lagrangian", "equivalent", (_OTHER_LEFT_OUT.format("p"), MOTION_LEFT_OUT)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ ⇒ p_θ = m l² θ̇ ⇒ θ̈ = −(g/l) sin θ", "lagrangian", "equivalent",
+         (_OTHER_LEFT_OUT.format("p_θ"), MOTION_LEFT_OUT)),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ; p = m l² θ̇; m l² θ̈ = −m g l sin θ", "lagrangian",
+         "not_equivalent", (_OTHER_LEFT_OUT.format("p"), MOTION_LEFT_OUT)),
     ],
 )  # fmt: skip
 def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):

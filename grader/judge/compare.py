@@ -1446,7 +1446,8 @@ def _label(side, expected: Expected) -> str:
 
 def _motion_after(items: tuple, named: list, expected: Expected) -> int:
     """How many of the last ``items`` are equations of motion (unnamed, in the problem's names, each
-    with an acceleration) that follow a line naming L: derived from the answer, not part of it."""
+    with an acceleration) that follow a line naming L, or quantities named after it (``L = …; p = m l² θ̇;
+    m l² θ̈ = …``, which :func:`_asked_lines` leaves out): derived from the answer, not part of it."""
     count = 0
     for item, name in zip(reversed(items), reversed(named), strict=True):
         if name is not None:
@@ -1456,7 +1457,7 @@ def _motion_after(items: tuple, named: list, expected: Expected) -> int:
         ):
             return 0
         count += 1
-    if count == len(items) or named[len(items) - count - 1].name != "L":
+    if count == len(items) or not any(name is not None and name.name == "L" for name in named[: len(items) - count]):
         return 0
     return count
 
