@@ -36,6 +36,25 @@ EOM_DOUBLE_2 = (
 EOM_DOUBLE = f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2}"
 
 
+_SHORT_DOUBLE = (
+    "(m1 + m2) l1 th1dd + m2 l2 th2dd cos(th1 - th2) + m2 l2 th2d^2 sin(th1 - th2) + (m1 + m2) g sin(th1) = 0;"
+    " l2 th2dd + l1 th1dd cos(th1 - th2) - l1 th1d^2 sin(th1 - th2) + g sin(th2) = 0"
+)
+SHORT_RATES = [
+    # (submitted, status, feedback): th1dd, th2d for θ̈₁, θ̇₂, as th1ddot is read (before, undefined)
+    (_SHORT_DOUBLE, "equivalent", ("Correct.",)),
+    (_SHORT_DOUBLE.replace("- l1 th1d^2", "+ l1 th1d^2"), "not_equivalent",
+     ("Your equation for θ₂ is not right; equation 1 is right.",
+      "A term differs: the velocity-dependent term in sin(θ₁ − θ₂) has the wrong sign.")),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), SHORT_RATES)
+def test_rates_glued_on_a_stand_in_as_d_or_dd_are_read(submitted, status, feedback):
+    verdict = compare(EOM_DOUBLE, submitted, kind="equations", **DOUBLE)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 def test_verdict_is_a_frozen_dataclass_with_the_documented_fields():
     verdict = compare("2 m", "m + m", known=["m"])
     assert dataclasses.is_dataclass(verdict)
