@@ -4622,6 +4622,13 @@ ARITHMETIC_DECIMAL_COMMA = (
      ("Correct.", "Read `1,000` and `9,81` as 1.000 and 9.81: decimal commas.")),
     (PERIOD, "2π √(1,000/9,810)", "invalid", (_COMMA_REFUSED,)),  # each may be thousands
     (PERIOD, "2,006 s", "invalid", (_COMMA_REFUSED,)),  # alone: 2006 in English
+    # the values it was worked out with in a bracket at the end, as after a comma (before, refused, with a point too)
+    (PERIOD, "2,006 s (with g = 9,81)", "equivalent",
+     ("Correct.", _comma("2,006"), _remark("2,006 s", "with g = 9,81"))),
+    (PERIOD, "2,106 s (with g = 9,81)", "not_equivalent",
+     ("Not within the accepted tolerance.", _comma("2,106"), _remark("2,106 s", "with g = 9,81"))),
+    (PERIOD, "2.006 s (using g = 9.81).", "equivalent", ("Correct.", _remark("2.006 s", "using g = 9.81"))),
+    (PERIOD, "2,006 s (with g = 9.81)", "invalid", (_COMMA_REFUSED,)),  # 9.81 with a point: 2,006 may be 2006
 )  # fmt: skip
 
 
