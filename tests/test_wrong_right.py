@@ -595,6 +595,11 @@ DERIVED_FROM_L = [
      "undecided", (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
     (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2, so Q_r = {Q_R}", FORCES, "undecided",
      (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
+    # the value alone after the step, named as the part asks
+    (P_PHI, "L = ½ m l² φ̇² ⇒ m l² sin²θ φ̇", MOMENTUM_SPHERICAL, "undecided",
+     (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
+    (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2 ⇒ {Q_R}", FORCES, "undecided",
+     (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
     (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2; Q_r = {Q_R}", FORCES, "undecided",
      (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
     (Q_R, f"V = -m g r cos(theta) + 1/2 k r^2; Q_r = {Q_R}", FORCES, "undecided",
@@ -608,6 +613,8 @@ DERIVED_FROM_L = [
     (H_SPHERICAL, f"L = {L_SPHERICAL} ⇒ H = {H_SPHERICAL}", SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
     (H_HOOP, f"L = {L_HOOP}, therefore H = {H_HOOP}", HOOP_H, "equivalent", ("Correct.", SPHERICAL_L_READ)),
     (Q_R, f"V = -m g r cos(theta) + 1/2 k (r - l0)^2, so Q_r = {Q_R}", FORCES, "equivalent", ("Correct.", V_READ)),
+    (P_PHI, f"L = {L_SPHERICAL} ⇒ {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL} ⇒ {H_SPHERICAL}", SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
 ]  # fmt: skip
 
 

@@ -2065,18 +2065,29 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
 def _working_then_derived(answer, submitted: str, expected: Expected, names: list, deadline):
     """``L = ½ m l² φ̇², so p_φ = m l² sin²θ φ̇`` where the momentum is asked (or H after an L, a generalized
     force after a V): the L the parser left behind the step, then the conclusion it kept, as after a
-    semicolon; the steps between are left out. ``answer`` where the text is not so."""
-    label = _derived_asked(expected)[2]
-    if label is None or not answer.ok or answer.kind != "equation" or len(submitted) > _STEPS_LENGTH:
+    semicolon; the steps between are left out. A conclusion that is a value alone (``L = … ⇒ m l² sin²θ φ̇``)
+    is named as the part asks, so the L is checked against it too. ``answer`` where the text is not so."""
+    momenta, forces, label = _derived_asked(expected)
+    if label is None or not answer.ok or answer.kind not in ("equation", "expression"):
         return answer
     stated = {label, _POTENTIAL_U} if label == _POTENTIAL else {label}
-    lines = _STEP.sub("\n", submitted)
-    if lines == submitted or answer.value.lhs in stated or answer.value.has(*stated):
+    concluded = answer.value
+    if len(submitted) > _STEPS_LENGTH or (answer.kind == "equation" and answer.value.lhs in stated):
         return answer
-    read = parse_answer(lines, coords=expected.setting.coords, known=names, deadline=deadline)
-    if not read.ok or read.kind != "equations" or read.value[0].lhs not in stated or read.value[-1] != answer.value:
+    if concluded.has(*stated) or not _STEP.search(submitted):
         return answer
-    return ParsedAnswer(read.text, (read.value[0], answer.value), "equations")
+    pieces = _STEP.split(submitted)
+    coords = expected.setting.coords
+    first = parse_answer(pieces[0].strip(" ,;:"), coords=coords, known=names, deadline=deadline)
+    last = parse_answer(pieces[-1].strip(" ,;:."), coords=coords, known=names, deadline=deadline)
+    if not (first.ok and first.kind == "equation" and first.value.lhs in stated and last.ok):
+        return answer
+    if last.kind != answer.kind or last.value != answer.value:
+        return answer
+    if answer.kind == "expression":
+        name = canonical_name(f"p_{momenta[0]}") if momenta else canonical_name(f"Q_{forces[0]}") if forces else "H"
+        concluded = sympy.Eq(sympy.Symbol(name), answer.value, evaluate=False)
+    return ParsedAnswer(submitted, (first.value, concluded), "equations")
 
 
 # a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)
