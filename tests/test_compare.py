@@ -36,6 +36,25 @@ EOM_DOUBLE_2 = (
 EOM_DOUBLE = f"{EOM_DOUBLE_1}; {EOM_DOUBLE_2}"
 
 
+_SHORT_DOUBLE = (
+    "(m1 + m2) l1 th1dd + m2 l2 th2dd cos(th1 - th2) + m2 l2 th2d^2 sin(th1 - th2) + (m1 + m2) g sin(th1) = 0;"
+    " l2 th2dd + l1 th1dd cos(th1 - th2) - l1 th1d^2 sin(th1 - th2) + g sin(th2) = 0"
+)
+SHORT_RATES = [
+    # (submitted, status, feedback): th1dd, th2d for θ̈₁, θ̇₂, as th1ddot is read (before, undefined)
+    (_SHORT_DOUBLE, "equivalent", ("Correct.",)),
+    (_SHORT_DOUBLE.replace("- l1 th1d^2", "+ l1 th1d^2"), "not_equivalent",
+     ("Your equation for θ₂ is not right; equation 1 is right.",
+      "A term differs: the velocity-dependent term in sin(θ₁ − θ₂) has the wrong sign.")),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), SHORT_RATES)
+def test_rates_glued_on_a_stand_in_as_d_or_dd_are_read(submitted, status, feedback):
+    verdict = compare(EOM_DOUBLE, submitted, kind="equations", **DOUBLE)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 def test_verdict_is_a_frozen_dataclass_with_the_documented_fields():
     verdict = compare("2 m", "m + m", known=["m"])
     assert dataclasses.is_dataclass(verdict)
@@ -1216,6 +1235,19 @@ GENERAL_FORM_THEN_EQUATION = (
      ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ` on the way to its equation, which is not Lagrange's"
       " equation. The equation was graded and is right; a person will check this answer.",
       _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = +b ẋ:"))),
+    # the operator without Rayleigh's term or a force, = 0, cannot give friction: before, right with no flag
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = 0: m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",
+      _general_read_past("d/dt(∂L/∂ẋ) − ∂L/∂x = 0:"))),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = 0, so m ẍ + k x + b ẋ = 0", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",)),
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x = 0 ⇒ m ẍ = −k x − b ẋ", "undecided",
+     ("Your answer says `d/dt(∂L/∂ẋ) − ∂L/∂x = 0` on the way to its equation, which is not Lagrange's"
+      " equation. The equation was graded and is right; a person will check this answer.",)),
+    # with Rayleigh's term: as before
+    ("d/dt(∂L/∂ẋ) − ∂L/∂x + ∂F/∂ẋ = 0, so m ẍ + k x + b ẋ = 0", "equivalent", ("Correct.",)),
 )  # fmt: skip
 
 
@@ -2080,6 +2112,13 @@ def _working(*names):
          (_OTHER_LEFT_OUT.format("p"),)),
         (L_PENDULUM, "L = 1/2 m l^2 thetadot^2 + m g l cos(theta), hence p_theta = m l^2 thetadot", "lagrangian",
          "equivalent", (_OTHER_LEFT_OUT.format("p_θ"),)),
+        # a quantity, then the equation of motion: before, L and p were told undefined
+        (L_PENDULUM, "L = 1/2 m l^2 thetadot^2 + m g l cos(theta); p = m l^2 thetadot; m l^2 thetaddot = -m g l"
+         " sin(theta)", "lagrangian", "equivalent", (_OTHER_LEFT_OUT.format("p"), MOTION_LEFT_OUT)),
+        (L_PENDULUM, "L = ½ m l² θ̇² + m g l cos θ ⇒ p_θ = m l² θ̇ ⇒ θ̈ = −(g/l) sin θ", "lagrangian", "equivalent",
+         (_OTHER_LEFT_OUT.format("p_θ"), MOTION_LEFT_OUT)),
+        (L_PENDULUM, "L = ½ m l² θ̇² − m g l cos θ; p = m l² θ̇; m l² θ̈ = −m g l sin θ", "lagrangian",
+         "not_equivalent", (_OTHER_LEFT_OUT.format("p"), MOTION_LEFT_OUT)),
     ],
 )  # fmt: skip
 def test_lines_that_name_quantities_no_other_line_uses_are_working(expected, submitted, kind, status, notes):
@@ -4595,6 +4634,13 @@ ARITHMETIC_DECIMAL_COMMA = (
      ("Correct.", "Read `1,000` and `9,81` as 1.000 and 9.81: decimal commas.")),
     (PERIOD, "2π √(1,000/9,810)", "invalid", (_COMMA_REFUSED,)),  # each may be thousands
     (PERIOD, "2,006 s", "invalid", (_COMMA_REFUSED,)),  # alone: 2006 in English
+    # the values it was worked out with in a bracket at the end, as after a comma (before, refused, with a point too)
+    (PERIOD, "2,006 s (with g = 9,81)", "equivalent",
+     ("Correct.", _comma("2,006"), _remark("2,006 s", "with g = 9,81"))),
+    (PERIOD, "2,106 s (with g = 9,81)", "not_equivalent",
+     ("Not within the accepted tolerance.", _comma("2,106"), _remark("2,106 s", "with g = 9,81"))),
+    (PERIOD, "2.006 s (using g = 9.81).", "equivalent", ("Correct.", _remark("2.006 s", "using g = 9.81"))),
+    (PERIOD, "2,006 s (with g = 9.81)", "invalid", (_COMMA_REFUSED,)),  # 9.81 with a point: 2,006 may be 2006
 )  # fmt: skip
 
 

@@ -610,6 +610,31 @@ def test_letters_stand_in_for_a_greek_name_only_where_the_problem_has_it_and_not
     assert parse_answer("ph + th", coords=["theta", "phi"], known=["p", "h"]).value == p * h + t * h  # splits first
 
 
+STAND_IN_RATES = [
+    # (text, coords, known, value): th and ph with a rate glued on as d or dd, for θ̇ and θ̈ (before, undefined)
+    ("th1dd", ["theta_1", "theta_2"], [], D(theta1, 2)),
+    ("th2d", ["theta_1", "theta_2"], [], D(theta2)),
+    ("th_1dd", ["theta_1", "theta_2"], [], D(theta1, 2)),
+    ("thdd", ["theta"], [], D(theta, 2)),
+    ("phd", ["theta", "phi"], [], D(phi)),
+    # what read before reads as it did: the other stand-ins, the problem's names and splits first, w alone
+    ("th1dot", ["theta_1", "theta_2"], [], D(theta1)),
+    ("th_2ddot", ["theta_1", "theta_2"], [], D(theta2, 2)),
+    ("th1", ["theta_1", "theta_2"], [], theta1),
+    ("thd", ["theta"], ["h", "d"], t * sympy.Symbol("h") * d),
+    ("thd", ["theta"], ["thd"], sympy.Symbol("thd")),
+    ("th1dd", ["x"], ["m"], sympy.Symbol("th1dd")),  # no θ₁ here
+    ("wd", ["x"], ["omega"], sympy.Symbol("wd")),  # no ω̇ of a constant
+    ("w_0", ["x"], ["omega_0"], sympy.Symbol("omega_0")),
+]
+
+
+@pytest.mark.parametrize(("text", "coords", "known", "value"), STAND_IN_RATES)
+def test_th_and_ph_with_d_or_dd_glued_on_are_the_angle_s_rates(text, coords, known, value):
+    result = parse_answer(text, coords=coords, known=known)
+    assert result.ok and result.value == value, result
+
+
 def test_a_d_before_a_name_that_is_no_coordinate_is_part_of_the_name():
     assert parse_answer("dy + da", coords=["x"]).value == sympy.Symbol("dy") + sympy.Symbol("da")
 

@@ -579,6 +579,8 @@ SPHERICAL_L_READ = "The line that defines `L` was read as your working, not as y
 Q_R = "m g cos(theta) - k (r - l0)"
 FORCES = {"coords": ["r", "theta"], "known": ["m", "g", "k", "l0"], "name": "Q_r"}
 V_READ = "The line that defines `V` was read as your working, not as your answer."
+H_HOOP = "1/2 m R^2 (thetadot^2 - omega^2 sin(theta)^2) - m g R cos(theta)"
+HOOP_H = {**HOOP, "name": "H"}
 
 DERIVED_FROM_L = [
     # (expected, submitted, setting, status, feedback): working that states L, then the momentum or the
@@ -590,6 +592,20 @@ DERIVED_FROM_L = [
      (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
     (H_SPHERICAL, f"L = {L_SPHERICAL_WRONG}; H = {H_SPHERICAL}", SPHERICAL, "undecided",
      (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
+    # the same after `so`, ⇒ or `therefore`, where the parser keeps only a derivation's conclusion
+    (P_PHI, "L = ½ m l² φ̇², so p_φ = m l² sin²θ φ̇", MOMENTUM_SPHERICAL, "undecided",
+     (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL_WRONG} ⇒ H = {H_SPHERICAL}", SPHERICAL, "undecided",
+     (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
+    (H_HOOP, "L = ½ m R² θ̇² + m g R cos θ, therefore H = ½ m R² (θ̇² − ω² sin²θ) − m g R cos θ", HOOP_H,
+     "undecided", (f"Your working gives L, but Σ p q̇ − L {DERIVED}", SPHERICAL_L_READ)),
+    (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2, so Q_r = {Q_R}", FORCES, "undecided",
+     (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
+    # the value alone after the step, named as the part asks
+    (P_PHI, "L = ½ m l² φ̇² ⇒ m l² sin²θ φ̇", MOMENTUM_SPHERICAL, "undecided",
+     (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
+    (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2 ⇒ {Q_R}", FORCES, "undecided",
+     (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
     (Q_R, f"V = m g r cos(theta) + 1/2 k (r - l0)^2; Q_r = {Q_R}", FORCES, "undecided",
      (f"Your working gives V, but −∂V/∂r {DERIVED}", V_READ)),
     (Q_R, f"V = -m g r cos(theta) + 1/2 k r^2; Q_r = {Q_R}", FORCES, "undecided",
@@ -599,6 +615,12 @@ DERIVED_FROM_L = [
     (P_PHI, f"L = {L_SPHERICAL}; p_phi = {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
     (H_SPHERICAL, f"L = {L_SPHERICAL} + 5 m g l; H = {H_SPHERICAL}", SPHERICAL, "equivalent",
      ("Correct.", SPHERICAL_L_READ)),
+    (P_PHI, f"L = {L_SPHERICAL}, so p_φ = {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL} ⇒ H = {H_SPHERICAL}", SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (H_HOOP, f"L = {L_HOOP}, therefore H = {H_HOOP}", HOOP_H, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (Q_R, f"V = -m g r cos(theta) + 1/2 k (r - l0)^2, so Q_r = {Q_R}", FORCES, "equivalent", ("Correct.", V_READ)),
+    (P_PHI, f"L = {L_SPHERICAL} ⇒ {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL} ⇒ {H_SPHERICAL}", SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
 ]  # fmt: skip
 
 

@@ -885,13 +885,16 @@ def _operator_said_wrong(submitted: str, expected: Expected) -> str | None:
                 if _force_agrees(operator, force, equation, expected)
                 else re.sub(r"\s+", " ", f"{operator} = {force}")
             )
-        if judged and words.endswith("=") and not dissipative(operator) and len(coords) == 1:
-            # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0: a side no L gives, but the operator without
-            # Rayleigh's term is said to give it
-            side = equation.split("=")[0].strip()
-            read = parse_answer(side, coords=coords, known=sorted(expected.names))
-            if read.ok and read.kind == "expression" and from_a_lagrangian(read.value, coords[0]) is False:
-                return re.sub(r"\s+", " ", f"{operator} = {side}")
+        if judged and not dissipative(operator) and len(coords) == 1:
+            # d/dt(∂L/∂ẋ) − ∂L/∂x = m ẍ + k x + b ẋ = 0, or = 0: m ẍ + k x + b ẋ = 0: what no L gives, but
+            # the operator without Rayleigh's term is said to give it
+            side = equation.split("=")[0].strip() if words.endswith("=") else None
+            read = parse_answer(side or equation, coords=coords, known=sorted(expected.names))
+            said = read.value if read.ok and read.kind == "expression" and side else None
+            if read.ok and read.kind == "equation" and not side:
+                said = read.value.lhs - read.value.rhs
+            if said is not None and from_a_lagrangian(said, coords[0]) is False:
+                return re.sub(r"\s+", " ", f"{operator} = {side or 0}")
         return None
     return None
 
@@ -1289,10 +1292,8 @@ def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> 
     None where no one line states L (V) in the problem's names, or the part asks for another quantity."""
     if answer.kind != "equations" or spec.name != "expression" or _DEFINING_LETTERS & expected.names:
         return ()
-    asked, setting = expected.option("name") or (), expected.setting
-    momenta = [q for q in setting.coords if canonical_name(f"p_{q}") in asked]
-    forces = [q for q in setting.coords if canonical_name(f"Q_{q}") in asked]
-    label = _LAGRANGIAN if momenta or "H" in asked else _POTENTIAL if forces else None
+    setting = expected.setting
+    momenta, forces, label = _derived_asked(expected)
     stated = [item.rhs for item in answer.value if item.lhs in ({label, _POTENTIAL_U} if forces else {label})]
     if label is None or len(stated) != 1:
         return ()
@@ -1317,6 +1318,15 @@ def _derived_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected) -> 
         return ()
     details = {"label": "V" if forces else "L", "quantity": quantity}
     return () if agrees else (("derived_disagrees_for_a_person", details),)
+
+
+def _derived_asked(expected: Expected) -> tuple[list, list, sympy.Symbol | None]:
+    """The coordinates whose momenta, and those whose generalized forces, the part asks for (the option
+    ``name``), and the working they are derived from: L for a momentum or H, V for a force, else None."""
+    asked, coords = expected.option("name") or (), expected.setting.coords
+    momenta = [q for q in coords if canonical_name(f"p_{q}") in asked]
+    forces = [q for q in coords if canonical_name(f"Q_{q}") in asked]
+    return momenta, forces, _LAGRANGIAN if momenta or "H" in asked else _POTENTIAL if forces else None
 
 
 _WORKING_NAMES = frozenset({"L", "T", "V", "U", "F", "R", "D"})
@@ -1445,7 +1455,8 @@ def _label(side, expected: Expected) -> str:
 
 def _motion_after(items: tuple, named: list, expected: Expected) -> int:
     """How many of the last ``items`` are equations of motion (unnamed, in the problem's names, each
-    with an acceleration) that follow a line naming L: derived from the answer, not part of it."""
+    with an acceleration) that follow a line naming L, or quantities named after it (``L = …; p = m l² θ̇;
+    m l² θ̈ = …``, which :func:`_asked_lines` leaves out): derived from the answer, not part of it."""
     count = 0
     for item, name in zip(reversed(items), reversed(named), strict=True):
         if name is not None:
@@ -1455,7 +1466,7 @@ def _motion_after(items: tuple, named: list, expected: Expected) -> int:
         ):
             return 0
         count += 1
-    if count == len(items) or named[len(items) - count - 1].name != "L":
+    if count == len(items) or not any(name is not None and name.name == "L" for name in named[: len(items) - count]):
         return 0
     return count
 
@@ -2025,8 +2036,11 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
 
     Where equations of motion are asked, ``L = …, so eq₁; eq₂``: the conclusion the parser kept, after
     the L it says it came from, which is working (:func:`_lagrangian_disagrees` checks it); the steps
-    between are left out, as they were."""
+    between are left out, as they were. So too where a momentum or H is asked, after an L (``L = …, so
+    p_φ = …``), or a generalized force after a V: :func:`_derived_disagrees` checks that working."""
     motion = spec.shape in ("equation", "equations")
+    if spec.name == "expression":
+        return _working_then_derived(answer, submitted, expected, names, deadline)
     if (spec.name != "lagrangian" and not motion) or not answer.ok:
         return answer
     if answer.kind not in (("equation", "equations") if motion else ("equation",)):
@@ -2055,6 +2069,34 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     ):
         return answer
     return read
+
+
+def _working_then_derived(answer, submitted: str, expected: Expected, names: list, deadline):
+    """``L = ½ m l² φ̇², so p_φ = m l² sin²θ φ̇`` where the momentum is asked (or H after an L, a generalized
+    force after a V): the L the parser left behind the step, then the conclusion it kept, as after a
+    semicolon; the steps between are left out. A conclusion that is a value alone (``L = … ⇒ m l² sin²θ φ̇``)
+    is named as the part asks, so the L is checked against it too. ``answer`` where the text is not so."""
+    momenta, forces, label = _derived_asked(expected)
+    if label is None or not answer.ok or answer.kind not in ("equation", "expression"):
+        return answer
+    stated = {label, _POTENTIAL_U} if label == _POTENTIAL else {label}
+    concluded = answer.value
+    if len(submitted) > _STEPS_LENGTH or (answer.kind == "equation" and answer.value.lhs in stated):
+        return answer
+    if concluded.has(*stated) or not _STEP.search(submitted):
+        return answer
+    pieces = _STEP.split(submitted)
+    coords = expected.setting.coords
+    first = parse_answer(pieces[0].strip(" ,;:"), coords=coords, known=names, deadline=deadline)
+    last = parse_answer(pieces[-1].strip(" ,;:."), coords=coords, known=names, deadline=deadline)
+    if not (first.ok and first.kind == "equation" and first.value.lhs in stated and last.ok):
+        return answer
+    if last.kind != answer.kind or last.value != answer.value:
+        return answer
+    if answer.kind == "expression":
+        name = canonical_name(f"p_{momenta[0]}") if momenta else canonical_name(f"Q_{forces[0]}") if forces else "H"
+        concluded = sympy.Eq(sympy.Symbol(name), answer.value, evaluate=False)
+    return ParsedAnswer(submitted, (first.value, concluded), "equations")
 
 
 # a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)

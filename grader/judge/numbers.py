@@ -981,11 +981,18 @@ def _given(
     if found is None or not found.start():
         return None
     head, values = text[: found.start()], text[found.end() :]
+    bracketed = "(" in found.group()
+    if bracketed:  # the remark's own bracket closes the answer, and nothing in it is left open
+        values = values.rstrip(" .")
+        if not values.endswith(")") or not _balanced(values[:-1]):
+            return None
+        values = values[:-1]
     prepared, answer, notes = read_number(
         head, reads, names, decimal_comma=decimal_comma, unit=unit, count=count, asked=asked
     )
     if answer is not None:
-        rest = shown(text[found.start() :].strip(" ,"))
+        rest = text[found.start() :].strip(" ,")
+        rest = shown(rest.rstrip(" .")[1:-1].strip() if bracketed else rest)
         value = next((details["value"] for _, details in notes if "value" in details), head.strip())
         working = _given_working(head, values, reads, answer, count)
         if working is not None:  # n = 3N − k = 1, where N = 1, k = 1: 3N − k is 2 with them
@@ -1028,7 +1035,8 @@ _UNCERTAIN = re.compile(
 
 
 # where the values an answer was worked out with begin: ", where l = 1", " since k = 2", " for l = 1 m"
-_GIVEN = re.compile(r"\s*,?\s*\b(?:where|with|since|for|given|using|as)\s+(?=[^\W\d][\w₀-₉]*\s*=)", re.I)
+# …, with g = 9.81, or the same in brackets at the end: 2.006 s (with g = 9.81)
+_GIVEN = re.compile(r"\s*(?:,?\s*|\(\s*)\b(?:where|with|since|for|given|using|as)\s+(?=[^\W\d][\w₀-₉]*\s*=)", re.I)
 
 
 def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:

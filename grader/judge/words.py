@@ -560,30 +560,27 @@ def euler_lagrange_then_formula(
             break
     else:
         return
-    stop = _stop(text, equals + 1, names, coords, stops=_AFTER_OPERATOR)  # the operator's line, then the equation's
-    if stop is not None and text[stop] in _STEPS and text[equals + 1 : stop].strip() == "0":
-        # = 0 ⇒ m ẍ + k x + b ẋ = 0: as before, what the operator comes to, which the caller judges (no L gives b ẋ)
-        stop = _stop(text, equals + 1, names, coords, stops=_PUNCTUATION)
+    stop = _stop(text, equals + 1, names, coords, stops=_LINE_ENDS)  # the operator's line, then the equation's
     side = text[equals + 1 : stop].strip() if stop is not None else text[equals + 1 :].strip()
     between: list[str] = []
     moved = moved_left(operator, side) if side != "0" else None
     if moved is None and side != "0":
         # = −dF/dẋ: Rayleigh's term written with d, whose dF reads as a word of prose and so ends the side early
-        punctuated = _stop(text, equals + 1, names, coords, stops=_AFTER_OPERATOR, prose=False)
+        punctuated = _stop(text, equals + 1, names, coords, stops=_LINE_ENDS, prose=False)
         if punctuated is not None:
             moved = moved_left(operator, text[equals + 1 : punctuated].strip())
             stop = punctuated if moved is not None else stop
     if moved is not None:  # d/dt(∂L/∂ẋ) − ∂L/∂x = −∂F/∂ẋ: Rayleigh's term on the right, as = 0 with it on the left
         operator, side = moved, "0"
     force = ""
-    if side != "0" and stop is not None and text[stop] in _AFTER_OPERATOR and _written_force(side, names, coords):
+    if side != "0" and stop is not None and text[stop] in _LINE_ENDS and _written_force(side, names, coords):
         force, side = side, "0"  # = −b ẋ: the generalized force written out, which the caller judges
     if side != "0":  # d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0: what the operator comes to
         after = equals + 1
     elif stop is None or text[stop] == "=":
         return
     else:
-        between, after = _words_from(text, stop + (text[stop] in _AFTER_OPERATOR), names, coords, handing=True)
+        between, after = _words_from(text, stop + (text[stop] in _LINE_ENDS), names, coords, handing=True)
         if between and not _hands_over(between):
             return  # …, not …: words that do not hand over to the equation
     equation = text[after:].strip(" ,;:")
@@ -592,10 +589,8 @@ def euler_lagrange_then_formula(
         yield re.sub(r"\s+", " ", text[:after].strip()), operator, force, equation
 
 
-# what ends the side after the operator and leads to the equation: punctuation, or a step (= −b ẋ ⇒ m ẍ + …),
-# which else is read into the side, as if the operator were said to equal all of it
-_PUNCTUATION, _STEPS = ",;:\n", "⇒→⟹"
-_AFTER_OPERATOR = _PUNCTUATION + _STEPS
+# what ends the operator's line before the equation it gives: punctuation, a new line, or a step (⇒)
+_LINE_ENDS = ",;:\n⇒→⟹"
 
 
 def _written_force(side: str, names: Collection[str], coords: Collection[str]) -> bool:

@@ -193,15 +193,21 @@ _TWO_DOTS = ("ddot", "dotdot", "doubledot")
 # Letters typed for a Greek one on a keyboard without it: w for ω (it looks the part), th, ph.
 _STAND_IN = re.compile(rf"^(?P<letters>w|th|ph)(?P<rest>(?:_?[0-9]+)?{_SUFFIX}?(?:_?[0-9]+)?)$")
 _STOOD_FOR = {"w": "omega", "th": "theta", "ph": "phi"}
+# th1dd, thd: a rate glued on as d or dd, as students shorten dot on an angle; not on w, whose wd is no ω̇
+_GLUED_RATE = re.compile(r"^(?P<letters>th|ph)(?P<number>_?[0-9]+)?(?P<ds>dd?)$")
 
 
 def stand_in(name: str) -> str | None:
     """The Greek name that ASCII letters stand in for, as ``w`` for ω: the caller uses it only
     where the problem defines that name and not the letters themselves.
 
-    >>> stand_in("w_0"), stand_in("th_1dot"), stand_in("ph"), stand_in("wx")
-    ('omega_0', 'theta_1dot', 'phi', None)
+    >>> stand_in("w_0"), stand_in("th_1dot"), stand_in("ph"), stand_in("wx"), stand_in("th1dd")
+    ('omega_0', 'theta_1dot', 'phi', None, 'theta1ddot')
     """
+    glued = _GLUED_RATE.match(name)
+    if glued:
+        dots = "ddot" if glued["ds"] == "dd" else "dot"
+        return canonical_name(_STOOD_FOR[glued["letters"]] + (glued["number"] or "") + dots)
     match = _STAND_IN.match(name)
     if not match:
         return None
