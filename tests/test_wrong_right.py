@@ -348,8 +348,14 @@ ENERGIES_WORKED = [
       "The lines that define `T` and `V` were not graded: L is what is asked for here.")),
     ("T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² − m g l cos θ", "not_equivalent",
      ("It looks like you wrote L = T + V; the Lagrangian is L = T − V.", ENERGIES, WORKING_READ)),
+    # the same before a step (⇒, so, therefore), whose working the reading dropped unseen (before, right)
+    ("T = ½ m l² θ̇², V = m g l cos θ ⇒ L = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.", WORKING_READ)),
+    ("V = −m g l cos θ, T = m l² θ̇² therefore L = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.", WORKING_READ)),
     # working that comes to the value, or to it but for a constant: as before
     ("T = ½ m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
+    ("T = ½ m l² θ̇², V = −m g l cos θ, so L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
     ("T = ½ m l² θ̇²; V = m g l (1 − cos θ); L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
 ]  # fmt: skip
 
@@ -398,15 +404,28 @@ SPHERICAL = {"coords": ["theta", "phi"], "known": ["m", "g", "l"], "name": "H"}
 H_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) - m g l cos(theta)"
 
 
-def test_energies_in_the_working_that_do_not_make_the_hamiltonian_go_to_a_person():
-    # H = T + V, as T − V was for L: the T before it, twice the kinetic energy, was read past
-    submitted = "T = m l² (θ̇² + sin²θ φ̇²); V = −m g l cos θ; H = T + V = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ"
+@pytest.mark.parametrize(
+    "submitted",
+    [
+        # H = T + V, as T − V was for L: the T before it, twice the kinetic energy, was read past
+        "T = m l² (θ̇² + sin²θ φ̇²); V = −m g l cos θ; H = T + V = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ",
+        # and before a step, V with the wrong sign, was dropped unseen
+        "T = ½ m l² (θ̇² + sin²θ φ̇²), V = m g l cos θ ⇒ H = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ",
+    ],
+)
+def test_energies_in_the_working_that_do_not_make_the_hamiltonian_go_to_a_person(submitted):
     verdict = compare(H_SPHERICAL, submitted, kind="expression", **SPHERICAL)
     assert (verdict.status, verdict.feedback) == ("undecided", (
         "Your working gives T and V, but T + V with them is not the value your answer gives H. Its value was graded"
         " and is right; a person will check this answer.",
         WORKING_READ,
     )), verdict  # fmt: skip
+
+
+def test_energies_before_a_step_that_make_the_hamiltonian_stay_right():
+    submitted = "T = ½ m l² (θ̇² + sin²θ φ̇²), V = −m g l cos θ ⇒ H = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ"
+    verdict = compare(H_SPHERICAL, submitted, kind="expression", **SPHERICAL)
+    assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.", WORKING_READ)), verdict
 
 
 EOM_PENDULUM = "m l^2 thetaddot + m g l sin(theta) = 0"

@@ -2040,6 +2040,9 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     p_φ = …``), or a generalized force after a V: :func:`_derived_disagrees` checks that working."""
     motion = spec.shape in ("equation", "equations")
     if spec.name == "expression":
+        energies = _energies_then_value(answer, submitted, expected, names, deadline)
+        if energies is not answer:
+            return energies
         return _working_then_derived(answer, submitted, expected, names, deadline)
     if (spec.name != "lagrangian" and not motion) or not answer.ok:
         return answer
@@ -2049,8 +2052,10 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
         return answer
     concluded = answer.value if answer.kind == "equations" else (answer.value,)
     lines = _STEP.sub("\n", submitted)
-    if lines == submitted or concluded[0].lhs == _LAGRANGIAN:
+    if lines == submitted:
         return answer
+    if concluded[0].lhs == _LAGRANGIAN:
+        return answer if motion else _energies_then_value(answer, submitted, expected, names, deadline)
     read = parse_answer(lines, coords=expected.setting.coords, known=names, deadline=deadline)
     if not read.ok or read.kind != "equations" or read.value[0].lhs != _LAGRANGIAN:
         return answer
@@ -2069,6 +2074,28 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     ):
         return answer
     return read
+
+
+def _energies_then_value(answer, submitted: str, expected: Expected, names: list, deadline):
+    """``T = ½ m l² θ̇², V = m g l cos θ ⇒ L = …`` (or ``⇒ H = …``): the energies the parser left behind the
+    step, then the L or H it kept, as on separate lines, where :func:`_energies_disagree` judges them (before,
+    the working was dropped unseen). ``answer`` where the conclusion is not L, H or E, or a line before it
+    is not T, V or U."""
+    if not (answer.ok and answer.kind == "equation" and answer.value.lhs in _ENERGY_SYMBOLS):
+        return answer
+    lines = _STEP.sub("\n", submitted)
+    if lines == submitted or len(submitted) > _STEPS_LENGTH:
+        return answer
+    read = parse_answer(lines, coords=expected.setting.coords, known=names, deadline=deadline)
+    if not read.ok or read.kind != "equations" or read.value[-1] != answer.value:
+        return answer
+    if any(item.lhs not in _STATED_BEFORE_L for item in read.value[:-1]) or _DEFINING_LETTERS & expected.names:
+        return answer
+    return read
+
+
+_STATED_BEFORE_L = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
+_ENERGY_SYMBOLS = frozenset(sympy.symbols("L H E"))
 
 
 def _working_then_derived(answer, submitted: str, expected: Expected, names: list, deadline):
