@@ -1699,6 +1699,9 @@ _KINETIC, _POTENTIAL, _POTENTIAL_U = sympy.symbols("T V U")
 _ENERGIES = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
 _ENERGY_SUMS = {"L": _KINETIC - _POTENTIAL, "H": _KINETIC + _POTENTIAL, "E": _KINETIC + _POTENTIAL}
 # where the part says H is not the energy (the option h_is_energy: H = T₂ − T₀ + V on a rotating hoop)
+# what a sentence before a formula may name it, where the part names its quantity: "The kinetic energy is …"
+# is T, right where T is asked and held against the formula where L is
+_ENERGY_NAMES = frozenset({"T", "V"})
 _NOT_ENERGY_SUMS = {name: value for name, value in _ENERGY_SUMS.items() if name != "H"}
 
 
@@ -2295,7 +2298,7 @@ def _words_note(key: str, words: str, expected: Expected) -> str:
         return "words_for_a_person"  # where the prompt asks for more than the formula, words may be the more
     named, asked = quantities_named(words), set(expected.option("name") or ())
     if key != "words_left_out":
-        named = named & _ENERGY_SUMS.keys() if asked else set()
+        named = named & (_ENERGY_SUMS.keys() | _ENERGY_NAMES) if asked else set()
     return "words_for_a_person" if named - asked else key
 
 
