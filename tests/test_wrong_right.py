@@ -687,6 +687,10 @@ PREMISES_OF_A_LAGRANGIAN = [
     (f"T = 1/2 m l^2 thetadot^2, V = m g l (1 - cos(theta)) => L = {L_PENDULUM}", "equivalent", ("Correct.",)),
     (f"x = l sin(theta), y = -l cos(theta) => L = {L_PENDULUM}", "equivalent", ("Correct.",)),
     (f"L = T - V ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    # a formula with no name is a Lagrangian before another with none, and may be T before L = …
+    ("1/2 m l^2 thetadot^2 ⇒ 1/2 m l^2 thetadot^2 + m g l cos(theta)", "undecided",
+     (f"Your answer says `1/2 m l^2 thetadot^2` {PREMISE_VALUE}",)),
+    (f"1/2 m l^2 thetadot^2 ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
 ]  # fmt: skip
 
 

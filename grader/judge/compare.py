@@ -303,7 +303,8 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
     names, coords = sorted(expected.names), expected.setting.coords
     premises = _PREMISE_STEP.split(submitted)[:-1]
     if spec.name == "lagrangian":
-        return _premise_of_lagrangian(spec, premises, expected, timeout)
+        bare = "=" not in _PREMISE_STEP.split(submitted)[-1]
+        return _premise_of_lagrangian(spec, premises, expected, timeout, bare=bare)
     if spec.shape == "expression":
         return _premise_of_acceleration(premises, expected)
     for premise in premises:
@@ -323,12 +324,15 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
     return None
 
 
-def _premise_of_lagrangian(spec: Kind, premises: list[str], expected: Expected, timeout: float) -> str | None:
+def _premise_of_lagrangian(
+    spec: Kind, premises: list[str], expected: Expected, timeout: float, *, bare: bool
+) -> str | None:
     """``L = ½ m l² θ̇² − m g l cos θ ⇒ L = ½ m l² θ̇² + m g l cos θ``, or ``T = …, V = … ⇒ L = …``, where a
     Lagrangian is asked: a Lagrangian before the step, or the energies whose difference is one, in the
-    problem's names, that is not one of the same motion; as typed, or None. The parser keeps only what
-    follows the last step, so the lines and chains that say the same are judged by what they say
-    (:func:`_energies_disagree`), but this is not."""
+    problem's names, that is not one of the same motion; as typed, or None. A formula with no name is
+    a Lagrangian only before one with none (``bare``): ``½ m l² θ̇² ⇒ L = …`` may start from T. The
+    parser keeps only what follows the last step, so the lines and chains that say the same are judged
+    by what they say (:func:`_energies_disagree`), but this is not."""
     started = time.monotonic()
     coords, names = expected.setting.coords, sorted(expected.names)
     for premise in premises:
@@ -344,7 +348,7 @@ def _premise_of_lagrangian(spec: Kind, premises: list[str], expected: Expected, 
             said = energies[_KINETIC] - energies[potential]
         elif read.kind == "equation" and read.value.lhs == _LAGRANGIAN:
             said = read.value.rhs
-        elif read.kind == "expression":
+        elif read.kind == "expression" and bare:
             said = read.value
         else:
             continue
