@@ -1964,6 +1964,33 @@ def test_words_that_disown_a_formula_or_name_another_quantity_send_it_to_a_perso
     assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict
 
 
+T_PENDULUM = "1/2 m l^2 thetadot^2"
+V_PENDULUM = "-m g l cos(theta)"
+KINETIC, POTENTIAL = {"name": ["T", "K"]}, {"name": ["V", "U"]}
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "options", "status", "feedback"),
+    [
+        # "kinetic energy" names T, "potential energy" V: before, each was read as the energy E, for a person
+        (T_PENDULUM, "The kinetic energy is T = ½ m l² θ̇²", KINETIC, "equivalent",
+         ("Correct.", _before("The kinetic energy is"))),
+        (V_PENDULUM, "The potential energy is −m g l cos θ", POTENTIAL, "equivalent",
+         ("Correct.", _before("The potential energy is"))),
+        # the other energy, or the kind's own quantity, named for the formula: still for a person
+        (T_PENDULUM, "The potential energy is ½ m l² θ̇²", KINETIC, "undecided",
+         (_for_a_person("The potential energy is"),)),
+        (V_PENDULUM, "The kinetic energy is −m g l cos θ", POTENTIAL, "undecided",
+         (_for_a_person("The kinetic energy is"),)),
+        (L_PENDULUM, "The kinetic energy is ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "undecided",
+         (_for_a_person("The kinetic energy is"),)),
+    ],
+)  # fmt: skip
+def test_a_sentence_naming_the_energy_asked_for_is_read_past(expected, submitted, options, status, feedback):
+    verdict = compare(expected, submitted, **PENDULUM, **options)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, 1.0, feedback), verdict
+
+
 H_PENDULUM = "1/2 m l^2 thetadot^2 - m g l cos(theta)"
 ATWOOD = {"coords": ["x"], "known": ["m1", "m2", "g"]}
 L_ATWOOD = "1/2 (m1 + m2) xdot^2 + (m1 - m2) g x"

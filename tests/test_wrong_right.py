@@ -714,3 +714,28 @@ PREMISES_OF_A_VALUE = [
 def test_a_value_after_a_step_from_an_equation_it_does_not_solve_goes_to_a_person(submitted, status, feedback):
     verdict = compare(A_ATWOOD, submitted, kind="expression", **ATWOOD_ACCELERATION)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+L_WRONG_SIGN = "L = 1/2 m l^2 thetadot^2 - m g l cos(theta)"
+PREMISES_OF_A_LAGRANGIAN = [
+    # (submitted, status, feedback): the right L after a step from another (before, right)
+    (f"{L_WRONG_SIGN} ⇒ L = {L_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG_SIGN}` {PREMISE_VALUE}",)),
+    (f"{L_WRONG_SIGN}, so L = {L_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG_SIGN}` {PREMISE_VALUE}",)),
+    (f"T = 1/2 m l thetadot^2, V = -m g l cos(theta) => L = {L_PENDULUM}", "undecided",
+     (f"Your answer says `T = 1/2 m l thetadot^2, V = -m g l cos(theta)` {PREMISE_VALUE}",)),
+    # after one of the same motion, the energies whose difference it is, or names of the student's own: as before
+    (f"L = {L_PENDULUM} + theta thetadot ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    (f"T = 1/2 m l^2 thetadot^2, V = m g l (1 - cos(theta)) => L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    (f"x = l sin(theta), y = -l cos(theta) => L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    (f"L = T - V ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    # a formula with no name is a Lagrangian before another with none, and may be T before L = …
+    ("1/2 m l^2 thetadot^2 ⇒ 1/2 m l^2 thetadot^2 + m g l cos(theta)", "undecided",
+     (f"Your answer says `1/2 m l^2 thetadot^2` {PREMISE_VALUE}",)),
+    (f"1/2 m l^2 thetadot^2 ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), PREMISES_OF_A_LAGRANGIAN)
+def test_a_lagrangian_after_a_step_from_another_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

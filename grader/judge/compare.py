@@ -302,6 +302,9 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
     started = time.monotonic()
     names, coords = sorted(expected.names), expected.setting.coords
     premises = _PREMISE_STEP.split(submitted)[:-1]
+    if spec.name == "lagrangian":
+        bare = "=" not in _PREMISE_STEP.split(submitted)[-1]
+        return _premise_of_lagrangian(spec, premises, expected, timeout, bare=bare)
     if spec.shape == "expression":
         return _premise_of_acceleration(premises, expected)
     for premise in premises:
@@ -317,6 +320,44 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
         judged = _judge(spec, expected, premise, left)
         # θ̈ = −(g/l) sin θ ⇒ θ̈ = −(g/l) θ: the full form, then the small-angle one asked for, is a derivation
         if judged.status == "not_equivalent" and judged.diagnosis not in _SMALL_FORMS | _FULL_FORMS:
+            return premise
+    return None
+
+
+def _premise_of_lagrangian(
+    spec: Kind, premises: list[str], expected: Expected, timeout: float, *, bare: bool
+) -> str | None:
+    """``L = ½ m l² θ̇² − m g l cos θ ⇒ L = ½ m l² θ̇² + m g l cos θ``, or ``T = …, V = … ⇒ L = …``, where a
+    Lagrangian is asked: a Lagrangian before the step, or the energies whose difference is one, in the
+    problem's names, that is not one of the same motion; as typed, or None. A formula with no name is
+    a Lagrangian only before one with none (``bare``): ``½ m l² θ̇² ⇒ L = …`` may start from T. The
+    parser keeps only what follows the last step, so the lines and chains that say the same are judged
+    by what they say (:func:`_energies_disagree`), but this is not."""
+    started = time.monotonic()
+    coords, names = expected.setting.coords, sorted(expected.names)
+    for premise in premises:
+        premise = premise.strip(" ,;:.")
+        read = parse_answer(premise, coords=coords, known=names)
+        if not read.ok:
+            continue
+        if read.kind == "equations":  # T = …, V = …: their difference is the Lagrangian said
+            energies = {item.lhs: item.rhs for item in read.value if item.lhs in (_KINETIC, _POTENTIAL, _POTENTIAL_U)}
+            if len(energies) != 2 or _KINETIC not in energies or len(read.value) != 2:
+                continue
+            (potential,) = set(energies) - {_KINETIC}
+            said = energies[_KINETIC] - energies[potential]
+        elif read.kind == "equation" and read.value.lhs == _LAGRANGIAN:
+            said = read.value.rhs
+        elif read.kind == "expression" and bare:
+            said = read.value
+        else:
+            continue
+        if {symbol.name for symbol in said.free_symbols} - expected.names - {TIME.name}:
+            continue  # a name of the student's own (x = l sin θ ⇒ …): no Lagrangian to judge
+        left = timeout - (time.monotonic() - started)
+        if left <= 0:
+            return None
+        if _judge(spec, expected, to_text(said), left).status == "not_equivalent":
             return premise
     return None
 
@@ -1706,10 +1747,13 @@ def _rates_named(names: tuple, expected: Expected) -> list[tuple[str, int]]:
 
 
 # The sums of the energies that name a quantity: L = T − V, and H = E = T + V (U is V)
-_KINETIC, _POTENTIAL, _POTENTIAL_U = sympy.symbols("T V U")
+_KINETIC, _POTENTIAL, _POTENTIAL_U, _LAGRANGIAN = sympy.symbols("T V U L")
 _ENERGIES = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
 _ENERGY_SUMS = {"L": _KINETIC - _POTENTIAL, "H": _KINETIC + _POTENTIAL, "E": _KINETIC + _POTENTIAL}
 # where the part says H is not the energy (the option h_is_energy: H = T₂ − T₀ + V on a rotating hoop)
+# what a sentence before a formula may name it, where the part names its quantity: "The kinetic energy is …"
+# is T, right where T is asked and held against the formula where L is
+_ENERGY_NAMES = frozenset({"T", "V"})
 _NOT_ENERGY_SUMS = {name: value for name, value in _ENERGY_SUMS.items() if name != "H"}
 
 
@@ -2364,7 +2408,7 @@ def _words_note(key: str, words: str, expected: Expected) -> str:
         return "words_for_a_person"  # where the prompt asks for more than the formula, words may be the more
     named, asked = quantities_named(words), set(expected.option("name") or ())
     if key != "words_left_out":
-        named = named & _ENERGY_SUMS.keys() if asked else set()
+        named = named & (_ENERGY_SUMS.keys() | _ENERGY_NAMES) if asked else set()
     return "words_for_a_person" if named - asked else key
 
 

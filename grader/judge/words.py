@@ -116,10 +116,17 @@ _JUDGED = re.compile(
 # Hamiltonian", "(the total energy)", "the torque of gravity"): the Lagrangian and the Hamiltonian by the names
 # a part may ask for (the option ``name``), any other by its word
 _QUANTITY = re.compile(
-    r"\b(?:lagrangian|hamiltonian|routhian|energ(?:y|ies)|force|torque|momentum|momenta|work|action|impulse)s?\b",
+    r"\b(?:lagrangian|hamiltonian|routhian|(?:(?:kinetic|potential)\s+)?energ(?:y|ies)|force|torque|momentum|momenta"
+    r"|work|action|impulse)s?\b",
     re.I,
 )
-_QUANTITY_NAMES = {"lagrangian": "L", "hamiltonian": "H", "energy": "E"}
+_QUANTITY_NAMES = {
+    "lagrangian": "L",
+    "hamiltonian": "H",
+    "energy": "E",
+    "kinetic energy": "T",
+    "potential energy": "V",
+}
 # words that only say what kind of quantity the formula is ("…, it is a force", "(torque)", "an
 # angle"): a statement of its dimensions in other words, which a prompt may ask for
 _A_QUANTITY = re.compile(
@@ -288,14 +295,17 @@ _HYPHEN = re.compile(r"(?<=[A-Za-z])[-‐‑](?=[A-Za-z])")  # small-angle, z-co
 
 
 def quantities_named(words: str) -> frozenset[str]:
-    """The quantities ``words`` name: ``L``, ``H`` or ``E`` for the Lagrangian, the Hamiltonian or the
-    energy, any other by its word in lower case (``torque``).
+    """The quantities ``words`` name: ``L``, ``H``, ``E``, ``T`` or ``V`` for the Lagrangian, the
+    Hamiltonian, the energy, the kinetic or the potential energy, any other by its word in lower case
+    (``torque``).
 
     >>> sorted(quantities_named(", which is the total energy, not a force"))
     ['E', 'force']
+    >>> sorted(quantities_named("The kinetic energy is"))
+    ['T']
     """
-    found = (word.lower() for word in _QUANTITY.findall(words))
-    found = ("energy" if word.startswith("energ") else word.removesuffix("s") for word in found)
+    found = (" ".join(word.lower().split()) for word in _QUANTITY.findall(words))
+    found = (re.sub(r"energ\w*$", "energy", word) if "energ" in word else word.removesuffix("s") for word in found)
     return frozenset(_QUANTITY_NAMES.get(word, word) for word in found)
 
 
