@@ -721,11 +721,13 @@ PREMISES_OF_A_LAGRANGIAN = [
     # (submitted, status, feedback): the right L after a step from another (before, right)
     (f"{L_WRONG_SIGN} ⇒ L = {L_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG_SIGN}` {PREMISE_VALUE}",)),
     (f"{L_WRONG_SIGN}, so L = {L_PENDULUM}", "undecided", (f"Your answer says `{L_WRONG_SIGN}` {PREMISE_VALUE}",)),
+    # energies before the step: read as lines, judged as after `;`
     (f"T = 1/2 m l thetadot^2, V = -m g l cos(theta) => L = {L_PENDULUM}", "undecided",
-     (f"Your answer says `T = 1/2 m l thetadot^2, V = -m g l cos(theta)` {PREMISE_VALUE}",)),
+     (f"{ENERGIES} Its value was graded and is right; a person will check this answer.", WORKING_READ)),
     # after one of the same motion, the energies whose difference it is, or names of the student's own: as before
     (f"L = {L_PENDULUM} + theta thetadot ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
-    (f"T = 1/2 m l^2 thetadot^2, V = m g l (1 - cos(theta)) => L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    (f"T = 1/2 m l^2 thetadot^2, V = m g l (1 - cos(theta)) => L = {L_PENDULUM}", "equivalent",
+     ("Correct.", WORKING_READ)),
     (f"x = l sin(theta), y = -l cos(theta) => L = {L_PENDULUM}", "equivalent", ("Correct.",)),
     (f"L = T - V ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
     # a formula with no name is a Lagrangian before another with none, and may be T before L = …

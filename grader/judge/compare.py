@@ -293,7 +293,7 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
     the one it gives follows from, which the parser leaves behind the step, where the two do not agree (the
     first is judged wrong); as typed, or None. Only an equation in the problem's names, with an acceleration
     in it, is judged so. ``L = … ⇒ …`` is read as working, the L, then the equation
-    (:func:`_lagrangian_then_motion`), which Lagrange's equation with that L must give
+    (:func:`_working_before_steps`), which Lagrange's equation with that L must give
     (:func:`_lagrangian_disagrees`)."""
     if spec.shape not in ("equation", "expression") or len(submitted) > _PREMISE_LENGTH:
         return None
@@ -327,12 +327,11 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
 def _premise_of_lagrangian(
     spec: Kind, premises: list[str], expected: Expected, timeout: float, *, bare: bool
 ) -> str | None:
-    """``L = ½ m l² θ̇² − m g l cos θ ⇒ L = ½ m l² θ̇² + m g l cos θ``, or ``T = …, V = … ⇒ L = …``, where a
-    Lagrangian is asked: a Lagrangian before the step, or the energies whose difference is one, in the
-    problem's names, that is not one of the same motion; as typed, or None. A formula with no name is
-    a Lagrangian only before one with none (``bare``): ``½ m l² θ̇² ⇒ L = …`` may start from T. The
-    parser keeps only what follows the last step, so the lines and chains that say the same are judged
-    by what they say (:func:`_energies_disagree`), but this is not."""
+    """``L = ½ m l² θ̇² − m g l cos θ ⇒ L = ½ m l² θ̇² + m g l cos θ`` where a Lagrangian is asked: a
+    Lagrangian before the step, in the problem's names, that is not one of the same motion; as typed, or
+    None. A formula with no name is a Lagrangian only before one with none (``bare``): ``½ m l² θ̇² ⇒ L = …``
+    may start from T. The parser keeps only what follows the last step; energies before it, ``T = …, V = …
+    ⇒ L = …``, are read as lines (:func:`_energies_then_value`) and judged by :func:`_energies_disagree`."""
     started = time.monotonic()
     coords, names = expected.setting.coords, sorted(expected.names)
     for premise in premises:
@@ -340,13 +339,7 @@ def _premise_of_lagrangian(
         read = parse_answer(premise, coords=coords, known=names)
         if not read.ok:
             continue
-        if read.kind == "equations":  # T = …, V = …: their difference is the Lagrangian said
-            energies = {item.lhs: item.rhs for item in read.value if item.lhs in (_KINETIC, _POTENTIAL, _POTENTIAL_U)}
-            if len(energies) != 2 or _KINETIC not in energies or len(read.value) != 2:
-                continue
-            (potential,) = set(energies) - {_KINETIC}
-            said = energies[_KINETIC] - energies[potential]
-        elif read.kind == "equation" and read.value.lhs == _LAGRANGIAN:
+        if read.kind == "equation" and read.value.lhs == _LAGRANGIAN:
             said = read.value.rhs
         elif read.kind == "expression" and bare:
             said = read.value
@@ -1315,7 +1308,6 @@ def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, 
         "does": "do" if many else "does",
         "were": "were" if many else "was",
         "are": "are" if many else "is",
-        "s": "s" if many else "",
     }
     if agrees in (True, "equivalent"):
         return ()
@@ -1747,7 +1739,7 @@ def _rates_named(names: tuple, expected: Expected) -> list[tuple[str, int]]:
 
 
 # The sums of the energies that name a quantity: L = T − V, and H = E = T + V (U is V)
-_KINETIC, _POTENTIAL, _POTENTIAL_U, _LAGRANGIAN = sympy.symbols("T V U L")
+_KINETIC, _POTENTIAL, _POTENTIAL_U = sympy.symbols("T V U")
 _ENERGIES = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
 _ENERGY_SUMS = {"L": _KINETIC - _POTENTIAL, "H": _KINETIC + _POTENTIAL, "E": _KINETIC + _POTENTIAL}
 # where the part says H is not the energy (the option h_is_energy: H = T₂ − T₀ + V on a rotating hoop)
@@ -2047,7 +2039,7 @@ def _read(
             # only where it splits a glued name: xdot, where x = l sin θ, is the rate of x as read
             if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
                 answer = again
-        answer = _lagrangian_then_motion(answer, submitted, spec, expected, names, deadline)
+        answer = _working_before_steps(answer, submitted, spec, expected, names, deadline)
         answer, notes = _without_words(answer, submitted, expected, names, deadline)
         said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
         if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
@@ -2071,8 +2063,9 @@ def _read(
     return answer, notes
 
 
-def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expected, names: list, deadline):
-    """``L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ`` (or ``⇒``) where a Lagrangian is asked:
+def _working_before_steps(answer, submitted: str, spec: Kind, expected: Expected, names: list, deadline):
+    """What the parser left behind a derivation's steps (⇒, so, therefore), kept as lines of working where
+    a check judges it. ``L = ½ m l² θ̇² + m g l cos θ, so m l² θ̈ = −m g l sin θ`` where a Lagrangian is asked:
     the parser keeps the step's conclusion, an equation of motion; read as the Lagrangian, then the
     equations it derives, which are left out and said so (:func:`_without_working`). ``answer`` where
     the text is not ``L = …`` and then, after each step, an equation with an acceleration or a quantity
@@ -2081,7 +2074,8 @@ def _lagrangian_then_motion(answer, submitted: str, spec: Kind, expected: Expect
     Where equations of motion are asked, ``L = …, so eq₁; eq₂``: the conclusion the parser kept, after
     the L it says it came from, which is working (:func:`_lagrangian_disagrees` checks it); the steps
     between are left out, as they were. So too where a momentum or H is asked, after an L (``L = …, so
-    p_φ = …``), or a generalized force after a V: :func:`_derived_disagrees` checks that working."""
+    p_φ = …``), or a generalized force after a V: :func:`_derived_disagrees` checks that working; and T
+    and V before L or H (:func:`_energies_then_value`)."""
     motion = spec.shape in ("equation", "equations")
     if spec.name == "expression":
         energies = _energies_then_value(answer, submitted, expected, names, deadline)
