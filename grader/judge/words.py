@@ -545,7 +545,7 @@ def euler_lagrange_then_formula(
     before the equation, the Euler–Lagrange operator as typed, the generalized force it is said to equal
     where that is written out, ``−b ẋ``, else "", the equation it gives). Words that state
     may begin it (``Applying``, ``Using``, ``From``…); after the operator's ``= 0`` (or ``= −b ẋ``), a ``,``, ``;`` or
-    ``:``, a step (``⇒``, not after ``= 0``), or words that hand over (``we get``), lead to the equation;
+    ``:``, a step (``⇒``), or words that hand over (``we get``), lead to the equation;
     or the equation is what the operator comes to, after its ``=`` (``d/dt(∂L/∂θ̇) − ∂L/∂θ = m l² θ̈ + … = 0``).
     The operator is any of Lagrange's shape (:func:`~grader.judge.euler_lagrange.euler_lagrange`): whether it
     is the true one is for the caller to judge. The words must be prose (:func:`is_prose`); the equation is
