@@ -301,10 +301,9 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
         return None
     started = time.monotonic()
     names, coords = sorted(expected.names), expected.setting.coords
-    premises = _PREMISE_STEP.split(submitted)[:-1]
+    *premises, conclusion = _PREMISE_STEP.split(submitted)
     if spec.name == "lagrangian":
-        bare = "=" not in _PREMISE_STEP.split(submitted)[-1]
-        return _premise_of_lagrangian(spec, premises, expected, timeout, bare=bare)
+        return _premise_of_lagrangian(spec, premises, expected, timeout, bare="=" not in conclusion)
     if spec.shape == "expression":
         return _premise_of_acceleration(premises, expected)
     for premise in premises:
@@ -2133,7 +2132,7 @@ def _energies_then_value(answer, submitted: str, expected: Expected, names: list
 
 
 _STATED_BEFORE_L = frozenset({_KINETIC, _POTENTIAL, _POTENTIAL_U})
-_ENERGY_SYMBOLS = frozenset(sympy.symbols("L H E"))
+_ENERGY_SYMBOLS = frozenset(map(sympy.Symbol, _ENERGY_SUMS))  # L, H, E
 
 
 def _working_then_derived(answer, submitted: str, expected: Expected, names: list, deadline):
