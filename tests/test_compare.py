@@ -977,6 +977,31 @@ def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, s
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
 
 
+_WRONG_KINETIC_FACTOR = "A term differs: the velocity-dependent term in θ̇² has the wrong factor."
+_WRONG_IN_L = (
+    "Your answer depends on m and θ̇ as the right answer does, but on l in another way: check how your answer"
+    " depends on l."
+)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "feedback"),
+    [
+        # the name over the problem's constants: L/m = … says L = m·(…). Before, L was a name the problem lacks
+        (L_PENDULUM, "L/m = ½ l² θ̇² + g l cos θ", "lagrangian", "equivalent", "Correct."),
+        (L_PENDULUM, "2L/(m l²) = θ̇² + (2g/l) cos θ", "lagrangian", "equivalent", "Correct."),
+        # as wrong as L = m l² θ̇² + m g l cos θ, and told the same
+        (L_PENDULUM, "L/m = l² θ̇² + g l cos θ", "lagrangian", "not_equivalent", _WRONG_KINETIC_FACTOR),
+        (L_PENDULUM, "L/(m l) = l θ̇² + g cos θ", "lagrangian", "not_equivalent", _WRONG_KINETIC_FACTOR),
+        ("m l^2 thetadot", "p_θ/m = l² θ̇", "expression", "equivalent", "Correct."),
+        ("m l^2 thetadot", "p_θ/m = l θ̇", "expression", "not_equivalent", _WRONG_IN_L),
+    ],
+)
+def test_the_name_asked_for_over_the_problems_constants_gives_its_value(expected, submitted, kind, status, feedback):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), (feedback,))
+
+
 SIGN_OPEN = (
     "Your answer gives `{}`: {} leaves the sign open, and the quantity asked for may be negative. A person will"
     " check which root you meant."
@@ -5104,7 +5129,12 @@ def test_the_asked_quantitys_name_or_its_stem_is_a_label_like_any(submitted):
 
 @pytest.mark.parametrize(
     ("submitted", "label"),
-    [("p_theta = m l² sin²θ φ̇", "p_θ"), ("H = m l² sin²θ φ̇", "H"), ("2 p_theta = 2 m l² sin²θ φ̇", "p_θ")],
+    [
+        ("p_theta = m l² sin²θ φ̇", "p_θ"),
+        ("H = m l² sin²θ φ̇", "H"),
+        ("2 p_theta = 2 m l² sin²θ φ̇", "p_θ"),
+        ("p_theta/m = l² sin²θ φ̇", "p_θ"),  # over m, as p_φ/m = … is read
+    ],
 )
 def test_a_right_value_under_another_quantitys_name_goes_to_a_person(submitted, label):
     verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)
