@@ -2169,6 +2169,10 @@ def _working_then_derived(answer, submitted: str, expected: Expected, names: lis
     semicolon; the steps between are left out. A conclusion that is a value alone (``L = … ⇒ m l² sin²θ φ̇``)
     is named as the part asks, so the L is checked against it too. ``answer`` where the text is not so."""
     momenta, forces, label = _derived_asked(expected)
+    if label is not None and not answer.ok and len(submitted) <= _STEPS_LENGTH:
+        bare = _value_after_word(submitted, expected, names, deadline)
+        read = _working_then_derived(bare, submitted, expected, names, deadline) if bare else bare
+        return answer if read is bare else read  # refused as typed where no L stands before the word
     if label is None or not answer.ok or answer.kind not in ("equation", "expression"):
         return answer
     stated = {label, _POTENTIAL_U} if label == _POTENTIAL else {label}
@@ -2189,6 +2193,17 @@ def _working_then_derived(answer, submitted: str, expected: Expected, names: lis
         name = canonical_name(f"p_{momenta[0]}") if momenta else canonical_name(f"Q_{forces[0]}") if forces else "H"
         concluded = sympy.Eq(sympy.Symbol(name), answer.value, evaluate=False)
     return ParsedAnswer(submitted, (first.value, concluded), "equations")
+
+
+def _value_after_word(submitted: str, expected: Expected, names: list, deadline) -> ParsedAnswer | None:
+    """``…, so m l² sin²θ φ̇``: the value alone after the one word that steps from what stands before
+    it (the tokenizer reads so, hence, thus, therefore as ⇒ only between equations), for
+    :func:`_working_then_derived` to read as after ⇒; None where the text is no such answer."""
+    pieces = _STEP.split(submitted)
+    if len(pieces) != 2 or not _STEP.search(submitted)[0].strip(" ,").isalpha():
+        return None
+    last = parse_answer(pieces[-1].strip(" ,;:."), coords=expected.setting.coords, known=names, deadline=deadline)
+    return last if last.ok and last.kind == "expression" else None
 
 
 # a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)
