@@ -55,6 +55,22 @@ def test_rates_glued_on_a_stand_in_as_d_or_dd_are_read(submitted, status, feedba
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
+STAND_IN_ON_THE_LEFT = [
+    # (submitted, status, feedback): th for θ alone before `=`, as on the right side (before, a name of the
+    # student's own that the problem does not define)
+    ("thdd = -g/l sin(th)", "equivalent", ("Correct.",)),
+    ("thddot = -(g/l) sin th", "equivalent", ("Correct.",)),
+    ("th_dd = -g/l sin(th)", "equivalent", ("Correct.",)),
+    ("thdd = g/l sin(th)", "not_equivalent", ("A term differs: the term in sin(θ) has the wrong sign.",)),
+]
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), STAND_IN_ON_THE_LEFT)
+def test_a_stand_in_for_an_angles_rate_reads_the_same_on_the_left(submitted, status, feedback):
+    verdict = compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 def test_verdict_is_a_frozen_dataclass_with_the_documented_fields():
     verdict = compare("2 m", "m + m", known=["m"])
     assert dataclasses.is_dataclass(verdict)
