@@ -4718,6 +4718,29 @@ def test_a_decimal_comma_inside_the_arithmetic_of_a_number_is_read_as_a_point(ex
     assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
+_WORKED = "Graded your final value, `{}`; the working before it is not graded."
+GIVEN_AFTER_A_COMMA = (
+    # the values worked out with after a comma, as in a bracket: their decimal comma makes 2,006 one too (before,
+    # refused as 2006 in English, or a list)
+    ("T = 2 pi sqrt(l/g) = 2,006 s, with g = 9,81", "equivalent",
+     ("Correct.", _comma("2,006"), _WORKED.format("2,006 s"), _remark("2,006 s", "with g = 9,81"))),
+    ("T = 2 pi sqrt(l/g) = 2,106 s, with g = 9,81", "not_equivalent",
+     ("Not within the accepted tolerance.", _comma("2,106"), _WORKED.format("2,106 s"),
+      _remark("2,106 s", "with g = 9,81"))),
+    ("2,006 s, with g = 9,81", "equivalent", ("Correct.", _comma("2,006"), _remark("2,006 s", "with g = 9,81"))),
+    ("2,106 s, with g = 9,81", "not_equivalent",
+     ("Not within the accepted tolerance.", _comma("2,106"), _remark("2,106 s", "with g = 9,81"))),
+    ("2,006, with g = 9,81", "equivalent", ("Correct.", _comma("2,006"), _remark("2,006", "with g = 9,81"))),
+    ("2,006 s, using g = 9,81.", "equivalent", ("Correct.", _comma("2,006"), _remark("2,006 s", "using g = 9,81."))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), GIVEN_AFTER_A_COMMA)
+def test_values_given_after_a_comma_with_decimal_commas_make_the_number_s_comma_a_decimal(submitted, status, feedback):
+    verdict = compare(PERIOD, submitted, **PERIOD_PART)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 @pytest.mark.parametrize(("expected", "unit", "submitted", "status", "feedback"), ZERO_DECIMAL_COMMA)
 def test_three_digits_after_a_lone_zero_and_a_comma_are_decimals(expected, unit, submitted, status, feedback):
     verdict = compare(expected, submitted, kind="number", rtol=0.005, unit=unit)
