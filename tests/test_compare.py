@@ -3340,6 +3340,30 @@ def test_a_choice_may_be_written_as_its_claim_without_the_reason(submitted, stat
     assert (verdict.feedback[-1] == f"Read as the option you wrote out: {read}.") == (read is not None)
 
 
+TEX_CHOICES = [
+    # (submitted, status, feedback): a choice set in TeX, as typed in a TeX box, reads as without it (before,
+    # "`\text{b}` is not one of the options")
+    (r"\text{b}", "equivalent", ("Correct.",)),
+    (r"$b$", "equivalent", ("Correct.",)),
+    (r"$\textbf{(b)}$", "equivalent", ("Correct.",)),
+    (r"\(b\)", "equivalent", ("Correct.",)),
+    (r"\text{a}", "not_equivalent", ("Not the right choice.",)),
+    (r"\text{rheonomic}", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+    (r"$b$, since the hoop rotates", "equivalent",
+     ("Correct.", "Graded your choice, b; what follows it (`since the hoop rotates`) is not graded.")),
+    (r"\text{b or c}", "invalid",
+     ("One option is asked for here, and your answer `\\text{b or c}` offers another, or doubts or denies the one it"
+      " names: give the one you mean.",)),
+    (r"\text{d}", "invalid", ("d is not one of the options (a, b, c).",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), TEX_CHOICES)
+def test_a_choice_set_in_tex_reads_as_without_it(submitted, status, feedback):
+    verdict = compare("b", submitted, kind="choice", options=HOOP_CONSTRAINT[:3])
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 def _hedged(typed):
     return (
         f"One option is asked for here, and your answer `{typed}` offers another, or doubts or denies the one it"
