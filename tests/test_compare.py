@@ -55,6 +55,22 @@ def test_rates_glued_on_a_stand_in_as_d_or_dd_are_read(submitted, status, feedba
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
+STAND_IN_ON_THE_LEFT = [
+    # (submitted, status, feedback): th for θ alone before `=`, as on the right side (before, a name of the
+    # student's own that the problem does not define)
+    ("thdd = -g/l sin(th)", "equivalent", ("Correct.",)),
+    ("thddot = -(g/l) sin th", "equivalent", ("Correct.",)),
+    ("th_dd = -g/l sin(th)", "equivalent", ("Correct.",)),
+    ("thdd = g/l sin(th)", "not_equivalent", ("A term differs: the term in sin(θ) has the wrong sign.",)),
+]
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), STAND_IN_ON_THE_LEFT)
+def test_a_stand_in_for_an_angles_rate_reads_the_same_on_the_left(submitted, status, feedback):
+    verdict = compare("thetaddot = -g/l sin(theta)", submitted, kind="equation", **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 def test_verdict_is_a_frozen_dataclass_with_the_documented_fields():
     verdict = compare("2 m", "m + m", known=["m"])
     assert dataclasses.is_dataclass(verdict)
@@ -975,6 +991,31 @@ def test_an_equation_may_be_labelled_or_concluded_from_another(submitted, status
 def test_a_multiple_or_a_power_of_the_name_asked_for_gives_its_value(expected, submitted, kind, status):
     verdict = compare(expected, submitted, kind=kind, **PENDULUM)
     assert (verdict.status, verdict.score) == (status, float(status == "equivalent")), verdict
+
+
+_WRONG_KINETIC_FACTOR = "A term differs: the velocity-dependent term in θ̇² has the wrong factor."
+_WRONG_IN_L = (
+    "Your answer depends on m and θ̇ as the right answer does, but on l in another way: check how your answer"
+    " depends on l."
+)
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "feedback"),
+    [
+        # the name over the problem's constants: L/m = … says L = m·(…). Before, L was a name the problem lacks
+        (L_PENDULUM, "L/m = ½ l² θ̇² + g l cos θ", "lagrangian", "equivalent", "Correct."),
+        (L_PENDULUM, "2L/(m l²) = θ̇² + (2g/l) cos θ", "lagrangian", "equivalent", "Correct."),
+        # as wrong as L = m l² θ̇² + m g l cos θ, and told the same
+        (L_PENDULUM, "L/m = l² θ̇² + g l cos θ", "lagrangian", "not_equivalent", _WRONG_KINETIC_FACTOR),
+        (L_PENDULUM, "L/(m l) = l θ̇² + g cos θ", "lagrangian", "not_equivalent", _WRONG_KINETIC_FACTOR),
+        ("m l^2 thetadot", "p_θ/m = l² θ̇", "expression", "equivalent", "Correct."),
+        ("m l^2 thetadot", "p_θ/m = l θ̇", "expression", "not_equivalent", _WRONG_IN_L),
+    ],
+)
+def test_the_name_asked_for_over_the_problems_constants_gives_its_value(expected, submitted, kind, status, feedback):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.score, verdict.feedback) == (status, float(status == "equivalent"), (feedback,))
 
 
 SIGN_OPEN = (
@@ -3299,6 +3340,30 @@ def test_a_choice_may_be_written_as_its_claim_without_the_reason(submitted, stat
     assert (verdict.feedback[-1] == f"Read as the option you wrote out: {read}.") == (read is not None)
 
 
+TEX_CHOICES = [
+    # (submitted, status, feedback): a choice set in TeX, as typed in a TeX box, reads as without it (before,
+    # "`\text{b}` is not one of the options")
+    (r"\text{b}", "equivalent", ("Correct.",)),
+    (r"$b$", "equivalent", ("Correct.",)),
+    (r"$\textbf{(b)}$", "equivalent", ("Correct.",)),
+    (r"\(b\)", "equivalent", ("Correct.",)),
+    (r"\text{a}", "not_equivalent", ("Not the right choice.",)),
+    (r"\text{rheonomic}", "equivalent", ("Correct.", "Read as the option you wrote out: b.")),
+    (r"$b$, since the hoop rotates", "equivalent",
+     ("Correct.", "Graded your choice, b; what follows it (`since the hoop rotates`) is not graded.")),
+    (r"\text{b or c}", "invalid",
+     ("One option is asked for here, and your answer `\\text{b or c}` offers another, or doubts or denies the one it"
+      " names: give the one you mean.",)),
+    (r"\text{d}", "invalid", ("d is not one of the options (a, b, c).",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), TEX_CHOICES)
+def test_a_choice_set_in_tex_reads_as_without_it(submitted, status, feedback):
+    verdict = compare("b", submitted, kind="choice", options=HOOP_CONSTRAINT[:3])
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 def _hedged(typed):
     return (
         f"One option is asked for here, and your answer `{typed}` offers another, or doubts or denies the one it"
@@ -4677,6 +4742,29 @@ def test_a_decimal_comma_inside_the_arithmetic_of_a_number_is_read_as_a_point(ex
     assert (verdict.status, verdict.feedback) == (status, feedback)
 
 
+_WORKED = "Graded your final value, `{}`; the working before it is not graded."
+GIVEN_AFTER_A_COMMA = (
+    # the values worked out with after a comma, as in a bracket: their decimal comma makes 2,006 one too (before,
+    # refused as 2006 in English, or a list)
+    ("T = 2 pi sqrt(l/g) = 2,006 s, with g = 9,81", "equivalent",
+     ("Correct.", _comma("2,006"), _WORKED.format("2,006 s"), _remark("2,006 s", "with g = 9,81"))),
+    ("T = 2 pi sqrt(l/g) = 2,106 s, with g = 9,81", "not_equivalent",
+     ("Not within the accepted tolerance.", _comma("2,106"), _WORKED.format("2,106 s"),
+      _remark("2,106 s", "with g = 9,81"))),
+    ("2,006 s, with g = 9,81", "equivalent", ("Correct.", _comma("2,006"), _remark("2,006 s", "with g = 9,81"))),
+    ("2,106 s, with g = 9,81", "not_equivalent",
+     ("Not within the accepted tolerance.", _comma("2,106"), _remark("2,106 s", "with g = 9,81"))),
+    ("2,006, with g = 9,81", "equivalent", ("Correct.", _comma("2,006"), _remark("2,006", "with g = 9,81"))),
+    ("2,006 s, using g = 9,81.", "equivalent", ("Correct.", _comma("2,006"), _remark("2,006 s", "using g = 9,81."))),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(("submitted", "status", "feedback"), GIVEN_AFTER_A_COMMA)
+def test_values_given_after_a_comma_with_decimal_commas_make_the_number_s_comma_a_decimal(submitted, status, feedback):
+    verdict = compare(PERIOD, submitted, **PERIOD_PART)
+    assert (verdict.status, verdict.feedback) == (status, feedback)
+
+
 @pytest.mark.parametrize(("expected", "unit", "submitted", "status", "feedback"), ZERO_DECIMAL_COMMA)
 def test_three_digits_after_a_lone_zero_and_a_comma_are_decimals(expected, unit, submitted, status, feedback):
     verdict = compare(expected, submitted, kind="number", rtol=0.005, unit=unit)
@@ -5104,7 +5192,12 @@ def test_the_asked_quantitys_name_or_its_stem_is_a_label_like_any(submitted):
 
 @pytest.mark.parametrize(
     ("submitted", "label"),
-    [("p_theta = m l² sin²θ φ̇", "p_θ"), ("H = m l² sin²θ φ̇", "H"), ("2 p_theta = 2 m l² sin²θ φ̇", "p_θ")],
+    [
+        ("p_theta = m l² sin²θ φ̇", "p_θ"),
+        ("H = m l² sin²θ φ̇", "H"),
+        ("2 p_theta = 2 m l² sin²θ φ̇", "p_θ"),
+        ("p_theta/m = l² sin²θ φ̇", "p_θ"),  # over m, as p_φ/m = … is read
+    ],
 )
 def test_a_right_value_under_another_quantitys_name_goes_to_a_person(submitted, label):
     verdict = compare(P_PHI, submitted, name="p_phi", **SPHERICAL)

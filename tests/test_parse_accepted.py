@@ -635,6 +635,23 @@ def test_th_and_ph_with_d_or_dd_glued_on_are_the_angle_s_rates(text, coords, kno
     assert result.ok and result.value == value, result
 
 
+STAND_IN_LABELS = [
+    # (text, coords, value): a stand-in for an angle's rate alone before `=` is that rate, as after it, and no
+    # label of the answer's own (before, thdd = … was the name thdd)
+    ("thdd = -g sin(th)", ["theta"], Eq(D(theta, 2), -g * sin(theta))),
+    ("thddot = g", ["theta"], Eq(D(theta, 2), g)),
+    ("th_dd = g", ["theta"], Eq(D(theta, 2), g)),
+    ("th1dd = g", ["theta_1", "theta_2"], Eq(D(theta1, 2), g)),
+    ("phd = g", ["theta", "phi"], Eq(D(phi), g)),
+]
+
+
+@pytest.mark.parametrize(("text", "coords", "value"), STAND_IN_LABELS)
+def test_a_stand_in_for_an_angles_rate_is_no_label(text, coords, value):
+    result = parse_answer(text, coords=coords, known=["g"])
+    assert result.ok and result.value == value, result
+
+
 def test_a_d_before_a_name_that_is_no_coordinate_is_part_of_the_name():
     assert parse_answer("dy + da", coords=["x"]).value == sympy.Symbol("dy") + sympy.Symbol("da")
 

@@ -640,6 +640,15 @@ DERIVED_FROM_L = [
     (Q_R, f"V = -m g r cos(theta) + 1/2 k (r - l0)^2, so Q_r = {Q_R}", FORCES, "equivalent", ("Correct.", V_READ)),
     (P_PHI, f"L = {L_SPHERICAL} ⇒ {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
     (H_SPHERICAL, f"L = {L_SPHERICAL} ⇒ {H_SPHERICAL}", SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    # the value alone after `so` or `therefore`, as after ⇒ (before, refused: the comma was not understood)
+    (P_PHI, f"L = {L_SPHERICAL}, so {P_PHI}", MOMENTUM_SPHERICAL, "equivalent", ("Correct.", SPHERICAL_L_READ)),
+    (H_SPHERICAL, f"L = {L_SPHERICAL}, therefore {H_SPHERICAL}", SPHERICAL, "equivalent",
+     ("Correct.", SPHERICAL_L_READ)),
+    (P_PHI, f"L = {L_SPHERICAL}, so m l^2 sin(theta) phidot", MOMENTUM_SPHERICAL, "not_equivalent",
+     ("Your answer depends on l, m and φ̇ as the right answer does, but on θ in another way: check how your answer"
+      " depends on θ.", SPHERICAL_L_READ)),
+    (P_PHI, "L = ½ m l² φ̇², so m l² sin²θ φ̇", MOMENTUM_SPHERICAL, "undecided",
+     (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
 ]  # fmt: skip
 
 

@@ -5,11 +5,12 @@ Contents:
     choice_labels    the labels in a typed choice answer
     chosen           the labels a choice answer names, read as check_choice reads them
 
-An answer is read by its labels, by an option's words or formula (also said in a sentence, or by what
-the problem says a symbol means), or by a label with words after it; what follows the option is read
-past and said. Words that hedge, doubt or deny it, or a remark that names another option or takes it
-back, make it no one answer (:func:`_hedges`). Where the question asks which option is false
-(``asks_false``), saying an option is false names it, and saying it is true or correct doubts it.
+An answer is read without TeX's wrappers (``\\text{b}``, ``$b$``): by its labels, by an option's words or
+formula (also said in a sentence, or by what the problem says a symbol means), or by a label with words
+after it; what follows the option is read past and said. Words that hedge, doubt or deny it, or a remark
+that names another option or takes it back, make it no one answer (:func:`_hedges`). Where the question
+asks which option is false (``asks_false``), saying an option is false names it, and saying it is true or
+correct doubts it.
 """
 
 from __future__ import annotations
@@ -128,6 +129,8 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
     problem's symbols mean ``meanings`` ((name, meaning) pairs), and the question asks for the false
     option where ``asks_false``."""
     submitted = visible(submitted).strip() if isinstance(submitted, str) else submitted  # b​, ｂ: b
+    if isinstance(submitted, str) and len(submitted) <= MAX_CHOICE_LENGTH:
+        submitted = _without_tex(submitted).strip()  # \text{b}, $b$: b
     given = choice_labels(submitted) if isinstance(submitted, str) else None
     if not isinstance(submitted, str) or (given is not None and all(label in texts for label in given)):
         return _Reading(given)
@@ -171,6 +174,30 @@ def _read_choice(submitted, texts: dict[str, str], *, multiple: bool, meanings=(
     if _hedges(submitted, labels, remark, readings, texts, asks_false=asks_false):
         return _Reading(hedged=True)
     return _Reading(labels or given, words, remark, scribbled=bool(labels) and _scribbled(remark, labels))
+
+
+# TeX's wrappers of text, and of mathematics, in which an answer typed in a TeX box may set its choice
+_TEX_TEXT = re.compile(
+    r"\\(?:text|textrm|textbf|textit|textsf|texttt|textup|mathrm|mathbf|mathit|mathsf|emph|mbox)\s*\{([^{}]*)\}"
+)
+_TEX_MATH = re.compile(r"\$\$?([^$]*)\$\$?|\\\((.*?)\\\)|\\\[(.*?)\\\]", re.S)
+_TEX_DEPTH = 3  # wrappers one within another, at the most: $\textbf{\text{b}}$
+
+
+def _without_tex(text: str) -> str:
+    r"""``\text{b}``, ``$b$``, ``\textbf{(b)}`` as ``b`` and ``(b)``: what TeX's text and math wrappers hold,
+    each as typed inside them, so the choice reads as one typed without TeX.
+
+    >>> _without_tex(r"\text{b}"), _without_tex(r"$\textbf{(b)}$"), _without_tex(r"$a$ and $c$")
+    ('b', '(b)', 'a and c')
+    """
+    for _ in range(_TEX_DEPTH):
+        plain = _TEX_TEXT.sub(r"\1", text)
+        plain = _TEX_MATH.sub(lambda found: next(group for group in found.groups() if group is not None), plain)
+        if plain == text:
+            break
+        text = plain
+    return text
 
 
 def _scribbled(remark: str, labels) -> bool:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import re
 import time
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from functools import partial
@@ -1664,8 +1664,8 @@ def _unwrap_named(answer: ParsedAnswer, spec: Kind, expected: Expected) -> Parse
     # and where a number is asked, 2.006 s = 2006 ms is the value in two units, not 2.006 times a name s
     if spec.name == "number":
         undefined -= set(SI_UNITS)
-    scaled = _scaled_name(value.lhs, undefined) if spec.name != "integer" else None
-    if scaled is not None:  # 2L = m l² θ̇² + …, ω² = g/l: the name's value
+    scaled = _scaled_name(value.lhs, undefined, _constants(value.lhs, expected)) if spec.name != "integer" else None
+    if scaled is not None:  # 2L = m l² θ̇² + …, L/m = ½ l² θ̇² + …, ω² = g/l: the name's value
         return ParsedAnswer(answer.text, scaled(value.rhs), "expression")
     energies = _in_energies(value.lhs, expected.names)
     multiple = _energy_multiple(value.lhs, expected.option("name"), _energy_sums(expected)) if energies else None
@@ -1698,7 +1698,7 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
     if _in_energies(side, expected.names) and _energy_multiple(side, names, _energy_sums(expected)) is None:
         # T + V = … where L is asked, or where H is and is not the energy
         return ("label_for_a_person", {"label": to_text(side), "name": expected.setting.describe(names[:1])})
-    lhs = _label_of(side)
+    lhs, _ = _over_constants(_label_of(side), _constants(side, expected))  # p_θ of p_θ/m
     described = expected.setting.describe
     rates = dict(_rates_named(names, expected))
     force = _force_named(side)
@@ -1791,18 +1791,46 @@ def _words(side) -> set[str]:
 _DEFINING = {"L", "H"}  # the names of the quantities H = Σ p q̇ − L defines one by the other
 
 
-def _scaled_name(lhs, undefined: set[str]):
-    """For ``2L`` or ``L/2``, the name times a small fraction, and for ``ω²``, ``1/ω`` or ``√ω``, its
-    power: what makes the name's value of the other side (halving it; its positive root, as a
+def _scaled_name(lhs, undefined: set[str], constants: Collection[str] = ()):
+    """For ``2L`` or ``L/2``, the name times a small fraction, for ``L/m`` or ``2L/(m l²)``, the name
+    over the problem's ``constants`` too, and for ``ω²``, ``1/ω`` or ``√ω``, its power: what makes the
+    name's value of the other side (halving it, or multiplying it by m; its positive root, as a
     frequency's); None for any other left side."""
     coefficient, rest = lhs.as_coeff_Mul()
     small = coefficient.is_Rational and coefficient.q <= 12 and abs(coefficient.p) <= 100
-    if rest.is_Symbol and rest.name in undefined and coefficient not in (0, 1) and small:
-        return lambda rhs: rhs / coefficient
+    rest, over = _over_constants(rest, constants)
+    if rest.is_Symbol and rest.name in undefined and coefficient != 0 and (coefficient, over) != (1, 1) and small:
+        return lambda rhs: rhs / (coefficient * over)
     base, exponent = lhs.as_base_exp()
     if base.is_Symbol and base.name in undefined and exponent.is_Rational and exponent not in (0, 1):
         return lambda rhs: rhs ** (1 / exponent)
     return None
+
+
+def _over_constants(side, constants: Collection[str]) -> tuple:
+    """``side`` as a name over a product of ``constants``, and that product's reciprocal: (L, 1/m) for
+    ``L/m``; (``side``, 1) where it is no such quotient. Over, not times: ``m L = …`` is no way to write
+    what L is, and is read as typed."""
+    if not side.is_Mul:
+        return side, sympy.S.One
+    divisors = [
+        factor
+        for factor in side.args
+        if factor.is_Pow and factor.base.is_Symbol and factor.base.name in constants and factor.exp.is_negative
+    ]
+    if len(divisors) != len(side.args) - 1:
+        return side, sympy.S.One
+    (name,) = set(side.args) - set(divisors)
+    return name, sympy.Mul(*divisors)
+
+
+def _constants(side, expected: Expected) -> set[str]:
+    """The names in ``side`` of the problem's constants (m, l, g): not a coordinate, rate or given name."""
+    return {
+        symbol.name
+        for symbol in side.free_symbols
+        if symbol.name in expected.names and not expected.setting.is_state(symbol)
+    }
 
 
 def _square_sign_open(named: ParsedAnswer, spec: Kind, expected: Expected, outcome: Outcome, deadline) -> Outcome:
@@ -2141,6 +2169,10 @@ def _working_then_derived(answer, submitted: str, expected: Expected, names: lis
     semicolon; the steps between are left out. A conclusion that is a value alone (``L = … ⇒ m l² sin²θ φ̇``)
     is named as the part asks, so the L is checked against it too. ``answer`` where the text is not so."""
     momenta, forces, label = _derived_asked(expected)
+    if label is not None and not answer.ok and len(submitted) <= _STEPS_LENGTH:
+        bare = _value_after_word(submitted, expected, names, deadline)
+        read = _working_then_derived(bare, submitted, expected, names, deadline) if bare else bare
+        return answer if read is bare else read  # refused as typed where no L stands before the word
     if label is None or not answer.ok or answer.kind not in ("equation", "expression"):
         return answer
     stated = {label, _POTENTIAL_U} if label == _POTENTIAL else {label}
@@ -2161,6 +2193,17 @@ def _working_then_derived(answer, submitted: str, expected: Expected, names: lis
         name = canonical_name(f"p_{momenta[0]}") if momenta else canonical_name(f"Q_{forces[0]}") if forces else "H"
         concluded = sympy.Eq(sympy.Symbol(name), answer.value, evaluate=False)
     return ParsedAnswer(submitted, (first.value, concluded), "equations")
+
+
+def _value_after_word(submitted: str, expected: Expected, names: list, deadline) -> ParsedAnswer | None:
+    """``…, so m l² sin²θ φ̇``: the value alone after the one word that steps from what stands before
+    it (the tokenizer reads so, hence, thus, therefore as ⇒ only between equations), for
+    :func:`_working_then_derived` to read as after ⇒; None where the text is no such answer."""
+    pieces = _STEP.split(submitted)
+    if len(pieces) != 2 or not _STEP.search(submitted)[0].strip(" ,").isalpha():
+        return None
+    last = parse_answer(pieces[-1].strip(" ,;:."), coords=expected.setting.coords, known=names, deadline=deadline)
+    return last if last.ok and last.kind == "expression" else None
 
 
 # a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)

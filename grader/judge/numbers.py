@@ -67,6 +67,10 @@ def _commas(text: str, decimal_comma: bool) -> _Commas:
     can be no thousands separator (9,81)."""
     if not decimal_comma:
         return _Commas.NONE
+    given = _GIVEN.search(text) if len(text) < _LENGTH else None
+    if given is not None and given.start() and "," in given[0]:
+        # 2,006 s, with g = 9,81.: the comma before the values is the sentence's, read as their bracket is
+        text = f"{text[: given.start()]} ({given[0].lstrip(' ,')}{text[given.end() :].rstrip(' .')})"
     plain = len(text) < _LENGTH and _DECIMAL_COMMA_INSIDE.search(text)
     if plain and len(_ANY_DECIMAL_COMMA_INSIDE.findall(text)) == text.count(","):
         return _Commas.EVERY

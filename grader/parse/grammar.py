@@ -583,6 +583,9 @@ class _Parser:
         canonical = canonical_name(token.value.raw)
         if self.lookup(canonical) is not None or self._spelled_rate(sympy.Symbol(canonical)):
             return None  # pdot = …, as ṗ = …: a rate, not a name
+        stood = None if token.value.tex else stand_in(canonical)
+        if stood is not None and _is_coordinate_or_derivative(self.lookup(stood), self.context):
+            return None  # thdd = …, as θ̈ = …: th for θ as on the right side, not a name of the answer's own
         if not _GREEK_NAME.match(canonical) and self.split(token.value.raw, token):  # mgl: m·g·l
             return None
         if token.value.tex and len(self.tex_letters(token.value.raw)) > 1:  # in TeX, mv is m·v
