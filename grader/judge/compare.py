@@ -667,7 +667,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += stated
                 read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _with_definitions(answer, expected, deadline)
-                read_notes += _energies_disagree(answer, spec, expected, deadline)
+                read_notes += _energies_disagree(answer, spec, expected, deadline) or _energy_moves(
+                    answer, spec, expected, deadline
+                )
                 read_notes += _lagrangian_disagrees(answer, spec, expected, deadline)
                 read_notes += _derived_disagrees(answer, spec, expected)
                 answer, working = _without_working(answer, spec, expected)
@@ -1246,6 +1248,81 @@ def _energies_disagree(answer: ParsedAnswer, spec: Kind, expected: Expected, dea
     label, sign = last.lhs.name, "−" if last.lhs.name == "L" else "+"
     details = {"kinetic": "T", "potential": potential.name, "label": label, "sum": f"T {sign} {potential.name}"}
     return (("energies_disagree_for_a_person", details),)
+
+
+def _energy_moves(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
+    """``T = m l² θ̇²; L = ½ m l² θ̇² + m g l cos θ``: working that gives T and no V, then the Lagrangian asked
+    for (or H or E, where they are T + V), whose velocities T's are not; or that gives a V (U) with velocities
+    in it. A potential holds none, so T − L (H − T) must not move with them, whatever V is: T is not derived
+    from the expected value, which would take a rotating hoop's ½ m R² ω² sin²θ from its T. The value may be
+    right, but the working says otherwise: a note for a person, as where T and V do not make it
+    (:func:`_energies_disagree`). Where the expected value has a term linear in the velocities, it may be a
+    potential's (q A·v of a charge in a magnetic field), so only what is not linear in them is told. None
+    where the working is not so, holds names of the student's own, or cannot be judged."""
+    if (
+        answer.kind != "equations"
+        or spec.name not in ("lagrangian", "expression")
+        or _DEFINING_LETTERS & expected.names
+    ):
+        return ()
+    sums = _energy_sums(expected)
+    asked = {"L"} if spec.name == "lagrangian" else set(expected.option("name") or ())
+    named = [item for item in answer.value if item.lhs.is_Symbol and item.lhs.name in sums]
+    if len(named) != 1 or named[0].lhs.name not in asked:
+        return ()
+    (last,), label = named, named[0].lhs.name
+    stated = [item for item in answer.value if item.lhs in _ENERGIES]
+    if len(stated) != len({item.lhs for item in stated}):
+        return ()  # two values of one energy: which is the working is not ours to say
+    energies = {item.lhs: item.rhs for item in stated}
+    potential = next((symbol for symbol in (_POTENTIAL, _POTENTIAL_U) if symbol in energies), None)
+    if potential is not None:
+        moving, other = energies[potential], sympy.S.Zero
+    elif _KINETIC in energies:  # L = T − V: ∂T/∂q̇ = ∂L/∂q̇; H = T + V: ∂T/∂q̇ = ∂H/∂q̇
+        moving, other = energies[_KINETIC], last.rhs
+    else:
+        return ()
+    if {symbol.name for symbol in (moving + other).free_symbols} - expected.names - {TIME.name}:
+        return ()
+    setting = expected.setting
+    velocities = [setting.velocity(q) for q in setting.coords]
+    linear = _linear_in_velocities(expected)
+    try:
+        mine, theirs = setting.plain(moving), setting.plain(other)
+        if linear:  # only the squares and products of velocities: ∂²/∂q̇ᵢ∂q̇ⱼ
+            mine = [sympy.diff(mine, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
+            theirs = [sympy.diff(theirs, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
+        else:
+            mine, theirs = [sympy.diff(mine, u) for u in velocities], [sympy.diff(theirs, u) for u in velocities]
+        deadline.check()
+        agrees = all(_same_value(a, b, expected) for a, b in zip(mine, theirs, strict=True))
+    except _CHECK_FAILURES:
+        return ()
+    if agrees:
+        return ()
+    how = " other than linearly" if linear else ""
+    if potential is not None:
+        return (("potential_moves_for_a_person", {"potential": potential.name, "how": how}),)
+    subtracted = sums[label].coeff(_POTENTIAL) == -1
+    difference, sign = ("T − L", "−") if subtracted else (f"{label} − T", "+")
+    details = {"label": label, "difference": difference, "sum": f"T {sign} V", "how": how}
+    return (("kinetic_moves_for_a_person", details),)
+
+
+def _linear_in_velocities(expected: Expected) -> bool:
+    """Whether the expected value has a term linear in the velocities: ∂/∂q̇ of it is not 0 where they are."""
+    if "linear_in_velocities" not in expected.cache:
+        setting, value = expected.setting, expected.value
+        velocities = [setting.velocity(q) for q in setting.coords]
+        rest = dict.fromkeys(velocities, sympy.S.Zero)
+        try:
+            found = any(
+                not _same_value(sympy.diff(value, u).xreplace(rest), sympy.S.Zero, expected) for u in velocities
+            )
+        except _CHECK_FAILURES:
+            found = True  # the weaker check, which holds either way
+        expected.cache["linear_in_velocities"] = found
+    return expected.cache["linear_in_velocities"]
 
 
 def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
@@ -1915,6 +1992,8 @@ _FOR_A_PERSON = {
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
     "energies_disagree_for_a_person": "energies_disagree",
+    "kinetic_moves_for_a_person": "kinetic_moves",
+    "potential_moves_for_a_person": "potential_moves",
     "lagrangian_disagrees_for_a_person": "lagrangian_disagrees",
     "lagrangian_unchecked_for_a_person": "lagrangian_unchecked",
     "derived_disagrees_for_a_person": "derived_disagrees",
