@@ -589,6 +589,11 @@ LAGRANGIAN_IN_THE_WORKING = [
     (SMALL_PENDULUM, f"L = {L_PENDULUM}; {SMALL_PENDULUM}", PENDULUM, "equation", "equivalent", ("Correct.", L_READ)),
     (SMALL_PENDULUM, f"L = {L_PENDULUM.replace('+ m g l', '+ 2 m g l')}; {SMALL_PENDULUM}", PENDULUM, "equation",
      "undecided", (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    # an L before the step that has no value, which the reading dropped unseen (before, right)
+    (EOM_SPHERICAL, f"L = 1/0 ⇒ {EOM_SPHERICAL}", SPHERE, "equations", "undecided",
+     ("Your answer says `L = 1/0` before the equations it gives, as what it follows from, but that has no value: it"
+      " divides by zero, or is otherwise undefined. The equations were graded and are right; a person will check"
+      " this answer.",)),
 ]  # fmt: skip
 
 
@@ -730,6 +735,14 @@ PREMISE = (
     " graded and is right; a person will check this answer."
 )
 L_WRONG = "L = m l^2 thetadot^2 - m g l cos(theta)"
+UNDEFINED = (
+    "before the equation it gives, as what it follows from, but that has no value: it divides by zero, or is"
+    " otherwise undefined. The equation was graded and is right; a person will check this answer."
+)
+UNDEFINED_VALUE = (
+    "before the value it gives, as what it follows from, but that has no value: it divides by zero, or is otherwise"
+    " undefined. Its value was graded and is right; a person will check this answer."
+)
 
 PREMISES = [
     # (expected, submitted, status, feedback): an equation of motion, or an L, before a step (⇒, so) to the right
@@ -753,6 +766,10 @@ PREMISES = [
     (SMALL_PENDULUM, f"L = {L_PENDULUM} ⇒ {SMALL_PENDULUM}", "equivalent", ("Correct.", L_READ)),  # before, a person
     (SMALL_PENDULUM, f"{L_WRONG} ⇒ {SMALL_PENDULUM}", "undecided",
      (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    # a premise with no value, which the reading dropped unseen (before, right)
+    (EOM_PENDULUM, f"L = 1/0 ⇒ {EOM_PENDULUM}", "undecided", (f"Your answer says `L = 1/0` {UNDEFINED}",)),
+    (EOM_PENDULUM, f"m l^2 thetaddot = -m g l sin(theta)/(l - l) ⇒ {EOM_PENDULUM}", "undecided",
+     (f"Your answer says `m l^2 thetaddot = -m g l sin(theta)/(l - l)` {UNDEFINED}",)),
 ]  # fmt: skip
 
 
@@ -808,6 +825,15 @@ PREMISES_OF_A_LAGRANGIAN = [
     ("1/2 m l^2 thetadot^2 ⇒ 1/2 m l^2 thetadot^2 + m g l cos(theta)", "undecided",
      (f"Your answer says `1/2 m l^2 thetadot^2` {PREMISE_VALUE}",)),
     (f"1/2 m l^2 thetadot^2 ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    # a premise with no value (it divides by zero, or takes log 0), which the reading dropped unseen (before, right)
+    (f"L = 1/0 => L = {L_PENDULUM}", "undecided", (f"Your answer says `L = 1/0` {UNDEFINED_VALUE}",)),
+    (f"T = 1/0 ⇒ L = {L_PENDULUM}", "undecided", (f"Your answer says `T = 1/0` {UNDEFINED_VALUE}",)),
+    (f"T = 1/2 m l^2 thetadot^2, V = log(0) ⇒ L = {L_PENDULUM}", "undecided",
+     (f"Your answer says `T = 1/2 m l^2 thetadot^2, V = log(0)` {UNDEFINED_VALUE}",)),
+    # one the parser refuses for how it is written, as honest working may be (ẋ of a name of its own, a bracket
+    # left open): read past, as before
+    (f"L = 1/2 m l^2 thetadot^2 + m g l cos(theta ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    (f"T = ½ m (ẋ² + ẏ²), x = l sin θ, y = −l cos θ ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
 ]  # fmt: skip
 
 

@@ -275,6 +275,9 @@ def compare(
     if premise is not None:  # m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ: right, but not from what it says it follows
         key = "premise_for_a_person" if spec.shape == "equation" else "premise_value_for_a_person"
         return _right_but_said(verdict, key, statement=premise)
+    undefined = _premise_undefined(spec, prepared, submitted) if verdict.status == "equivalent" else None
+    if undefined is not None:  # L = 1/0 ⇒ L = …: right, but not from what it says it follows from, which is nothing
+        return _right_but_said(verdict, "premise_undefined_for_a_person", statement=undefined, **_GIVES[spec.shape])
     left = timeout - (time.monotonic() - started)
     rounded = _rounded(spec, prepared, submitted, left, values) if verdict.status == "not_equivalent" else None
     if rounded is not None:  # 0.333 m l² θ̇²: right with the decimal written as the 1/3 it rounds
@@ -321,6 +324,33 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
         if judged.status == "not_equivalent" and judged.diagnosis not in _SMALL_FORMS | _FULL_FORMS:
             return premise
     return None
+
+
+def _premise_undefined(spec: Kind, expected: Expected, submitted: str) -> str | None:
+    """``L = 1/0 ⇒ L = …``: a premise before a step that the parser refuses as having no value (it divides by
+    zero, or takes log 0), so that nothing follows from it; as typed, or None. The parser keeps only what
+    follows the last step, so the premise was dropped unseen. Its other refusals are read past, as words are:
+    honest working writes ẋ of a name of its own, Σ or v⃗, which the parser does not read."""
+    if spec.shape not in _GIVES or spec.name in ("integer", "number") or len(submitted) > _PREMISE_LENGTH:
+        return None  # a number's working is read where it is asked for (see read_number)
+    if not _PREMISE_STEP.search(submitted):
+        return None
+    coords, names = expected.setting.coords, sorted(expected.names)
+    for premise in _PREMISE_STEP.split(submitted)[:-1]:
+        premise = premise.strip(" ,;:.")
+        read = parse_answer(premise, coords=coords, known=names)
+        if not read.ok and read.code in _NO_VALUE:
+            return premise
+    return None
+
+
+_NO_VALUE = frozenset({"division_by_zero", "undefined_value"})  # the parser's refusals of a formula with no value
+# what the answer after a premise gives, as the note names it, by the part's shape
+_GIVES = {
+    "expression": {"thing": "value", "graded": "Its value was graded and is right"},
+    "equation": {"thing": "equation", "graded": "The equation was graded and is right"},
+    "equations": {"thing": "equations", "graded": "The equations were graded and are right"},
+}
 
 
 def _premise_of_lagrangian(
@@ -2014,6 +2044,7 @@ READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {
     "operator_for_a_person",
     "premise_for_a_person",
     "premise_value_for_a_person",
+    "premise_undefined_for_a_person",
 }
 # the diagnoses of a value that is wrong only for the decimals that round its exact numbers (6.28 for 2π)
 ROUNDED = frozenset({"rounded_decimal", "rounded_decimals"})

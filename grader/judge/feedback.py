@@ -130,6 +130,9 @@ FEEDBACK: dict[str, str] = {
     " answer.",
     "premise_value_for_a_person": "Your answer says `{statement}` before the value it gives, as what that value"
     " follows from, but the two do not agree. Its value was graded and is right; a person will check this answer.",
+    "premise_undefined_for_a_person": "Your answer says `{statement}` before the {thing} it gives, as what it follows"
+    " from, but that has no value: it divides by zero, or is otherwise undefined. {graded}; a person will"
+    " check this answer.",
     "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
