@@ -13,7 +13,7 @@ from types import SimpleNamespace
 import pytest
 
 from grader import KINDS
-from grader.bank import DIMENSIONS, PART_KINDS, load_assignment, load_bank
+from grader.bank import DIMENSIONS, PART_KINDS, load_assignment, load_bank, load_problem
 from grader.grade import grade_answer, validate_bank
 from grader.grade import part as grading
 from grader.judge import Verdict, deadline
@@ -217,6 +217,49 @@ def test_the_time_limit_bounds_the_verdict_its_mistakes_and_method_credit_togeth
     else:  # every mistake is tried, in the time the checks before it left
         left = [2.0 * (1 - spent) ** n for n in range(1 + len(problem.part(part).mistakes))]
         assert given == pytest.approx(left)
+
+
+KINETIC_BEFORE_L = [
+    # (problem, T, status): each Lagrangian part's T, then its reference L. A T whose velocities L's are not goes to
+    # a person (before, right); the right T stays right, the hoop's ½ m R² ω² sin²θ, with no velocity, in it or
+    # not (the T of the hoop's own frame)
+    ("plane-pendulum", "1/2 m l^2 thetadot^2", "equivalent"),
+    ("plane-pendulum", "m l^2 thetadot^2", "undecided"),
+    ("atwood-machine", "1/2 m1 xdot^2 + 1/2 m2 xdot^2", "equivalent"),
+    ("atwood-machine", "1/2 m1 xdot^2", "undecided"),
+    ("damped-oscillator", "1/2 m xdot^2", "equivalent"),
+    ("damped-oscillator", "m xdot^2", "undecided"),
+    ("rotating-hoop", "1/2 m R^2 (thetadot^2 + omega^2 sin(theta)^2)", "equivalent"),
+    ("rotating-hoop", "1/2 m R^2 thetadot^2", "equivalent"),
+    ("rotating-hoop", "m R^2 thetadot^2 + 1/2 m R^2 omega^2 sin(theta)^2", "undecided"),
+    ("spherical-pendulum", "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2)", "equivalent"),
+    ("spherical-pendulum", "1/2 m l^2 (thetadot^2 + phidot^2)", "undecided"),
+    ("double-pendulum", "1/2 (m1 + m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2"
+     " + m2 l1 l2 theta1dot theta2dot cos(theta1 - theta2)", "equivalent"),
+    ("double-pendulum", "1/2 (m1 + m2) l1^2 theta1dot^2 + 1/2 m2 l2^2 theta2dot^2", "undecided"),
+    ("double-pendulum-equal", "m l^2 theta1dot^2 + 1/2 m l^2 theta2dot^2"
+     " + m l^2 theta1dot theta2dot cos(theta1 - theta2)", "equivalent"),
+    ("double-pendulum-equal", "m l^2 theta1dot^2 + 1/2 m l^2 theta2dot^2"
+     " + m l^2 theta1dot theta2dot cos(theta1 + theta2)", "undecided"),
+    ("double-pendulum-alpha-beta", "m l^2 alphadot^2 + 1/2 m l^2 betadot^2"
+     " + m l^2 alphadot betadot cos(alpha - beta)", "equivalent"),
+    ("double-pendulum-alpha-beta", "1/2 m l^2 alphadot^2 + 1/2 m l^2 betadot^2"
+     " + m l^2 alphadot betadot cos(alpha - beta)", "undecided"),
+]  # fmt: skip
+KINETIC_MOVES = (
+    "Your working gives T, but T − L with the value your answer gives L depends on the velocities, which a potential"
+    " energy V does not: so L = T − V cannot hold. Its value was graded and is right; a person will check this"
+    " answer."
+)
+
+
+@pytest.mark.parametrize(("problem", "kinetic", "status"), KINETIC_BEFORE_L)
+def test_a_kinetic_energy_before_the_reference_lagrangian_is_held_against_it(problem, kinetic, status):
+    problem = load_problem(BANK / f"{problem}.yaml")
+    part = problem.part("lagrangian")
+    verdict = grade_answer(problem, part, f"T = {kinetic} ⇒ L = {part.answer}")
+    first = "Correct." if status == "equivalent" else KINETIC_MOVES
+    assert (verdict.status, verdict.score, verdict.feedback[0]) == (status, 1.0, first), verdict
 
 
 def test_a_listed_mistake_is_matched_by_a_value_with_words_beside_it():

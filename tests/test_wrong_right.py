@@ -335,6 +335,13 @@ def test_a_count_whose_words_say_another_goes_to_a_person(expected, submitted, s
 
 ENERGIES = "Your working gives T and V, but T − V with them is not the value your answer gives L."
 WORKING_READ = "The lines that define `T` and `V` were read as your working, not as your answer."
+KINETIC_MOVES = (
+    "Your working gives T, but T − L with the value your answer gives L depends on the velocities, which a potential"
+    " energy V does not: so L = T − V cannot hold."
+)
+MOVES = "Your working gives {}, which depends on the velocities: a potential energy does not."
+CHECKED = " Its value was graded and is right; a person will check this answer."
+T_READ = "The line that defines `T` was read as your working, not as your answer."
 
 ENERGIES_WORKED = [
     # (submitted, status, feedback): the energies, then a Lagrangian their difference is not; the lines of
@@ -357,6 +364,34 @@ ENERGIES_WORKED = [
     ("T = ½ m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
     ("T = ½ m l² θ̇², V = −m g l cos θ, so L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
     ("T = ½ m l² θ̇²; V = m g l (1 − cos θ); L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", WORKING_READ)),
+    # T alone, whose velocities L's are not: T − L, the V that L = T − V leaves, moves with θ̇ (before, right)
+    ("T = m l^2 thetadot^2 => L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "undecided",
+     (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
+    ("T = m l^2 thetadot^2; L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "undecided",
+     (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
+    ("T = m l² θ̇²; L = T − V = ½ m l² θ̇² + m g l cos θ", "undecided", (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
+    ("T = 0; L = ½ m l² θ̇² + m g l cos θ", "undecided", (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
+    ("T = ½ m v²; v = 2 l θ̇; L = ½ m l² θ̇² + m g l cos θ", "undecided", (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
+    ("T = ½ m l² θ̇² ⇒ L = m l² θ̇² + m g l cos θ", "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", KINETIC_MOVES, T_READ)),
+    # a V (U) with velocities in it, alone or with a T that makes up for it (before, right)
+    ("V = 1/2 m l^2 thetadot^2 => L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "undecided",
+     (f"{MOVES.format('V')}{CHECKED}", "The line that defines `V` was read as your working, not as your answer.")),
+    ("U = ½ m l² θ̇² ⇒ L = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{MOVES.format('U')}{CHECKED}", "The line that defines `U` was read as your working, not as your answer.")),
+    ("T = m l² θ̇²; V = ½ m l² θ̇² − m g l cos θ; L = ½ m l² θ̇² + m g l cos θ", "undecided",
+     (f"{MOVES.format('V')}{CHECKED}", WORKING_READ)),
+    # their right twins, and a T consistent with a wrong L: as before
+    ("T = 1/2 m l^2 thetadot^2 => L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "equivalent", ("Correct.", T_READ)),
+    ("T = 1/2 m l^2 thetadot^2; L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "equivalent", ("Correct.", T_READ)),
+    ("T = ½ m l² θ̇²; L = T − V = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", T_READ)),
+    ("T = ½ m v²; v = l θ̇; L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", T_READ)),
+    ("T = m l² θ̇² ⇒ L = m l² θ̇² + m g l cos θ", "not_equivalent",
+     ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", T_READ)),
+    ("V = -m g l cos(theta) => L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "equivalent",
+     ("Correct.", "The line that defines `V` was read as your working, not as your answer.")),
+    ("U = m g l (1 − cos θ) ⇒ L = ½ m l² θ̇² + m g l cos θ", "equivalent",
+     ("Correct.", "The line that defines `U` was read as your working, not as your answer.")),
 ]  # fmt: skip
 
 
@@ -426,6 +461,45 @@ def test_energies_before_a_step_that_make_the_hamiltonian_stay_right():
     submitted = "T = ½ m l² (θ̇² + sin²θ φ̇²), V = −m g l cos θ ⇒ H = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ"
     verdict = compare(H_SPHERICAL, submitted, kind="expression", **SPHERICAL)
     assert (verdict.status, verdict.feedback) == ("equivalent", ("Correct.", WORKING_READ)), verdict
+
+
+HOOP_HAMILTONIAN = {"coords": ["theta"], "known": ["m", "R", "omega", "g"], "name": "H", "h_is_energy": False}
+MAGNETIC = {"coords": ["x", "y"], "known": ["m", "q", "B"]}
+L_MAGNETIC = "1/2 m (xdot^2 + ydot^2) + 1/2 q B (x ydot - y xdot)"
+
+KINETIC_ALONE = [
+    # (expected, submitted, kind, setting, status, feedback): T alone before H, where H = T + V, whose velocities
+    # H's are not (before, right)
+    (H_SPHERICAL, "T = m l² (θ̇² + sin²θ φ̇²) ⇒ H = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ", "expression", SPHERICAL,
+     "undecided",
+     ("Your working gives T, but H − T with the value your answer gives H depends on the velocities, which a"
+      f" potential energy V does not: so H = T + V cannot hold.{CHECKED}", T_READ)),
+    # a charge in a magnetic field, whose L has q A·v, linear in the velocities: only the rest is told
+    (L_MAGNETIC, "T = m (ẋ² + ẏ²); L = ½ m (ẋ² + ẏ²) + ½ q B (x ẏ − y ẋ)", "lagrangian", MAGNETIC, "undecided",
+     ("Your working gives T, but T − L with the value your answer gives L depends on the velocities other than"
+      f" linearly, which a potential energy V does not: so L = T − V cannot hold.{CHECKED}", T_READ)),
+    (L_MAGNETIC, "U = ½ m ẋ²; L = ½ m (ẋ² + ẏ²) + ½ q B (x ẏ − y ẋ)", "lagrangian", MAGNETIC, "undecided",
+     (f"Your working gives U, which depends on the velocities other than linearly: a potential energy does"
+      f" not.{CHECKED}", "The line that defines `U` was read as your working, not as your answer.")),
+    # their right twins: as before; and on the hoop, where H is not T + V, H − T may move with θ̇
+    (H_SPHERICAL, "T = ½ m l² (θ̇² + sin²θ φ̇²) ⇒ H = ½ m l² (θ̇² + sin²θ φ̇²) − m g l cos θ", "expression",
+     SPHERICAL, "equivalent", ("Correct.", T_READ)),
+    (L_MAGNETIC, "T = ½ m (ẋ² + ẏ²); L = ½ m (ẋ² + ẏ²) + ½ q B (x ẏ − y ẋ)", "lagrangian", MAGNETIC, "equivalent",
+     ("Correct.", T_READ)),
+    (L_MAGNETIC, "U = −½ q B (x ẏ − y ẋ); L = ½ m (ẋ² + ẏ²) + ½ q B (x ẏ − y ẋ)", "lagrangian", MAGNETIC,
+     "equivalent", ("Correct.", "The line that defines `U` was read as your working, not as your answer.")),
+    ("1/2 m R^2 (thetadot^2 - omega^2 sin(theta)^2) - m g R cos(theta)",
+     "T = ½ m R² (θ̇² + ω² sin²θ) ⇒ H = ½ m R² (θ̇² − ω² sin²θ) − m g R cos θ", "expression", HOOP_HAMILTONIAN,
+     "equivalent", ("Correct.", T_READ)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "kind", "setting", "status", "feedback"), KINETIC_ALONE)
+def test_a_kinetic_energy_alone_whose_velocities_the_value_does_not_have_goes_to_a_person(
+    expected, submitted, kind, setting, status, feedback
+):
+    verdict = compare(expected, submitted, kind=kind, **setting)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
 EOM_PENDULUM = "m l^2 thetaddot + m g l sin(theta) = 0"
@@ -515,6 +589,11 @@ LAGRANGIAN_IN_THE_WORKING = [
     (SMALL_PENDULUM, f"L = {L_PENDULUM}; {SMALL_PENDULUM}", PENDULUM, "equation", "equivalent", ("Correct.", L_READ)),
     (SMALL_PENDULUM, f"L = {L_PENDULUM.replace('+ m g l', '+ 2 m g l')}; {SMALL_PENDULUM}", PENDULUM, "equation",
      "undecided", (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    # an L before the step that has no value, which the reading dropped unseen (before, right)
+    (EOM_SPHERICAL, f"L = 1/0 ⇒ {EOM_SPHERICAL}", SPHERE, "equations", "undecided",
+     ("Your answer says `L = 1/0` before the equations it gives, as what it follows from, but that has no value: it"
+      " divides by zero, or is otherwise undefined. The equations were graded and are right; a person will check"
+      " this answer.",)),
 ]  # fmt: skip
 
 
@@ -665,6 +744,14 @@ PREMISE = (
     " graded and is right; a person will check this answer."
 )
 L_WRONG = "L = m l^2 thetadot^2 - m g l cos(theta)"
+UNDEFINED = (
+    "before the equation it gives, as what it follows from, but that has no value: it divides by zero, or is"
+    " otherwise undefined. The equation was graded and is right; a person will check this answer."
+)
+UNDEFINED_VALUE = (
+    "before the value it gives, as what it follows from, but that has no value: it divides by zero, or is otherwise"
+    " undefined. Its value was graded and is right; a person will check this answer."
+)
 
 PREMISES = [
     # (expected, submitted, status, feedback): an equation of motion, or an L, before a step (⇒, so) to the right
@@ -688,6 +775,10 @@ PREMISES = [
     (SMALL_PENDULUM, f"L = {L_PENDULUM} ⇒ {SMALL_PENDULUM}", "equivalent", ("Correct.", L_READ)),  # before, a person
     (SMALL_PENDULUM, f"{L_WRONG} ⇒ {SMALL_PENDULUM}", "undecided",
      (f"Your working gives L, {DISAGREES.format('it')}{FOR_A_PERSON}", L_READ)),
+    # a premise with no value, which the reading dropped unseen (before, right)
+    (EOM_PENDULUM, f"L = 1/0 ⇒ {EOM_PENDULUM}", "undecided", (f"Your answer says `L = 1/0` {UNDEFINED}",)),
+    (EOM_PENDULUM, f"m l^2 thetaddot = -m g l sin(theta)/(l - l) ⇒ {EOM_PENDULUM}", "undecided",
+     (f"Your answer says `m l^2 thetaddot = -m g l sin(theta)/(l - l)` {UNDEFINED}",)),
 ]  # fmt: skip
 
 
@@ -743,6 +834,15 @@ PREMISES_OF_A_LAGRANGIAN = [
     ("1/2 m l^2 thetadot^2 ⇒ 1/2 m l^2 thetadot^2 + m g l cos(theta)", "undecided",
      (f"Your answer says `1/2 m l^2 thetadot^2` {PREMISE_VALUE}",)),
     (f"1/2 m l^2 thetadot^2 ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    # a premise with no value (it divides by zero, or takes log 0), which the reading dropped unseen (before, right)
+    (f"L = 1/0 => L = {L_PENDULUM}", "undecided", (f"Your answer says `L = 1/0` {UNDEFINED_VALUE}",)),
+    (f"T = 1/0 ⇒ L = {L_PENDULUM}", "undecided", (f"Your answer says `T = 1/0` {UNDEFINED_VALUE}",)),
+    (f"T = 1/2 m l^2 thetadot^2, V = log(0) ⇒ L = {L_PENDULUM}", "undecided",
+     (f"Your answer says `T = 1/2 m l^2 thetadot^2, V = log(0)` {UNDEFINED_VALUE}",)),
+    # one the parser refuses for how it is written, as honest working may be (ẋ of a name of its own, a bracket
+    # left open): read past, as before
+    (f"L = 1/2 m l^2 thetadot^2 + m g l cos(theta ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
+    (f"T = ½ m (ẋ² + ẏ²), x = l sin θ, y = −l cos θ ⇒ L = {L_PENDULUM}", "equivalent", ("Correct.",)),
 ]  # fmt: skip
 
 

@@ -275,6 +275,9 @@ def compare(
     if premise is not None:  # m l² θ̈ = m g l sin θ ⇒ θ̈ = −(g/l) sin θ: right, but not from what it says it follows
         key = "premise_for_a_person" if spec.shape == "equation" else "premise_value_for_a_person"
         return _right_but_said(verdict, key, statement=premise)
+    undefined = _premise_undefined(spec, prepared, submitted) if verdict.status == "equivalent" else None
+    if undefined is not None:  # L = 1/0 ⇒ L = …: right, but not from what it says it follows from, which is nothing
+        return _right_but_said(verdict, "premise_undefined_for_a_person", statement=undefined, **_GIVES[spec.shape])
     left = timeout - (time.monotonic() - started)
     rounded = _rounded(spec, prepared, submitted, left, values) if verdict.status == "not_equivalent" else None
     if rounded is not None:  # 0.333 m l² θ̇²: right with the decimal written as the 1/3 it rounds
@@ -321,6 +324,33 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
         if judged.status == "not_equivalent" and judged.diagnosis not in _SMALL_FORMS | _FULL_FORMS:
             return premise
     return None
+
+
+def _premise_undefined(spec: Kind, expected: Expected, submitted: str) -> str | None:
+    """``L = 1/0 ⇒ L = …``: a premise before a step that the parser refuses as having no value (it divides by
+    zero, or takes log 0), so that nothing follows from it; as typed, or None. The parser keeps only what
+    follows the last step, so the premise was dropped unseen. Its other refusals are read past, as words are:
+    honest working writes ẋ of a name of its own, Σ or v⃗, which the parser does not read."""
+    if spec.shape not in _GIVES or spec.name in ("integer", "number") or len(submitted) > _PREMISE_LENGTH:
+        return None  # a number's working is read where it is asked for (see read_number)
+    if not _PREMISE_STEP.search(submitted):
+        return None
+    coords, names = expected.setting.coords, sorted(expected.names)
+    for premise in _PREMISE_STEP.split(submitted)[:-1]:
+        premise = premise.strip(" ,;:.")
+        read = parse_answer(premise, coords=coords, known=names)
+        if not read.ok and read.code in _NO_VALUE:
+            return premise
+    return None
+
+
+_NO_VALUE = frozenset({"division_by_zero", "undefined_value"})  # the parser's refusals of a formula with no value
+# what the answer after a premise gives, as the note names it, by the part's shape
+_GIVES = {
+    "expression": {"thing": "value", "graded": "Its value was graded and is right"},
+    "equation": {"thing": "equation", "graded": "The equation was graded and is right"},
+    "equations": {"thing": "equations", "graded": "The equations were graded and are right"},
+}
 
 
 def _premise_of_lagrangian(
@@ -667,7 +697,9 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += stated
                 read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _with_definitions(answer, expected, deadline)
-                read_notes += _energies_disagree(answer, spec, expected, deadline)
+                read_notes += _energies_disagree(answer, spec, expected, deadline) or _energy_moves(
+                    answer, spec, expected, deadline
+                )
                 read_notes += _lagrangian_disagrees(answer, spec, expected, deadline)
                 read_notes += _derived_disagrees(answer, spec, expected)
                 answer, working = _without_working(answer, spec, expected)
@@ -1246,6 +1278,81 @@ def _energies_disagree(answer: ParsedAnswer, spec: Kind, expected: Expected, dea
     label, sign = last.lhs.name, "−" if last.lhs.name == "L" else "+"
     details = {"kinetic": "T", "potential": potential.name, "label": label, "sum": f"T {sign} {potential.name}"}
     return (("energies_disagree_for_a_person", details),)
+
+
+def _energy_moves(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
+    """``T = m l² θ̇²; L = ½ m l² θ̇² + m g l cos θ``: working that gives T and no V, then the Lagrangian asked
+    for (or H or E, where they are T + V), whose velocities T's are not; or that gives a V (U) with velocities
+    in it. A potential holds none, so T − L (H − T) must not move with them, whatever V is: T is not derived
+    from the expected value, which would take a rotating hoop's ½ m R² ω² sin²θ from its T. The value may be
+    right, but the working says otherwise: a note for a person, as where T and V do not make it
+    (:func:`_energies_disagree`). Where the expected value has a term linear in the velocities, it may be a
+    potential's (q A·v of a charge in a magnetic field), so only what is not linear in them is told. None
+    where the working is not so, holds names of the student's own, or cannot be judged."""
+    if (
+        answer.kind != "equations"
+        or spec.name not in ("lagrangian", "expression")
+        or _DEFINING_LETTERS & expected.names
+    ):
+        return ()
+    sums = _energy_sums(expected)
+    asked = {"L"} if spec.name == "lagrangian" else set(expected.option("name") or ())
+    named = [item for item in answer.value if item.lhs.is_Symbol and item.lhs.name in sums]
+    if len(named) != 1 or named[0].lhs.name not in asked:
+        return ()
+    (last,), label = named, named[0].lhs.name
+    stated = [item for item in answer.value if item.lhs in _ENERGIES]
+    if len(stated) != len({item.lhs for item in stated}):
+        return ()  # two values of one energy: which is the working is not ours to say
+    energies = {item.lhs: item.rhs for item in stated}
+    potential = next((symbol for symbol in (_POTENTIAL, _POTENTIAL_U) if symbol in energies), None)
+    if potential is not None:
+        moving, other = energies[potential], sympy.S.Zero
+    elif _KINETIC in energies:  # L = T − V: ∂T/∂q̇ = ∂L/∂q̇; H = T + V: ∂T/∂q̇ = ∂H/∂q̇
+        moving, other = energies[_KINETIC], last.rhs
+    else:
+        return ()
+    if {symbol.name for symbol in (moving + other).free_symbols} - expected.names - {TIME.name}:
+        return ()
+    setting = expected.setting
+    velocities = [setting.velocity(q) for q in setting.coords]
+    linear = _linear_in_velocities(expected)
+    try:
+        mine, theirs = setting.plain(moving), setting.plain(other)
+        if linear:  # only the squares and products of velocities: ∂²/∂q̇ᵢ∂q̇ⱼ
+            mine = [sympy.diff(mine, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
+            theirs = [sympy.diff(theirs, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
+        else:
+            mine, theirs = [sympy.diff(mine, u) for u in velocities], [sympy.diff(theirs, u) for u in velocities]
+        deadline.check()
+        agrees = all(_same_value(a, b, expected) for a, b in zip(mine, theirs, strict=True))
+    except _CHECK_FAILURES:
+        return ()
+    if agrees:
+        return ()
+    how = " other than linearly" if linear else ""
+    if potential is not None:
+        return (("potential_moves_for_a_person", {"potential": potential.name, "how": how}),)
+    subtracted = sums[label].coeff(_POTENTIAL) == -1
+    difference, sign = ("T − L", "−") if subtracted else (f"{label} − T", "+")
+    details = {"label": label, "difference": difference, "sum": f"T {sign} V", "how": how}
+    return (("kinetic_moves_for_a_person", details),)
+
+
+def _linear_in_velocities(expected: Expected) -> bool:
+    """Whether the expected value has a term linear in the velocities: ∂/∂q̇ of it is not 0 where they are."""
+    if "linear_in_velocities" not in expected.cache:
+        setting, value = expected.setting, expected.value
+        velocities = [setting.velocity(q) for q in setting.coords]
+        rest = dict.fromkeys(velocities, sympy.S.Zero)
+        try:
+            found = any(
+                not _same_value(sympy.diff(value, u).xreplace(rest), sympy.S.Zero, expected) for u in velocities
+            )
+        except _CHECK_FAILURES:
+            found = True  # the weaker check, which holds either way
+        expected.cache["linear_in_velocities"] = found
+    return expected.cache["linear_in_velocities"]
 
 
 def _lagrangian_disagrees(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
@@ -1943,6 +2050,8 @@ _FOR_A_PERSON = {
     "statement_for_a_person": "statement_wrong",
     "working_false_for_a_person": "working_false",
     "energies_disagree_for_a_person": "energies_disagree",
+    "kinetic_moves_for_a_person": "kinetic_moves",
+    "potential_moves_for_a_person": "potential_moves",
     "lagrangian_disagrees_for_a_person": "lagrangian_disagrees",
     "lagrangian_unchecked_for_a_person": "lagrangian_unchecked",
     "derived_disagrees_for_a_person": "derived_disagrees",
@@ -1963,6 +2072,7 @@ READINGS_FOR_A_PERSON = frozenset(_FOR_A_PERSON) | {
     "operator_for_a_person",
     "premise_for_a_person",
     "premise_value_for_a_person",
+    "premise_undefined_for_a_person",
 }
 # the diagnoses of a value that is wrong only for the decimals that round its exact numbers (6.28 for 2π)
 ROUNDED = frozenset({"rounded_decimal", "rounded_decimals"})

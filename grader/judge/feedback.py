@@ -103,6 +103,15 @@ FEEDBACK: dict[str, str] = {
     " the value your answer gives {label}. Its value was graded and is right; a person will check this answer.",
     "energies_disagree": "Your working gives {kinetic} and {potential}, but {sum} with them is not the value your"
     " answer gives {label}.",
+    "kinetic_moves_for_a_person": "Your working gives T, but {difference} with the value your answer gives {label}"
+    " depends on the velocities{how}, which a potential energy V does not: so {label} = {sum} cannot hold. Its value"
+    " was graded and is right; a person will check this answer.",
+    "kinetic_moves": "Your working gives T, but {difference} with the value your answer gives {label} depends on the"
+    " velocities{how}, which a potential energy V does not: so {label} = {sum} cannot hold.",
+    "potential_moves_for_a_person": "Your working gives {potential}, which depends on the velocities{how}: a"
+    " potential energy does not. Its value was graded and is right; a person will check this answer.",
+    "potential_moves": "Your working gives {potential}, which depends on the velocities{how}: a potential energy"
+    " does not.",
     "lagrangian_disagrees_for_a_person": "Your working gives {label}, but Lagrange's {equations} with {it} {does}"
     " not give the {equations} of motion your answer gives. Your {equations} {were} graded and {are} right; a"
     " person will check this answer.",
@@ -121,6 +130,9 @@ FEEDBACK: dict[str, str] = {
     " answer.",
     "premise_value_for_a_person": "Your answer says `{statement}` before the value it gives, as what that value"
     " follows from, but the two do not agree. Its value was graded and is right; a person will check this answer.",
+    "premise_undefined_for_a_person": "Your answer says `{statement}` before the {thing} it gives, as what it follows"
+    " from, but that has no value: it divides by zero, or is otherwise undefined. {graded}; a person will"
+    " check this answer.",
     "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
