@@ -1825,6 +1825,14 @@ def _before(words):
         ("sqrt(g/l)", "The angular frequency is √(g/l)", "expression", "equivalent",
          (_before("The angular frequency is"),)),
         ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),
+        # the frequency labelled by its square, as ω² = g/l alone is read (its root): before, read as g/l, and
+        # `squared`, a word of arithmetic, kept the words from being read past
+        ("sqrt(g/l)", "The frequency is ω² = g/l", "expression", "equivalent", (_before("The frequency is"),)),
+        ("sqrt(g/l)", "The frequency is ω² = l/g", "expression", "not_equivalent", (_before("The frequency is"),)),
+        ("sqrt(g/l)", "The frequency squared is ω² = g/l", "expression", "equivalent",
+         (_before("The frequency squared is"),)),
+        ("sqrt(g/l)", "The frequency squared is ω² = l/g", "expression", "not_equivalent",
+         (_before("The frequency squared is"),)),
         # a method's name before an equation names no quantity the part asks for
         (EOM_PENDULUM, "From energy conservation, θ̈ + (g/l) sin θ = 0", "equation", "equivalent",
          (_before("From energy conservation,"),)),
@@ -5882,6 +5890,12 @@ DEFINITION_BEFORE = (
     ("sqrt(g/l)", "Let ω₀² = l/g. The frequency is ω = ω₀", PENDULUM, "not_equivalent",
      ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
       _defined_before("Let … The frequency is", "ω₀² = l/g"))),
+    # the value labelled by its square, as the words say: before, `squared` kept the sentence from being read
+    ("sqrt(g/l)", "Let ω₀² = g/l. The frequency squared is ω² = ω₀²", _OMEGA, "equivalent",
+     ("Correct.", _defined_before("Let … The frequency squared is", "ω₀² = g/l"))),
+    ("sqrt(g/l)", "Let ω₀² = l/g. The frequency squared is ω² = ω₀²", _OMEGA, "not_equivalent",
+     ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
+      _defined_before("Let … The frequency squared is", "ω₀² = l/g"))),
     ("sqrt(g/l)", "Let ω₀² = g/l; the frequency is ω = −ω₀", PENDULUM, "not_equivalent",
      ("The overall sign is wrong.", _defined_before("Let … the frequency is", "ω₀² = g/l"))),
     ("sqrt(g/l)", "Let ω₀² = g/l; the frequency is ω = ω₀", PENDULUM, "equivalent",

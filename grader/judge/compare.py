@@ -2563,9 +2563,12 @@ def _undefined(answer: ParsedAnswer, names: list) -> bool:
 
 
 def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
-    """``H = …`` as its value, where the left side is a name alone; any other answer as it is."""
+    """``H = …`` as its value, where the left side is a name alone, or its power: ``ω² = …`` labels the
+    frequency as ``ω² = g/l`` alone does (what its value then is, the answer's reading says); any other answer as
+    it is."""
     value = answer.value
-    if answer.kind == "equation" and value.lhs.is_Symbol and value.lhs != TIME:
+    label = value.lhs.base if answer.kind == "equation" and value.lhs.is_Pow and value.lhs.exp.is_Integer else None
+    if answer.kind == "equation" and (label or value.lhs).is_Symbol and (label or value.lhs) != TIME:
         return ParsedAnswer(answer.text, value.rhs, "expression")
     return answer
 
