@@ -1825,6 +1825,14 @@ def _before(words):
         ("sqrt(g/l)", "The angular frequency is √(g/l)", "expression", "equivalent",
          (_before("The angular frequency is"),)),
         ("sqrt(g/l)", "Hence we get √(g/l)", "expression", "equivalent", (_before("Hence we get"),)),
+        # the frequency labelled by its square, as ω² = g/l alone is read (its root): before, read as g/l, and
+        # `squared`, a word of arithmetic, kept the words from being read past
+        ("sqrt(g/l)", "The frequency is ω² = g/l", "expression", "equivalent", (_before("The frequency is"),)),
+        ("sqrt(g/l)", "The frequency is ω² = l/g", "expression", "not_equivalent", (_before("The frequency is"),)),
+        ("sqrt(g/l)", "The frequency squared is ω² = g/l", "expression", "equivalent",
+         (_before("The frequency squared is"),)),
+        ("sqrt(g/l)", "The frequency squared is ω² = l/g", "expression", "not_equivalent",
+         (_before("The frequency squared is"),)),
         # a method's name before an equation names no quantity the part asks for
         (EOM_PENDULUM, "From energy conservation, θ̈ + (g/l) sin θ = 0", "equation", "equivalent",
          (_before("From energy conservation,"),)),
@@ -5815,6 +5823,21 @@ def _defined_before(words: str, definition: str) -> str:
     return f"Read without the words `{words}`, with your `{definition}` put in place in the formula after it."
 
 
+_LABELLED_F = "Your answer is labelled f, but the quantity asked for is ω."
+_LABELLED_F_RIGHT = f"{_LABELLED_F} Read as ω, it is right; a person will check which you meant."
+
+
+def _others_left_out(label: str, name: str) -> str:
+    return f"The line that defines `{label}` was not graded: {name} is what is asked for here."
+
+
+def _multiple(label: str, name: str) -> str:
+    return (
+        f"{_others_left_out(label, name)} But your answer gives `{label}` as a number times {name}, which may be your"
+        f" answer instead. Graded on your line for {name}, it is right; a person will check which you meant."
+    )
+
+
 def _momentum_spelt(definition: str) -> str:
     return (
         f"Your answer defines `{definition}`, which is not the problem's p_θ, then uses p_θ itself. Read with the"
@@ -5882,6 +5905,12 @@ DEFINITION_BEFORE = (
     ("sqrt(g/l)", "Let ω₀² = l/g. The frequency is ω = ω₀", PENDULUM, "not_equivalent",
      ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
       _defined_before("Let … The frequency is", "ω₀² = l/g"))),
+    # the value labelled by its square, as the words say: before, `squared` kept the sentence from being read
+    ("sqrt(g/l)", "Let ω₀² = g/l. The frequency squared is ω² = ω₀²", _OMEGA, "equivalent",
+     ("Correct.", _defined_before("Let … The frequency squared is", "ω₀² = g/l"))),
+    ("sqrt(g/l)", "Let ω₀² = l/g. The frequency squared is ω² = ω₀²", _OMEGA, "not_equivalent",
+     ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
+      _defined_before("Let … The frequency squared is", "ω₀² = l/g"))),
     ("sqrt(g/l)", "Let ω₀² = g/l; the frequency is ω = −ω₀", PENDULUM, "not_equivalent",
      ("The overall sign is wrong.", _defined_before("Let … the frequency is", "ω₀² = g/l"))),
     ("sqrt(g/l)", "Let ω₀² = g/l; the frequency is ω = ω₀", PENDULUM, "equivalent",
@@ -5900,6 +5929,23 @@ DEFINITION_BEFORE = (
     ("sqrt(g/l)", "Let ω₀² = g/l. The frequency is f = ω₀", _OMEGA, "undecided",
      ("Your answer is labelled f, but the quantity asked for is ω. Read as ω, it is right; a person will check"
       " which you meant.", _defined_before("Let … The frequency is", "ω₀² = g/l"))),
+    # so too after the value, in a `where` clause: the value before it is the answer (before, the clause was graded,
+    # and f = 2 ω₀ left out, right; f = 2 ω₀ with ω₀² = g/(4 l), right as ω, wrong)
+    ("sqrt(g/l)", "f = 2 ω₀, where ω₀² = g/l", _OMEGA, "not_equivalent",
+     ("Your answer is off by a constant factor: missing a factor 1/2?", _LABELLED_F)),
+    ("sqrt(g/l)", "f = 2 ω₀, where ω₀² = g/(4 l)", _OMEGA, "undecided", (_LABELLED_F_RIGHT,)),
+    ("sqrt(g/l)", "f = 2 ω₀ with ω₀² = g/l", _OMEGA, "not_equivalent",
+     ("Your answer is off by a constant factor: missing a factor 1/2?", _LABELLED_F)),
+    ("sqrt(g/l)", "f = ω₀, where ω₀² = g/l", _OMEGA, "undecided", (_LABELLED_F_RIGHT,)),
+    # with no word that says which, a line that gives another quantity as a number times the asked one may be
+    # the answer, with the asked one's line its definition: for a person (before, right); T = 2π/ω₀ is no such
+    ("sqrt(g/l)", "ω₀ = √(g/l); T = 5 ω₀", _OMEGA, "undecided", (_multiple("T", "ω₀"),)),
+    ("sqrt(g/l)", "ω₀ = √(g/l); T = 2π/ω₀", _OMEGA, "equivalent", ("Correct.", _others_left_out("T", "ω₀"))),
+    ("sqrt(g/l)", "f = 2 ω₀; ω₀² = g/l", _OMEGA, "undecided", (_multiple("f", "ω₀"),)),
+    ("sqrt(g/l)", "ω = √(g/l); f = ω/(2π)", _OMEGA, "equivalent", ("Correct.", _others_left_out("f", "ω"))),
+    ("sqrt(g/l)", "ω₀ = √(l/g); T = 5 ω₀", _OMEGA, "not_equivalent",
+     ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
+      _others_left_out("T", "ω₀"))),
     (HOOP_H, f"Let {_HOOP_P}. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "equivalent",
      ("Correct.", _defined_before("Let … Then", _HOOP_P))),
     (HOOP_H, f"Let p_θ = m R θ̇. Then H = {_HOOP_IN_P}", HOOP_NOT_ENERGY, "not_equivalent",

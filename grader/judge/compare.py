@@ -696,7 +696,7 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer, stated = _without_stated_definitions(answer, expected)
                 read_notes += stated
                 read_notes += _given_redefined(answer, expected, given, momentum)
-                answer = _with_definitions(answer, expected, deadline)
+                answer = _with_definitions(_asked_defined_after(answer, expected), expected, deadline)
                 read_notes += _energies_disagree(answer, spec, expected, deadline) or _energy_moves(
                     answer, spec, expected, deadline
                 )
@@ -1523,6 +1523,10 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
         graded = items[asked[0]]
         others = [item.lhs for item in items if item is not graded]
         details = {**_lines_defining(others), "name": _label(graded.lhs, expected)}
+        multiples = _multiples_of(graded, items)
+        if multiples:  # ω₀ = √(g/l); T = 5 ω₀: T may be the answer, with ω₀'s line its definition
+            details["multiples"] = _listing(multiples)
+            return ParsedAnswer(answer.text, graded, "equation"), (("others_for_a_person", details), *notes)
         return ParsedAnswer(answer.text, graded, "equation"), (("others_left_out", details), *notes)
     if spec.shape == "expression":
         if not all(named) or not _names_the_answer(named[-1].name, spec):
@@ -1537,6 +1541,26 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
     if len(rest) == 1:
         return ParsedAnswer(answer.text, rest[0], "equation"), notes
     return ParsedAnswer(answer.text, tuple(rest), "equations"), notes
+
+
+def _multiples_of(graded, items) -> list[str]:
+    """The labels of ``items`` that each give a quantity as a number times the asked one ``graded`` labels
+    (``T = 5 ω₀``, ``f = 2 ω₀``): of its kind, so another value of it, with ``graded`` its definition, as much as
+    a quantity derived from it. Not ``T = 2π/ω``, nor ``f = ω/(2π)``, the frequency in cycles, which a
+    frequency's line may well be followed by: other quantities, as they should be; nor ``E = H``, the same
+    value whichever line is the answer."""
+    asked = _label_of(graded.lhs)
+    found = []
+    for item in items:
+        if item is graded or asked not in item.rhs.free_symbols:
+            continue
+        ratio = item.rhs / asked
+        if not ratio.free_symbols and ratio.is_nonzero and ratio not in (1, _CYCLE):
+            found.append(_label_of(item.lhs).name)
+    return found
+
+
+_CYCLE = 1 / (2 * sympy.pi)
 
 
 def _lines_defining(names: list) -> dict:
@@ -2058,6 +2082,7 @@ _FOR_A_PERSON = {
     "constant_said_for_a_person": "constant_said",
     "given_redefined_for_a_person": "given_redefined",
     "momentum_spelt_for_a_person": "momentum_spelt",
+    "others_for_a_person": "others_left_out",
 }
 
 
@@ -2437,6 +2462,23 @@ def _asked_put_in(read: ParsedAnswer, expected: Expected) -> ParsedAnswer:
     return ParsedAnswer(read.text, sympy.Eq(label, value, evaluate=False), "equation")
 
 
+def _asked_defined_after(answer: ParsedAnswer, expected: Expected) -> ParsedAnswer:
+    """``f = 2 ω₀, where ω₀² = g/l``: a value, then a clause that defines the asked quantity, which the value
+    uses. The value before the clause is the answer, read as a sentence that defines first hands over to it
+    (:func:`_asked_put_in`); else the line that defines the asked quantity would be graded, and the value not at
+    all. ``answer`` where no ``where`` or ``with`` follows its first line, and that line alone."""
+    if answer.kind != "equations":
+        return answer
+    clause = _DEFINING_CLAUSE.search(answer.text)
+    first = answer.text[: clause.start()] if clause else ""
+    if first.count("=") != 1 or any(mark in first for mark in ";\n"):
+        return answer  # ω = √(g/l); T = 2π/ω, where …: which line the clause is of is not the text's to say
+    return _asked_put_in(answer, expected)
+
+
+_DEFINING_CLAUSE = re.compile(r"(?<![\w\\])(?:where|with)(?!\w)", re.I)
+
+
 def _unused_definition(
     read: ParsedAnswer, words: str, definition: str, formula: str, expected: Expected, names: list, deadline
 ) -> tuple[ParsedAnswer, tuple]:
@@ -2563,9 +2605,12 @@ def _undefined(answer: ParsedAnswer, names: list) -> bool:
 
 
 def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
-    """``H = …`` as its value, where the left side is a name alone; any other answer as it is."""
+    """``H = …`` as its value, where the left side is a name alone, or its power: ``ω² = …`` labels the
+    frequency as ``ω² = g/l`` alone does (what its value then is, the answer's reading says); any other answer as
+    it is."""
     value = answer.value
-    if answer.kind == "equation" and value.lhs.is_Symbol and value.lhs != TIME:
+    label = value.lhs.base if answer.kind == "equation" and value.lhs.is_Pow and value.lhs.exp.is_Integer else None
+    if answer.kind == "equation" and (label or value.lhs).is_Symbol and (label or value.lhs) != TIME:
         return ParsedAnswer(answer.text, value.rhs, "expression")
     return answer
 

@@ -64,6 +64,9 @@ FEEDBACK: dict[str, str] = {
     "step_for_a_person": "Its last side is right; a person will check the step that defines it.",
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
+    "others_for_a_person": "The {lines} {names} {were} not graded: {name} is what is asked for here. But your"
+    " answer gives {multiples} as a number times {name}, which may be your answer instead. Graded on your line"
+    " for {name}, it is right; a person will check which you meant.",
     "words_read_past": "Read without the words `{words}`: the formula is what is graded.",
     "sign_words_for_a_person": "Your formula has the opposite sign, and your answer says `{words}` beside it: a"
     " person will read whether the words turn the sign.",

@@ -358,7 +358,7 @@ def words_then_formula(text: str, names: Collection[str], coords: Collection[str
         return
     for lead in _LEADS_TO.finditer(text, first.end()):
         words, formula = text[: lead.end()].strip(), text[lead.end() :].strip(" ,:")
-        if formula and is_prose(words, names, doubt=True):
+        if formula and is_prose(_without_squared(words, formula, names, coords), names, doubt=True):
             yield words, formula
     if first[0].lower() in _METHOD:  # From the Euler–Lagrange equation, m l² θ̈ + … = 0
         said, end = _words_from(text, first.start(), names, coords)
@@ -508,8 +508,23 @@ def _sentence_naming(text: str, stop: int, names, coords) -> tuple[list[str], in
     reads a sentence alone (``The frequency is ω = …``), and where the value starts; None where there is none."""
     rest = text[stop + 1 :]
     for words, formula in words_then_formula(rest, names, coords):
-        return _PROSE_WORD.findall(words), stop + 1 + rest.rfind(formula)
+        return _PROSE_WORD.findall(_without_squared(words, formula, names, coords)), stop + 1 + rest.rfind(formula)
     return None
+
+
+def _without_squared(words: str, formula: str, names, coords) -> str:
+    """``The frequency squared is ω² = g/l``: the words without the one ``squared``, where the formula names a
+    quantity's square, as the words say it does; there the word says what the label says, and changes no value
+    (ω² = g/l alone is read as ω = √(g/l)). ``words`` as typed anywhere else: ``… is ω = √(g/l) squared``."""
+    said = _SQUARED_WORD.findall(words)
+    equals = _first_equals(formula) if len(said) == 1 else None
+    label = formula[:equals] if equals is not None else ""
+    if not _SQUARED.search(label) or _name(_SQUARED.sub("", label), names, coords) is None:
+        return words
+    return _SQUARED_WORD.sub(" ", words)
+
+
+_SQUARED_WORD = re.compile(r"\bsquared\b", re.I)
 
 
 def _more_definitions(text: str, stop: int, names, coords) -> tuple[list[tuple[str, str]], int]:
