@@ -392,6 +392,18 @@ ENERGIES_WORKED = [
      ("Correct.", "The line that defines `V` was read as your working, not as your answer.")),
     ("U = m g l (1 − cos θ) ⇒ L = ½ m l² θ̇² + m g l cos θ", "equivalent",
      ("Correct.", "The line that defines `U` was read as your working, not as your answer.")),
+    # K for T, as some texts write it: held against L as T is, and named as typed (before, right)
+    ("K = m l² θ̇²; L = ½ m l² θ̇² + m g l cos θ", "undecided",
+     ("Your working gives K, but K − L with the value your answer gives L depends on the velocities, which a"
+      f" potential energy V does not: so L = K − V cannot hold.{CHECKED}", T_READ.replace("`T`", "`K`"))),
+    ("K = ½ m l² θ̇²; L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", T_READ.replace("`T`", "`K`"))),
+    # an L that differs from T − V by d/dt of a function of θ gives T's equations: honest working (before this
+    # was checked, right; then for a person)
+    ("T = ½ m l² θ̇²; L = ½ m l² θ̇² + m g l cos θ + m g l cos θ θ̇", "equivalent",
+     ("Correct: your Lagrangian gives the same equations of motion.", T_READ)),
+    # a multiple of T on the left is the line of working it names (before, an AttributeError)
+    ("2T = m l² θ̇²; L = ½ m l² θ̇² + m g l cos θ", "equivalent",
+     ("Correct.", "The line that defines `T` was not graded: L is what is asked for here.")),
 ]  # fmt: skip
 
 
@@ -464,6 +476,8 @@ def test_energies_before_a_step_that_make_the_hamiltonian_stay_right():
 
 
 HOOP_HAMILTONIAN = {"coords": ["theta"], "known": ["m", "R", "omega", "g"], "name": "H", "h_is_energy": False}
+SPHERICAL_COORDS = {"coords": ["theta", "phi"], "known": ["m", "g", "l"]}
+L_SPHERICAL = "1/2 m l^2 (thetadot^2 + sin(theta)^2 phidot^2) + m g l cos(theta)"
 MAGNETIC = {"coords": ["x", "y"], "known": ["m", "q", "B"]}
 L_MAGNETIC = "1/2 m (xdot^2 + ydot^2) + 1/2 q B (x ydot - y xdot)"
 
@@ -488,6 +502,12 @@ KINETIC_ALONE = [
      ("Correct.", T_READ)),
     (L_MAGNETIC, "U = −½ q B (x ẏ − y ẋ); L = ½ m (ẋ² + ẏ²) + ½ q B (x ẏ − y ẋ)", "lagrangian", MAGNETIC,
      "equivalent", ("Correct.", "The line that defines `U` was read as your working, not as your answer.")),
+    # on the spherical pendulum: + m l² φ̇ is d/dt(m l² φ), and gives L's equations; + m l² θ φ̇ in T is no
+    # derivative, as ∂(m l² θ)/∂θ is not ∂0/∂φ, so T − L is no V and no such derivative
+    (L_SPHERICAL, "T = ½ m l² (θ̇² + sin²θ φ̇²); L = ½ m l² (θ̇² + sin²θ φ̇²) + m g l cos θ + m l² φ̇", "lagrangian",
+     SPHERICAL_COORDS, "equivalent", ("Correct: your Lagrangian gives the same equations of motion.", T_READ)),
+    (L_SPHERICAL, "T = ½ m l² (θ̇² + sin²θ φ̇²) + m l² θ φ̇; L = ½ m l² (θ̇² + sin²θ φ̇²) + m g l cos θ", "lagrangian",
+     SPHERICAL_COORDS, "undecided", (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
     ("1/2 m R^2 (thetadot^2 - omega^2 sin(theta)^2) - m g R cos(theta)",
      "T = ½ m R² (θ̇² + ω² sin²θ) ⇒ H = ½ m R² (θ̇² − ω² sin²θ) − m g R cos θ", "expression", HOOP_HAMILTONIAN,
      "equivalent", ("Correct.", T_READ)),
@@ -680,6 +700,10 @@ V_READ = "The line that defines `V` was read as your working, not as your answer
 H_HOOP = "1/2 m R^2 (thetadot^2 - omega^2 sin(theta)^2) - m g R cos(theta)"
 HOOP_H = {**HOOP, "name": "H"}
 
+COMMA_REFUSED = (
+    "A comma is not understood here. Write decimals with a point (0.5); list equations as [eq1, eq2] or on separate"
+    " lines."
+)
 DERIVED_FROM_L = [
     # (expected, submitted, setting, status, feedback): working that states L, then the momentum or the
     # Hamiltonian asked for, which that L does not give; or V, then a generalized force (before, right)
@@ -728,6 +752,10 @@ DERIVED_FROM_L = [
       " depends on θ.", SPHERICAL_L_READ)),
     (P_PHI, "L = ½ m l² φ̇², so m l² sin²θ φ̇", MOMENTUM_SPHERICAL, "undecided",
      (f"Your working gives L, but ∂L/∂φ̇ {DERIVED}", SPHERICAL_L_READ)),
+    # words between the step and the value are no factors of it: refused as typed, as before (then, `that` was
+    # read as a name, and the right value scored 0)
+    (P_PHI, f"L = {L_SPHERICAL}, so that {P_PHI}", MOMENTUM_SPHERICAL, "invalid", (COMMA_REFUSED,)),
+    (P_PHI, f"L = {L_SPHERICAL}, so we get {P_PHI}", MOMENTUM_SPHERICAL, "invalid", (COMMA_REFUSED,)),
 ]  # fmt: skip
 
 

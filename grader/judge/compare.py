@@ -1301,10 +1301,12 @@ def _energy_moves(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline
     if len(named) != 1 or named[0].lhs.name not in asked:
         return ()
     (last,), label = named, named[0].lhs.name
-    stated = [item for item in answer.value if item.lhs in _ENERGIES]
-    if len(stated) != len({item.lhs for item in stated}):
+    aliases = {} if _KINETIC_K.name in expected.names else {_KINETIC_K: _KINETIC}  # K = T, as some texts write it
+    stated = [(aliases.get(item.lhs, item.lhs), item.rhs) for item in answer.value]
+    stated = [(name, value) for name, value in stated if name in _ENERGIES]
+    if len(stated) != len({name for name, _ in stated}):
         return ()  # two values of one energy: which is the working is not ours to say
-    energies = {item.lhs: item.rhs for item in stated}
+    energies = dict(stated)
     potential = next((symbol for symbol in (_POTENTIAL, _POTENTIAL_U) if symbol in energies), None)
     if potential is not None:
         moving, other = energies[potential], sympy.S.Zero
@@ -1319,13 +1321,13 @@ def _energy_moves(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline
     linear = _linear_in_velocities(expected)
     try:
         mine, theirs = setting.plain(moving), setting.plain(other)
-        if linear:  # only the squares and products of velocities: ∂²/∂q̇ᵢ∂q̇ⱼ
-            mine = [sympy.diff(mine, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
-            theirs = [sympy.diff(theirs, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
-        else:
-            mine, theirs = [sympy.diff(mine, u) for u in velocities], [sympy.diff(theirs, u) for u in velocities]
+        # the squares and products of velocities: ∂²/∂q̇ᵢ∂q̇ⱼ
+        mine2 = [sympy.diff(mine, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
+        theirs2 = [sympy.diff(theirs, u, w) for i, u in enumerate(velocities) for w in velocities[i:]]
         deadline.check()
-        agrees = all(_same_value(a, b, expected) for a, b in zip(mine, theirs, strict=True))
+        agrees = all(_same_value(a, b, expected) for a, b in zip(mine2, theirs2, strict=True))
+        if agrees and not linear:
+            agrees = _linear_part_allowed(mine, theirs, label == "L" and potential is None, setting, expected)
     except _CHECK_FAILURES:
         return ()
     if agrees:
@@ -1333,10 +1335,30 @@ def _energy_moves(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline
     how = " other than linearly" if linear else ""
     if potential is not None:
         return (("potential_moves_for_a_person", {"potential": potential.name, "how": how}),)
+    kinetic = next(item.lhs.name for item in answer.value if aliases.get(item.lhs, item.lhs) == _KINETIC)
     subtracted = sums[label].coeff(_POTENTIAL) == -1
-    difference, sign = ("T − L", "−") if subtracted else (f"{label} − T", "+")
-    details = {"label": label, "difference": difference, "sum": f"T {sign} V", "how": how}
+    difference, sign = (f"{kinetic} − L", "−") if subtracted else (f"{label} − {kinetic}", "+")
+    details = {"label": label, "kinetic": kinetic, "difference": difference, "sum": f"{kinetic} {sign} V", "how": how}
     return (("kinetic_moves_for_a_person", details),)
+
+
+def _linear_part_allowed(mine, theirs, derivative_allowed: bool, setting, expected: Expected) -> bool:
+    """Whether T and the L (or H) that agree in their squares of velocities also agree in the velocities'
+    linear part: the same, or, where L is given and ``derivative_allowed``, differing by Σ Aᵢ(q, t) q̇ᵢ that is
+    d/dt of a function of the coordinates (∂Aᵢ/∂qⱼ = ∂Aⱼ/∂qᵢ), which changes no equation of motion: ``T = ½ m l² θ̇²;
+    L = ½ m l² θ̇² + m g l cos θ + m g l cos θ θ̇`` is honest working, and so is the hoop's T written as
+    ½ m R² (θ̇ + ω sin θ)², whose cross term is d/dt(−m R² ω cos θ), before its L, as that L itself is right."""
+    velocities = [setting.velocity(q) for q in setting.coords]
+    at_rest = dict.fromkeys(velocities, 0)
+    linear = [(sympy.diff(mine, u) - sympy.diff(theirs, u)).xreplace(at_rest) for u in velocities]
+    if not derivative_allowed:
+        return all(_same_value(a, sympy.S.Zero, expected) for a in linear)
+    positions = [setting.state[(q, 0)] for q in setting.coords]
+    return all(
+        _same_value(sympy.diff(linear[i], positions[j]), sympy.diff(linear[j], positions[i]), expected)
+        for i in range(len(positions))
+        for j in range(i + 1, len(positions))
+    )
 
 
 def _linear_in_velocities(expected: Expected) -> bool:
@@ -1521,7 +1543,7 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
         return answer, ()  # two answers for the asked quantity: each line is judged (see _judge_lines)
     if asked and not (asked[0] == len(items) - 1 and all(named)):  # else the last line, after its working
         graded = items[asked[0]]
-        others = [item.lhs for item in items if item is not graded]
+        others = [_label_of(item.lhs) for item in items if item is not graded]  # T of 2T = …
         details = {**_lines_defining(others), "name": _label(graded.lhs, expected)}
         multiples = _multiples_of(graded, items)
         if multiples:  # ω₀ = √(g/l); T = 5 ω₀: T may be the answer, with ω₀'s line its definition
@@ -2338,7 +2360,10 @@ def _value_after_word(submitted: str, expected: Expected, names: list, deadline)
     if len(pieces) != 2 or not _STEP.search(submitted)[0].strip(" ,").isalpha():
         return None
     last = parse_answer(pieces[-1].strip(" ,;:."), coords=expected.setting.coords, known=names, deadline=deadline)
-    return last if last.ok and last.kind == "expression" else None
+    if not (last.ok and last.kind == "expression"):
+        return None
+    # ``so that …``, ``so we get …``: words left between the step and the value would be read as its factors
+    return None if {symbol.name for symbol in last.value.free_symbols} - expected.names - {TIME.name} else last
 
 
 # a step of a derivation: ⇒ and its spellings, and the words the tokenizer reads as one (…, so …)

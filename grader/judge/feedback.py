@@ -106,10 +106,10 @@ FEEDBACK: dict[str, str] = {
     " the value your answer gives {label}. Its value was graded and is right; a person will check this answer.",
     "energies_disagree": "Your working gives {kinetic} and {potential}, but {sum} with them is not the value your"
     " answer gives {label}.",
-    "kinetic_moves_for_a_person": "Your working gives T, but {difference} with the value your answer gives {label}"
+    "kinetic_moves_for_a_person": "Your working gives {kinetic}, but {difference} with the value your answer gives {label}"
     " depends on the velocities{how}, which a potential energy V does not: so {label} = {sum} cannot hold. Its value"
     " was graded and is right; a person will check this answer.",
-    "kinetic_moves": "Your working gives T, but {difference} with the value your answer gives {label} depends on the"
+    "kinetic_moves": "Your working gives {kinetic}, but {difference} with the value your answer gives {label} depends on the"
     " velocities{how}, which a potential energy V does not: so {label} = {sum} cannot hold.",
     "potential_moves_for_a_person": "Your working gives {potential}, which depends on the velocities{how}: a"
     " potential energy does not. Its value was graded and is right; a person will check this answer.",
