@@ -86,6 +86,36 @@ NUMBERS = [
     ("2.006 yrs", "not_equivalent", ("Not within the accepted tolerance.", "Read as 6.33045e+07 s.")),
     ("2.006 s (Second try)", "equivalent",
      ("Correct.", "Graded the number `2.006 s`; what follows it (`(Second try)`) is not graded.")),
+    # prefixed seconds spelled out or cut short: each was a remark, and 2.006 ns right
+    ("2.006 nsec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-09 s.")),
+    ("2006000000 nsec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("T = 2.006 nsec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-09 s.")),
+    ("T = 2006000000 nsec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 nanosec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-09 s.")),
+    ("2.006 millisec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s.")),
+    ("2006 millisec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 milli seconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s.")),
+    ("2006 Milli seconds", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 millis", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s.")),
+    ("2006 millis", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 usec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-06 s.")),
+    ("2.006 microsec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-06 s.")),
+    ("2006000 usec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 ksec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2006 s.")),
+    ("0.002006 ksec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 picoseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-12 s.")),
+    ("2.006 gigaseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e+09 s.")),
+    ("2.006 megaseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e+06 s.")),
+    ("2.006 centiseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.02006 s.")),
+    ("200.6 centiseconds", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 wk", "not_equivalent", ("Not within the accepted tolerance.", "Read as 1.21323e+06 s.")),
+    # a word we cannot read as a unit, yet like one: a person, not the bare number, decides
+    ("2.006 flubsec", "undecided", ("Your number `2.006` comes with `flubsec`, which may be a unit the checker does"
+     " not know, and make it another number: a person will check your answer.",)),
+    ("2.006 millisex", "undecided", ("Your number `2.006` comes with `millisex`, which may be a unit the checker"
+     " does not know, and make it another number: a person will check your answer.",)),
+    ("2.006 s exactly", "equivalent",
+     ("Correct.", "Graded the number `2.006 s`; what follows it (`exactly`) is not graded.")),
 ]  # fmt: skip
 
 

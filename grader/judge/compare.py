@@ -1985,6 +1985,7 @@ _NUMBER_FOR_A_PERSON = frozenset(
         "counts_differ_for_a_person",
         "number_doubted_for_a_person",
         "number_qualified_for_a_person",
+        "unit_unknown_for_a_person",
     }
 )
 

@@ -137,6 +137,8 @@ FEEDBACK: dict[str, str] = {
     " person will decide which number is your answer.",
     "number_qualified_for_a_person": "Your number `{value}` comes with `{words}`, which may make it another number,"
     " or no one number: a person will decide what your answer is.",
+    "unit_unknown_for_a_person": "Your number `{value}` comes with `{unit}`, which may be a unit the checker does"
+    " not know, and make it another number: a person will check your answer.",
     "count_or_product_for_a_person": "Your answer `{typed}` may be a count with its working in brackets, or the"
     " product of the two, and these are different numbers: a person will check which you meant.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",

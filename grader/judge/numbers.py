@@ -32,7 +32,7 @@ from functools import lru_cache
 import sympy
 
 from grader.judge.feedback import SHOWN, shown
-from grader.judge.units import SI_UNITS, in_units, unit_named
+from grader.judge.units import SI_UNITS, in_units, unit_like, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
@@ -116,6 +116,7 @@ _SENTENCE_END = re.compile(r"(?<=[^\d\s.])\.$")
 _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its own, not of θ1
 # "one" after these is a pronoun (the one that swings), not a number
 _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
+_FIRST_WORD = re.compile(r"[(\[]?\s*([^\W\d_]+)\b\.?(?!\w)")  # the word a remark begins with, where it may be a unit
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
 _PER_CENT = re.compile(r"%|\bper\s*cent\b", re.I)
 _UNIT_NAMED = re.compile(r"(?<![^\W\d_])[^\W\d_]{2,}(?![^\W\d_])")  # a unit named in a remark: not s or m, a letter
@@ -274,6 +275,9 @@ def _read_number(
             if answer is None or (rest and not _is_remark(rest, names, words or typed, unit)):
                 continue
             typed = _SENTENCE_END.sub("", typed).rstrip(" ,;")  # The period is 2.01 s. 1, the angle θ
+            word = _FIRST_WORD.match(rest) if unit and not count and not answer.symbols else None
+            if word and unit_like(word[1]):  # 2.006 flubsec: a unit we do not know may make it another number
+                return prepared, answer, (("unit_unknown_for_a_person", {"value": typed, "unit": word[1]}),)
             said = _words_beside(f"{before} {rest}") if last and index == last else ""
             numbers = (reads, decimal_comma, unit, count)
             if said and _other_values(pieces[:last], answer, *numbers):
@@ -428,7 +432,7 @@ def _lines(text: str) -> list[str]:
 
 
 # the notes that leave which number is meant to a person
-_FOR_A_PERSON = frozenset({"number_doubted_for_a_person", "number_qualified_for_a_person"})
+_FOR_A_PERSON = frozenset({"number_doubted_for_a_person", "number_qualified_for_a_person", "unit_unknown_for_a_person"})
 _LAST_NUMBERS = 6  # numbers tried from the end of an answer, for the one shown beside a doubt
 _DIGITS = re.compile(r"(?<![\w.])[0-9]+(?:\.[0-9]+)?(?![\w.])")
 
@@ -1049,10 +1053,14 @@ def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
         # a space there, and \mu the prefix μ
         text = _TIE.sub(" ", _TEX_UNIT.sub(_tex_unit, text))
         text = _TEX_MICRO.sub(" μ", text)
-        text = _SEC.sub(r"\1\2s", text)
+        text = _SEC.sub(r"\1\2s", _PREFIX_APART.sub(lambda apart: (apart[1] + apart[2]).lower(), text))
     return text, notes
 
 
+# 2.006 milli seconds, micro-seconds: one unit, not a number then a remark (seconds) after a word (milli)
+_PREFIX_APART = re.compile(
+    r"(?<=[0-9.\s])(femto|pico|nano|micro|milli|centi|deci|kilo|mega|giga|tera)[\s-]+(secs?|seconds?)\b", re.I
+)
 _TEX_UNIT = re.compile(
     r"([0-9.])\s*(?:~|\\[,;:! ])?\s*(\\mu\s*|μ)?\\(?:text|textrm|mathrm|rm|mbox)\{\s*([A-Za-z/^0-9 .\\-]+?)\s*\}"
 )
