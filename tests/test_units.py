@@ -206,6 +206,13 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
          " `± 0.05%`: the value is what is graded."), "2.106"),
         ("2.006 ± 0.001 ± 0.002", "invalid", ("`±` is not something an answer can contain.",),
          "2.006 ± 0.001 ± 0.002\n      ^"),
+        # the letter x for ×, before a power of ten: before, 2006·x·10⁻³, refused, and 2.006x10^0 right only as
+        # 2.006·x₁₀⁰, so that 2.006x10^3 was refused
+        ("2006 x 10^-3 s", "equivalent", ("Correct.",), "2.006"),
+        ("2006X10^-3 s", "equivalent", ("Correct.",), "2.006"),
+        ("2006x10^-3", "equivalent", ("Correct.",), "2.006"),
+        ("2006 x 10^-2 s", "not_equivalent", ("Not within the accepted tolerance.",), "20.06"),
+        ("2.006x10^3 s", "not_equivalent", ("Not within the accepted tolerance.",), "2006"),
     ],
 )  # fmt: skip
 def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback, read_as):

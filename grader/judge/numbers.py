@@ -1048,6 +1048,8 @@ def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
     if decimal_comma:
         text, comma = _decimal_point(text, every=decimal_comma == _Commas.EVERY)
         notes = (comma,) if comma else ()
+    if len(text) < _LENGTH:
+        text = _TIMES_TEN.sub(" × ", text)
     if unit and len(text) < _LENGTH:
         # TeX's unit after a number: 2.006~\text{s}, 2.006\,\mathrm{ s}, 2006\,\mu\mathrm{s}; the tie ~ is
         # a space there, and \mu the prefix μ
@@ -1057,6 +1059,9 @@ def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
     return text, notes
 
 
+# 2006 x 10^-3: the letter for ×, where a number is asked and x can be no variable; read as typed, 2006·x·10⁻³
+# was refused, and 2.006x10^0 right only as 2.006·x₁₀⁰
+_TIMES_TEN = re.compile(r"(?<=[0-9.])\s*[xX]\s*(?=10\s*\^)")
 # 2.006 milli seconds, micro-seconds: one unit, not a number then a remark (seconds) after a word (milli)
 _PREFIX_APART = re.compile(
     r"(?<=[0-9.\s])(femto|pico|nano|micro|milli|centi|deci|kilo|mega|giga|tera)[\s-]+(secs?|seconds?)\b", re.I
