@@ -580,6 +580,33 @@ WORKED_IN_SYMBOLS = [
     # a name the problem gives no value: not read, as before
     ("T = 2 pi sqrt(m/g) = 2.006 s", "equivalent",
      ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.")),
+    # values the answer gives the names itself are the ones its working uses: read past, the working held at
+    # the problem's, and the answer was right though at its own values it comes to 2.837 s, or 1.405 s
+    ("T = 2π√(l/g) = 2.006 s, where l = 2 m", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(l/g) = 2.006 s, where l ="
+      " 2 m`, does not hold: a person will check this answer.",)),
+    ("T = 2π√(l/g) = 2.006 s, where l = 1 m", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded the number `2.006 s`; what follows it (`where l = 1 m`) is not graded.")),
+    ("T = 2π√(l/g) = 2.006 s, where g = 20", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(l/g) = 2.006 s, where g ="
+      " 20`, does not hold: a person will check this answer.",)),
+    ("T = 2π√(l/g) = 2.006 s, where g = 9.81 m/s^2", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded the number `2.006 s`; what follows it (`where g = 9.81 m/s^2`) is not graded.")),
+    ("T = 2π√(l/g) = 2.006 s, l = 2 m, g = 9.81 m/s^2", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(l/g) = 2.006 s, l = 2 m,"
+      " g = 9.81 m/s^2`, does not hold: a person will check this answer.",)),
+    ("T = 2π√(l/g) = 2.006 s, l = 100 cm, g = 9.81 m/s^2", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded `T = 2π√(l/g) = 2.006 s`, your value in s; the rest of your answer (`l = 100 cm, g = 9.81 m/s^2`) is"
+      " not graded.")),
+    ("l = 2 m; T = 2π√(l/g) = 2.006 s", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `l = 2 m; T = 2π√(l/g) = 2.006 s`,"
+      " does not hold: a person will check this answer.",)),
+    ("l = 1 m; T = 2π√(l/g) = 2.006 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded `T = 2π√(l/g) = 2.006 s`, your value in s; the rest of your answer (`l = 1 m`) is not graded.")),
 ]  # fmt: skip
 
 

@@ -2421,12 +2421,13 @@ def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
 
 
 def _as_number(
-    text: str, *, spec: Kind, expected: Expected, names: list, deadline, working: bool = False
+    text: str, *, spec: Kind, expected: Expected, names: list, deadline, working: bool = False, stated: tuple = ()
 ) -> ParsedAnswer | None:
     """``text`` read, if it is a number, a number with units where the part has a unit, or a name
     for one (``n = 2``); else None. A side of ``working`` may be a formula in names whose values the
     problem gives (the option ``values``: ``2π√(g/l)`` before ``= 2.006 s``), read at those values; not
-    the answer itself, which must be a number."""
+    the answer itself, which must be a number. ``stated`` are the values the answer gives names itself
+    (``…, where l = 2 m``: pairs of a name and its value in SI units), which are the ones its working uses."""
     answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
     if not answer.ok:
         return None
@@ -2438,6 +2439,7 @@ def _as_number(
     if not value.free_symbols or (spec.name == "number" and expected.option("unit") and in_units(value)):
         return answer
     given = _given_numbers(expected.option("values"), expected) if working and spec.name == "number" else {}
+    given = given | {name: sympy.Float(value) for name, value in stated} if given else given
     if given and {symbol.name for symbol in value.free_symbols} <= set(given):
         replacement = {symbol: given[symbol.name] for symbol in value.free_symbols}
         return ParsedAnswer(answer.text, value.xreplace(replacement), "expression")

@@ -165,11 +165,53 @@ def read_number(
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
     )
+    if answer is not None and unit and not count and not any(note[0] in _FOR_A_PERSON for note in notes):
+        notes = _stated_values_false(text, answer, reads, names, notes)
     lines = _lines(text) if len(text) <= _LENGTH and _SEPARATED.search(text) else [text]
     said = lines[0] if len(lines) == 1 else text
     ruled_out = _ruled_out(said) if count else None
     said = ruled_out["value"] if ruled_out else said  # 2 (not 4): its "not" rules 4 out, and doubts no number
     return _qualified(said, _doubted(said, (prepared, answer, notes), reads), count)
+
+
+# a value an answer gives one of the problem's names: …, where l = 2 m; g = 9.81 m/s^2
+_STATED_VALUE = re.compile(
+    r"(?<![\w.])([^\W\d_][\w₀-₉]*)\s*=\s*([+-]?[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?(?:\s*[A-Za-z][A-Za-z/^0-9]*)?)"
+    r"[^\S\n]*(?=$|[,;.)\n]|\s+(?:and|where|with)\b)"
+)
+_READ_PAST = frozenset({"final_value", "remark_ignored", "statements_left_out", "number_read", "number_in_sentence"})
+_STATED_TRIED = 4
+
+
+def _stated_values_false(text: str, answer: ParsedAnswer, reads, names: Collection[str], notes: tuple) -> tuple:
+    """``notes``, or where the answer gives the problem's names values of its own (``T = 2π√(l/g) = 2.006 s,
+    where l = 2 m``) at which its working does not come to the value graded, the note that sends it to a
+    person: read past, the values were the ones the problem gives, and the working held."""
+    if len(text) > _LENGTH:
+        return notes
+    stated = {}
+    for found in list(_STATED_VALUE.finditer(text))[:_STATED_TRIED]:
+        if found[1] not in names:
+            continue
+        read = parse_answer(found[2])
+        value = in_units(read.value) if read.ok and read.kind == "expression" else None
+        if value is None or not value[0].is_number:
+            continue
+        stated[found[1]] = float(value[0] * sympy.Rational(value[1]))
+    if not stated:
+        return notes
+    pattern = re.compile(r"(?<![^\W\d_])(?:" + "|".join(map(re.escape, stated)) + r")(?![\w])")
+    final = _last_side(answer)
+    for side in _sides(text)[0][:_SIDES]:
+        if not pattern.search(side) or _QUANTITY.fullmatch(side) or re.search(r"[,;]", side):
+            continue  # l = 2 m: the name itself, not working in it; 2 m, g: the end of one statement
+        read = reads(side, working=True, stated=tuple(sorted(stated.items())))
+        if read is not None and not _agree(_last_side(read), final, count=False):
+            kept = tuple(note for note in notes if note[0] not in _READ_PAST)
+            typed = shown(_SENTENCE_END.sub("", text.strip()))
+            value = next((details["value"] for key, details in notes if key in _READ_PAST and "value" in details), "")
+            return (*kept, ("working_false_for_a_person", {"value": value or answer.text, "working": typed}))
+    return notes
 
 
 def _read_number(
