@@ -595,6 +595,9 @@ def test_a_lagrangians_multiple_that_is_no_energy_says_so_and_keeps_its_credit(s
     assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.5, feedback), verdict
 
 
+DIMENSIONS_LEFT_OUT = "Read without its dimensions, `{}`: the formula is what is graded."
+
+
 # a part whose prompt asks for more than the formula: "Compute Q_θ. What are its dimensions?"
 ASKS_MORE = {**PENDULUM, "name": "Q_theta", "asks_more": True}
 Q_TYPED = "Q_θ = −m g l sin θ"
@@ -624,6 +627,21 @@ def _words_for_a_person(words):
         ("Q_θ [N] = −m g l sin θ", "not_equivalent", 0.0,
          ("Your answer is in kg·m/s², which is not how the quantity asked for is measured: check its dimensions.",)),
         ("Q_θ [N m] = −m g l sin θ", "equivalent", 1.0, ("Correct.", LEFT_OUT.format("N·m"))),
+        # the dimensions asked for, in M, L and T, are checked as a unit is: before, names not defined
+        ("−m g l sin θ [ML²T⁻²]", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("ML²T⁻²"))),
+        ("−m g l sin θ [MLT⁻²]", "not_equivalent", 0.0,
+         ("Your answer is in kg·m/s², which is not how the quantity asked for is measured: check its dimensions.",)),
+        ("−m g l sin θ [M L^2 T^-2]", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("M L^2 T^-2"))),
+        ("−m g l sin θ [M L T^-2]", "not_equivalent", 0.0,
+         ("Your answer is in kg·m/s², which is not how the quantity asked for is measured: check its dimensions.",)),
+        ("−m g l sin θ (ML²T⁻²)", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("ML²T⁻²"))),
+        ("Q_θ = −m g l sin θ ML²T⁻²", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("ML²T⁻²"))),
+        # N·m run together (before, words for a person), and a unit in square brackets whose name is the
+        # problem's too (before, read as the mass m, a factor of the formula)
+        ("−m g l sin θ Nm", "equivalent", 1.0, ("Correct.", LEFT_OUT.format("Nm"))),
+        ("−m g l sin θ [m]", "not_equivalent", 0.0,
+         ("Your answer is in m, which is not how the quantity asked for is measured: check its dimensions.",)),
+        ("−m g l sin θ [J]", "equivalent", 1.0, ("Correct.", LEFT_OUT.format("J"))),
     ],
 )  # fmt: skip
 def test_where_a_part_asks_for_more_than_the_formula_words_beside_it_go_to_a_person(submitted, status, score, feedback):

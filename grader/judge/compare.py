@@ -2042,6 +2042,8 @@ def _read(
             if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
                 answer = again
         answer = _working_before_steps(answer, submitted, spec, expected, names, deadline)
+        if answer.ok and _dimensions_tail(submitted, spec, expected) is not None:
+            return answer, ()  # … [ML²T⁻²]: dimensions, not words (see _formula_in_unit)
         answer, notes = _without_words(answer, submitted, expected, names, deadline)
         said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
         if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
@@ -2556,10 +2558,17 @@ def _formula_in_unit(
     the problem uses, in SI units, multiplying the whole formula. Where the problem gives its
     symbols' dimensions, a unit that does not measure the quantity asked for is said so."""
     value, unchanged = answer.value, (answer, None, None)
+    dimensions = _dimensions_tail(answer.text, spec, expected) if answer.kind == "expression" else None
+    if dimensions is not None:
+        return dimensions
     units = _units_named(answer, expected)
-    if answer.kind != "expression" or not units:
+    # … [m]: a unit in square brackets, though its name is the problem's too (the mass m)
+    bracketed = not units and answer.text.rstrip().endswith("]")
+    if answer.kind != "expression" or not (units or bracketed):
         return unchanged
     tail = _unit_tail(answer.text, spec, expected)
+    if tail is None and bracketed:
+        return unchanged
     if tail is not None:  # first, for the product took in a unit with a name of the problem's: − m g r sin θ N·m
         answer, unit, found = tail
         formula = answer.value
@@ -2576,6 +2585,44 @@ def _formula_in_unit(
     if outcome is not None:
         return answer, outcome, None
     return ParsedAnswer(answer.text, formula, "expression"), None, note
+
+
+# a quantity's dimensions after a formula, as a prompt may ask them: [ML²T⁻²], (M L^2 T^-2), ML²T⁻²
+_DIMENSION = r"[MLT](?:\s*\^\s*\(?\s*[-−]?[0-9]\s*\)?|[⁻]?[¹²³⁴⁵⁶⁷⁸⁹])?"
+_DIMENSIONS = rf"{_DIMENSION}(?:\s*[·⋅*]?\s*{_DIMENSION}){{0,2}}"
+_DIMENSIONS_TAIL = re.compile(
+    rf"(?P<head>.+?)(?:\s*,\s*|\s*)(?:\[\s*(?P<bracket>{_DIMENSIONS})\s*\]|\(\s*(?P<round>{_DIMENSIONS})\s*\)"
+    rf"|(?<=\s)(?P<bare>{_DIMENSION}(?:\s*[·⋅*]?\s*{_DIMENSION}){{1,2}}))\s*\.?\s*",
+    re.S,
+)
+_DIMENSION_POWERS = re.compile(r"([MLT])(?:\s*\^\s*\(?\s*([-−]?[0-9])\s*\)?|([⁻]?[¹²³⁴⁵⁶⁷⁸⁹]))?")
+_SUPERSCRIPT_DIGITS = str.maketrans("⁻¹²³⁴⁵⁶⁷⁸⁹", "-123456789")
+
+
+def _dimensions_tail(text: str, spec: Kind, expected: Expected) -> tuple | None:
+    """``−m g r sin θ [ML²T⁻²]``: a formula, then its dimensions in M, L and T (not names of the problem's),
+    where a formula is asked: as :func:`_formula_in_unit` returns, the dimensions checked as a unit is and
+    left out. None for any other text. Read as typed, M, L and T were names the problem does not define."""
+    found = _DIMENSIONS_TAIL.fullmatch(text) if len(text) <= _UNIT_TAIL_LENGTH else None
+    if found is None:
+        return None
+    typed = found["bracket"] or found["round"] or found["bare"]
+    powers = [0, 0, 0]
+    for letter, caret, superscript in _DIMENSION_POWERS.findall(typed):
+        if letter in expected.names:
+            return None  # T, the kinetic energy, or L, a length: no dimension
+        power = caret or (superscript.translate(_SUPERSCRIPT_DIGITS) if superscript else "1")
+        powers["MLT".index(letter)] += int(power.replace("−", "-"))
+    formula = parse_answer(found["head"].rstrip(" ,;"), coords=expected.setting.coords, known=sorted(expected.names))
+    formula = _unwrap_named(formula, spec, expected) if formula.ok else formula  # Q_θ = …
+    if not formula.ok or formula.kind != "expression" or not formula.symbols or _undefined_symbols(formula, expected):
+        return None
+    units = tuple(Fraction(power) for power in powers)
+    wanted = _expected_units(spec, expected)
+    if wanted is not None and units != wanted:
+        outcome = Outcome("not_equivalent", 0.0, "formula_unit_differs", {"theirs": si(units)}, method="units")
+        return formula, outcome, None
+    return ParsedAnswer(formula.text, formula.value, "expression"), None, ("dimensions_left_out", {"dimensions": typed})
 
 
 def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outcome | None, tuple | None]:
@@ -2655,8 +2702,10 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
         lone = unit.value.is_Symbol and unit.value.name in _LONE_UNITS and _expected_units(spec, expected) is not None
         if found is None or found[0] != 1 or (found[1] != 1 and not said) or not (set_apart or several or lone):
             continue
-        if names <= expected.names and not said:
-            continue  # nothing here but the problem's names: no unit was written (but "in m" says one)
+        if names <= expected.names and not said and opener != "[":
+            # nothing here but the problem's names: no unit was written (but "in m" says one, and so does
+            # [m], the brackets a unit is written in: read as the mass, … [m] was a formula times m)
+            continue
         formula = parse_answer(head.rstrip(" ,;"), coords=expected.setting.coords, known=sorted(expected.names))
         formula = _unwrap_named(formula, spec, expected) if formula.ok else formula  # Q_θ = …
         if not formula.ok or formula.kind != "expression" or not formula.symbols:

@@ -95,6 +95,7 @@ FEEDBACK: dict[str, str] = {
     "momentum_spelt": "Your answer defines `{definition}`, which is not the problem's {name}, then uses {name} itself.",
     "operator_for_a_person": "Your answer says `{statement}` on the way to its equation, which is not Lagrange's"
     " equation. The equation was graded and is right; a person will check this answer.",
+    "dimensions_left_out": "Read without its dimensions, `{dimensions}`: the formula is what is graded.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "working_false_for_a_person": "Your final value, `{value}`, was graded and is right, but your working,"

@@ -195,6 +195,7 @@ SI_UNITS: dict[str, tuple[Fraction, Units]] = {
     **dict.fromkeys(("g", "gram", "grams"), _si_unit(Fraction(1, 1000), "mass")),
     **dict.fromkeys(("N", "newton", "newtons"), _si_unit(1, "force")),
     **dict.fromkeys(("J", "joule", "joules"), _si_unit(1, "energy")),
+    "Nm": _si_unit(1, "torque"),  # N·m run together: a word after the formula, else
     **dict.fromkeys(("W", "watt", "watts"), _si_unit(1, "power")),
     **dict.fromkeys(("Hz", "hertz"), _si_unit(1, "frequency")),
     **dict.fromkeys(("Pa", "pascal", "pascals"), _si_unit(1, "pressure")),
