@@ -191,6 +191,16 @@ NUMBER_LABELS = [
      "Your answer is labelled ω, but the quantity asked for is T. Read as T, it is right; a person will check"
      " which you meant."),
     ("f = 0.319", "not_equivalent", "Your answer is labelled f, but the quantity asked for is T."),
+    # the word for a quantity measured in the unit asked names it (before, for a person); another does not
+    ("period = 2.006 s", "equivalent", "Correct."),
+    ("Period = 2006 ms", "equivalent", "Correct."),
+    ("period = 2.1 s", "not_equivalent", "Not within the accepted tolerance."),
+    ("length = 2.006", "undecided",
+     "Your answer is labelled length, but the quantity asked for is T. Read as T, it is right; a person will check"
+     " which you meant."),
+    ("frequency = 2.006", "undecided",
+     "Your answer is labelled frequency, but the quantity asked for is T. Read as T, it is right; a person will"
+     " check which you meant."),
 ]  # fmt: skip
 
 

@@ -51,6 +51,8 @@ from grader.judge.sampling import GROUP, all_equal, constant_difference, evaluat
 from grader.judge.scalar import check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import (
+    DIMENSIONS,
+    QUANTITY_WORDS,
     SI_UNITS,
     Mixed,
     cycles_to,
@@ -1717,13 +1719,22 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         said = unicode_name(name, order)
     elif isinstance(lhs, sympy.Symbol | AppliedUndef):
         label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
-        if _is_asked(label, names):
-            return None  # pφ for p_φ, and p
+        if _is_asked(label, names) or _measured_as_asked(label, expected):
+            return None  # pφ for p_φ, and p; period = 2.006 s
         said = described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed (see unicode_name)
     else:
         return None  # T − V = …, and ẍ = … where the quantity is not named as a rate: no name of one quantity
     asked = _rates_named(names[:1], expected)
     return ("label_for_a_person", {"label": said, "name": unicode_name(*asked[0]) if asked else described(names[:1])})
+
+
+def _measured_as_asked(label: str, expected: Expected) -> bool:
+    """Whether a label is the word for a quantity measured in the part's unit: ``period = 2.006 s`` where the
+    period is asked in s. Not "frequency", which is f or ω, in the same units."""
+    unit = expected.option("unit")
+    dimension = QUANTITY_WORDS.get(label.lower())
+    found = unit_named(str(unit)) if unit and dimension else None
+    return found is not None and found[1] == DIMENSIONS[dimension]
 
 
 def _force_named(side) -> str | None:

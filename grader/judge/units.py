@@ -2,6 +2,7 @@
 
 Contents:
     DIMENSIONS                   a dimension's name → its powers of mass, length and time
+    QUANTITY_WORDS               a quantity's word (period) → its dimension's name
     units_of(expr, setting)      the powers of an expression in plain symbols; None where unknown
     Mixed                        raised where terms of a sum, or a function's argument, disagree
     units_mistake(expected, value)  what a wrong answer's units say, as a feedback key and details
@@ -35,6 +36,7 @@ if TYPE_CHECKING:  # setting.py reads DIMENSIONS from here
 
 __all__ = [
     "DIMENSIONS",
+    "QUANTITY_WORDS",
     "SI_UNITS",
     "Mixed",
     "cycles_to",
@@ -64,6 +66,14 @@ DIMENSIONS: dict[str, Units] = {
         "force": (1, 1, -2), "torque": (1, 2, -2), "energy": (1, 2, -2), "power": (1, 2, -3),
         "force per length": (1, 0, -2), "mass per time": (1, 0, -1), "pressure": (1, -1, -2),
     }.items()
+}  # fmt: skip
+
+# The words for quantities a label may be (period = 2.006 s), by what each measures; not frequency, f or ω
+QUANTITY_WORDS = {
+    "period": "time", "time": "time", "duration": "time", "length": "length", "distance": "length",
+    "mass": "mass", "speed": "velocity", "velocity": "velocity", "acceleration": "acceleration",
+    "force": "force", "torque": "torque", "energy": "energy", "work": "energy", "power": "power",
+    "momentum": "momentum",
 }  # fmt: skip
 
 # Functions whose argument must be a pure number, and so is their value. (sign takes any
