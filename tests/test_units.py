@@ -213,6 +213,13 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
         ("2006x10^-3", "equivalent", ("Correct.",), "2.006"),
         ("2006 x 10^-2 s", "not_equivalent", ("Not within the accepted tolerance.",), "20.06"),
         ("2.006x10^3 s", "not_equivalent", ("Not within the accepted tolerance.",), "2006"),
+        # how the number was rounded, after it: before, refused for the digit in the remark
+        ("2.006 s, to 4 figures", "equivalent",
+         ("Correct.", "Graded the number `2.006 s`; what follows it (`to 4 figures`) is not graded."), "2.006"),
+        ("2.5 s, to 4 figures", "not_equivalent", ("Not within the accepted tolerance.",
+         "Graded the number `2.5 s`; what follows it (`to 4 figures`) is not graded."), "2.5"),
+        ("2.01 s to 3 s.f.", "equivalent",
+         ("Correct.", "Graded the number `2.01 s`; what follows it (`to 3 s.f.`) is not graded."), "2.01"),
     ],
 )  # fmt: skip
 def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback, read_as):

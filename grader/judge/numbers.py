@@ -118,6 +118,11 @@ _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its o
 _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
 _FIRST_WORD = re.compile(r"[(\[]?\s*([^\W\d_]+)\b\.?(?!\w)")  # the word a remark begins with, where it may be a unit
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
+_PRECISION = re.compile(
+    r"(?:(?:rounded|correct|given)\s+)?(?:to|at)\s+[0-9]{1,2}\s+(?:significant\s+|sig\.?\s+)?"
+    r"(?:figures|digits|decimal\s+places|decimals|sig\.?\s*figs?|s\.?\s?f\.?|d\.?\s?p\.?)[)\].]?\s*",
+    re.I,
+)
 _PER_CENT = re.compile(r"%|\bper\s*cent\b", re.I)
 _UNIT_NAMED = re.compile(r"(?<![^\W\d_])[^\W\d_]{2,}(?![^\W\d_])")  # a unit named in a remark: not s or m, a letter
 _REMARKS_TRIED = 12
@@ -1217,6 +1222,8 @@ def _is_remark(rest: str, names: Collection[str], number: str = "", unit: str = 
     if (repeated := _REPEATED.fullmatch(rest)) and repeated[1] == number:
         return True  # two (2): the number again, in digits
     words = rest.lstrip("([{,:;–—- ")
+    if _PRECISION.fullmatch(words):
+        return True  # 2.006 s, to 4 figures: how it was rounded, whose digit is no other number
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
     if _PER_CENT.search(words):
