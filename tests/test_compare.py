@@ -6325,3 +6325,24 @@ def test_only_a_decimal_that_rounds_the_exact_number_is_told_it_is_rounded(expec
     verdict = compare(expected, submitted, kind="lagrangian" if "thetadot" in expected else "expression", **PENDULUM)
     assert verdict.status == status, verdict
     assert "rounded" not in (verdict.diagnosis or "")
+
+
+PERIOD_VALUES = {**PERIOD_PART, "name": ["T"], "values": {"l": 1.0, "g": 9.81}}  # as plane-pendulum.period
+
+
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # a number is judged within its tolerance: it was told an exact number belongs where it stands
+        ("2.02", "not_equivalent", "Not within the accepted tolerance."),
+        ("1.996", "not_equivalent", "Not within the accepted tolerance."),
+        ("2.002", "equivalent", "Correct."),
+        ("2.02 s", "not_equivalent", "Not within the accepted tolerance."),
+        ("2.006 s", "equivalent", "Correct."),
+        ("T = 2.02 s", "not_equivalent", "Not within the accepted tolerance."),
+        ("T = 2.006 s", "equivalent", "Correct."),
+    ],
+)
+def test_a_number_out_of_tolerance_is_told_so_not_that_it_is_rounded(submitted, status, feedback):
+    verdict = compare(PERIOD, submitted, **PERIOD_VALUES)
+    assert (verdict.status, verdict.feedback) == (status, (feedback,)), verdict

@@ -206,6 +206,20 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
          " `± 0.05%`: the value is what is graded."), "2.106"),
         ("2.006 ± 0.001 ± 0.002", "invalid", ("`±` is not something an answer can contain.",),
          "2.006 ± 0.001 ± 0.002\n      ^"),
+        # the letter x for ×, before a power of ten: before, 2006·x·10⁻³, refused, and 2.006x10^0 right only as
+        # 2.006·x₁₀⁰, so that 2.006x10^3 was refused
+        ("2006 x 10^-3 s", "equivalent", ("Correct.",), "2.006"),
+        ("2006X10^-3 s", "equivalent", ("Correct.",), "2.006"),
+        ("2006x10^-3", "equivalent", ("Correct.",), "2.006"),
+        ("2006 x 10^-2 s", "not_equivalent", ("Not within the accepted tolerance.",), "20.06"),
+        ("2.006x10^3 s", "not_equivalent", ("Not within the accepted tolerance.",), "2006"),
+        # how the number was rounded, after it: before, refused for the digit in the remark
+        ("2.006 s, to 4 figures", "equivalent",
+         ("Correct.", "Graded the number `2.006 s`; what follows it (`to 4 figures`) is not graded."), "2.006"),
+        ("2.5 s, to 4 figures", "not_equivalent", ("Not within the accepted tolerance.",
+         "Graded the number `2.5 s`; what follows it (`to 4 figures`) is not graded."), "2.5"),
+        ("2.01 s to 3 s.f.", "equivalent",
+         ("Correct.", "Graded the number `2.01 s`; what follows it (`to 3 s.f.`) is not graded."), "2.01"),
     ],
 )  # fmt: skip
 def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback, read_as):
@@ -588,6 +602,9 @@ def test_a_lagrangians_multiple_that_is_no_energy_says_so_and_keeps_its_credit(s
     assert (verdict.status, verdict.score, verdict.feedback) == ("not_equivalent", 0.5, feedback), verdict
 
 
+DIMENSIONS_LEFT_OUT = "Read without its dimensions, `{}`: the formula is what is graded."
+
+
 # a part whose prompt asks for more than the formula: "Compute Q_θ. What are its dimensions?"
 ASKS_MORE = {**PENDULUM, "name": "Q_theta", "asks_more": True}
 Q_TYPED = "Q_θ = −m g l sin θ"
@@ -617,6 +634,21 @@ def _words_for_a_person(words):
         ("Q_θ [N] = −m g l sin θ", "not_equivalent", 0.0,
          ("Your answer is in kg·m/s², which is not how the quantity asked for is measured: check its dimensions.",)),
         ("Q_θ [N m] = −m g l sin θ", "equivalent", 1.0, ("Correct.", LEFT_OUT.format("N·m"))),
+        # the dimensions asked for, in M, L and T, are checked as a unit is: before, names not defined
+        ("−m g l sin θ [ML²T⁻²]", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("ML²T⁻²"))),
+        ("−m g l sin θ [MLT⁻²]", "not_equivalent", 0.0,
+         ("Your answer is in kg·m/s², which is not how the quantity asked for is measured: check its dimensions.",)),
+        ("−m g l sin θ [M L^2 T^-2]", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("M L^2 T^-2"))),
+        ("−m g l sin θ [M L T^-2]", "not_equivalent", 0.0,
+         ("Your answer is in kg·m/s², which is not how the quantity asked for is measured: check its dimensions.",)),
+        ("−m g l sin θ (ML²T⁻²)", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("ML²T⁻²"))),
+        ("Q_θ = −m g l sin θ ML²T⁻²", "equivalent", 1.0, ("Correct.", DIMENSIONS_LEFT_OUT.format("ML²T⁻²"))),
+        # N·m run together (before, words for a person), and a unit in square brackets whose name is the
+        # problem's too (before, read as the mass m, a factor of the formula)
+        ("−m g l sin θ Nm", "equivalent", 1.0, ("Correct.", LEFT_OUT.format("Nm"))),
+        ("−m g l sin θ [m]", "not_equivalent", 0.0,
+         ("Your answer is in m, which is not how the quantity asked for is measured: check its dimensions.",)),
+        ("−m g l sin θ [J]", "equivalent", 1.0, ("Correct.", LEFT_OUT.format("J"))),
     ],
 )  # fmt: skip
 def test_where_a_part_asks_for_more_than_the_formula_words_beside_it_go_to_a_person(submitted, status, score, feedback):

@@ -86,6 +86,36 @@ NUMBERS = [
     ("2.006 yrs", "not_equivalent", ("Not within the accepted tolerance.", "Read as 6.33045e+07 s.")),
     ("2.006 s (Second try)", "equivalent",
      ("Correct.", "Graded the number `2.006 s`; what follows it (`(Second try)`) is not graded.")),
+    # prefixed seconds spelled out or cut short: each was a remark, and 2.006 ns right
+    ("2.006 nsec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-09 s.")),
+    ("2006000000 nsec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("T = 2.006 nsec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-09 s.")),
+    ("T = 2006000000 nsec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 nanosec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-09 s.")),
+    ("2.006 millisec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s.")),
+    ("2006 millisec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 milli seconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s.")),
+    ("2006 Milli seconds", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 millis", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.002006 s.")),
+    ("2006 millis", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 usec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-06 s.")),
+    ("2.006 microsec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-06 s.")),
+    ("2006000 usec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 ksec", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2006 s.")),
+    ("0.002006 ksec", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 picoseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e-12 s.")),
+    ("2.006 gigaseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e+09 s.")),
+    ("2.006 megaseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 2.006e+06 s.")),
+    ("2.006 centiseconds", "not_equivalent", ("Not within the accepted tolerance.", "Read as 0.02006 s.")),
+    ("200.6 centiseconds", "equivalent", ("Correct.", "Read as 2.006 s.")),
+    ("2.006 wk", "not_equivalent", ("Not within the accepted tolerance.", "Read as 1.21323e+06 s.")),
+    # a word we cannot read as a unit, yet like one: a person, not the bare number, decides
+    ("2.006 flubsec", "undecided", ("Your number `2.006` comes with `flubsec`, which may be a unit the checker does"
+     " not know, and make it another number: a person will check your answer.",)),
+    ("2.006 millisex", "undecided", ("Your number `2.006` comes with `millisex`, which may be a unit the checker"
+     " does not know, and make it another number: a person will check your answer.",)),
+    ("2.006 s exactly", "equivalent",
+     ("Correct.", "Graded the number `2.006 s`; what follows it (`exactly`) is not graded.")),
 ]  # fmt: skip
 
 
@@ -161,6 +191,16 @@ NUMBER_LABELS = [
      "Your answer is labelled ω, but the quantity asked for is T. Read as T, it is right; a person will check"
      " which you meant."),
     ("f = 0.319", "not_equivalent", "Your answer is labelled f, but the quantity asked for is T."),
+    # the word for a quantity measured in the unit asked names it (before, for a person); another does not
+    ("period = 2.006 s", "equivalent", "Correct."),
+    ("Period = 2006 ms", "equivalent", "Correct."),
+    ("period = 2.1 s", "not_equivalent", "Not within the accepted tolerance."),
+    ("length = 2.006", "undecided",
+     "Your answer is labelled length, but the quantity asked for is T. Read as T, it is right; a person will check"
+     " which you meant."),
+    ("frequency = 2.006", "undecided",
+     "Your answer is labelled frequency, but the quantity asked for is T. Read as T, it is right; a person will"
+     " check which you meant."),
 ]  # fmt: skip
 
 
@@ -649,6 +689,33 @@ WORKED_IN_SYMBOLS = [
     # a name the problem gives no value: not read, as before
     ("T = 2 pi sqrt(m/g) = 2.006 s", "equivalent",
      ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.")),
+    # values the answer gives the names itself are the ones its working uses: read past, the working held at
+    # the problem's, and the answer was right though at its own values it comes to 2.837 s, or 1.405 s
+    ("T = 2π√(l/g) = 2.006 s, where l = 2 m", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(l/g) = 2.006 s, where l ="
+      " 2 m`, does not hold: a person will check this answer.",)),
+    ("T = 2π√(l/g) = 2.006 s, where l = 1 m", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded the number `2.006 s`; what follows it (`where l = 1 m`) is not graded.")),
+    ("T = 2π√(l/g) = 2.006 s, where g = 20", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(l/g) = 2.006 s, where g ="
+      " 20`, does not hold: a person will check this answer.",)),
+    ("T = 2π√(l/g) = 2.006 s, where g = 9.81 m/s^2", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded the number `2.006 s`; what follows it (`where g = 9.81 m/s^2`) is not graded.")),
+    ("T = 2π√(l/g) = 2.006 s, l = 2 m, g = 9.81 m/s^2", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `T = 2π√(l/g) = 2.006 s, l = 2 m,"
+      " g = 9.81 m/s^2`, does not hold: a person will check this answer.",)),
+    ("T = 2π√(l/g) = 2.006 s, l = 100 cm, g = 9.81 m/s^2", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded `T = 2π√(l/g) = 2.006 s`, your value in s; the rest of your answer (`l = 100 cm, g = 9.81 m/s^2`) is"
+      " not graded.")),
+    ("l = 2 m; T = 2π√(l/g) = 2.006 s", "undecided",
+     ("Your final value, `2.006 s`, was graded and is right, but your working, `l = 2 m; T = 2π√(l/g) = 2.006 s`,"
+      " does not hold: a person will check this answer.",)),
+    ("l = 1 m; T = 2π√(l/g) = 2.006 s", "equivalent",
+     ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
+      "Graded `T = 2π√(l/g) = 2.006 s`, your value in s; the rest of your answer (`l = 1 m`) is not graded.")),
 ]  # fmt: skip
 
 

@@ -51,6 +51,8 @@ from grader.judge.sampling import GROUP, all_equal, constant_difference, evaluat
 from grader.judge.scalar import check_integer, check_number
 from grader.judge.text import check_text
 from grader.judge.units import (
+    DIMENSIONS,
+    QUANTITY_WORDS,
     SI_UNITS,
     Mixed,
     cycles_to,
@@ -421,6 +423,8 @@ def _rounded(spec: Kind, expected: Expected, submitted: str, timeout: float, giv
     rounding; None for any other answer, or where time runs out."""
     if not (spec.parsed and spec.shape) or not isinstance(submitted, str) or len(submitted) > LIMITS.length:
         return None
+    if spec.name == "number":
+        return None  # a number is judged within its tolerance: no exact number belongs there (2.02 for 2.006)
     started = time.monotonic()
     for reading, decimals in exact_readings(submitted):
         left = timeout - (time.monotonic() - started)
@@ -1868,13 +1872,22 @@ def _another_name(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expect
         said = unicode_name(name, order)
     elif isinstance(lhs, sympy.Symbol | AppliedUndef):
         label = lhs.name if isinstance(lhs, sympy.Symbol) else lhs.func.__name__
-        if _is_asked(label, names):
-            return None  # pφ for p_φ, and p
+        if _is_asked(label, names) or _measured_as_asked(label, expected):
+            return None  # pφ for p_φ, and p; period = 2.006 s
         said = described([label])  # ∂L/∂φ̇ = …, ∂V/∂θ = …: as typed (see unicode_name)
     else:
         return None  # T − V = …, and ẍ = … where the quantity is not named as a rate: no name of one quantity
     asked = _rates_named(names[:1], expected)
     return ("label_for_a_person", {"label": said, "name": unicode_name(*asked[0]) if asked else described(names[:1])})
+
+
+def _measured_as_asked(label: str, expected: Expected) -> bool:
+    """Whether a label is the word for a quantity measured in the part's unit: ``period = 2.006 s`` where the
+    period is asked in s. Not "frequency", which is f or ω, in the same units."""
+    unit = expected.option("unit")
+    dimension = QUANTITY_WORDS.get(label.lower())
+    found = unit_named(str(unit)) if unit and dimension else None
+    return found is not None and found[1] == DIMENSIONS[dimension]
 
 
 def _force_named(side) -> str | None:
@@ -2170,6 +2183,7 @@ _NUMBER_FOR_A_PERSON = frozenset(
         "counts_differ_for_a_person",
         "number_doubted_for_a_person",
         "number_qualified_for_a_person",
+        "unit_unknown_for_a_person",
     }
 )
 
@@ -2224,6 +2238,8 @@ def _read(
             if again.ok and {symbol.name for symbol in again.symbols} - known < glued:
                 answer = again
         answer = _working_before_steps(answer, submitted, spec, expected, names, deadline)
+        if answer.ok and _dimensions_tail(submitted, spec, expected) is not None:
+            return answer, ()  # … [ML²T⁻²]: dimensions, not words (see _formula_in_unit)
         answer, notes = _without_words(answer, submitted, expected, names, deadline)
         said = words_in(submitted, names, coords) if expected.option("asks_more") and not notes else None
         if said:  # Dimension of force: Q_θ = …, the label the parser reads past with its colon
@@ -2641,12 +2657,13 @@ def _without_label(answer: ParsedAnswer) -> ParsedAnswer:
 
 
 def _as_number(
-    text: str, *, spec: Kind, expected: Expected, names: list, deadline, working: bool = False
+    text: str, *, spec: Kind, expected: Expected, names: list, deadline, working: bool = False, stated: tuple = ()
 ) -> ParsedAnswer | None:
     """``text`` read, if it is a number, a number with units where the part has a unit, or a name
     for one (``n = 2``); else None. A side of ``working`` may be a formula in names whose values the
     problem gives (the option ``values``: ``2π√(g/l)`` before ``= 2.006 s``), read at those values; not
-    the answer itself, which must be a number."""
+    the answer itself, which must be a number. ``stated`` are the values the answer gives names itself
+    (``…, where l = 2 m``: pairs of a name and its value in SI units), which are the ones its working uses."""
     answer = parse_answer(text, coords=expected.setting.coords, known=names, deadline=deadline)
     if not answer.ok:
         return None
@@ -2658,6 +2675,7 @@ def _as_number(
     if not value.free_symbols or (spec.name == "number" and expected.option("unit") and in_units(value)):
         return answer
     given = _given_numbers(expected.option("values"), expected) if working and spec.name == "number" else {}
+    given = given | {name: sympy.Float(value) for name, value in stated} if given else given
     if given and {symbol.name for symbol in value.free_symbols} <= set(given):
         replacement = {symbol: given[symbol.name] for symbol in value.free_symbols}
         return ParsedAnswer(answer.text, value.xreplace(replacement), "expression")
@@ -2774,10 +2792,17 @@ def _formula_in_unit(
     the problem uses, in SI units, multiplying the whole formula. Where the problem gives its
     symbols' dimensions, a unit that does not measure the quantity asked for is said so."""
     value, unchanged = answer.value, (answer, None, None)
+    dimensions = _dimensions_tail(answer.text, spec, expected) if answer.kind == "expression" else None
+    if dimensions is not None:
+        return dimensions
     units = _units_named(answer, expected)
-    if answer.kind != "expression" or not units:
+    # … [m]: a unit in square brackets, though its name is the problem's too (the mass m)
+    bracketed = not units and answer.text.rstrip().endswith("]")
+    if answer.kind != "expression" or not (units or bracketed):
         return unchanged
     tail = _unit_tail(answer.text, spec, expected)
+    if tail is None and bracketed:
+        return unchanged
     if tail is not None:  # first, for the product took in a unit with a name of the problem's: − m g r sin θ N·m
         answer, unit, found = tail
         formula = answer.value
@@ -2794,6 +2819,44 @@ def _formula_in_unit(
     if outcome is not None:
         return answer, outcome, None
     return ParsedAnswer(answer.text, formula, "expression"), None, note
+
+
+# a quantity's dimensions after a formula, as a prompt may ask them: [ML²T⁻²], (M L^2 T^-2), ML²T⁻²
+_DIMENSION = r"[MLT](?:\s*\^\s*\(?\s*[-−]?[0-9]\s*\)?|[⁻]?[¹²³⁴⁵⁶⁷⁸⁹])?"
+_DIMENSIONS = rf"{_DIMENSION}(?:\s*[·⋅*]?\s*{_DIMENSION}){{0,2}}"
+_DIMENSIONS_TAIL = re.compile(
+    rf"(?P<head>.+?)(?:\s*,\s*|\s*)(?:\[\s*(?P<bracket>{_DIMENSIONS})\s*\]|\(\s*(?P<round>{_DIMENSIONS})\s*\)"
+    rf"|(?<=\s)(?P<bare>{_DIMENSION}(?:\s*[·⋅*]?\s*{_DIMENSION}){{1,2}}))\s*\.?\s*",
+    re.S,
+)
+_DIMENSION_POWERS = re.compile(r"([MLT])(?:\s*\^\s*\(?\s*([-−]?[0-9])\s*\)?|([⁻]?[¹²³⁴⁵⁶⁷⁸⁹]))?")
+_SUPERSCRIPT_DIGITS = str.maketrans("⁻¹²³⁴⁵⁶⁷⁸⁹", "-123456789")
+
+
+def _dimensions_tail(text: str, spec: Kind, expected: Expected) -> tuple | None:
+    """``−m g r sin θ [ML²T⁻²]``: a formula, then its dimensions in M, L and T (not names of the problem's),
+    where a formula is asked: as :func:`_formula_in_unit` returns, the dimensions checked as a unit is and
+    left out. None for any other text. Read as typed, M, L and T were names the problem does not define."""
+    found = _DIMENSIONS_TAIL.fullmatch(text) if len(text) <= _UNIT_TAIL_LENGTH else None
+    if found is None:
+        return None
+    typed = found["bracket"] or found["round"] or found["bare"]
+    powers = [0, 0, 0]
+    for letter, caret, superscript in _DIMENSION_POWERS.findall(typed):
+        if letter in expected.names:
+            return None  # T, the kinetic energy, or L, a length: no dimension
+        power = caret or (superscript.translate(_SUPERSCRIPT_DIGITS) if superscript else "1")
+        powers["MLT".index(letter)] += int(power.replace("−", "-"))
+    formula = parse_answer(found["head"].rstrip(" ,;"), coords=expected.setting.coords, known=sorted(expected.names))
+    formula = _unwrap_named(formula, spec, expected) if formula.ok else formula  # Q_θ = …
+    if not formula.ok or formula.kind != "expression" or not formula.symbols or _undefined_symbols(formula, expected):
+        return None
+    units = tuple(Fraction(power) for power in powers)
+    wanted = _expected_units(spec, expected)
+    if wanted is not None and units != wanted:
+        outcome = Outcome("not_equivalent", 0.0, "formula_unit_differs", {"theirs": si(units)}, method="units")
+        return formula, outcome, None
+    return ParsedAnswer(formula.text, formula.value, "expression"), None, ("dimensions_left_out", {"dimensions": typed})
 
 
 def _unit_said(unit, found: tuple, spec: Kind, expected: Expected) -> tuple[Outcome | None, tuple | None]:
@@ -2873,8 +2936,10 @@ def _unit_tail(text: str, spec: Kind, expected: Expected) -> tuple[ParsedAnswer,
         lone = unit.value.is_Symbol and unit.value.name in _LONE_UNITS and _expected_units(spec, expected) is not None
         if found is None or found[0] != 1 or (found[1] != 1 and not said) or not (set_apart or several or lone):
             continue
-        if names <= expected.names and not said:
-            continue  # nothing here but the problem's names: no unit was written (but "in m" says one)
+        if names <= expected.names and not said and opener != "[":
+            # nothing here but the problem's names: no unit was written (but "in m" says one, and so does
+            # [m], the brackets a unit is written in: read as the mass, … [m] was a formula times m)
+            continue
         formula = parse_answer(head.rstrip(" ,;"), coords=expected.setting.coords, known=sorted(expected.names))
         formula = _unwrap_named(formula, spec, expected) if formula.ok else formula  # Q_θ = …
         if not formula.ok or formula.kind != "expression" or not formula.symbols:

@@ -98,6 +98,7 @@ FEEDBACK: dict[str, str] = {
     "momentum_spelt": "Your answer defines `{definition}`, which is not the problem's {name}, then uses {name} itself.",
     "operator_for_a_person": "Your answer says `{statement}` on the way to its equation, which is not Lagrange's"
     " equation. The equation was graded and is right; a person will check this answer.",
+    "dimensions_left_out": "Read without its dimensions, `{dimensions}`: the formula is what is graded.",
     "unit_left_out": "Read without its unit, `{unit}`: the formula is what is graded.",
     "final_value": "Graded your final value, `{value}`; the working before it is not graded.",
     "working_false_for_a_person": "Your final value, `{value}`, was graded and is right, but your working,"
@@ -152,6 +153,8 @@ FEEDBACK: dict[str, str] = {
     " person will decide which number is your answer.",
     "number_qualified_for_a_person": "Your number `{value}` comes with `{words}`, which may make it another number,"
     " or no one number: a person will decide what your answer is.",
+    "unit_unknown_for_a_person": "Your number `{value}` comes with `{unit}`, which may be a unit the checker does"
+    " not know, and make it another number: a person will check your answer.",
     "count_or_product_for_a_person": "Your answer `{typed}` may be a count with its working in brackets, or the"
     " product of the two, and these are different numbers: a person will check which you meant.",
     "unit_differs": "Your answer is in {theirs}, but the quantity asked for is measured in {wanted}.",

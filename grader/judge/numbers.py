@@ -32,7 +32,7 @@ from functools import lru_cache
 import sympy
 
 from grader.judge.feedback import SHOWN, shown
-from grader.judge.units import SI_UNITS, in_units, unit_named
+from grader.judge.units import SI_UNITS, in_units, unit_like, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
@@ -120,7 +120,13 @@ _SENTENCE_END = re.compile(r"(?<=[^\d\s.])\.$")
 _NUMBER = re.compile(r"(?<![\w.])[0-9]")  # the first digit of a number of its own, not of θ1
 # "one" after these is a pronoun (the one that swings), not a number
 _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", re.I)
+_FIRST_WORD = re.compile(r"[(\[]?\s*([^\W\d_]+)\b\.?(?!\w)")  # the word a remark begins with, where it may be a unit
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
+_PRECISION = re.compile(
+    r"(?:(?:rounded|correct|given)\s+)?(?:to|at)\s+[0-9]{1,2}\s+(?:significant\s+|sig\.?\s+)?"
+    r"(?:figures|digits|decimal\s+places|decimals|sig\.?\s*figs?|s\.?\s?f\.?|d\.?\s?p\.?)[)\].]?\s*",
+    re.I,
+)
 _PER_CENT = re.compile(r"%|\bper\s*cent\b", re.I)
 _UNIT_NAMED = re.compile(r"(?<![^\W\d_])[^\W\d_]{2,}(?![^\W\d_])")  # a unit named in a remark: not s or m, a letter
 _REMARKS_TRIED = 12
@@ -168,11 +174,53 @@ def read_number(
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
     )
+    if answer is not None and unit and not count and not any(note[0] in _FOR_A_PERSON for note in notes):
+        notes = _stated_values_false(text, answer, reads, names, notes)
     lines = _lines(text) if len(text) <= _LENGTH and _SEPARATED.search(text) else [text]
     said = lines[0] if len(lines) == 1 else text
     ruled_out = _ruled_out(said) if count else None
     said = ruled_out["value"] if ruled_out else said  # 2 (not 4): its "not" rules 4 out, and doubts no number
     return _qualified(said, _doubted(said, (prepared, answer, notes), reads), count)
+
+
+# a value an answer gives one of the problem's names: …, where l = 2 m; g = 9.81 m/s^2
+_STATED_VALUE = re.compile(
+    r"(?<![\w.])([^\W\d_][\w₀-₉]*)\s*=\s*([+-]?[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?(?:\s*[A-Za-z][A-Za-z/^0-9]*)?)"
+    r"[^\S\n]*(?=$|[,;.)\n]|\s+(?:and|where|with)\b)"
+)
+_READ_PAST = frozenset({"final_value", "remark_ignored", "statements_left_out", "number_read", "number_in_sentence"})
+_STATED_TRIED = 4
+
+
+def _stated_values_false(text: str, answer: ParsedAnswer, reads, names: Collection[str], notes: tuple) -> tuple:
+    """``notes``, or where the answer gives the problem's names values of its own (``T = 2π√(l/g) = 2.006 s,
+    where l = 2 m``) at which its working does not come to the value graded, the note that sends it to a
+    person: read past, the values were the ones the problem gives, and the working held."""
+    if len(text) > _LENGTH:
+        return notes
+    stated = {}
+    for found in list(_STATED_VALUE.finditer(text))[:_STATED_TRIED]:
+        if found[1] not in names:
+            continue
+        read = parse_answer(found[2])
+        value = in_units(read.value) if read.ok and read.kind == "expression" else None
+        if value is None or not value[0].is_number:
+            continue
+        stated[found[1]] = float(value[0] * sympy.Rational(value[1]))
+    if not stated:
+        return notes
+    pattern = re.compile(r"(?<![^\W\d_])(?:" + "|".join(map(re.escape, stated)) + r")(?![\w])")
+    final = _last_side(answer)
+    for side in _sides(text)[0][:_SIDES]:
+        if not pattern.search(side) or _QUANTITY.fullmatch(side) or re.search(r"[,;]", side):
+            continue  # l = 2 m: the name itself, not working in it; 2 m, g: the end of one statement
+        read = reads(side, working=True, stated=tuple(sorted(stated.items())))
+        if read is not None and not _agree(_last_side(read), final, count=False):
+            kept = tuple(note for note in notes if note[0] not in _READ_PAST)
+            typed = shown(_SENTENCE_END.sub("", text.strip()))
+            value = next((details["value"] for key, details in notes if key in _READ_PAST and "value" in details), "")
+            return (*kept, ("working_false_for_a_person", {"value": value or answer.text, "working": typed}))
+    return notes
 
 
 def _read_number(
@@ -278,6 +326,9 @@ def _read_number(
             if answer is None or (rest and not _is_remark(rest, names, words or typed, unit)):
                 continue
             typed = _SENTENCE_END.sub("", typed).rstrip(" ,;")  # The period is 2.01 s. 1, the angle θ
+            word = _FIRST_WORD.match(rest) if unit and not count and not answer.symbols else None
+            if word and unit_like(word[1]):  # 2.006 flubsec: a unit we do not know may make it another number
+                return prepared, answer, (("unit_unknown_for_a_person", {"value": typed, "unit": word[1]}),)
             said = _words_beside(f"{before} {rest}") if last and index == last else ""
             numbers = (reads, decimal_comma, unit, count)
             if said and _other_values(pieces[:last], answer, *numbers):
@@ -432,7 +483,7 @@ def _lines(text: str) -> list[str]:
 
 
 # the notes that leave which number is meant to a person
-_FOR_A_PERSON = frozenset({"number_doubted_for_a_person", "number_qualified_for_a_person"})
+_FOR_A_PERSON = frozenset({"number_doubted_for_a_person", "number_qualified_for_a_person", "unit_unknown_for_a_person"})
 _LAST_NUMBERS = 6  # numbers tried from the end of an answer, for the one shown beside a doubt
 _DIGITS = re.compile(r"(?<![\w.])[0-9]+(?:\.[0-9]+)?(?![\w.])")
 
@@ -1048,15 +1099,24 @@ def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
     if decimal_comma:
         text, comma = _decimal_point(text, every=decimal_comma == _Commas.EVERY)
         notes = (comma,) if comma else ()
+    if len(text) < _LENGTH:
+        text = _TIMES_TEN.sub(" × ", text)
     if unit and len(text) < _LENGTH:
         # TeX's unit after a number: 2.006~\text{s}, 2.006\,\mathrm{ s}, 2006\,\mu\mathrm{s}; the tie ~ is
         # a space there, and \mu the prefix μ
         text = _TIE.sub(" ", _TEX_UNIT.sub(_tex_unit, text))
         text = _TEX_MICRO.sub(" μ", text)
-        text = _SEC.sub(r"\1\2s", text)
+        text = _SEC.sub(r"\1\2s", _PREFIX_APART.sub(lambda apart: (apart[1] + apart[2]).lower(), text))
     return text, notes
 
 
+# 2006 x 10^-3: the letter for ×, where a number is asked and x can be no variable; read as typed, 2006·x·10⁻³
+# was refused, and 2.006x10^0 right only as 2.006·x₁₀⁰
+_TIMES_TEN = re.compile(r"(?<=[0-9.])\s*[xX]\s*(?=10\s*\^)")
+# 2.006 milli seconds, micro-seconds: one unit, not a number then a remark (seconds) after a word (milli)
+_PREFIX_APART = re.compile(
+    r"(?<=[0-9.\s])(femto|pico|nano|micro|milli|centi|deci|kilo|mega|giga|tera)[\s-]+(secs?|seconds?)\b", re.I
+)
 _TEX_UNIT = re.compile(
     r"([0-9.])\s*(?:~|\\[,;:! ])?\s*(\\mu\s*|μ)?\\(?:text|textrm|mathrm|rm|mbox)\{\s*([A-Za-z/^0-9 .\\-]+?)\s*\}"
 )
@@ -1166,6 +1226,8 @@ def _is_remark(rest: str, names: Collection[str], number: str = "", unit: str = 
     if (repeated := _REPEATED.fullmatch(rest)) and repeated[1] == number:
         return True  # two (2): the number again, in digits
     words = rest.lstrip("([{,:;–—- ")
+    if _PRECISION.fullmatch(words):
+        return True  # 2.006 s, to 4 figures: how it was rounded, whose digit is no other number
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
     if _PER_CENT.search(words):

@@ -2,11 +2,13 @@
 
 Contents:
     DIMENSIONS                   a dimension's name → its powers of mass, length and time
+    QUANTITY_WORDS               a quantity's word (period) → its dimension's name
     units_of(expr, setting)      the powers of an expression in plain symbols; None where unknown
     Mixed                        raised where terms of a sum, or a function's argument, disagree
     units_mistake(expected, value)  what a wrong answer's units say, as a feedback key and details
     si(units), unit_of(dimension)  powers as a student reads them: ``kg·m²/s²``; a dimension's unit
     SI_UNITS, in_units(value)    a number written with its unit: ``2006 ms`` is 2006 × 1/1000 s
+    unit_like(word)              whether a word after a number may be a unit we do not know (flubsec)
     unit_named(text), other_units(text)   a part's unit, and the others that measure the same
     cycles_to(value, unit)       2π from Hz to rad/s: the same SI units, a cycle apart
     unit_counts(names)           whether units by these names count cycles (Hz) or radians (rad/s)
@@ -34,6 +36,7 @@ if TYPE_CHECKING:  # setting.py reads DIMENSIONS from here
 
 __all__ = [
     "DIMENSIONS",
+    "QUANTITY_WORDS",
     "SI_UNITS",
     "Mixed",
     "cycles_to",
@@ -41,6 +44,7 @@ __all__ = [
     "other_units",
     "si",
     "unit_counts",
+    "unit_like",
     "unit_named",
     "unit_of",
     "units_mistake",
@@ -62,6 +66,14 @@ DIMENSIONS: dict[str, Units] = {
         "force": (1, 1, -2), "torque": (1, 2, -2), "energy": (1, 2, -2), "power": (1, 2, -3),
         "force per length": (1, 0, -2), "mass per time": (1, 0, -1), "pressure": (1, -1, -2),
     }.items()
+}  # fmt: skip
+
+# The words for quantities a label may be (period = 2.006 s), by what each measures; not frequency, f or ω
+QUANTITY_WORDS = {
+    "period": "time", "time": "time", "duration": "time", "length": "length", "distance": "length",
+    "mass": "mass", "speed": "velocity", "velocity": "velocity", "acceleration": "acceleration",
+    "force": "force", "torque": "torque", "energy": "energy", "work": "energy", "power": "power",
+    "momentum": "momentum",
 }  # fmt: skip
 
 # Functions whose argument must be a pure number, and so is their value. (sign takes any
@@ -193,6 +205,7 @@ SI_UNITS: dict[str, tuple[Fraction, Units]] = {
     **dict.fromkeys(("g", "gram", "grams"), _si_unit(Fraction(1, 1000), "mass")),
     **dict.fromkeys(("N", "newton", "newtons"), _si_unit(1, "force")),
     **dict.fromkeys(("J", "joule", "joules"), _si_unit(1, "energy")),
+    "Nm": _si_unit(1, "torque"),  # N·m run together: a word after the formula, else
     **dict.fromkeys(("W", "watt", "watts"), _si_unit(1, "power")),
     **dict.fromkeys(("Hz", "hertz"), _si_unit(1, "frequency")),
     **dict.fromkeys(("Pa", "pascal", "pascals"), _si_unit(1, "pressure")),
@@ -221,9 +234,23 @@ _SPELLED = {
     **dict.fromkeys(("nanosecond", "nanoseconds"), SI_UNITS["ns"]),
     **dict.fromkeys(("kilosecond", "kiloseconds"), SI_UNITS["ks"]),
     **dict.fromkeys(("day", "days"), _si_unit(86400, "time")),
-    **dict.fromkeys(("week", "weeks"), _si_unit(7 * 86400, "time")),
+    **dict.fromkeys(("week", "weeks", "wk", "wks"), _si_unit(7 * 86400, "time")),
     **dict.fromkeys(("year", "years", "yr", "yrs"), _si_unit(31557600, "time")),  # a Julian year
 }
+# and the prefixed seconds spelled or cut short: 2.006 nsec, nanosec, picoseconds, millis were graded as 2.006 s
+_PREFIX_WORDS = {"femto": "f", "pico": "p", "nano": "n", "micro": "mu", "milli": "m", "centi": "c", "deci": "d",
+                 "kilo": "k", "mega": "M", "giga": "G", "tera": "T"}  # fmt: skip
+_SPELLED |= {
+    word + ending: SI_UNITS[prefix + "s"]
+    for word, prefix in _PREFIX_WORDS.items()
+    for ending in ("sec", "secs", "second", "seconds")
+}
+_SPELLED |= {
+    prefix + ending: SI_UNITS[prefix + "s"]
+    for prefix in ("f", "p", "n", "u", "mu", "c", "k", "M", "G")
+    for ending in ("sec", "secs")
+}
+_SPELLED["millis"] = SI_UNITS["ms"]
 _CAPITALIZED = ("second", "seconds", "minute", "minutes", "hour", "hours", "hertz", "day", "days")
 SI_UNITS |= _SPELLED
 SI_UNITS |= {word.capitalize(): SI_UNITS[word] for word in _CAPITALIZED}
@@ -231,6 +258,20 @@ _UNUSUAL = frozenset(  # the prefixed units a number is not asked about being in
     prefix + unit for prefix in _PREFIXES if prefix not in ("n", "mu", "m", "k", "M") for unit in _BASES
 ) - {"cm"}
 _UNUSUAL |= {*_SPELLED, *(word.capitalize() for word in _CAPITALIZED)}  # a name's other spellings
+
+
+_TIME_ENDINGS = ("sec", "secs", "second", "seconds")
+_UNIT_STEMS = tuple(sorted({name.lower() for name in SI_UNITS if len(name) >= 3}))
+
+
+def unit_like(word: str) -> bool:
+    """Whether a word after a number may be a unit the checker does not know, which makes it another
+    number: the start of a unit's name (``sec``, ``mill``), a word for seconds (``flubsec``), or one with
+    a prefix (``millisex``). Graded as the bare number, 2.006 of such a unit was right."""
+    word = word.lower().rstrip(".")
+    if word in _UNIT_STEMS or word.endswith(_TIME_ENDINGS) or word.startswith(tuple(_PREFIX_WORDS)):
+        return True
+    return len(word) >= 3 and any(stem.startswith(word) for stem in _UNIT_STEMS)
 
 
 def in_units(value) -> tuple[sympy.Expr, Fraction, Units] | None:
