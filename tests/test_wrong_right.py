@@ -311,6 +311,31 @@ COUNTS_SAID_OTHERWISE = [
     ("1", "1 (theta and r)", "undecided", f"Your number `1` comes with `(theta and r)`, {QUALIFIED}"),
     ("2", "2 (θ)", "undecided", f"Your number `2` comes with `(θ)`, {QUALIFIED}"),
     ("2", "2 dof: θ₁", "undecided", f"Your number `2` comes with `dof: θ₁`, {QUALIFIED}"),
+    # words after a count that name or add more coordinates than it counts, or fewer, outside a plain list
+    ("1", "one angle, and one length", "undecided",
+     f"Your number `one` comes with `angle, and one length`, {QUALIFIED}"),
+    ("1", "1 (θ) and one for φ", "undecided", f"Your number `1` comes with `(θ) and one for φ`, {QUALIFIED}"),
+    ("1", "1, and another for φ", "undecided", f"Your number `1` comes with `and another for φ`, {QUALIFIED}"),
+    ("1", "1, and a second one (φ)", "undecided", f"Your number `1` comes with `and a second one (φ)`, {QUALIFIED}"),
+    ("1", "one (θ), and another one (φ)", "undecided",
+     f"Your number `one` comes with `(θ), and another one (φ)`, {QUALIFIED}"),
+    ("1", "1 (the angles θ and φ)", "undecided", f"Your number `1` comes with `(the angles θ and φ)`, {QUALIFIED}"),
+    ("1", "1 (both angles)", "undecided", f"Your number `1` comes with `(both angles)`, {QUALIFIED}"),
+    ("1", "1 (angles θ, φ)", "undecided", f"Your number `1` comes with `(angles θ, φ)`, {QUALIFIED}"),
+    ("2", "2 (θ₁ only)", "undecided", f"Your number `2` comes with `(θ₁ only)`, {QUALIFIED}"),
+    ("2", "2 (just θ₁)", "undecided", f"Your number `2` comes with `(just θ₁)`, {QUALIFIED}"),
+    ("2", "2 (the angle θ₁)", "undecided", f"Your number `2` comes with `(the angle θ₁)`, {QUALIFIED}"),
+    ("2", "2 (one coordinate)", "undecided",
+     "Your count `2` is followed by `(one coordinate)`, which does not come to 2: a person will decide which number"
+     " is your answer."),
+    # and their twins, whose words name as many coordinates as counted
+    ("1", "1 (the angle θ from the vertical)", "equivalent", "Correct."),
+    ("2", "2 (the angles θ₁ and θ₂)", "equivalent", "Correct."),
+    ("2", "2 (both angles)", "equivalent", "Correct."),
+    ("2", "2 (θ₁, and another for θ₂)", "equivalent", "Correct."),
+    ("2", "2 (6 coordinates)", "equivalent", "Correct."),  # what it was counted from
+    ("2", "2 (one coordinate for each bob)", "equivalent", "Correct."),
+    ("2", "2 (θ₁ and θ₂, both from the vertical)", "equivalent", "Correct."),
     # a count worked from others, what it counts, and how many things it was counted from: as before
     ("2", "2 (θ₁, θ₂)", "equivalent", "Correct."),
     ("1", "1 (θ)", "equivalent", "Correct."),

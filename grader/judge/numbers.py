@@ -35,7 +35,7 @@ from grader.judge.feedback import SHOWN, shown
 from grader.judge.units import SI_UNITS, in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
-from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
+from grader.parse.names import GREEK_BY_LETTER, GREEK_NAMES, IMPLYING_WORDS
 
 __all__ = ["NUMBER_WORDS", "read_number"]
 
@@ -877,9 +877,11 @@ def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | N
     described = _DESCRIBED.fullmatch(groups[0])
     thing = described and not summed and described["thing"].lower() in _THINGS
     angles = thing and described["thing"].lower() in _ANGLES
-    if value == number or (thing and not angles and not _ASKED.search(groups[0])):
+    # 2 (one coordinate): fewer of what is counted than the count; 2 (6 coordinates) is what it is counted from
+    fewer = thing and described["thing"].lower() in _COORDINATES and value < number
+    if value == number or (thing and not angles and not fewer and not _ASKED.search(groups[0])):
         return str(number), answer, (remark,)
-    if summed or angles or _ASKED.search(groups[0]):
+    if summed or angles or fewer or _ASKED.search(groups[0]):
         return str(number), answer, (unclear,)
     return None  # 2 (one coordinate for each bob): words, read as remarks are
 
@@ -906,8 +908,34 @@ def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
     listed = _names_listed(rest, names)
     if listed:  # 1 (θ and φ), 1 dof: θ and r, 2 (θ): more or fewer coordinates named than counted
         return number.isdigit() and len(listed) != int(number)
+    named = _coordinates_named(rest) if number.isdigit() else 0
+    if named and named != int(number):  # 1 (θ) and one for φ, 1, and another for φ, 2 (θ₁ only), 1 (both angles)
+        return True
     counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
     return counted is not None and counted[1] and counted[0] != int(number)
+
+
+def _coordinates_named(rest: str) -> int:
+    """How many coordinates words after a count name, where they are no list (:func:`_names_listed`): its
+    Greek letters (``θ``, ``phi_2``), each once; two for ``both angles``; and one more for each ``another`` or
+    ``a second`` (``1, and another for φ``). 0 where they name none, or hold a count of their own in digits
+    (``6 (3 translations + 3 rotations: φ, θ, ψ)`` names the rotations only: a breakdown, see :func:`_breaks_down`)."""
+    if _NUMBER.search(rest):
+        return 0
+    greek = {token.lower() for token in _COORDINATE_WORD.findall(rest) if _is_greek(token)}
+    more = len(_ANOTHER.findall(rest))
+    return max(len(greek), 1 + more if more else 0, 2 if _BOTH.search(rest) else 0)
+
+
+def _is_greek(token: str) -> bool:
+    """Whether ``token`` is a Greek letter, perhaps with an index, as typed or spelt out (θ₁, phi_2)."""
+    spelt = _SPELLED_GREEK.fullmatch(token)
+    return token[0] in GREEK_BY_LETTER or (spelt is not None and spelt[1].lower() in GREEK_NAMES)
+
+
+_COORDINATE_WORD = re.compile(r"(?<![\\\w])[^\W\d_][\w₀-₉']*")  # θ₁, theta_1, and words, of which the Greek count
+_ANOTHER = re.compile(r"\b(?:another|(?:a|the)\s+second|one\s+more)\b", re.I)  # a coordinate added to the count
+_BOTH = re.compile(r"\bboth\s+(?:the\s+)?(?:angles|coordinates)\b", re.I)
 
 
 def _names_listed(rest: str, names: Collection[str]) -> list[str] | None:
@@ -1210,7 +1238,7 @@ _REPEATED = re.compile(r"\(\s*([0-9]+)\s*\)\.?")
 _BRACKETED = re.compile(r"\(([^()]{1,120})\)\.?")
 _COUNTED = re.compile(r"(?<![\w\\])[A-Za-z]{2,}(?!\w)")  # translations, rotations, and: not θ1
 _SAID_SIGNS = {"and": "+", "plus": "+", "minus": "-", "times": "*"}
-_LISTED = re.compile(r"[,;]\s")  # counts listed add up: not 3,5, a decimal comma
+_LISTED = re.compile(r"[,;]\s(?:\s*\+)?")  # counts listed add up: not 3,5, a decimal comma; ", and" once
 _COUNTS = re.compile(r"\s*[0-9]+(?:\s*[-+−*×·]\s*[0-9]+)+\s*")  # 3 + 3, 6 − 1, 3·2 − 1
 _SOME_COUNTS = re.compile(r"\s*[0-9]+(?:\s*[-+−*×·]\s*[0-9]+)*\s*")  # and 5, of 5 particles
 _SIGN = re.compile(r"[-+−*×·]")
