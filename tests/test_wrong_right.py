@@ -358,6 +358,46 @@ def test_a_count_whose_words_say_another_goes_to_a_person(expected, submitted, s
     assert sentence in verdict.feedback, verdict
 
 
+def _count_labelled(label):
+    return (
+        f"Your answer is labelled `{label}`, but the quantity asked for is n. Read as n, it is right; a person will"
+        " check which you meant."
+    )
+
+
+COUNT_LABELS = [
+    # (expected, submitted, status, feedback): a count labelled with another quantity's name, where n = 3N − k
+    # is asked, goes to a person; the asked name, a word for degrees of freedom, f or s, and working, stay right
+    ("15", "k = 15", "undecided", (_count_labelled("k"),)),
+    ("2", "3N = 2", "undecided", (_count_labelled("3N"),)),
+    ("6", "N = 6", "undecided", (_count_labelled("N"),)),
+    ("2", "constraints = 2", "undecided", (_count_labelled("constraints"),)),
+    ("2", "T = 2", "undecided", (_count_labelled("T"),)),
+    ("2", "x = 2", "undecided", (_count_labelled("x"),)),
+    ("2", "m = 2", "undecided", (_count_labelled("m"),)),
+    ("2", "2 = k", "undecided", (_count_labelled("k"),)),
+    ("2", "k = 4", "not_equivalent",
+     ("Not equivalent to the expected answer.", "Your answer is labelled `k`, but the quantity asked for is n.")),
+    ("15", "n = 15", "equivalent", ("Correct.",)),
+    ("15", "dof = 15", "equivalent", ("Correct.",)),
+    ("15", "DOF = 15", "equivalent", ("Correct.",)),
+    ("15", "n_dof = 15", "equivalent", ("Correct.",)),
+    ("15", "f = 15", "equivalent", ("Correct.",)),
+    ("15", "s = 15", "equivalent", ("Correct.",)),
+    ("2", "degrees of freedom = 2", "equivalent", ("Correct.",)),
+    ("2", "3N - k = 2", "equivalent", ("Correct.",)),
+    ("2", "2 = n", "equivalent", ("Correct.", "Graded the number `2`; the rest of your answer is not graded.")),
+    ("2", "2 = d.o.f.", "equivalent", ("Correct.", "Graded the number `2`; the rest of your answer is not graded.")),
+    ("2", "k = 4, n = 2", "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), COUNT_LABELS)
+def test_a_count_labelled_as_another_quantity_goes_to_a_person(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 ENERGIES = "Your working gives T and V, but T − V with them is not the value your answer gives L."
 WORKING_READ = "The lines that define `T` and `V` were read as your working, not as your answer."
 

@@ -35,9 +35,9 @@ from grader.judge.feedback import SHOWN, shown
 from grader.judge.units import SI_UNITS, in_units, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
-from grader.parse.names import GREEK_BY_LETTER, GREEK_NAMES, IMPLYING_WORDS
+from grader.parse.names import GREEK_BY_LETTER, GREEK_NAMES, IMPLYING_WORDS, unicode_name
 
-__all__ = ["NUMBER_WORDS", "read_number"]
+__all__ = ["COUNT_NAME", "NUMBER_WORDS", "read_number"]
 
 # 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English. But
 # 0,498 is 0.498: a thousands separator never follows a lone 0, so three digits after 0, are decimals too
@@ -98,6 +98,9 @@ _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
 # a quantity's name after its value, which the value may stand before (2.01 s = T, 2 = n, 2 = DOF, 2 = d.o.f.,
 # 2.01 s = the period): one name, or "the" and one word, and nothing else
 _NAME_AFTER = re.compile(r"(?:the\s+)?(?:[^\W\d_][\w₀-₉']*|(?:[A-Za-z]\.){2,})\.?", re.I)
+# a count's name that is no quantity of a problem's: DOF, n_dof, d.o.f., freedom (of degrees of freedom), and
+# f or s, as textbooks name the count (Landau's s); k, N, 3N or T is another quantity's
+COUNT_NAME = re.compile(r"[fs]|\w*(?:dof|d\.o\.f\.?|freedom)\w*", re.I)
 # words that take a number back or doubt it: 6 − 4 = 2? no, 4; 6 − 4 = 2 is wrong, it is 4; maybe 2. Not the
 # "no" of 15 (no constraints), before a word, which says what was counted
 _CORRECTION = re.compile(
@@ -299,6 +302,10 @@ def _read_number(
                 notes += ((key, {"value": typed, details: shown(rest)}),)
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
+            elif last and count and asked and index == 0 and not _names_count(pieces[1], asked):
+                # 2 = k, where n is asked: the value of another quantity, or a slip of the label
+                label = {"label": f"`{shown(pieces[1].strip())}`", "name": unicode_name(next(iter(asked)))}
+                notes += (("label_for_a_person", label),)
             elif last:
                 notes += (("number_read", {"value": typed}),)
             elif words:
@@ -503,6 +510,12 @@ def _said(words: re.Pattern, text: str) -> str:
         typed = " ".join(found[0].strip(" (,").split())  # 2 (max): max
         said.setdefault(typed.lower(), typed)
     return shown(", ".join(said.values()))
+
+
+def _names_count(side: str, asked: Collection[str]) -> bool:
+    """Whether a name after a count (``2 = n``, ``2 = the DOF``) is the asked count's, or a word for one."""
+    name = re.sub(r"^the\s+", "", side.strip(), flags=re.I)
+    return name in asked or COUNT_NAME.fullmatch(name) is not None
 
 
 def _is_name(side: str) -> bool:
