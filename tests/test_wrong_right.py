@@ -389,7 +389,41 @@ COUNT_LABELS = [
     ("2", "2 = n", "equivalent", ("Correct.", "Graded the number `2`; the rest of your answer is not graded.")),
     ("2", "2 = d.o.f.", "equivalent", ("Correct.", "Graded the number `2`; the rest of your answer is not graded.")),
     ("2", "k = 4, n = 2", "equivalent", ("Correct.",)),
+    # a label in words: another thing's count, or the count's, or the answer's
+    ("2", "No. of constraints = 2", "undecided", (_count_labelled("No. of constraints"),)),
+    ("2", "Number of constraints = 2", "undecided", (_count_labelled("Number of constraints"),)),
+    ("2", "No. of DOF = 2", "equivalent",
+     ("Correct.", "Graded your final value, `2`; the working before it is not graded.")),
+    ("2", "number of generalized coordinates = 2", "equivalent", ("Correct.",)),
+    ("2", "The answer = 2", "equivalent", ("Correct.",)),
 ]  # fmt: skip
+
+COUNTS_SPELT = [
+    # (expected, submitted, status, feedback): a count glued or hyphened to what it counts, in words, or with the
+    # values it was worked out with in a bracket
+    ("2", "2-DOF", "equivalent", ("Correct.", "Graded the number `2`; what follows it (`DOF`) is not graded.")),
+    ("2", "2DOF", "equivalent", ("Correct.", "Graded the number `2`; what follows it (`DOF`) is not graded.")),
+    ("2", "2 degrees-of-freedom", "equivalent",
+     ("Correct.", "Graded the number `2`; what follows it (`degrees of freedom`) is not graded.")),
+    ("1", "a single degree of freedom", "equivalent",
+     ("Correct.", "Graded the number `one`; what follows it (`degree of freedom`) is not graded.")),
+    ("2", "a single degree of freedom", "not_equivalent", ("Not equivalent to the expected answer.",
+     "Graded the number `one`; what follows it (`degree of freedom`) is not graded.")),
+    ("2", "2 (k = 4)", "equivalent", ("Correct.", "Graded the number `2`; what follows it (`k = 4`) is not graded.")),
+    ("2", "n = 2 (k = 4, N = 2)", "equivalent",
+     ("Correct.", "Graded the number `n = 2`; what follows it (`k = 4, N = 2`) is not graded.")),
+    ("2", "n = 3N - k = 2 (k = 3, N = 2)", "undecided",
+     ("Your final value, `2`, was graded and is right, but your working, `3N - k, where k = 3, N = 2`, does not"
+      " hold: a person will check this answer.",)),
+    ("2", "3-DOF", "not_equivalent", ("Not equivalent to the expected answer.",
+     "Graded the number `3`; what follows it (`DOF`) is not graded.")),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), COUNTS_SPELT)
+def test_a_count_spelt_as_students_write_it_is_read(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
 @pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), COUNT_LABELS)

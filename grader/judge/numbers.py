@@ -98,13 +98,14 @@ _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
 # a quantity's name after its value, which the value may stand before (2.01 s = T, 2 = n, 2 = DOF, 2 = d.o.f.,
 # 2.01 s = the period): one name, or "the" and one word, and nothing else
 _NAME_AFTER = re.compile(r"(?:the\s+)?(?:[^\W\d_][\w₀-₉']*|(?:[A-Za-z]\.){2,})\.?", re.I)
-# a count's name that is no quantity of a problem's: DOF, n_dof, d.o.f., freedom (of degrees of freedom), and
-# f or s, as textbooks name the count (Landau's s); k, N, 3N or T is another quantity's
-COUNT_NAME = re.compile(r"[fs]|\w*(?:dof|d\.o\.f\.?|freedom)\w*", re.I)
+# a word of a count's label that is no quantity of a problem's: DOF, n_dof, freedom (of degrees of freedom),
+# coordinates (of generalized coordinates), answer, total, and f or s, as textbooks name the count (Landau's s);
+# k, N, 3N, T or constraints is another quantity's
+COUNT_NAME = re.compile(r"[fs]|\w*(?:dof|freedom|coordinate|answer|total|result)\w*|ans", re.I)
 # words that take a number back or doubt it: 6 − 4 = 2? no, 4; 6 − 4 = 2 is wrong, it is 4; maybe 2. Not the
 # "no" of 15 (no constraints), before a word, which says what was counted
 _CORRECTION = re.compile(
-    r"\bno\b(?!\s+(?!(?:wait|sorry|actually|the|that|this|it's)\b)[^\W\d_]{3,})"
+    r"\bno\b(?!\s+(?!(?:wait|sorry|actually|the|that|this|it's)\b)[^\W\d_]{3,})(?!\.\s*of\b)"  # No. of: number of
     r"|\b(?:nope|not|never|wait|wrong|incorrect|false|mistakes?|mistaken|oops|sorry|actually|instead|rather|"
     r"correction|corrected|scratch|ignore|typo|meant|should|redo|maybe|perhaps|probably|possibly|unsure|"
     r"uncertain|I\s+think|I\s+guess|I\s+believe)\b|\?",
@@ -163,6 +164,7 @@ def read_number(
     """
     # a side of working is read again: for the final value, for working that does not hold, and beside words
     reads = lru_cache(maxsize=None)(reads)
+    text = _count_spelled(text) if count and len(text) <= _LENGTH else text
     decimal_comma = max(decimal_comma, _commas(text, decimal_comma))  # EVERY, as decided for the whole answer
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
@@ -172,6 +174,21 @@ def read_number(
     ruled_out = _ruled_out(said) if count else None
     said = ruled_out["value"] if ruled_out else said  # 2 (not 4): its "not" rules 4 out, and doubts no number
     return _qualified(said, _doubted(said, (prepared, answer, notes), reads), count)
+
+
+def _count_spelled(text: str) -> str:
+    """A count as students glue it to what it counts, spelt as the reading knows it: ``2-DOF`` and ``2DOF`` as
+    ``2 DOF``, ``degrees-of-freedom`` as ``degrees of freedom``, ``a single degree of freedom`` as ``one …``."""
+    text = _GLUED_DOF.sub(" ", text)
+    text = _HYPHENED_DOF.sub(lambda found: found[0].replace("-", " ").replace("\u2010", " "), text)
+    return _SINGLE.sub("one ", text)
+
+
+_GLUED_DOF = re.compile(r"(?<=[0-9])\s*[-\u2010]?\s*(?=dofs?\b)", re.I)
+_HYPHENED_DOF = re.compile(r"\bdegrees?[-\u2010]of[-\u2010]freedom\b", re.I)
+_SINGLE = re.compile(
+    r"\b(?:a|one)\s+single\s+(?=(?:degree|dof|d\.o\.f|generali[sz]ed\s+coordinate|coordinate|angle)s?\b)", re.I
+)
 
 
 def _read_number(
@@ -300,12 +317,13 @@ def _read_number(
                 other = count and _counts_other(words or typed, rest, names)
                 key, details = ("number_qualified_for_a_person", "words") if other else ("remark_ignored", "rest")
                 notes += ((key, {"value": typed, details: shown(rest)}),)
+            elif other := (_other_label(pieces, index, asked) if count and last == 1 else None):
+                # 2 = k, No. of constraints = 2, where n is asked: the value of another quantity, or a slip
+                notes += (
+                    ("label_for_a_person", {"label": f"`{shown(other)}`", "name": unicode_name(next(iter(asked)))}),
+                )
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
-            elif last and count and asked and index == 0 and not _names_count(pieces[1], asked):
-                # 2 = k, where n is asked: the value of another quantity, or a slip of the label
-                label = {"label": f"`{shown(pieces[1].strip())}`", "name": unicode_name(next(iter(asked)))}
-                notes += (("label_for_a_person", label),)
             elif last:
                 notes += (("number_read", {"value": typed}),)
             elif words:
@@ -512,10 +530,25 @@ def _said(words: re.Pattern, text: str) -> str:
     return shown(", ".join(said.values()))
 
 
+def _other_label(pieces: list[str], index: int, asked: Collection[str]) -> str | None:
+    """Where a count and one label are set equal, the label where it names another quantity than the count
+    ``asked`` (``k`` of ``2 = k``, ``No. of constraints`` of ``No. of constraints = 2``), as typed; else None.
+    A label the parser reads (``k = 2``) is compare's to judge; these are read here."""
+    label = pieces[1] if index == 0 else pieces[0]
+    if not asked or (index and not _WORDS_LABEL.fullmatch(label)):
+        return None
+    return None if _names_count(label, asked) else label.strip()
+
+
+_WORDS_LABEL = re.compile(r"\s*[^\W\d_][\w.']*(?:\s+[^\W\d_][\w.']*)*\s*")  # No. of constraints: words alone
+
+
 def _names_count(side: str, asked: Collection[str]) -> bool:
     """Whether a name after a count (``2 = n``, ``2 = the DOF``) is the asked count's, or a word for one."""
-    name = re.sub(r"^the\s+", "", side.strip(), flags=re.I)
-    return name in asked or COUNT_NAME.fullmatch(name) is not None
+    return any(word in asked or COUNT_NAME.fullmatch(word) for word in _LABEL_WORD.findall(side))
+
+
+_LABEL_WORD = re.compile(r"[^\W\d_][\w₀-₉']*")  # n, DOF, and the words of "No. of DOF", d.o.f. as d, o, f
 
 
 def _is_name(side: str) -> bool:
@@ -1022,6 +1055,8 @@ def _given(
     if found is None or not found.start():
         return None
     head, values = text[: found.start()], text[found.end() :]
+    if found.group().strip() == "(" and any(name in asked for name in _GIVEN_NAME.findall(values)):
+        return None  # 2 (n = 3): another value of the asked quantity, no value it was worked out with
     bracketed = "(" in found.group()
     if bracketed:  # the remark's own bracket closes the answer, and nothing in it is left open
         values = values.rstrip(" .")
@@ -1077,7 +1112,11 @@ _UNCERTAIN = re.compile(
 
 # where the values an answer was worked out with begin: ", where l = 1", " since k = 2", " for l = 1 m"
 # …, with g = 9.81, or the same in brackets at the end: 2.006 s (with g = 9.81)
-_GIVEN = re.compile(r"\s*(?:,?\s*|\(\s*)\b(?:where|with|since|for|given|using|as)\s+(?=[^\W\d][\w₀-₉]*\s*=)", re.I)
+# …, or a bracket of values alone: 2 (k = 4), n = 2 (k = 4, N = 2)
+_GIVEN = re.compile(
+    r"\s*(?:(?:,?\s*|\(\s*)\b(?:where|with|since|for|given|using|as)\s+|\s\(\s*)(?=[^\W\d][\w₀-₉]*\s*=)", re.I
+)
+_GIVEN_NAME = re.compile(r"(?:^|[,;(]|\band\b)\s*([^\W\d][\w₀-₉]*)\s*=", re.I)  # the names a remark gives values
 
 
 def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
