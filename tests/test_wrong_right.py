@@ -351,6 +351,31 @@ COUNTS_SAID_OTHERWISE = [
     ("1", "1 (theta and r)", "undecided", f"Your number `1` comes with `(theta and r)`, {QUALIFIED}"),
     ("2", "2 (θ)", "undecided", f"Your number `2` comes with `(θ)`, {QUALIFIED}"),
     ("2", "2 dof: θ₁", "undecided", f"Your number `2` comes with `dof: θ₁`, {QUALIFIED}"),
+    # words after a count that name or add more coordinates than it counts, or fewer, outside a plain list
+    ("1", "one angle, and one length", "undecided",
+     f"Your number `one` comes with `angle, and one length`, {QUALIFIED}"),
+    ("1", "1 (θ) and one for φ", "undecided", f"Your number `1` comes with `(θ) and one for φ`, {QUALIFIED}"),
+    ("1", "1, and another for φ", "undecided", f"Your number `1` comes with `and another for φ`, {QUALIFIED}"),
+    ("1", "1, and a second one (φ)", "undecided", f"Your number `1` comes with `and a second one (φ)`, {QUALIFIED}"),
+    ("1", "one (θ), and another one (φ)", "undecided",
+     f"Your number `one` comes with `(θ), and another one (φ)`, {QUALIFIED}"),
+    ("1", "1 (the angles θ and φ)", "undecided", f"Your number `1` comes with `(the angles θ and φ)`, {QUALIFIED}"),
+    ("1", "1 (both angles)", "undecided", f"Your number `1` comes with `(both angles)`, {QUALIFIED}"),
+    ("1", "1 (angles θ, φ)", "undecided", f"Your number `1` comes with `(angles θ, φ)`, {QUALIFIED}"),
+    ("2", "2 (θ₁ only)", "undecided", f"Your number `2` comes with `(θ₁ only)`, {QUALIFIED}"),
+    ("2", "2 (just θ₁)", "undecided", f"Your number `2` comes with `(just θ₁)`, {QUALIFIED}"),
+    ("2", "2 (the angle θ₁)", "undecided", f"Your number `2` comes with `(the angle θ₁)`, {QUALIFIED}"),
+    ("2", "2 (one coordinate)", "undecided",
+     "Your count `2` is followed by `(one coordinate)`, which does not come to 2: a person will decide which number"
+     " is your answer."),
+    # and their twins, whose words name as many coordinates as counted
+    ("1", "1 (the angle θ from the vertical)", "equivalent", "Correct."),
+    ("2", "2 (the angles θ₁ and θ₂)", "equivalent", "Correct."),
+    ("2", "2 (both angles)", "equivalent", "Correct."),
+    ("2", "2 (θ₁, and another for θ₂)", "equivalent", "Correct."),
+    ("2", "2 (6 coordinates)", "equivalent", "Correct."),  # what it was counted from
+    ("2", "2 (one coordinate for each bob)", "equivalent", "Correct."),
+    ("2", "2 (θ₁ and θ₂, both from the vertical)", "equivalent", "Correct."),
     # a count worked from others, what it counts, and how many things it was counted from: as before
     ("2", "2 (θ₁, θ₂)", "equivalent", "Correct."),
     ("1", "1 (θ)", "equivalent", "Correct."),
@@ -371,6 +396,80 @@ def test_a_count_whose_words_say_another_goes_to_a_person(expected, submitted, s
     verdict = compare(expected, submitted, kind="integer", name="n")
     assert verdict.status == status, verdict
     assert sentence in verdict.feedback, verdict
+
+
+def _count_labelled(label):
+    return (
+        f"Your answer is labelled `{label}`, but the quantity asked for is n. Read as n, it is right; a person will"
+        " check which you meant."
+    )
+
+
+COUNT_LABELS = [
+    # (expected, submitted, status, feedback): a count labelled with another quantity's name, where n = 3N − k
+    # is asked, goes to a person; the asked name, a word for degrees of freedom, f or s, and working, stay right
+    ("15", "k = 15", "undecided", (_count_labelled("k"),)),
+    ("2", "3N = 2", "undecided", (_count_labelled("3N"),)),
+    ("6", "N = 6", "undecided", (_count_labelled("N"),)),
+    ("2", "constraints = 2", "undecided", (_count_labelled("constraints"),)),
+    ("2", "T = 2", "undecided", (_count_labelled("T"),)),
+    ("2", "x = 2", "undecided", (_count_labelled("x"),)),
+    ("2", "m = 2", "undecided", (_count_labelled("m"),)),
+    ("2", "2 = k", "undecided", (_count_labelled("k"),)),
+    ("2", "k = 4", "not_equivalent",
+     ("Not equivalent to the expected answer.", "Your answer is labelled `k`, but the quantity asked for is n.")),
+    ("15", "n = 15", "equivalent", ("Correct.",)),
+    ("15", "dof = 15", "equivalent", ("Correct.",)),
+    ("15", "DOF = 15", "equivalent", ("Correct.",)),
+    ("15", "n_dof = 15", "equivalent", ("Correct.",)),
+    ("15", "f = 15", "equivalent", ("Correct.",)),
+    ("15", "s = 15", "equivalent", ("Correct.",)),
+    ("2", "degrees of freedom = 2", "equivalent", ("Correct.",)),
+    ("2", "3N - k = 2", "equivalent", ("Correct.",)),
+    ("2", "2 = n", "equivalent", ("Correct.", "Graded the number `2`; the rest of your answer is not graded.")),
+    ("2", "2 = d.o.f.", "equivalent", ("Correct.", "Graded the number `2`; the rest of your answer is not graded.")),
+    ("2", "k = 4, n = 2", "equivalent", ("Correct.",)),
+    # a label in words: another thing's count, or the count's, or the answer's
+    ("2", "No. of constraints = 2", "undecided", (_count_labelled("No. of constraints"),)),
+    ("2", "Number of constraints = 2", "undecided", (_count_labelled("Number of constraints"),)),
+    ("2", "No. of DOF = 2", "equivalent",
+     ("Correct.", "Graded your final value, `2`; the working before it is not graded.")),
+    ("2", "number of generalized coordinates = 2", "equivalent", ("Correct.",)),
+    ("2", "The answer = 2", "equivalent", ("Correct.",)),
+]  # fmt: skip
+
+COUNTS_SPELT = [
+    # (expected, submitted, status, feedback): a count glued or hyphened to what it counts, in words, or with the
+    # values it was worked out with in a bracket
+    ("2", "2-DOF", "equivalent", ("Correct.", "Graded the number `2`; what follows it (`DOF`) is not graded.")),
+    ("2", "2DOF", "equivalent", ("Correct.", "Graded the number `2`; what follows it (`DOF`) is not graded.")),
+    ("2", "2 degrees-of-freedom", "equivalent",
+     ("Correct.", "Graded the number `2`; what follows it (`degrees of freedom`) is not graded.")),
+    ("1", "a single degree of freedom", "equivalent",
+     ("Correct.", "Graded the number `one`; what follows it (`degree of freedom`) is not graded.")),
+    ("2", "a single degree of freedom", "not_equivalent", ("Not equivalent to the expected answer.",
+     "Graded the number `one`; what follows it (`degree of freedom`) is not graded.")),
+    ("2", "2 (k = 4)", "equivalent", ("Correct.", "Graded the number `2`; what follows it (`k = 4`) is not graded.")),
+    ("2", "n = 2 (k = 4, N = 2)", "equivalent",
+     ("Correct.", "Graded the number `n = 2`; what follows it (`k = 4, N = 2`) is not graded.")),
+    ("2", "n = 3N - k = 2 (k = 3, N = 2)", "undecided",
+     ("Your final value, `2`, was graded and is right, but your working, `3N - k, where k = 3, N = 2`, does not"
+      " hold: a person will check this answer.",)),
+    ("2", "3-DOF", "not_equivalent", ("Not equivalent to the expected answer.",
+     "Graded the number `3`; what follows it (`DOF`) is not graded.")),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), COUNTS_SPELT)
+def test_a_count_spelt_as_students_write_it_is_read(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+@pytest.mark.parametrize(("expected", "submitted", "status", "feedback"), COUNT_LABELS)
+def test_a_count_labelled_as_another_quantity_goes_to_a_person(expected, submitted, status, feedback):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
 ENERGIES = "Your working gives T and V, but T − V with them is not the value your answer gives L."

@@ -552,7 +552,7 @@ def _hedges(
     own = " ".join(texts[label] for label in (labels or texts) if label in texts).lower()  # d) both: no hedge
     doubts = [found[0].lower() for found in _DOUBT.finditer(submitted)]
     if asks_false:  # c) false: the claim asked for; c (true), c (correct): it is no answer, or the opposite one
-        own += " false wrong incorrect untrue"
+        own += f" {_DENIALS} a lie"
         doubts += [found[0].lower() for found in _TRUE.finditer(submitted)]
     doubted = any(not re.search(rf"(?<!\w){re.escape(doubt)}(?!\w)", own) for doubt in doubts)
     if labels is None:
@@ -565,17 +565,25 @@ def _hedges(
     return doubted or any(_takes_another(piece, set(labels), readings, texts) for piece in _remark_pieces(remark))
 
 
+# words that call an option false, which deny it, or where the false statement is asked name it: "non-holonomic
+# is inaccurate", "b (a trap)"; "lie" only as a noun ("a lie"), not the particle that may lie outside the sphere
+_DENIALS = (
+    "false wrong incorrect untrue inaccurate erroneous mistaken invalid bogus nonsense fake mistake mistakes "
+    "error errors myth misconception trap"
+)
 # words that doubt or deny an option, or offer another beside it, wherever they stand
 _DOUBT = re.compile(
     r"\b(?:or|nor|maybe|perhaps|possibly|probably|either|neither|both|too|also|unless|actually|false|wrong|"
     r"incorrect|unsure|uncertain|unlikely|guess|guessing|idk|dunno|nope|nah|wait|oops)\b"
+    rf"|\b(?:{'|'.join(_DENIALS.split())})\b|\ba\s+lie\b"
     r"|\b(?:not\s+(?:sure|certain|really|quite|right|correct|true|likely)|as\s+well|I\s+think|(?:might|could)\s+be)\b"
     r"|[?？¿‽⁇⁈⁉؟⸮]|\d\s*%|\b50\s*[/:-]\s*50\b",
     re.I,
 )
 
 
-_TRUE = re.compile(r"\b(?:true|correct|right)\b", re.I)
+# where the false statement is asked, words that call an option true: "c (valid)", "c, which holds"
+_TRUE = re.compile(r"\b(?:true|correct|right|valid|accurate|holds)\b", re.I)
 
 
 def _remark_pieces(remark: str) -> list[str]:
@@ -704,7 +712,8 @@ def _plain(text: str) -> str:
     return _KIND_NOUN.sub(r"\g<kind>", text)
 
 
-_WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])\s*[-\u2010\u2011]\s*(?=[^\W\d_])")  # non-holonomic, non - holonomic
+# non-holonomic, non - holonomic, and non–holonomic with the en dash a word processor puts there
+_WORD_HYPHEN = re.compile(r"(?<=[^\W\d_])\s*[-\u2010-\u2013]\s*(?=[^\W\d_])")
 
 
 # Goldstein's scleronomous and rheonomous, and anholonomic, are scleronomic, rheonomic, nonholonomic

@@ -44,7 +44,7 @@ from grader.judge.given import given_values, in_given_names
 from grader.judge.lagrangian import check_lagrangian
 from grader.judge.lagrangian import euler_lagrange as lagrange_equations
 from grader.judge.motion import accelerations_in, check_equation, check_equations
-from grader.judge.numbers import read_number
+from grader.judge.numbers import COUNT_NAME, read_number
 from grader.judge.numeric import NotCompilable
 from grader.judge.rounded import exact_readings
 from grader.judge.sampling import GROUP, all_equal, constant_difference, evaluate_pairs
@@ -721,8 +721,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += said
                 answer = _name_on_the_left(answer, spec, expected)
                 named, answer = answer, _unwrap_named(answer, spec, expected)
-                # a count's label is no other quantity to confuse it with: DOF = 2, or s = 2 as Landau writes it
-                label = _another_name(named, answer, expected) if spec.name != "integer" else None
+                other_name = _another_name if spec.name != "integer" else _another_count
+                label = other_name(named, answer, expected)
                 read_notes += (label,) if label else ()
                 answer = _without_arbitrary_constant(answer, spec, expected)
                 with_constant, (answer, constant) = answer, _without_constant_terms(answer, spec, expected)
@@ -1888,6 +1888,25 @@ def _measured_as_asked(label: str, expected: Expected) -> bool:
     dimension = QUANTITY_WORDS.get(label.lower())
     found = unit_named(str(unit)) if unit and dimension else None
     return found is not None and found[1] == DIMENSIONS[dimension]
+
+
+def _another_count(named: ParsedAnswer, unwrapped: ParsedAnswer, expected: Expected) -> tuple | None:
+    """A note where a count is labelled with a name that is not the asked count's: ``k = 15`` or ``N = 6``
+    where n = 3N − k is asked, ``3N = 2``, ``T = 2``. Right as read, it goes to a person, as a slip of the
+    label or a count of something else (see :func:`_another_name`). None for the asked name, for a word
+    for degrees of freedom (``DOF``, ``n_dof``, ``degrees of freedom``) and f or s, as textbooks name the
+    count (Landau's s), and for working (``3N − k = 2``), whose value is the count's."""
+    names = expected.option("name")
+    if not names or unwrapped is named or not isinstance(named.value, sympy.Eq) or named.value.lhs == ANSWER:
+        return None
+    side = named.value.lhs
+    if side.is_Add:
+        return None
+    labels = [symbol.name for symbol in side.free_symbols]
+    if any(_is_asked(label, names) or COUNT_NAME.fullmatch(label) for label in labels):
+        return None
+    typed = named.text.split("=", 1)[0].strip() if "=" in named.text else to_text(side)
+    return ("label_for_a_person", {"label": f"`{shown(typed)}`", "name": expected.setting.describe(names[:1])})
 
 
 def _force_named(side) -> str | None:

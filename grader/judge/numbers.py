@@ -35,9 +35,9 @@ from grader.judge.feedback import SHOWN, shown
 from grader.judge.units import SI_UNITS, in_units, unit_like, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
-from grader.parse.names import GREEK_NAMES, IMPLYING_WORDS
+from grader.parse.names import GREEK_BY_LETTER, GREEK_NAMES, IMPLYING_WORDS, unicode_name
 
-__all__ = ["NUMBER_WORDS", "read_number"]
+__all__ = ["COUNT_NAME", "NUMBER_WORDS", "read_number"]
 
 # 2,01 or 1,5 (a number with a decimal comma, then perhaps a unit); not 2,006, which is 2006 in English. But
 # 0,498 is 0.498: a thousands separator never follows a lone 0, so three digits after 0, are decimals too
@@ -102,10 +102,14 @@ _QUANTITY = re.compile(r"[^\W\d_][\w₀-₉]*")
 # a quantity's name after its value, which the value may stand before (2.01 s = T, 2 = n, 2 = DOF, 2 = d.o.f.,
 # 2.01 s = the period): one name, or "the" and one word, and nothing else
 _NAME_AFTER = re.compile(r"(?:the\s+)?(?:[^\W\d_][\w₀-₉']*|(?:[A-Za-z]\.){2,})\.?", re.I)
+# a word of a count's label that is no quantity of a problem's: DOF, n_dof, freedom (of degrees of freedom),
+# coordinates (of generalized coordinates), answer, total, and f or s, as textbooks name the count (Landau's s);
+# k, N, 3N, T or constraints is another quantity's
+COUNT_NAME = re.compile(r"[fs]|\w*(?:dof|freedom|coordinate|answer|total|result)\w*|ans", re.I)
 # words that take a number back or doubt it: 6 − 4 = 2? no, 4; 6 − 4 = 2 is wrong, it is 4; maybe 2. Not the
 # "no" of 15 (no constraints), before a word, which says what was counted
 _CORRECTION = re.compile(
-    r"\bno\b(?!\s+(?!(?:wait|sorry|actually|the|that|this|it's)\b)[^\W\d_]{3,})"
+    r"\bno\b(?!\s+(?!(?:wait|sorry|actually|the|that|this|it's)\b)[^\W\d_]{3,})(?!\.\s*of\b)"  # No. of: number of
     r"|\b(?:nope|not|never|wait|wrong|incorrect|false|mistakes?|mistaken|oops|sorry|actually|instead|rather|"
     r"correction|corrected|scratch|ignore|typo|meant|should|redo|maybe|perhaps|probably|possibly|unsure|"
     r"uncertain|I\s+think|I\s+guess|I\s+believe)\b|\?",
@@ -170,6 +174,7 @@ def read_number(
     """
     # a side of working is read again: for the final value, for working that does not hold, and beside words
     reads = lru_cache(maxsize=None)(reads)
+    text = _count_spelled(text) if count and len(text) <= _LENGTH else text
     decimal_comma = max(decimal_comma, _commas(text, decimal_comma))  # EVERY, as decided for the whole answer
     prepared, answer, notes = _read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
@@ -221,6 +226,21 @@ def _stated_values_false(text: str, answer: ParsedAnswer, reads, names: Collecti
             value = next((details["value"] for key, details in notes if key in _READ_PAST and "value" in details), "")
             return (*kept, ("working_false_for_a_person", {"value": value or answer.text, "working": typed}))
     return notes
+
+
+def _count_spelled(text: str) -> str:
+    """A count as students glue it to what it counts, spelt as the reading knows it: ``2-DOF`` and ``2DOF`` as
+    ``2 DOF``, ``degrees-of-freedom`` as ``degrees of freedom``, ``a single degree of freedom`` as ``one …``."""
+    text = _GLUED_DOF.sub(" ", text)
+    text = _HYPHENED_DOF.sub(lambda found: found[0].replace("-", " ").replace("\u2010", " "), text)
+    return _SINGLE.sub("one ", text)
+
+
+_GLUED_DOF = re.compile(r"(?<=[0-9])\s*[-\u2010]?\s*(?=dofs?\b)", re.I)
+_HYPHENED_DOF = re.compile(r"\bdegrees?[-\u2010]of[-\u2010]freedom\b", re.I)
+_SINGLE = re.compile(
+    r"\b(?:a|one)\s+single\s+(?=(?:degree|dof|d\.o\.f|generali[sz]ed\s+coordinate|coordinate|angle)s?\b)", re.I
+)
 
 
 def _read_number(
@@ -352,6 +372,11 @@ def _read_number(
                 other = count and _counts_other(words or typed, rest, names)
                 key, details = ("number_qualified_for_a_person", "words") if other else ("remark_ignored", "rest")
                 notes += ((key, {"value": typed, details: shown(rest)}),)
+            elif other := (_other_label(pieces, index, asked) if count and last == 1 else None):
+                # 2 = k, No. of constraints = 2, where n is asked: the value of another quantity, or a slip
+                notes += (
+                    ("label_for_a_person", {"label": f"`{shown(other)}`", "name": unicode_name(next(iter(asked)))}),
+                )
             elif last and index == last and not all(_QUANTITY.fullmatch(piece) for piece in pieces[:last]):
                 notes += (("final_value", {"value": typed}),)  # T = 2π√(l/g) = 2.01 s; not T = 2.0 s (approx)
             elif last:
@@ -558,6 +583,27 @@ def _said(words: re.Pattern, text: str) -> str:
         typed = " ".join(found[0].strip(" (,").split())  # 2 (max): max
         said.setdefault(typed.lower(), typed)
     return shown(", ".join(said.values()))
+
+
+def _other_label(pieces: list[str], index: int, asked: Collection[str]) -> str | None:
+    """Where a count and one label are set equal, the label where it names another quantity than the count
+    ``asked`` (``k`` of ``2 = k``, ``No. of constraints`` of ``No. of constraints = 2``), as typed; else None.
+    A label the parser reads (``k = 2``) is compare's to judge; these are read here."""
+    label = pieces[1] if index == 0 else pieces[0]
+    if not asked or (index and not _WORDS_LABEL.fullmatch(label)):
+        return None
+    return None if _names_count(label, asked) else label.strip()
+
+
+_WORDS_LABEL = re.compile(r"\s*[^\W\d_][\w.']*(?:\s+[^\W\d_][\w.']*)*\s*")  # No. of constraints: words alone
+
+
+def _names_count(side: str, asked: Collection[str]) -> bool:
+    """Whether a name after a count (``2 = n``, ``2 = the DOF``) is the asked count's, or a word for one."""
+    return any(word in asked or COUNT_NAME.fullmatch(word) for word in _LABEL_WORD.findall(side))
+
+
+_LABEL_WORD = re.compile(r"[^\W\d_][\w₀-₉']*")  # n, DOF, and the words of "No. of DOF", d.o.f. as d, o, f
 
 
 def _is_name(side: str) -> bool:
@@ -932,9 +978,11 @@ def _count_with_bracket(piece: str, reads, names) -> tuple[str, ParsedAnswer | N
     described = _DESCRIBED.fullmatch(groups[0])
     thing = described and not summed and described["thing"].lower() in _THINGS
     angles = thing and described["thing"].lower() in _ANGLES
-    if value == number or (thing and not angles and not _ASKED.search(groups[0])):
+    # 2 (one coordinate): fewer of what is counted than the count; 2 (6 coordinates) is what it is counted from
+    fewer = thing and described["thing"].lower() in _COORDINATES and value < number
+    if value == number or (thing and not angles and not fewer and not _ASKED.search(groups[0])):
         return str(number), answer, (remark,)
-    if summed or angles or _ASKED.search(groups[0]):
+    if summed or angles or fewer or _ASKED.search(groups[0]):
         return str(number), answer, (unclear,)
     return None  # 2 (one coordinate for each bob): words, read as remarks are
 
@@ -961,8 +1009,34 @@ def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
     listed = _names_listed(rest, names)
     if listed:  # 1 (θ and φ), 1 dof: θ and r, 2 (θ): more or fewer coordinates named than counted
         return number.isdigit() and len(listed) != int(number)
+    named = _coordinates_named(rest) if number.isdigit() else 0
+    if named and named != int(number):  # 1 (θ) and one for φ, 1, and another for φ, 2 (θ₁ only), 1 (both angles)
+        return True
     counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
     return counted is not None and counted[1] and counted[0] != int(number)
+
+
+def _coordinates_named(rest: str) -> int:
+    """How many coordinates words after a count name, where they are no list (:func:`_names_listed`): its
+    Greek letters (``θ``, ``phi_2``), each once; two for ``both angles``; and one more for each ``another`` or
+    ``a second`` (``1, and another for φ``). 0 where they name none, or hold a count of their own in digits
+    (``6 (3 translations + 3 rotations: φ, θ, ψ)`` names the rotations only: a breakdown, see :func:`_breaks_down`)."""
+    if _NUMBER.search(rest):
+        return 0
+    greek = {token.lower() for token in _COORDINATE_WORD.findall(rest) if _is_greek(token)}
+    more = len(_ANOTHER.findall(rest))
+    return max(len(greek), 1 + more if more else 0, 2 if _BOTH.search(rest) else 0)
+
+
+def _is_greek(token: str) -> bool:
+    """Whether ``token`` is a Greek letter, perhaps with an index, as typed or spelt out (θ₁, phi_2)."""
+    spelt = _SPELLED_GREEK.fullmatch(token)
+    return token[0] in GREEK_BY_LETTER or (spelt is not None and spelt[1].lower() in GREEK_NAMES)
+
+
+_COORDINATE_WORD = re.compile(r"(?<![\\\w])[^\W\d_][\w₀-₉']*")  # θ₁, theta_1, and words, of which the Greek count
+_ANOTHER = re.compile(r"\b(?:another|(?:a|the)\s+second|one\s+more)\b", re.I)  # a coordinate added to the count
+_BOTH = re.compile(r"\bboth\s+(?:the\s+)?(?:angles|coordinates)\b", re.I)
 
 
 def _names_listed(rest: str, names: Collection[str]) -> list[str] | None:
@@ -1036,6 +1110,8 @@ def _given(
     if found is None or not found.start():
         return None
     head, values = text[: found.start()], text[found.end() :]
+    if found.group().strip() == "(" and any(name in asked for name in _GIVEN_NAME.findall(values)):
+        return None  # 2 (n = 3): another value of the asked quantity, no value it was worked out with
     bracketed = "(" in found.group()
     if bracketed:  # the remark's own bracket closes the answer, and nothing in it is left open
         values = values.rstrip(" .")
@@ -1091,7 +1167,11 @@ _UNCERTAIN = re.compile(
 
 # where the values an answer was worked out with begin: ", where l = 1", " since k = 2", " for l = 1 m"
 # …, with g = 9.81, or the same in brackets at the end: 2.006 s (with g = 9.81)
-_GIVEN = re.compile(r"\s*(?:,?\s*|\(\s*)\b(?:where|with|since|for|given|using|as)\s+(?=[^\W\d][\w₀-₉]*\s*=)", re.I)
+# …, or a bracket of values alone: 2 (k = 4), n = 2 (k = 4, N = 2)
+_GIVEN = re.compile(
+    r"\s*(?:(?:,?\s*|\(\s*)\b(?:where|with|since|for|given|using|as)\s+|\s\(\s*)(?=[^\W\d][\w₀-₉]*\s*=)", re.I
+)
+_GIVEN_NAME = re.compile(r"(?:^|[,;(]|\band\b)\s*([^\W\d][\w₀-₉]*)\s*=", re.I)  # the names a remark gives values
 
 
 def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
@@ -1276,7 +1356,7 @@ _REPEATED = re.compile(r"\(\s*([0-9]+)\s*\)\.?")
 _BRACKETED = re.compile(r"\(([^()]{1,120})\)\.?")
 _COUNTED = re.compile(r"(?<![\w\\])[A-Za-z]{2,}(?!\w)")  # translations, rotations, and: not θ1
 _SAID_SIGNS = {"and": "+", "plus": "+", "minus": "-", "times": "*"}
-_LISTED = re.compile(r"[,;]\s")  # counts listed add up: not 3,5, a decimal comma
+_LISTED = re.compile(r"[,;]\s(?:\s*\+)?")  # counts listed add up: not 3,5, a decimal comma; ", and" once
 _COUNTS = re.compile(r"\s*[0-9]+(?:\s*[-+−*×·]\s*[0-9]+)+\s*")  # 3 + 3, 6 − 1, 3·2 − 1
 _SOME_COUNTS = re.compile(r"\s*[0-9]+(?:\s*[-+−*×·]\s*[0-9]+)*\s*")  # and 5, of 5 particles
 _SIGN = re.compile(r"[-+−*×·]")
