@@ -569,8 +569,8 @@ ON_THE_WAY = (
 LAGRANGIAN_FROM_H = [
     # (submitted, setting, status, feedback): where H is not the energy (a hoop turned at a fixed rate, where
     # H = T₂ − T₀ + V), L = 2T − H is a false identity on the way to a right value (before, right)
-    (f"L = 2T - H = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = -H + 2*T` {ON_THE_WAY}",)),
-    (f"L = H - 2V = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = H - 2*V` {ON_THE_WAY}",)),
+    (f"L = 2T - H = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = 2T - H` {ON_THE_WAY}",)),
+    (f"L = H - 2V = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = H - 2V` {ON_THE_WAY}",)),
     # true on the hoop too: E is T + V, and L = p θ̇ − H is the Legendre transform; and where H is the energy
     (f"L = 2T - E = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
     (f"L = p_theta thetadot - H = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
