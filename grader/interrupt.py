@@ -1,8 +1,8 @@
 """Ctrl-C held over a step that must not be cut in two.
 
 Contents:
-    ctrl_c_deferred()   a context manager: a Ctrl-C inside it is raised when it ends
-    ctrl_c_ignored()    a context manager: a Ctrl-C inside it is lost, and so for a process started in it
+    ctrl_c_deferred()             a context manager: a Ctrl-C inside it is raised when it ends
+    ctrl_c_kept_from_children()   the same, and a process started inside it never gets a Ctrl-C
 
 Both do nothing outside the main thread: signal dispositions are the main thread's to set, and only
 the main thread is interrupted, so a Ctrl-C cannot cut another thread's step.
@@ -31,11 +31,23 @@ def ctrl_c_deferred() -> Iterator[None]:
 
 
 @contextlib.contextmanager
-def ctrl_c_ignored() -> Iterator[None]:
-    """Ignore a Ctrl-C for the block. A process started in it keeps ignoring it across its exec: a
-    helper that has no use for Ctrl-C, such as a fork server, which ends when its parent does."""
-    with _sigint_handled_by(signal.SIG_IGN):
-        yield
+def ctrl_c_kept_from_children() -> Iterator[None]:
+    """Hold a Ctrl-C until the block is done, then raise it, as :func:`ctrl_c_deferred` does; a process
+    started in the block never gets one, across its exec too: a helper that has no use for Ctrl-C, such
+    as a fork server, which ends when its parent does.
+
+    The child inherits SIGINT blocked. Ignoring it instead (SIG_IGN, which an exec keeps too) would
+    ignore it here as well: a Ctrl-C in the block was lost, and `grader serve` went on serving.
+    """
+    with ctrl_c_deferred():
+        blocked = threading.current_thread() is threading.main_thread() and hasattr(signal, "pthread_sigmask")
+        if blocked:
+            signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        try:
+            yield
+        finally:
+            if blocked:  # a Ctrl-C pending meanwhile reaches ctrl_c_deferred's handler now
+                signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
 
 
 @contextlib.contextmanager

@@ -2212,11 +2212,11 @@ def _stated(line):
     [
         # before: L's value was put into L = T − V, and T and V were told undefined
         (L_PENDULUM, "L = T − V\nL = ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "equivalent",
-         (_stated("L = T - V"),)),
+         (_stated("L = T − V"),)),
         (L_PENDULUM, "L = T - U; L = ½ m l² θ̇² + m g l cos θ", {"kind": "lagrangian"}, "equivalent",
          (_stated("L = T - U"),)),
         (L_PENDULUM, "L = T − V\nL = ½ m l² θ̇² − m g l cos θ", {"kind": "lagrangian"}, "not_equivalent",
-         (_stated("L = T - V"),)),
+         (_stated("L = T − V"),)),
         # before: line 1 "does not say the same", for a person
         (H_PENDULUM, "H = T + V\nH = ½ m l² θ̇² − m g l cos θ", {"name": "H"}, "equivalent", (_stated("H = T + V"),)),
         # not the definition: left out too, but a person reads the value against what it says L is
@@ -5545,7 +5545,7 @@ HOOP_H_TYPED = "1/2 m R^2 θ̇^2 − 1/2 m R^2 ω^2 sin^2θ − m g R cos θ"
          "Your answer says `L = T + U` on the way to its value, which is not what L is. Its value was graded and"
          " is right; a person will check this answer."),
         (HOOP_H, f"H = T − V = {HOOP_H_TYPED}", "expression", {"name": "H"}, "undecided",
-         "Your answer says `H = T - V` on the way to its value, which is not what H is. Its value was graded and"
+         "Your answer says `H = T − V` on the way to its value, which is not what H is. Its value was graded and"
          " is right; a person will check this answer."),
         # in lines of working: V's sign and L = T + V, two slips that make a right value
         (L_PENDULUM, "T = 1/2 m l^2 θ̇^2, V = m g l cos θ, L = T + V", "lagrangian", {}, "undecided",
@@ -5623,15 +5623,15 @@ def _misstated(statement: str, label: str) -> str:
         (L_PENDULUM, f"L = E = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = E", "L")),
         (L_PENDULUM, f"L = H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H", "L")),
         # another quantity in the sum, written as the energies it is: 2V − E is V − T
-        (L_PENDULUM, f"L = 2V − E = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = -E + 2*V", "L")),
-        (SPHERICAL_H, f"H = 2L − T = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = 2*L - T", "H")),
+        (L_PENDULUM, f"L = 2V − E = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = 2V − E", "L")),
+        (SPHERICAL_H, f"H = 2L − T = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = 2L − T", "H")),
         # H as the wrong combination of Σ p q̇ and L, in Unicode and in TeX
         (SPHERICAL_H, f"H = Σ p q̇ + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = L + Σ p q̇", "H")),
+         _misstated("H = Σ p q̇ + L", "H")),
         (SPHERICAL_H, f"H = L − Σ p q̇ = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = L - Σ p q̇", "H")),
+         _misstated("H = L − Σ p q̇", "H")),
         (SPHERICAL_H, rf"H = \sum_j p_j \dot q_j + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = L + Σ p_j q̇_j", "H")),
+         _misstated("H = \\sum_j p_j \\dot q_j + L", "H")),
         (SPHERICAL_H, f"H = L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = L", "H")),
         # a momentum by the wrong derivative
         (SPHERICAL_P_PHI, "p_φ = ∂L/∂φ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = ∂L/∂φ", "p_φ")),
@@ -5640,10 +5640,10 @@ def _misstated(statement: str, label: str) -> str:
         # said in a sentence before the value: before, `Since`, T and V were told undefined, and wrong
         (L_PENDULUM, f"Since L = T + V, L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = T + V", "L")),
         (L_PENDULUM, f"The Lagrangian L = K + U is {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = K + U", "L")),
-        (L_PENDULUM, f"With L = V − T: L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = -T + V", "L")),
+        (L_PENDULUM, f"With L = V − T: L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = V − T", "L")),
         (L_PENDULUM, f"Using L = E, we have L = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = E", "L")),
         (SPHERICAL_H, f"As H = Σ p q̇ + L, H = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = L + Σ p q̇", "H")),
+         _misstated("H = Σ p q̇ + L", "H")),
         (SPHERICAL_P_PHI, "Since p_φ = ∂L/∂φ, p_φ = m l² sin²θ φ̇", "expression", SPHERICAL,
          _misstated("p_φ = ∂L/∂φ", "p_φ")),
         ("m l^2 thetadot", "Since p_θ = ∂L/∂θ, p_θ = m l² θ̇", "expression", {**PENDULUM, "name": "p_theta"},
@@ -5652,48 +5652,48 @@ def _misstated(statement: str, label: str) -> str:
         ("m g cos(theta) - k (r - l0)", "Q_r = ∂V/∂r = m g cos θ − k (r − l0)", "expression", ELASTIC,
          _misstated("Q_r = ∂V/∂r", "Q_r")),
         ("m g cos(theta) - k (r - l0)", "Q_r = −∂V/∂θ = m g cos θ − k (r − l0)", "expression", ELASTIC,
-         _misstated("Q_r = -∂V/∂θ", "Q_r")),
+         _misstated("Q_r = −∂V/∂θ", "Q_r")),
         # Σ p q̇ − L written out, with a coordinate's term left out or + L: before, each was Correct
         (SPHERICAL_H, f"H = p_φ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = -L + p_φ*φ̇", "H")),
+         _misstated("H = p_φ φ̇ − L", "H")),
         (SPHERICAL_H, f"H = p_θ θ̇ + p_φ φ̇ + L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = L + p_φ*φ̇ + p_θ*θ̇", "H")),
+         _misstated("H = p_θ θ̇ + p_φ φ̇ + L", "H")),
         (HOOP_H, f"Since H = p_θ θ̇ + L, H = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
-         _misstated("H = L + p_θ*θ̇", "H")),
+         _misstated("H = p_θ θ̇ + L", "H")),
         # a chain of more sides, read side by side: before, the definition was passed over, and right
         (HOOP_H, f"H = p_θ θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
-         _misstated("H = L + p_θ*θ̇", "H")),
+         _misstated("H = p_θ θ̇ + L", "H")),
         # Σ p q̇ − L written otherwise wrong, in momenta, as ∂L/∂θ̇ or worked out with the momenta given: before,
         # each was Correct (only a term left out, or + L, was known wrong)
-        (HOOP_H, f"H = θ p_θ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = -L + p_θ*θ", "H")),
+        (HOOP_H, f"H = θ p_θ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = θ p_θ − L", "H")),
         (HOOP_H, f"H = θ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
-         _misstated("H = -L + p_θ*θ", "H")),
-        (HOOP_H, f"H = ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = -L + p_θ", "H")),
+         _misstated("H = θ ∂L/∂θ̇ − L", "H")),
+        (HOOP_H, f"H = ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY, _misstated("H = ∂L/∂θ̇ − L", "H")),
         (HOOP_H, f"H = L − θ̇ ∂L/∂θ̇ = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
-         _misstated("H = L - p_θ*θ̇", "H")),
+         _misstated("H = L − θ̇ ∂L/∂θ̇", "H")),
         (HOOP_H, f"H = 2 θ̇ ∂L/∂θ̇ − L = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
-         _misstated("H = -L + 2*p_θ*θ̇", "H")),
+         _misstated("H = 2 θ̇ ∂L/∂θ̇ − L", "H")),
         (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − T = {HOOP_H_TYPED}", "expression", HOOP_NOT_ENERGY,
-         _misstated("H = -T + p_θ*θ̇", "H")),
+         _misstated("H = θ̇ ∂L/∂θ̇ − T", "H")),
         (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = m R² θ̇² + L = {HOOP_H_TYPED}", "expression",
-         {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}}, _misstated("H = L + R^2*m*θ̇^2", "H")),
+         {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}}, _misstated("H = m R² θ̇² + L", "H")),
         (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ + φ̇ ∂L/∂θ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = -L + p_θ*φ̇ + p_θ*θ̇", "H")),
+         _misstated("H = θ̇ ∂L/∂θ̇ + φ̇ ∂L/∂θ̇ − L", "H")),
         (SPHERICAL_H, f"H = p_φ θ̇ + p_θ φ̇ − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL,
-         _misstated("H = -L + p_φ*θ̇ + p_θ*φ̇", "H")),
-        (L_PENDULUM, f"L = θ̇ ∂L/∂θ̇ + H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H + p_θ*θ̇", "L")),
+         _misstated("H = p_φ θ̇ + p_θ φ̇ − L", "H")),
+        (L_PENDULUM, f"L = θ̇ ∂L/∂θ̇ + H = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = θ̇ ∂L/∂θ̇ + H", "L")),
         # a sum that is one energy once L or H is put in: H = T − L is V, L = H − T is V (before, Correct)
-        (SPHERICAL_H, f"H = T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = -L + T", "H")),
+        (SPHERICAL_H, f"H = T − L = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = T − L", "H")),
         (SPHERICAL_H, f"H = L + V = {SPHERICAL_H_TYPED}", "expression", SPHERICAL, _misstated("H = L + V", "H")),
-        (L_PENDULUM, f"L = H − T = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H - T", "L")),
+        (L_PENDULUM, f"L = H − T = {L_TYPED}", "lagrangian", PENDULUM, _misstated("L = H − T", "L")),
         # judged by its values, not multiplied out: a power of a sum in it costs nothing
         (HOOP_H, f"H = (p_θ θ̇ + L + T + V + m + R + g)^40 − L = {HOOP_H_TYPED}", "expression",
          {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
-         _misstated("H = -L + (L + R + T + V + g + m + p_θ*θ̇)^40", "H")),
+         _misstated("H = (p_θ θ̇ + L + T + V + m + R + g)^40 − L", "H")),
         # a momentum as −∂L/∂φ̇, ∂V/∂φ̇ (zero) or 2 ∂L/∂φ̇: before, Correct
-        (SPHERICAL_P_PHI, "p_φ = −∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = -∂L/∂φ̇", "p_φ")),
+        (SPHERICAL_P_PHI, "p_φ = −∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = −∂L/∂φ̇", "p_φ")),
         (SPHERICAL_P_PHI, "p_φ = ∂V/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = ∂V/∂φ̇", "p_φ")),
-        (SPHERICAL_P_PHI, "p_φ = 2 ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = 2*p_φ", "p_φ")),
+        (SPHERICAL_P_PHI, "p_φ = 2 ∂L/∂φ̇ = m l² sin²θ φ̇", "expression", SPHERICAL, _misstated("p_φ = 2 ∂L/∂φ̇", "p_φ")),
     ],
 )  # fmt: skip
 def test_a_wrong_definition_on_the_way_to_a_right_value_goes_to_a_person(expected, submitted, kind, options, first):
@@ -5750,16 +5750,16 @@ def _redefined(definition: str, name: str) -> str:
     [
         # a wrong momentum of the student's own makes a wrong H in it right: before, Correct
         (HOOP_H, "H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_GIVEN, "undecided",
-         _redefined("p_θ = R*m*θ̇", "p_θ")),
+         _redefined("p_θ = m R θ̇", "p_θ")),
         (HOOP_H, "With p_θ = m R θ̇: H = p_θ²/(2 m) − ½ m R² ω² sin²θ − m g R cos θ", HOOP, _HOOP_GIVEN, "undecided",
-         _redefined("p_θ = R*m*θ̇", "p_θ")),
+         _redefined("p_θ = m R θ̇", "p_θ")),
         (HOOP_H, "H = p²/(8 m R²) − ½ m R² ω² sin²θ − m g R cos θ, where p = 2 m R² θ̇", HOOP, _HOOP_GIVEN, "undecided",
-         _redefined("p = 2*R^2*m*θ̇", "p_θ")),
+         _redefined("p = 2 m R² θ̇", "p_θ")),
         (SPHERICAL_H, "With p_φ = m l² sin θ φ̇: H = p_θ²/(2 m l²) + p_φ²/(2 m l²) − m g l cos θ", SPHERICAL,
-         _SPHERICAL_GIVEN, "undecided", _redefined("p_φ = l^2*m*sin(θ)*φ̇", "p_φ")),
+         _SPHERICAL_GIVEN, "undecided", _redefined("p_φ = m l² sin θ φ̇", "p_φ")),
         # where it is wrong either way, said so
         (HOOP_H, "H = p_θ²/m − ½ m R² ω² sin²θ − m g R cos θ, where p_θ = m R θ̇", HOOP, _HOOP_GIVEN, "not_equivalent",
-         "Your answer defines `p_θ = R*m*θ̇`, which is not the problem's p_θ."),
+         "Your answer defines `p_θ = m R θ̇`, which is not the problem's p_θ."),
     ],
 )  # fmt: skip
 def test_a_given_name_defined_otherwise_goes_to_a_person(expected, submitted, options, given, status, first):
@@ -5788,9 +5788,9 @@ PARTIALS_IN_CHAIN = (
     (SPHERICAL_H, rf"H = \sum_j \dot q_j \frac{{\partial L}}{{\partial \dot q_j}} - L = {SPHERICAL_H_TYPED}", SPHERICAL,
      "equivalent", ("Correct.",)),
     # a wrong definition, + L or a coordinate's term left out, goes to a person
-    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided", (_misstated("H = L + p_θ*θ̇", "H"),)),
+    (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided", (_misstated("H = θ̇ ∂L/∂θ̇ + L", "H"),)),
     (SPHERICAL_H, f"H = θ̇ ∂L/∂θ̇ − L = {SPHERICAL_H_TYPED}", SPHERICAL, "undecided",
-     (_misstated("H = -L + p_θ*θ̇", "H"),)),
+     (_misstated("H = θ̇ ∂L/∂θ̇ − L", "H"),)),
     # any other ∂ in a step of H's chain: the step that defines H is not checked, so a person checks it
     (HOOP_H, f"H = θ̇ ∂L/∂θ − L = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
      (_steps_left_out("θ̇ ∂L/∂θ − L"), "Its last side is right; a person will check the step that defines it.")),
@@ -5810,7 +5810,7 @@ PARTIALS_IN_CHAIN = (
     (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L = {_HOOP_WORKED} = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent",
      ("Correct.", "Your answer has 3 sides after the name, each the same; the last was graded.")),
     (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L = {_HOOP_WORKED} = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
-     (_misstated("H = L + p_θ*θ̇", "H"),)),
+     (_misstated("H = θ̇ ∂L/∂θ̇ + L", "H"),)),
     (SPHERICAL_P_PHI, f"p_φ = {_P_PHI_STEP} = ½ m l² · 2 φ̇ = m l² sin²θ φ̇", SPHERICAL, "undecided",
      ("Your last side is right, but side 1 does not say the same: a person will decide which is your answer.",
       _steps_left_out(_P_PHI_STEP))),
@@ -5821,7 +5821,7 @@ PARTIALS_IN_CHAIN = (
     (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L\nH = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.", _TWO_H_LINES)),
     (HOOP_H, f"H = θ̇ ∂L/∂θ̇ − L; H = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "equivalent", ("Correct.", _TWO_H_LINES)),
     (HOOP_H, f"H = θ̇ ∂L/∂θ̇ + L\nH = {HOOP_H_TYPED}", HOOP_NOT_ENERGY, "undecided",
-     (_misstated("H = L + p_θ*θ̇", "H"), _TWO_H_LINES)),
+     (_misstated("H = θ̇ ∂L/∂θ̇ + L", "H"), _TWO_H_LINES)),
 )  # fmt: skip
 
 
@@ -5839,7 +5839,7 @@ _THREE_LINES = "Your 3 lines, each `H = …`, were read as one chain, H = … = 
 LINES_OF_A_LONGER_CHAIN = (
     (f"H = p_θ θ̇ − L\nH = {_HOOP_WORKED}\nH = {HOOP_H_TYPED}", "equivalent", ("Correct.", _THREE_SIDES, _THREE_LINES)),
     (f"H = p_θ θ̇ + L\nH = {_HOOP_WORKED}\nH = {HOOP_H_TYPED}", "undecided",
-     (_misstated("H = L + p_θ*θ̇", "H"), _THREE_LINES)),
+     (_misstated("H = p_θ θ̇ + L", "H"), _THREE_LINES)),
     (f"H = p_θ θ̇ − L\nH = {_HOOP_WORKED}\nH = m R² θ̇²", "not_equivalent",
      ("Not equivalent to the expected answer.", "Your answer has 3 sides after the name; the last was graded as your"
       " answer.", _THREE_LINES)),
@@ -6024,10 +6024,10 @@ DEFINITION_BEFORE = (
     # the momentum the formula uses, spelt another way, is no name of the student's own: wrong, it goes to a
     # person (before, right, the definition called unused); right, the line is working
     (HOOP_H, f"Let P_θ = 2 m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
-     "undecided", (_momentum_spelt("P_θ = 2*R^2*m*θ̇"), _not_graded_p("P_θ"), "Read with the problem's own meaning of"
+     "undecided", (_momentum_spelt("P_θ = 2 m R² θ̇"), _not_graded_p("P_θ"), "Read with the problem's own meaning of"
      " `p_θ`.")),
     (HOOP_H, f"Let P = 2 m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
-     "undecided", (_momentum_spelt("P = 2*R^2*m*θ̇"), _not_graded_p("P"), "Read with the problem's own meaning of"
+     "undecided", (_momentum_spelt("P = 2 m R² θ̇"), _not_graded_p("P"), "Read with the problem's own meaning of"
      " `p_θ`.")),
     (HOOP_H, f"Let p_1 = m R² θ̇. Then H = {_HOOP_IN_P}", {**HOOP_NOT_ENERGY, "given": {"p_theta": "m R^2 thetadot"}},
      "equivalent", ("Correct.", _not_graded_p("p₁"), "Read with the problem's own meaning of `p_θ`.")),
@@ -6108,8 +6108,8 @@ def test_a_remark_with_commas_or_signs_that_closes_the_answer_goes_to_a_person(e
          (_misstated("H = T + V", "H"), _chain("The Hamiltonian … is", "H = T + V"))),
         (f"H = T + V ⇒ H = {HOOP_H_TYPED}", (_misstated("H = T + V", "H"),)),
         # 2T − L is T + V, whatever T and V are: the same claim
-        (f"H = 2T − L = {HOOP_H_TYPED}", (_misstated("H = -L + 2*T", "H"),)),
-        (f"H = 2 T - L = {HOOP_H_TYPED}", (_misstated("H = -L + 2*T", "H"),)),
+        (f"H = 2T − L = {HOOP_H_TYPED}", (_misstated("H = 2T − L", "H"),)),
+        (f"H = 2 T - L = {HOOP_H_TYPED}", (_misstated("H = 2 T - L", "H"),)),
         # the energies as the label: not H's here
         (f"T + V = {HOOP_H_TYPED}",
          ("Your answer is labelled T + V, but the quantity asked for is H. Read as H, it is right; a person will"
@@ -6379,3 +6379,52 @@ PERIOD_VALUES = {**PERIOD_PART, "name": ["T"], "values": {"l": 1.0, "g": 9.81}} 
 def test_a_number_out_of_tolerance_is_told_so_not_that_it_is_rounded(submitted, status, feedback):
     verdict = compare(PERIOD, submitted, **PERIOD_VALUES)
     assert (verdict.status, verdict.feedback) == (status, (feedback,)), verdict
+
+
+L_HOOP_TYPED = "1/2 m R^2 θ̇^2 + 1/2 m R^2 ω^2 sin^2θ + m g R cos θ"
+HOOP_LAGRANGIAN_NOT_ENERGY = {"coords": ["theta"], "known": ["m", "R", "g", "omega"], "h_is_energy": False}
+
+
+@pytest.mark.parametrize(
+    ("submitted", "feedback"),
+    [
+        # before, each quoted the working as sympy prints it: `L = -H + 2*T`
+        (f"L = 2T − H = {L_HOOP_TYPED}", (_misstated("L = 2T − H", "L"),)),
+        (f"L=2T-H={L_HOOP_TYPED}", (_misstated("L=2T-H", "L"),)),
+        # a later side of the chain, after its label: `L = -H + 2*T`
+        (f"L = T − V = 2 T − H = {L_HOOP_TYPED}", (_misstated("L = 2 T − H", "L"),)),
+        # as typed, in TeX too
+        (rf"\mathcal{{L}} = 2T - H = {L_HOOP_TYPED}", (_misstated(r"\mathcal{L} = 2T - H", "L"),)),
+    ],
+)  # fmt: skip
+def test_a_wrong_definition_is_quoted_as_the_student_typed_it(submitted, feedback):
+    verdict = compare(L_HOOP, submitted, kind="lagrangian", **HOOP_LAGRANGIAN_NOT_ENERGY)
+    assert (verdict.status, verdict.score, verdict.feedback) == ("undecided", 1.0, feedback), verdict
+
+
+_HOOP_P_LINE = "p_θ = m R² θ̇"
+_HOOP_H_LINE = "H = p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ"
+
+
+@pytest.mark.parametrize(
+    ("submitted", "kind", "expected", "notes"),
+    [
+        # before, each named only H: p_θ's line was put into H's, and left out with it unsaid
+        (f"L = {L_HOOP_TYPED}; {_HOOP_P_LINE}; {_HOOP_H_LINE}", "lagrangian", L_HOOP,
+         ("The lines that define `H` and `p_θ` were not graded: L is what is asked for here.",)),
+        (f"L = {L_HOOP_TYPED}\n{_HOOP_P_LINE}\n{_HOOP_H_LINE}", "lagrangian", L_HOOP,
+         ("The lines that define `H` and `p_θ` were not graded: L is what is asked for here.",)),
+        (f"L = {L_HOOP_TYPED}; {_HOOP_P_LINE}; H = p_θ θ̇ − L", "lagrangian", L_HOOP,
+         ("The lines that define `H` and `p_θ` were not graded: L is what is asked for here.",)),
+        (f"{_HOOP_P_LINE}; {_HOOP_H_LINE}; L = {L_HOOP_TYPED}", "lagrangian", L_HOOP,
+         ("The lines that define `H` and `p_θ` were read as your working, not as your answer.",)),
+        (f"{_HOOP_P_LINE}; {_HOOP_H_LINE}; R θ̈ = R ω² sin θ cos θ − g sin θ", "equation", HOOP_EOM,
+         ("The lines that define `H` and `p_θ` were read as your working, not as your answer.",)),
+        # a definition the graded line uses is put in place, not left out
+        (f"v = R θ̇; L = ½ m v² + ½ m R² ω² sin²θ + m g R cos θ; {_HOOP_P_LINE}; {_HOOP_H_LINE}", "lagrangian",
+         L_HOOP, ("The lines that define `H` and `p_θ` were not graded: L is what is asked for here.",)),
+    ],
+)  # fmt: skip
+def test_a_definition_put_into_a_line_left_out_is_named_as_left_out(submitted, kind, expected, notes):
+    verdict = compare(expected, submitted, kind=kind, **HOOP)
+    assert (verdict.status, verdict.notes) == ("equivalent", notes), verdict

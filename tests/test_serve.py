@@ -599,8 +599,11 @@ def test_ctrl_c_while_grader_serve_starts_ends_it_without_a_traceback(tmp_path, 
         if process.poll() is None:
             os.killpg(process.pid, signal.SIGKILL)
     assert "Traceback" not in out
-    if process.returncode == -signal.SIGINT:  # on a loaded machine, still before Python handles Ctrl-C
-        assert out == ""
+    if process.returncode == -signal.SIGINT:
+        # on a loaded machine, still before Python handles Ctrl-C; or handled, but it came inside an exec of
+        # a string (dataclasses and namedtuples build methods so as grader.cli loads), and CPython then ends the
+        # process by SIGINT all the same, once it has said so
+        assert out in ("", "\ngrader: interrupted\n")
     elif process.returncode == 130:
         assert out.endswith("\ngrader: interrupted\n")
     else:

@@ -7,6 +7,7 @@ through the server in test_serve.py.
 
 from __future__ import annotations
 
+import multiprocessing.forkserver
 import os
 import signal
 import threading
@@ -103,6 +104,19 @@ def test_a_ctrl_c_while_workers_start_stops_those_started(monkeypatch, starts):
     with pytest.raises(KeyboardInterrupt):
         CheckPool(BANK, timeout=1.0, workers=starts, run=_stuck)
     assert [process.is_alive() for process in started] == [False] * (starts - 1)
+
+
+def test_a_ctrl_c_while_the_fork_server_starts_is_raised_once_it_has(monkeypatch):
+    # before: ignored while the fork server started, so lost to the server too, which went on serving
+    ensure_running = multiprocessing.forkserver.ensure_running
+
+    def pressed():
+        os.kill(os.getpid(), signal.SIGINT)  # as a terminal's Ctrl-C reaches the process, from outside
+        ensure_running()
+
+    monkeypatch.setattr(multiprocessing.forkserver, "ensure_running", pressed)
+    with pytest.raises(KeyboardInterrupt):
+        CheckPool(BANK, timeout=1.0, workers=1, run=_stuck)
 
 
 def test_workers_are_recycled(monkeypatch):

@@ -481,6 +481,7 @@ KINETIC_MOVES = (
 MOVES = "Your working gives {}, which depends on the velocities: a potential energy does not."
 CHECKED = " Its value was graded and is right; a person will check this answer."
 T_READ = "The line that defines `T` was read as your working, not as your answer."
+TV_READ = "The lines that define `T` and `v` were read as your working, not as your answer."
 
 ENERGIES_WORKED = [
     # (submitted, status, feedback): the energies, then a Lagrangian their difference is not; the lines of
@@ -510,7 +511,7 @@ ENERGIES_WORKED = [
      (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
     ("T = m l² θ̇²; L = T − V = ½ m l² θ̇² + m g l cos θ", "undecided", (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
     ("T = 0; L = ½ m l² θ̇² + m g l cos θ", "undecided", (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
-    ("T = ½ m v²; v = 2 l θ̇; L = ½ m l² θ̇² + m g l cos θ", "undecided", (f"{KINETIC_MOVES}{CHECKED}", T_READ)),
+    ("T = ½ m v²; v = 2 l θ̇; L = ½ m l² θ̇² + m g l cos θ", "undecided", (f"{KINETIC_MOVES}{CHECKED}", TV_READ)),
     ("T = ½ m l² θ̇² ⇒ L = m l² θ̇² + m g l cos θ", "not_equivalent",
      ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", KINETIC_MOVES, T_READ)),
     # a V (U) with velocities in it, alone or with a T that makes up for it (before, right)
@@ -524,7 +525,7 @@ ENERGIES_WORKED = [
     ("T = 1/2 m l^2 thetadot^2 => L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "equivalent", ("Correct.", T_READ)),
     ("T = 1/2 m l^2 thetadot^2; L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "equivalent", ("Correct.", T_READ)),
     ("T = ½ m l² θ̇²; L = T − V = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", T_READ)),
-    ("T = ½ m v²; v = l θ̇; L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", T_READ)),
+    ("T = ½ m v²; v = l θ̇; L = ½ m l² θ̇² + m g l cos θ", "equivalent", ("Correct.", TV_READ)),
     ("T = m l² θ̇² ⇒ L = m l² θ̇² + m g l cos θ", "not_equivalent",
      ("A term differs: the velocity-dependent term in θ̇² has the wrong factor.", T_READ)),
     ("V = -m g l cos(theta) => L = 1/2 m l^2 thetadot^2 + m g l cos(theta)", "equivalent",
@@ -834,8 +835,8 @@ ON_THE_WAY = (
 LAGRANGIAN_FROM_H = [
     # (submitted, setting, status, feedback): where H is not the energy (a hoop turned at a fixed rate, where
     # H = T₂ − T₀ + V), L = 2T − H is a false identity on the way to a right value (before, right)
-    (f"L = 2T - H = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = -H + 2*T` {ON_THE_WAY}",)),
-    (f"L = H - 2V = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = H - 2*V` {ON_THE_WAY}",)),
+    (f"L = 2T - H = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = 2T - H` {ON_THE_WAY}",)),
+    (f"L = H - 2V = {L_HOOP}", HOOP_LAGRANGIAN, "undecided", (f"Your answer says `L = H - 2V` {ON_THE_WAY}",)),
     # true on the hoop too: E is T + V, and L = p θ̇ − H is the Legendre transform; and where H is the energy
     (f"L = 2T - E = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),
     (f"L = p_theta thetadot - H = {L_HOOP}", HOOP_LAGRANGIAN, "equivalent", ("Correct.",)),

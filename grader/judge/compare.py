@@ -607,7 +607,7 @@ def _side_misstated(lines: list[str], verdicts: list[Verdict], expected: Expecte
             continue
         read = parse_answer(line, coords=expected.setting.coords, known=names)
         if read.ok and read.kind == "equation" and _wrong_definition(read.value.lhs, read.value.rhs, expected, given):
-            return {"statement": _shown_statement(read.value), "label": unicode_name(read.value.lhs.name)}
+            return {"statement": _quoted(read, read.value), "label": unicode_name(read.value.lhs.name)}
     return None
 
 
@@ -662,7 +662,9 @@ def _as_typed(verdict: Verdict, named: tuple) -> Verdict:
 
     def typed(sentence: str) -> str:
         for name, quotient in named:
-            sentence = sentence.replace(name, quotient)
+            # the name is put in with a space on each side; a side quoted as typed ends (or starts) with it
+            for spaced in (name, name.rstrip(), name.lstrip()):
+                sentence = sentence.replace(spaced, quotient)
         return sentence
 
     return replace(verdict, feedback=tuple(map(typed, verdict.feedback)), notes=tuple(map(typed, verdict.notes)))
@@ -700,13 +702,14 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 answer, stated = _without_stated_definitions(answer, expected)
                 read_notes += stated
                 read_notes += _given_redefined(answer, expected, given, momentum)
-                answer = _with_definitions(_asked_defined_after(answer, expected), expected, deadline)
+                answer = _asked_defined_after(answer, expected)
+                defined, answer = answer, _with_definitions(answer, expected, deadline)
                 read_notes += _energies_disagree(answer, spec, expected, deadline) or _energy_moves(
                     answer, spec, expected, deadline
                 )
                 read_notes += _lagrangian_disagrees(answer, spec, expected, deadline)
                 read_notes += _derived_disagrees(answer, spec, expected)
-                answer, working = _without_working(answer, spec, expected)
+                answer, working = _without_working(answer, spec, expected, defined)
                 read_notes += working
                 energies = _energies_alone(answer, spec, expected, deadline)
                 if energies:
@@ -906,9 +909,16 @@ def _misstated(answer: ParsedAnswer, expected: Expected, given: tuple = ()) -> t
         if _wrong_definition(statement.lhs, statement.rhs, expected, given):
             label = statement.lhs.name
             return (
-                ("statement_for_a_person", {"statement": _shown_statement(statement), "label": unicode_name(label)}),
+                ("statement_for_a_person", {"statement": _quoted(answer, statement), "label": unicode_name(label)}),
             )
     return ()
+
+
+def _quoted(answer: ParsedAnswer, statement: sympy.Eq) -> str:
+    """A line or a chain's side of ``answer`` as a note quotes it: as typed, not in sympy's order of terms
+    (``L = 2T − H``, not L = −H + 2*T); as read back where the checker made it."""
+    typed = answer.as_typed(statement)
+    return shown(typed) if typed is not None else _shown_statement(statement)
 
 
 def _shown_statement(statement: sympy.Eq) -> str:
@@ -1158,10 +1168,10 @@ def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tup
         return answer, ()
     rest = tuple(item for item in items if item not in stated)
     right = [item for item in stated if _energy_multiple(item.rhs, [item.lhs.name], _energy_sums(expected)) == 1]
-    notes = (("definition_left_out", {"line": to_text(right[0])}),) if right else ()
+    notes = (("definition_left_out", {"line": _quoted(answer, right[0])}),) if right else ()
     if len(rest) == 1:
-        return ParsedAnswer(answer.text, rest[0], "equation"), notes
-    return ParsedAnswer(answer.text, rest, "equations"), notes
+        return replace(answer, value=rest[0], kind="equation"), notes
+    return replace(answer, value=rest, kind="equations"), notes
 
 
 def _given_redefined(answer: ParsedAnswer, expected: Expected, given: tuple, momentum: tuple) -> tuple:
@@ -1182,10 +1192,12 @@ def _given_redefined(answer: ParsedAnswer, expected: Expected, given: tuple, mom
         if value is None or any(symbol.name not in expected.names for symbol in item.rhs.free_symbols):
             continue
         if spelt is not None and not _same_value(item.rhs, value, expected):
-            return (("momentum_spelt_for_a_person", {"name": unicode_name(spelt), "definition": to_text(item)}),)
+            return (
+                ("momentum_spelt_for_a_person", {"name": unicode_name(spelt), "definition": _quoted(answer, item)}),
+            )
         if not _same_value(item.rhs, value, expected):
             name = unicode_name(momentum[1] if momentum and item.lhs.name == momentum[0] else item.lhs.name)
-            return (("given_redefined_for_a_person", {"name": name, "definition": to_text(item)}),)
+            return (("given_redefined_for_a_person", {"name": name, "definition": _quoted(answer, item)}),)
     return ()
 
 
@@ -1523,7 +1535,9 @@ def _agrees_at_rest(equation, expected: Expected) -> bool:
     return _same_value(mine * sympy.diff(theirs, acceleration), theirs * sympy.diff(mine, acceleration), expected)
 
 
-def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple]:
+def _without_working(
+    answer: ParsedAnswer, spec: Kind, expected: Expected, typed: ParsedAnswer | None = None
+) -> tuple[ParsedAnswer, tuple]:
     """``T = ½ m l² θ̇²; V = −m g l cos θ; L = ½ m l² θ̇² + m g l cos θ`` for a Lagrangian, or
     ``L = ½ m l² θ̇² + m g l cos θ; m l² θ̈ + m g l sin θ = 0`` for an equation of motion: lines that
     each give a name of its own to a quantity in the problem's names, a name no other line uses, are
@@ -1531,7 +1545,8 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
     must be one, and the answer is the last, named as the answer is (:func:`_names_the_answer`);
     where equations are asked for, the answer is the lines that are not. Where a Lagrangian is asked
     for, the equations of motion derived from it after it (``L = …; m l² θ̈ + m g l sin θ = 0``) are
-    left out too. Returns the answer and the notes naming the lines left out."""
+    left out too. Returns the answer and the notes naming the lines left out, among them the definitions
+    put in place (``typed`` is the answer before, see :func:`_definitions_left_out`) in those lines alone."""
     if answer.kind != "equations" or spec.shape is None or spec.name in ("integer", "number"):
         return answer, ()  # a number's working is read where it is asked for (see read_number)
     items = answer.value
@@ -1548,6 +1563,7 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
     if asked and not (asked[0] == len(items) - 1 and all(named)):  # else the last line, after its working
         graded = items[asked[0]]
         others = [_label_of(item.lhs) for item in items if item is not graded]  # T of 2T = …
+        others += _definitions_left_out(typed, answer, [graded], expected)
         details = {**_lines_defining(others), "name": _label(graded.lhs, expected)}
         multiples = _multiples_of(graded, items)
         if multiples:  # ω₀ = √(g/l); T = 5 ω₀: T may be the answer, with ω₀'s line its definition
@@ -1557,12 +1573,13 @@ def _without_working(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tu
     if spec.shape == "expression":
         if not all(named) or not _names_the_answer(named[-1].name, spec):
             return answer, ()
-        rest, left = [items[-1]], named[:-1]
+        rest, left = [items[-1]], named[:-1] + _definitions_left_out(typed, answer, items[-1:], expected)
     else:
         rest = [item for item, name in zip(items, named, strict=True) if name is None]
         left = [name for name in named if name is not None]
         if not left or not rest or (spec.shape == "equation" and len(rest) != 1):
             return answer, ()
+        left += _definitions_left_out(typed, answer, rest, expected)
     notes = (("working_left_out", _lines_defining(left)), *notes)
     if len(rest) == 1:
         return ParsedAnswer(answer.text, rest[0], "equation"), notes
@@ -1587,6 +1604,37 @@ def _multiples_of(graded, items) -> list[str]:
 
 
 _CYCLE = 1 / (2 * sympy.pi)
+
+
+def _definitions_left_out(
+    typed: ParsedAnswer | None, answer: ParsedAnswer, kept: list, expected: Expected
+) -> list[sympy.Symbol]:
+    """The names of the definitions :func:`_with_definitions` put in place (``typed`` is the answer before)
+    that no line of ``kept`` uses, as typed or through another such definition: ``p_θ = m R² θ̇`` put
+    into ``H = p_θ²/(2 m R²) − …`` is left out with the line of H, and a note names both."""
+    if typed is None or typed.kind != "equations" or typed is answer:
+        return []
+    before, after = list(typed.value), answer.value
+    now = set().union(*(item.free_symbols for item in after))
+    removed, remaining = {}, []
+    for item in before:
+        found = _definition(item, before, expected)
+        if found is not None and found[0] not in now and found[0] not in removed:
+            removed[found[0]] = item
+        else:
+            remaining.append(item)
+    if not removed or len(remaining) != len(after):
+        return []
+    # the kept lines as typed: _with_definitions keeps the others in their order
+    grown = [line for line, item in zip(remaining, after, strict=True) if any(item is k for k in kept)]
+    used: set = set()
+    while grown:
+        names = {
+            name for name in removed for line in grown if name in line.free_symbols or _rates_of(line, name, expected)
+        }
+        grown = [removed[name] for name in names - used]
+        used |= names
+    return [name for name in removed if name not in used]
 
 
 def _lines_defining(names: list) -> dict:

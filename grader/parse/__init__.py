@@ -62,12 +62,15 @@ class ParsedAnswer:
         kind: ``"expression"``, ``"equation"`` or ``"equations"``.
         stated: what a chain said its quantity is on the way to its value, as ``Eq(label, side)``:
             ``L = T − V`` of ``L = T − V = ½ m l² θ̇² + …`` (read as L = ½ m l² θ̇² + …).
+        typed: each of ``stated`` and each equation of a system, with the text it was read from
+            (see :meth:`as_typed`).
     """
 
     text: str
     value: object
     kind: str
     stated: tuple = ()
+    typed: tuple = ()
 
     ok = True
 
@@ -76,6 +79,11 @@ class ParsedAnswer:
         """The symbols the answer uses, in every equation of a system."""
         items = self.value if isinstance(self.value, tuple) else (self.value,)
         return frozenset().union(*(item.free_symbols for item in items))
+
+    def as_typed(self, item: sympy.Eq) -> str | None:
+        """A stated side or an equation of the answer as the student typed it (``L = 2T - H``, where
+        printed it is L = -H + 2*T); None for one the checker made."""
+        return next((text for typed, text in self.typed if typed is item), None)
 
     @cached_property
     def read_as_text(self) -> str:
@@ -139,8 +147,8 @@ def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = (), dead
         return refusal("empty", text)
     try:
         tokens = tokenize(text)
-        stated: list = []
-        value = parse_tokens(tokens, Context.build(coords, known), text, deadline, stated)
+        stated, typed = [], []
+        value = parse_tokens(tokens, Context.build(coords, known), text, deadline, stated, typed)
     except ParseFailure as failure:
         return failure.to_refusal(text)
     except _SYMPY_FAILURES:
@@ -148,7 +156,7 @@ def parse_answer(text: str, *, coords: Iterable = (), known: Iterable = (), dead
     if _has_undefined(value):
         return refusal("undefined_value", text)
     kind = "equations" if isinstance(value, tuple) else "equation" if isinstance(value, sympy.Eq) else "expression"
-    return ParsedAnswer(text, value, kind, tuple(stated))
+    return ParsedAnswer(text, value, kind, tuple(stated), tuple(typed))
 
 
 def _has_undefined(value) -> bool:

@@ -177,11 +177,20 @@ def _built(coords: tuple, known: tuple) -> Context:
     return Context._build(coords, known)
 
 
-def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None, stated: list | None = None):
+def parse_tokens(
+    tokens: list[Token],
+    context: Context,
+    text: str,
+    deadline=None,
+    stated: list | None = None,
+    typed: list | None = None,
+):
     """An expression, an ``Eq``, or a tuple of ``Eq`` (a system), from the tokens of ``text``.
 
     ``stated``, if given, receives the middle sides a chain named what the quantity is, each as
     ``Eq(label, side)``: ``L = T − V`` of ``L = T − V = ½ m l² θ̇² + …``, whose value is the last side.
+    ``typed``, if given, receives each of those and each equation of a system with the text it was read
+    from, as ``(Eq, text)``: what a note quotes back, where a printed Eq would put the terms in sympy's order.
 
     ``deadline``, if given, is asked to ``check()`` before each term and factor is built:
     within the caps, sympy may still take a second to build one (``(l^-100)^(1/3)`` raised
@@ -195,6 +204,8 @@ def parse_tokens(tokens: list[Token], context: Context, text: str, deadline=None
     value = parser.answer()
     if stated is not None:
         stated.extend(parser.stated)
+    if typed is not None:
+        typed.extend(parser.typed)
     return value
 
 
@@ -212,6 +223,7 @@ class _Parser:
         self.splits: dict[str, list | None] = {}
         self.rates: dict[str, tuple[int, int]] = {}  # a name of the answer's own → where its rate is first used
         self.stated: list[sympy.Eq] = []  # the middle sides of chains: see parse_tokens
+        self.typed: list[tuple[sympy.Eq, str]] = []  # see parse_tokens
         self.sums: list[Token] = []  # the sums read, \sum or ∑, but those in a side passed over
         self.summed = False  # whether any sum was read: none may be left in the answer
 
@@ -349,10 +361,10 @@ class _Parser:
 
     def list_of_items(self):
         opener = self.advance()  # [ or {
-        items = [self.item()]
+        items = [self._item_typed()]
         while self.token.is_op(",", ";"):  # [eq₁, eq₂] as Maxima writes it, [eq₁; eq₂] as Matlab does
             self.advance()
-            items.append(self.item())
+            items.append(self._item_typed())
         self.expect(_OPENERS[opener.value], opener)
         return items
 
@@ -363,12 +375,19 @@ class _Parser:
                 self.advance()
             if self.token.kind == "end":
                 break
-            items.append(self.item())
+            items.append(self._item_typed())
             if not (self.token.kind == "sep" or self.token.is_op(";")):
                 break
         if not items:
             self.fail_here()
         return items
+
+    def _item_typed(self):
+        """:meth:`item`, an equation kept with its text in :attr:`typed`."""
+        first, value = found = self.item()
+        if isinstance(value, sympy.Eq):
+            self.typed.append((value, self.text[first.start : self.tokens[self.i - 1].end]))
+        return found
 
     def item(self):
         first, start = self.token, self.i
@@ -400,15 +419,22 @@ class _Parser:
         lhs = label if label is not None else self.over()
         if not self.token.is_op("="):
             return first, lhs
+        named = self.text[first.start : self.tokens[self.i - 1].end]
         self.advance()
         summed = len(self.sums)
+        side = opening = self.token
         rhs = self.side(label)
         while label is not None and self.token.is_op("=") and self._defines(rhs):
             # L = T − V = ½ m l² θ̇² + …: the quantity, its definition, and the answer, which is the last
             # side. Not F = m ẍ = −k x, whose middle side is part of an equation (see _chained).
-            self.stated.append(sympy.Eq(label, rhs, evaluate=False))
+            statement, end = sympy.Eq(label, rhs, evaluate=False), self.tokens[self.i - 1].end
+            # the first as typed, a later one (L = … = T − V = …) after the label
+            typed = self.text[first.start : end] if side is opening else f"{named} = {self.text[side.start : end]}"
+            self.stated.append(statement)
+            self.typed.append((statement, typed))
             self.advance()
             del self.sums[summed:]  # a sum in the definition passed over is read: H = \sum_j p_j \dot q_j - L = …
+            side = self.token
             rhs = self.side(label)
         if self.token.is_op("="):
             equals = self.advance()

@@ -23,6 +23,7 @@ from __future__ import annotations
 import contextlib
 import multiprocessing
 import multiprocessing.forkserver
+import multiprocessing.resource_tracker
 import os
 import queue
 import signal
@@ -36,7 +37,7 @@ from grader.bank import Problem
 from grader.grade.batch import limit_memory
 from grader.grade.part import expected_answer
 from grader.grade.selfcheck import CheckResult, check, find_part
-from grader.interrupt import ctrl_c_deferred, ctrl_c_ignored
+from grader.interrupt import ctrl_c_deferred, ctrl_c_kept_from_children
 
 __all__ = ["CHECKS_PER_WORKER", "GRACE", "OVERRUN", "CheckPool", "PoolBusy"]
 
@@ -122,8 +123,10 @@ class CheckPool:
         self._context = multiprocessing.get_context("forkserver")
         self._context.set_forkserver_preload(["grader.grade.selfcheck"])
         # a Ctrl-C while the fork server loads sympy, a second or two, would print the traceback of an
-        # import it did not need to finish: it ignores Ctrl-C, and ends when this process does
-        with ctrl_c_ignored():
+        # import it did not need to finish: it never gets one, and ends when this process does. The
+        # resource tracker, which the fork server's start would start first, unblocks SIGINT after its own.
+        multiprocessing.resource_tracker.ensure_running()
+        with ctrl_c_kept_from_children():
             multiprocessing.forkserver.ensure_running()
         self._idle: queue.Queue[_Worker] = queue.Queue()
         self._all: set[_Worker] = set()
