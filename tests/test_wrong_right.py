@@ -816,6 +816,21 @@ WORKED_IN_SYMBOLS = [
     ("l = 1 m; T = 2π√(l/g) = 2.006 s", "equivalent",
      ("Correct.", "Graded your final value, `2.006 s`; the working before it is not graded.",
       "Graded `T = 2π√(l/g) = 2.006 s`, your value in s; the rest of your answer (`l = 1 m`) is not graded.")),
+    # a wrong number its working comes to at the student's own values: told so, not that the working does not
+    # hold, nor that the values were not graded (before, both); only the values that differ are named
+    ("T = 2π√(l/g) = 2.837 s, where l = 2 m", "not_equivalent",
+     ("Not within the accepted tolerance.",
+      "Your working holds with the value you gave `l`, not with the one the problem gives.")),
+    ("T = 2π√(l/g) = 1.8 s, where l = 0.9 m and g = 10.9", "not_equivalent",
+     ("Not within the accepted tolerance.",
+      "Your working holds with the values you gave `g` and `l`, not with the ones the problem gives.")),
+    ("T = 2π√(l/g) = 2.837 s, where l = 2 m and g = 9.81", "not_equivalent",
+     ("Not within the accepted tolerance.",
+      "Your working holds with the value you gave `l`, not with the one the problem gives.")),
+    # nor at them: one note on the working, not two (before, the chain's and the where clause's)
+    ("T = 2π√(l/g) = 3.5 s, where l = 2 m", "not_equivalent",
+     ("Not within the accepted tolerance.",
+      "Graded your final value, `3.5 s`; your working, `T = 2π√(l/g) = 3.5 s, where l = 2 m`, does not hold.")),
 ]  # fmt: skip
 
 

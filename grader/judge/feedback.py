@@ -138,6 +138,7 @@ FEEDBACK: dict[str, str] = {
     " from, but that has no value: it divides by zero, or is otherwise undefined. {graded}; a person will"
     " check this answer.",
     "working_false": "Graded your final value, `{value}`; your working, `{working}`, does not hold.",
+    "own_values": "Your working holds with the {values} you gave {names}, not with the {ones} the problem gives.",
     "remark_ignored": "Graded the number `{value}`; what follows it (`{rest}`) is not graded.",
     "number_in_sentence": "Graded the number `{value}`; the words around it are not graded.",
     "uncertainty_left_out": "Read without its uncertainty, `{error}`: the value is what is graded.",

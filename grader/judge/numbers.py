@@ -35,6 +35,7 @@ from grader.judge.feedback import SHOWN, shown
 from grader.judge.units import SI_UNITS, in_units, unit_like, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
+from grader.parse.messages import listed
 from grader.parse.names import GREEK_BY_LETTER, GREEK_NAMES, IMPLYING_WORDS, unicode_name
 
 __all__ = ["COUNT_NAME", "NUMBER_WORDS", "read_number"]
@@ -216,16 +217,40 @@ def _stated_values_false(text: str, answer: ParsedAnswer, reads, names: Collecti
         return notes
     pattern = re.compile(r"(?<![^\W\d_])(?:" + "|".join(map(re.escape, stated)) + r")(?![\w])")
     final = _last_side(answer)
+    held = []
     for side in _sides(text)[0][:_SIDES]:
         if not pattern.search(side) or _QUANTITY.fullmatch(side) or re.search(r"[,;]", side):
             continue  # l = 2 m: the name itself, not working in it; 2 m, g: the end of one statement
         read = reads(side, working=True, stated=tuple(sorted(stated.items())))
         if read is not None and not _agree(_last_side(read), final, count=False):
-            kept = tuple(note for note in notes if note[0] not in _READ_PAST)
+            # one note on the working, the whole of it: the chain's own was the working up to the where
+            kept = tuple(note for note in notes if note[0] not in {"working_false_for_a_person", *_READ_PAST})
             typed = shown(_SENTENCE_END.sub("", text.strip()))
             value = next((details["value"] for key, details in notes if key in _READ_PAST and "value" in details), "")
             return (*kept, ("working_false_for_a_person", {"value": value or answer.text, "working": typed}))
+        if read is not None:
+            held.append(side)
+    if held and any(note[0] == "working_false_for_a_person" for note in notes):
+        # T = 2π√(l/g) = 2.837 s, where l = 2 m: the working holds, at a value the problem does not give
+        own = [name for name in sorted(stated) if not _same_at(held, {name: stated[name]}, reads)]
+        kept = tuple(note for note in notes if note[0] not in {"working_false_for_a_person", *_READ_PAST})
+        names = listed([f"`{unicode_name(name)}`" for name in own])
+        details = {
+            "names": names,
+            "values": "value" if len(own) == 1 else "values",
+            "ones": "one" if len(own) == 1 else "ones",
+        }
+        return (*kept, ("own_values", details)) if own else notes
     return notes
+
+
+def _same_at(sides: list[str], stated: dict, reads) -> bool:
+    """Whether each of ``sides`` comes to the same number at the ``stated`` values as at the problem's."""
+    for side in sides:
+        mine, given = reads(side, working=True, stated=tuple(stated.items())), reads(side, working=True)
+        if mine is None or given is None or not _agree(_last_side(mine), _last_side(given), count=False):
+            return False
+    return True
 
 
 def _count_spelled(text: str) -> str:
