@@ -949,6 +949,12 @@ def test_a_lagrangian_in_the_working_that_does_not_give_the_momentum_goes_to_a_p
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
+def test_the_asked_name_alone_after_a_lagrangian_is_shown_as_typed():
+    # before, read as p_φ = p_φ: the name alone was named as the answer
+    verdict = compare(P_PHI, f"L = {L_SPHERICAL} ⇒ p_phi", kind="expression", **MOMENTUM_SPHERICAL)
+    assert (verdict.status, verdict.read_as) == ("not_equivalent", "p_φ"), verdict
+
+
 PREMISE = (
     "before the equation it gives, as what that equation follows from, but the two do not agree. The equation was"
     " graded and is right; a person will check this answer."

@@ -2431,6 +2431,8 @@ def _working_then_derived(answer, submitted: str, expected: Expected, names: lis
         return answer
     if answer.kind == "expression":
         name = canonical_name(f"p_{momenta[0]}") if momenta else canonical_name(f"Q_{forces[0]}") if forces else "H"
+        if answer.value.has(sympy.Symbol(name)):
+            return answer  # ⇒ p_φ: the name alone, no value, which p_φ = p_φ would not show
         concluded = sympy.Eq(sympy.Symbol(name), answer.value, evaluate=False)
     return ParsedAnswer(submitted, (first.value, concluded), "equations")
 
