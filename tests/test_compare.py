@@ -3664,6 +3664,9 @@ RADIAL_CHOICE = {"kind": "choice", "options": (("a", "$r$"), ("b", r"$\theta$"),
         (HOLONOMY_CHOICE, "b (untrue)"),
         (HOLONOMY_CHOICE, "b (inaccurate)"),
         (HOLONOMY_CHOICE, "b (a trap)"),
+        # a truth taken back denies (before, right)
+        (HOLONOMY_CHOICE, "b (not valid)"),
+        (HOLONOMY_CHOICE, "non-holonomic, which is not accurate"),
         (TIME_CHOICE, "rheonomic is inaccurate"),
         (CYCLIC_CHOICE, "φ is a misconception"),
         (TIME_CHOICE, "rheonomic is false"),
@@ -3715,6 +3718,14 @@ def test_a_hedge_is_refused_whichever_option_it_names_first(options, submitted):
     ("options", "expected", "submitted", "status", "feedback"),
     [
         # a remark or a reason after the option is read past, and said so
+        # a denial taken back affirms (before, refused as a denial: fix-s's words, and wrong, false)
+        (HOLONOMY_CHOICE, "b", "b (no error)", "equivalent", ("Correct.", _past("b", "(no error)"))),
+        (HOLONOMY_CHOICE, "b", "b (not a trap)", "equivalent", ("Correct.", _past("b", "(not a trap)"))),
+        (HOLONOMY_CHOICE, "b", "b, which is no myth", "equivalent", ("Correct.", _past("b", "which is no myth"))),
+        (HOLONOMY_CHOICE, "b", "b (that is not a lie)", "equivalent",
+         ("Correct.", _past("b", "(that is not a lie)"))),
+        (HOLONOMY_CHOICE, "b", "b, without error", "equivalent", ("Correct.", _past("b", "without error"))),
+        (HOLONOMY_CHOICE, "b", "b (not wrong)", "equivalent", ("Correct.", _past("b", "(not wrong)"))),
         (TIME_CHOICE, "b", "b (since the constraint depends on time)", "equivalent",
          ("Correct.", _past("b", "(since the constraint depends on time)"))),
         (TIME_CHOICE, "b", "b, because the hoop turns", "equivalent",
@@ -3880,6 +3891,9 @@ def _not_an_option(typed):
         ("c (invalid)", "equivalent", ("Correct.", _past("c", "(invalid)"))),
         ("c, a misconception", "equivalent", ("Correct.", _past("c", "a misconception"))),
         ("c (a lie)", "equivalent", ("Correct.", _past("c", "(a lie)"))),
+        # a truth taken back is a denial: it names the false option too
+        ("c (not accurate)", "equivalent", ("Correct.", _past("c", "(not accurate)"))),
+        ("c (not true)", "equivalent", ("Correct.", _past("c", "(not true)"))),
         ("a is false", "not_equivalent", ("Not the right choice.",)),
         ("d is wrong", "not_equivalent", ("Not the right choice.",)),
         # true, correct or right of the option: the opposite claim, or no answer
@@ -3892,6 +3906,9 @@ def _not_an_option(typed):
         ("c, which is valid", "invalid", (_hedged("c, which is valid"),)),
         ("c (accurate)", "invalid", (_hedged("c (accurate)"),)),
         ("c (holds)", "invalid", (_hedged("c (holds)"),)),
+        # and a denial taken back says it is true
+        ("c (not false)", "invalid", (_hedged("c (not false)"),)),
+        ("c (no error)", "invalid", (_hedged("c (no error)"),)),
         ("It gives the forces of constraint directly is valid", "invalid",
          (_hedged("It gives the forces of constraint direct"),)),
         ("the correct statement is c", "invalid", (_not_an_option("the correct statement is c"),)),

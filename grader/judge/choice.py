@@ -548,12 +548,20 @@ def _hedges(
     or takes it back (``rheonomic (scleronomic)``, ``φ, θ``, ``b (no)``, ``φ (not φ)``), where it is no
     reason (``φ, because θ appears in L``: a reason may name another option, to say why not). Where no
     option was read, whether the answer names one, and doubts it or names another too (``b or a``).
-    Where the question asks which option is false, ``false`` names it and ``true`` doubts it (``c (true)``)."""
+    Where the question asks which option is false, ``false`` names it and ``true`` doubts it (``c (true)``).
+    A word taken back says the opposite: ``b (no error)``, ``b (not a trap)`` affirm b, and ``b (not valid)``
+    denies it."""
     own = " ".join(texts[label] for label in (labels or texts) if label in texts).lower()  # d) both: no hedge
-    doubts = [found[0].lower() for found in _DOUBT.finditer(submitted)]
-    if asks_false:  # c) false: the claim asked for; c (true), c (correct): it is no answer, or the opposite one
+    # b (no error), b (not a trap): a denial taken back affirms; b (not valid): a truth taken back denies
+    doubts = [found[0].lower() for found in _DOUBT.finditer(submitted) if not _negated_denial(submitted, found)]
+    untrue = [found[0].lower() for found in _TRUE.finditer(submitted) if _negated(submitted, found)]
+    if not asks_false:
+        doubts += [f"not {word}" for word in untrue]
+    else:  # c) false: the claim asked for; c (true), c (correct): it is no answer, or the opposite one
         own += f" {_DENIALS} a lie"
-        doubts += [found[0].lower() for found in _TRUE.finditer(submitted)]
+        doubts = [doubt for doubt in doubts if doubt.split()[-1] not in untrue]  # c (not true): c is false
+        doubts += [found[0].lower() for found in _TRUE.finditer(submitted) if not _negated(submitted, found)]
+        doubts += ["true" for found in _DOUBT.finditer(submitted) if _negated_denial(submitted, found)]
     doubted = any(not re.search(rf"(?<!\w){re.escape(doubt)}(?!\w)", own) for doubt in doubts)
     if labels is None:
         named, _ = _mentioned(submitted, readings, texts)
@@ -584,6 +592,20 @@ _DOUBT = re.compile(
 
 # where the false statement is asked, words that call an option true: "c (valid)", "c, which holds"
 _TRUE = re.compile(r"\b(?:true|correct|right|valid|accurate|holds)\b", re.I)
+# the words that deny an option, of those _DOUBT finds
+_DENIAL = re.compile(rf"(?:false|wrong|incorrect|{'|'.join(_DENIALS.split())}|a\s+lie)", re.I)
+# what takes the word after it back: no error, not a trap, without mistakes, isn't wrong, is no myth
+_NEGATION = re.compile(r"(?:\b(?:no|not|never|without)|n[’']t)\s+(?:an?\s+)?$", re.I)
+
+
+def _negated(text: str, found: re.Match) -> bool:
+    """Whether the word ``found`` in ``text`` is taken back by the words just before it: ``not valid``."""
+    return bool(_NEGATION.search(text[max(0, found.start() - 20) : found.start()]))
+
+
+def _negated_denial(text: str, found: re.Match) -> bool:
+    """Whether ``found`` (of :data:`_DOUBT`) is a denial taken back: ``no error``, ``not a lie``."""
+    return bool(_DENIAL.fullmatch(found[0])) and _negated(text, found)
 
 
 def _remark_pieces(remark: str) -> list[str]:
