@@ -3667,6 +3667,9 @@ RADIAL_CHOICE = {"kind": "choice", "options": (("a", "$r$"), ("b", r"$\theta$"),
         # a truth taken back denies (before, right)
         (HOLONOMY_CHOICE, "b (not valid)"),
         (HOLONOMY_CHOICE, "non-holonomic, which is not accurate"),
+        # another option called right (before, right)
+        (HOLONOMY_CHOICE, "b (a is correct)"),
+        (HOLONOMY_CHOICE, "b, a is valid"),
         (TIME_CHOICE, "rheonomic is inaccurate"),
         (CYCLIC_CHOICE, "φ is a misconception"),
         (TIME_CHOICE, "rheonomic is false"),
@@ -3726,6 +3729,11 @@ def test_a_hedge_is_refused_whichever_option_it_names_first(options, submitted):
          ("Correct.", _past("b", "(that is not a lie)"))),
         (HOLONOMY_CHOICE, "b", "b, without error", "equivalent", ("Correct.", _past("b", "without error"))),
         (HOLONOMY_CHOICE, "b", "b (not wrong)", "equivalent", ("Correct.", _past("b", "(not wrong)"))),
+        # a denial of another option is a reason (before, refused as a doubt of the chosen one)
+        (HOLONOMY_CHOICE, "b", "b (a is untrue)", "equivalent", ("Correct.", _past("b", "(a is untrue)"))),
+        (HOLONOMY_CHOICE, "b", "b, a is wrong", "equivalent", ("Correct.", _past("b", "a is wrong"))),
+        (HOLONOMY_CHOICE, "b", "b, since holonomic is invalid here", "equivalent",
+         ("Correct.", _past("b", "since holonomic is invalid here"))),
         (TIME_CHOICE, "b", "b (since the constraint depends on time)", "equivalent",
          ("Correct.", _past("b", "(since the constraint depends on time)"))),
         (TIME_CHOICE, "b", "b, because the hoop turns", "equivalent",
@@ -3894,6 +3902,12 @@ def _not_an_option(typed):
         # a truth taken back is a denial: it names the false option too
         ("c (not accurate)", "equivalent", ("Correct.", _past("c", "(not accurate)"))),
         ("c (not true)", "equivalent", ("Correct.", _past("c", "(not true)"))),
+        # other options called true are the reason (before, refused as doubting c)
+        ("c, as d holds", "equivalent", ("Correct.", _past("c", "as d holds"))),
+        ("c is false; d is valid", "equivalent", ("Correct.", _past("c", "d is valid"))),
+        ("c, because a, b and d are valid", "equivalent", ("Correct.", _past("c", "because a, b and d are valid"))),
+        # another option called false too (before, right)
+        ("c, a is false too", "invalid", (_hedged("c, a is false too"),)),
         ("a is false", "not_equivalent", ("Not the right choice.",)),
         ("d is wrong", "not_equivalent", ("Not the right choice.",)),
         # true, correct or right of the option: the opposite claim, or no answer

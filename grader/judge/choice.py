@@ -550,18 +550,31 @@ def _hedges(
     option was read, whether the answer names one, and doubts it or names another too (``b or a``).
     Where the question asks which option is false, ``false`` names it and ``true`` doubts it (``c (true)``).
     A word taken back says the opposite: ``b (no error)``, ``b (not a trap)`` affirm b, and ``b (not valid)``
-    denies it."""
+    denies it. A clause about another option is a reason where it says what the question says of options
+    not chosen (``b, a is untrue``; ``c, as d holds``), and a doubt where it says the opposite
+    (``b (a is correct)``)."""
     own = " ".join(texts[label] for label in (labels or texts) if label in texts).lower()  # d) both: no hedge
+
     # b (no error), b (not a trap): a denial taken back affirms; b (not valid): a truth taken back denies
-    doubts = [found[0].lower() for found in _DOUBT.finditer(submitted) if not _negated_denial(submitted, found)]
-    untrue = [found[0].lower() for found in _TRUE.finditer(submitted) if _negated(submitted, found)]
+    # b, a is untrue; c, as d holds: a word about another option, a reason, where it says what the question
+    # says of options not chosen; where it says the opposite (b (a is correct)), a doubt
+    def about_another(found: re.Match) -> bool:
+        return bool(labels) and _about_another(submitted, found, set(labels), readings, texts)
+
+    denials = [found for found in _DOUBT.finditer(submitted) if _DENIAL.fullmatch(found[0])]
+    doubts = [found[0].lower() for found in _DOUBT.finditer(submitted) if not _DENIAL.fullmatch(found[0])]
+    truths = list(_TRUE.finditer(submitted))
+    untrue = [found[0].lower() for found in truths if _negated(submitted, found)]
     if not asks_false:
+        doubts += [found[0].lower() for found in denials if not _negated(submitted, found) and not about_another(found)]
         doubts += [f"not {word}" for word in untrue]
+        doubts += ["true" for found in truths if not _negated(submitted, found) and about_another(found)]
     else:  # c) false: the claim asked for; c (true), c (correct): it is no answer, or the opposite one
         own += f" {_DENIALS} a lie"
         doubts = [doubt for doubt in doubts if doubt.split()[-1] not in untrue]  # c (not true): c is false
-        doubts += [found[0].lower() for found in _TRUE.finditer(submitted) if not _negated(submitted, found)]
-        doubts += ["true" for found in _DOUBT.finditer(submitted) if _negated_denial(submitted, found)]
+        doubts += [found[0].lower() for found in truths if not _negated(submitted, found) and not about_another(found)]
+        doubts += ["true" for found in denials if _negated(submitted, found)]
+        doubts += ["another" for found in denials if not _negated(submitted, found) and about_another(found)]
     doubted = any(not re.search(rf"(?<!\w){re.escape(doubt)}(?!\w)", own) for doubt in doubts)
     if labels is None:
         named, _ = _mentioned(submitted, readings, texts)
@@ -603,9 +616,26 @@ def _negated(text: str, found: re.Match) -> bool:
     return bool(_NEGATION.search(text[max(0, found.start() - 20) : found.start()]))
 
 
-def _negated_denial(text: str, found: re.Match) -> bool:
-    """Whether ``found`` (of :data:`_DOUBT`) is a denial taken back: ``no error``, ``not a lie``."""
-    return bool(_DENIAL.fullmatch(found[0])) and _negated(text, found)
+def _about_another(text: str, found: re.Match, labels: set[str], readings, texts: dict[str, str]) -> bool:
+    """Whether the clause of ``text`` the word ``found`` stands in says it of an option not among ``labels``,
+    and of none of them: ``a is untrue``, ``since holonomic is invalid here``, ``b and d are valid``."""
+    start = max(text.rfind(mark, 0, found.start()) for mark in _CLAUSE_MARKS) + 1
+    ends = [end for end in (text.find(mark, found.end()) for mark in _CLAUSE_MARKS) if end >= 0]
+    clause = _CLAUSE_OPENING.sub("", text[start : min(ends, default=len(text))])
+    subject = _SUBJECT.match(clause)
+    named = (
+        set(_LABEL.findall(subject[1].lower())) & texts.keys() if subject else _mentioned(clause, readings, texts)[0]
+    )
+    return bool(named) and not named & labels
+
+
+_CLAUSE_MARKS = (",", ";", ":", "(", ")", "—", "–")
+_CLAUSE_OPENING = re.compile(r"^\s*(?:(?:since|because|as|and|but|while|whereas|though|although|so)\b\s*)*", re.I)
+# the options a clause is about, by their labels: a is …, b and d are …, d holds, b would be …
+_SUBJECT = re.compile(
+    r"\s*(?:options?\s+)?([a-z](?:\s*(?:,|and|or)\s*[a-z])*)\s+(?:is|are|was|were|would|holds?|seems?)\b", re.I
+)
+_LABEL = re.compile(r"\b[a-z]\b")
 
 
 def _remark_pieces(remark: str) -> list[str]:
