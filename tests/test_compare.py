@@ -6459,3 +6459,28 @@ _HOOP_H_LINE = "H = p_θ²/(2 m R²) − ½ m R² ω² sin²θ − m g R cos θ"
 def test_a_definition_put_into_a_line_left_out_is_named_as_left_out(submitted, kind, expected, notes):
     verdict = compare(expected, submitted, kind=kind, **HOOP)
     assert (verdict.status, verdict.notes) == ("equivalent", notes), verdict
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "kind", "status", "feedback"),
+    [
+        # values for the problem's constants after a formula say where it will be used: left out (before, put
+        # in, they made ω a number and its label undefined, and a right answer scored 0)
+        ("sqrt(g/l)", "ω = √(g/l), where g = 9.81 m/s²", "expression", "equivalent",
+         ("Correct.", "Read without the value you gave `g`: the formula is what is graded.")),
+        ("sqrt(g/l)", "ω = √(g/l), with l = 1 m and g = 9.81 m/s^2", "expression", "equivalent",
+         ("Correct.", "Read without the values you gave `g` and `l`: the formula is what is graded.")),
+        ("sqrt(g/l)", "ω = √(l/g), where g = 9.81", "expression", "not_equivalent",
+         ("Your answer depends on g and l, but not as the right answer does: check how it depends on each.",
+          "Read without the value you gave `g`: the formula is what is graded.")),
+        (L_PENDULUM, f"L = {L_PENDULUM}, where m = 1 kg", "lagrangian", "equivalent",
+         ("Correct.", "Read without the value you gave `m`: the formula is what is graded.")),
+        # a value for a coordinate is no constant's: as before
+        ("sqrt(g/l)", "ω = √(g/l), where θ = 0.1", "expression", "not_equivalent",
+         ("Your answer uses `ω`, which this problem does not define (it uses g, l, m, θ). Write your answer in those,"
+          " or say what it stands for: …, where ω = ….",)),
+    ],
+)  # fmt: skip
+def test_values_given_the_problems_constants_after_a_formula_are_left_out(expected, submitted, kind, status, feedback):
+    verdict = compare(expected, submitted, kind=kind, **PENDULUM)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict

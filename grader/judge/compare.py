@@ -701,6 +701,8 @@ def _judge(spec: Kind, expected: Expected, submitted: str, timeout: float, given
                 read_notes += _misstated(answer, expected, given)
                 answer, stated = _without_stated_definitions(answer, expected)
                 read_notes += stated
+                answer, values = _without_given_values(answer, spec, expected)
+                read_notes += values
                 read_notes += _given_redefined(answer, expected, given, momentum)
                 answer = _asked_defined_after(answer, expected)
                 defined, answer = answer, _with_definitions(answer, expected, deadline)
@@ -1172,6 +1174,33 @@ def _without_stated_definitions(answer: ParsedAnswer, expected: Expected) -> tup
     if len(rest) == 1:
         return replace(answer, value=rest[0], kind="equation"), notes
     return replace(answer, value=rest, kind="equations"), notes
+
+
+def _without_given_values(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[ParsedAnswer, tuple]:
+    """``ω = √(g/l), where g = 9.81 m/s²``: where a formula is asked, lines after the first that give the
+    problem's constants the values they take (a number, perhaps with its unit) say where the formula will be
+    used, and are left out with a note; put in, they made the formula a number, and its label undefined.
+    A number's working at the values an answer gives is read where a number is asked (grader.judge.numbers)."""
+    if answer.kind != "equations" or spec.name in ("integer", "number"):
+        return answer, ()
+    first, *rest = answer.value
+    values = [item for item in rest if _gives_a_constant(item, expected)]
+    if not values:
+        return answer, ()
+    kept = (first, *(item for item in rest if item not in values))
+    names = [item.lhs.name for item in values]
+    note = ("values_left_out", {"names": _listing(names), "values": "value" if len(names) == 1 else "values"})
+    if len(kept) == 1:
+        return replace(answer, value=first, kind="equation"), (note,)
+    return replace(answer, value=kept, kind="equations"), (note,)
+
+
+def _gives_a_constant(item, expected: Expected) -> bool:
+    """Whether a line gives one of the problem's constants a number: ``g = 9.81 m/s²``, ``l = 1``."""
+    if not (item.lhs.is_Symbol and item.lhs.name in expected.names) or expected.setting.is_state(item.lhs):
+        return False
+    value = in_units(item.rhs)
+    return value is not None and value[0].is_number
 
 
 def _given_redefined(answer: ParsedAnswer, expected: Expected, given: tuple, momentum: tuple) -> tuple:

@@ -62,6 +62,7 @@ FEEDBACK: dict[str, str] = {
     "steps_left_out": "Read without the step{s} `{steps}`: a derivative written out is not checked; the last side"
     " was graded.",
     "step_for_a_person": "Its last side is right; a person will check the step that defines it.",
+    "values_left_out": "Read without the {values} you gave {names}: the formula is what is graded.",
     "definition_left_out": "The line `{line}` states what the name means; the line that gives its value was graded.",
     "others_left_out": "The {lines} {names} {were} not graded: {name} is what is asked for here.",
     "others_for_a_person": "The {lines} {names} {were} not graded: {name} is what is asked for here. But your"
