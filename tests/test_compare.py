@@ -3700,6 +3700,14 @@ def test_an_option_hedged_doubted_or_denied_is_refused_and_one_asked_for(options
     assert (verdict.status, verdict.score, verdict.feedback) == ("invalid", 0.0, (_hedged(submitted),))
 
 
+def test_a_long_hedged_choice_is_repeated_cut_short_as_every_note_cuts_one():
+    # before, cut at 40 characters, mid-word and with no "…"
+    verdict = compare(
+        "b", "non-holonomic; but the surface constraint is maybe not valid once it leaves", **HOLONOMY_CHOICE
+    )
+    assert verdict.feedback == (_hedged("non-holonomic; but the surface constraint is maybe not vali…"),)
+
+
 @pytest.mark.parametrize(
     ("options", "submitted"),
     [
@@ -3924,7 +3932,7 @@ def _not_an_option(typed):
         ("c (not false)", "invalid", (_hedged("c (not false)"),)),
         ("c (no error)", "invalid", (_hedged("c (no error)"),)),
         ("It gives the forces of constraint directly is valid", "invalid",
-         (_hedged("It gives the forces of constraint direct"),)),
+         (_hedged("It gives the forces of constraint directly is valid"),)),
         ("the correct statement is c", "invalid", (_not_an_option("the correct statement is c"),)),
         # hedges stay hedges
         ("c is false, but maybe d", "invalid", (_hedged("c is false, but maybe d"),)),
@@ -4001,7 +4009,7 @@ PENDULUM_MEANINGS = (
          ("Correct.", "Read as the option you wrote out: b.")),
         ("the polar angle φ", PENDULUM_MEANINGS, "invalid", (_hedged("the polar angle φ"),)),
         ("the azimuthal angle (maybe the polar angle)", PENDULUM_MEANINGS, "invalid",
-         (_hedged("the azimuthal angle (maybe the polar ang"),)),
+         (_hedged("the azimuthal angle (maybe the polar angle)"),)),
         # no guess: a word of the description alone, a head two symbols share, a symbol no option
         ("azimuthal", PENDULUM_MEANINGS, "invalid", ("`azimuthal` is not one of the options (a, b, c, d).",)),
         ("the angle", PENDULUM_MEANINGS, "invalid", ("`the angle` is not one of the options (a, b, c, d).",)),

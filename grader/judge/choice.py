@@ -83,8 +83,8 @@ def check_choice(expected: Expected, submitted: str, deadline: Deadline) -> Outc
 
 
 def _typed(submitted) -> str:
-    """A choice answer as a refusal repeats it: its start, as typed."""
-    return f"`{submitted.strip()[:40]}`" if isinstance(submitted, str) and submitted.strip() else "This"
+    """A choice answer as a refusal repeats it: as typed, cut short with "…" as every note cuts it."""
+    return f"`{shown(submitted.strip())}`" if isinstance(submitted, str) and submitted.strip() else "This"
 
 
 def _reading_notes(reading: _Reading) -> tuple:
