@@ -220,6 +220,18 @@ PERIOD = "2*pi*sqrt(1/9.81)"  # seconds, for l = 1 m
          "Graded the number `2.5 s`; what follows it (`to 4 figures`) is not graded."), "2.5"),
         ("2.01 s to 3 s.f.", "equivalent",
          ("Correct.", "Graded the number `2.01 s`; what follows it (`to 3 s.f.`) is not graded."), "2.01"),
+        # and without "to" (review-o: before, refused, `.p` read as attribute access)
+        ("2.006 s (3 d.p.)", "equivalent",
+         ("Correct.", "Graded the number `2.006 s`; what follows it (`(3 d.p.)`) is not graded."), "2.006"),
+        ("2.006 s, 4 s.f.", "equivalent",
+         ("Correct.", "Graded the number `2.006 s`; what follows it (`4 s.f.`) is not graded."), "2.006"),
+        ("2.006 s (3dp)", "equivalent",
+         ("Correct.", "Graded the number `2.006 s`; what follows it (`(3dp)`) is not graded."), "2.006"),
+        ("2.006 s, accurate to 3 decimal places", "equivalent",
+         ("Correct.", "Graded the number `2.006 s`; what follows it (`accurate to 3 decimal places`) is not graded."),
+         "2.006"),
+        ("2.5 s (3 d.p.)", "not_equivalent", ("Not within the accepted tolerance.",
+         "Graded the number `2.5 s`; what follows it (`(3 d.p.)`) is not graded."), "2.5"),
     ],
 )  # fmt: skip
 def test_a_number_may_carry_the_unit_it_is_asked_in(submitted, status, feedback, read_as):

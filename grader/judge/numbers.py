@@ -128,8 +128,8 @@ _PRONOUN_ONE = re.compile(r"\b(?:the|a|this|that|which|each|any|every|no)\s+$", 
 _FIRST_WORD = re.compile(r"[(\[]?\s*([^\W\d_]+)\b\.?(?!\w)")  # the word a remark begins with, where it may be a unit
 _UNIT_WORDS = {"sec", "secs", "msec", "msecs"}  # seconds, not remarks, where no unit is asked for
 _PRECISION = re.compile(
-    r"(?:(?:rounded|correct|given)\s+)?(?:to|at)\s+[0-9]{1,2}\s+(?:significant\s+|sig\.?\s+)?"
-    r"(?:figures|digits|decimal\s+places|decimals|sig\.?\s*figs?|s\.?\s?f\.?|d\.?\s?p\.?)[)\].]?\s*",
+    r"(?:(?:rounded|correct|accurate|given)\s+)?(?:(?:to|at)\s+)?[0-9]{1,2}\s*(?:significant\s+|sig\.?\s+)?"
+    r"(?:figures?|digits?|decimal\s+places?|decimals|sig\.?\s*figs?|s\.?\s?f\.?|d\.?\s?p\.?)[)\].]?\s*",
     re.I,
 )
 _PER_CENT = re.compile(r"%|\bper\s*cent\b", re.I)
