@@ -840,6 +840,22 @@ def test_working_in_names_the_problem_gives_values_is_read_at_them(submitted, st
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
 
 
+@pytest.mark.parametrize(
+    ("submitted", "status", "feedback"),
+    [
+        # the asked quantity given another value beside the one graded (before, right)
+        ("2.006 s, where T = 3.13 s", "undecided",
+         ("Your final value, `2.006 s`, was graded and is right, but your working, `2.006 s, where T = 3.13 s`,"
+          " does not hold: a person will check this answer.",)),
+        ("2.006 s, where T = 2.006 s", "equivalent",
+         ("Correct.", "Graded the number `2.006 s`; what follows it (`where T = 2.006 s`) is not graded.")),
+    ],
+)  # fmt: skip
+def test_the_asked_quantity_given_another_value_beside_the_number_goes_to_a_person(submitted, status, feedback):
+    verdict = compare(PERIOD, submitted, kind="number", rtol=0.005, unit="s", name=["T"], **GIVEN_VALUES)
+    assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
 L_HOOP = "1/2 m R^2 thetadot^2 + 1/2 m R^2 omega^2 sin(theta)^2 + m g R cos(theta)"
 HOOP_LAGRANGIAN = {**HOOP, "h_is_energy": False}
 ON_THE_WAY = (

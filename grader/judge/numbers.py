@@ -181,7 +181,7 @@ def read_number(
         text, reads, names, decimal_comma=decimal_comma, unit=unit, uncertainty=uncertainty, count=count, asked=asked
     )
     if answer is not None and unit and not count and not any(note[0] in _FOR_A_PERSON for note in notes):
-        notes = _stated_values_false(text, answer, reads, names, notes)
+        notes = _stated_values_false(text, answer, reads, names, notes, asked)
     lines = _lines(text) if len(text) <= _LENGTH and _SEPARATED.search(text) else [text]
     said = lines[0] if len(lines) == 1 else text
     ruled_out = _ruled_out(said) if count else None
@@ -198,25 +198,32 @@ _READ_PAST = frozenset({"final_value", "remark_ignored", "statements_left_out", 
 _STATED_TRIED = 4
 
 
-def _stated_values_false(text: str, answer: ParsedAnswer, reads, names: Collection[str], notes: tuple) -> tuple:
+def _stated_values_false(
+    text: str, answer: ParsedAnswer, reads, names: Collection[str], notes: tuple, asked: Collection[str] = ()
+) -> tuple:
     """``notes``, or where the answer gives the problem's names values of its own (``T = 2π√(l/g) = 2.006 s,
     where l = 2 m``) at which its working does not come to the value graded, the note that sends it to a
-    person: read past, the values were the ones the problem gives, and the working held."""
+    person: read past, the values were the ones the problem gives, and the working held. So too where it
+    gives the asked quantity (``asked``) another value (``2.006 s, where T = 3.13 s``)."""
     if len(text) > _LENGTH:
         return notes
     stated = {}
+    final = _last_side(answer)
     for found in list(_STATED_VALUE.finditer(text))[:_STATED_TRIED]:
-        if found[1] not in names:
-            continue
-        read = parse_answer(found[2])
-        value = in_units(read.value) if read.ok and read.kind == "expression" else None
+        read = parse_answer(found[2]) if found[1] in names or found[1] in asked else None
+        value = in_units(read.value) if read is not None and read.ok and read.kind == "expression" else None
         if value is None or not value[0].is_number:
+            continue
+        if found[1] not in names:  # the asked quantity's own value: the one graded, or another
+            if not _agree(read.value, final, count=False):
+                kept = tuple(note for note in notes if note[0] not in {"working_false_for_a_person", *_READ_PAST})
+                typed = shown(_SENTENCE_END.sub("", text.strip()))
+                return (*kept, ("working_false_for_a_person", {"value": shown(answer.text), "working": typed}))
             continue
         stated[found[1]] = float(value[0] * sympy.Rational(value[1]))
     if not stated:
         return notes
     pattern = re.compile(r"(?<![^\W\d_])(?:" + "|".join(map(re.escape, stated)) + r")(?![\w])")
-    final = _last_side(answer)
     held = []
     for side in _sides(text)[0][:_SIDES]:
         if not pattern.search(side) or _QUANTITY.fullmatch(side) or re.search(r"[,;]", side):
