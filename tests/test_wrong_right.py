@@ -376,6 +376,22 @@ COUNTS_SAID_OTHERWISE = [
     ("2", "2 (6 coordinates)", "equivalent", "Correct."),  # what it was counted from
     ("2", "2 (one coordinate for each bob)", "equivalent", "Correct."),
     ("2", "2 (θ₁ and θ₂, both from the vertical)", "equivalent", "Correct."),
+    # another or a second implies the first (before, right), a triple is no one coordinate, and a coordinate
+    # said to be fixed, or needed only if something varied, is none counted
+    ("2", "2 (another angle for the second bob)", "equivalent", "Correct."),
+    ("2", "2 (a second angle for the second bob)", "equivalent", "Correct."),
+    ("2", "2 (θ₁ for the first bob and another for the second)", "equivalent", "Correct."),
+    ("6", "6 (a second triple for rotation)", "equivalent", "Correct."),
+    ("1", "1 (θ — φ is fixed by the plane)", "equivalent", "Correct."),
+    ("1", "1 (θ and φ fixed)", "equivalent", "Correct."),
+    ("1", "1: θ (φ fixed)", "equivalent", "Correct."),
+    ("1", "1 (another would be needed if l varied)", "equivalent", "Correct."),
+    ("1", "1 (θ, with φ and r fixed)", "equivalent", "Correct."),
+    # but not one said to be free, or needed with no condition: as before
+    ("1", "1 (θ and φ no longer fixed)", "undecided",
+     f"Your number `1` comes with `(θ and φ no longer fixed)`, {QUALIFIED}"),
+    ("1", "1 (θ and another would be needed)", "undecided",
+     f"Your number `1` comes with `(θ and another would be needed)`, {QUALIFIED}"),
     # a count worked from others, what it counts, and how many things it was counted from: as before
     ("2", "2 (θ₁, θ₂)", "equivalent", "Correct."),
     ("1", "1 (θ)", "equivalent", "Correct."),

@@ -1041,23 +1041,35 @@ def _counts_other(number: str, rest: str, names: Collection[str]) -> bool:
     listed = _names_listed(rest, names)
     if listed:  # 1 (θ and φ), 1 dof: θ and r, 2 (θ): more or fewer coordinates named than counted
         return number.isdigit() and len(listed) != int(number)
-    named = _coordinates_named(rest) if number.isdigit() else 0
-    if named and named != int(number):  # 1 (θ) and one for φ, 1, and another for φ, 2 (θ₁ only), 1 (both angles)
-        return True
+    named, exact = _coordinates_named(rest) if number.isdigit() else (0, False)
+    if named > int(number) or (exact and named and named != int(number)):
+        return True  # 1 (θ) and one for φ, 1, and another for φ, 2 (θ₁ only), 1 (both angles)
     counted = _counted(f"{number} {rest}", names) if number.isdigit() else None
     return counted is not None and counted[1] and counted[0] != int(number)
 
 
-def _coordinates_named(rest: str) -> int:
-    """How many coordinates words after a count name, where they are no list (:func:`_names_listed`): its
-    Greek letters (``θ``, ``phi_2``), each once; two for ``both angles``; and one more for each ``another`` or
-    ``a second`` (``1, and another for φ``). 0 where they name none, or hold a count of their own in digits
-    (``6 (3 translations + 3 rotations: φ, θ, ψ)`` names the rotations only: a breakdown, see :func:`_breaks_down`)."""
+def _coordinates_named(rest: str) -> tuple[int, bool]:
+    """How many coordinates words after a count name, where they are no list (:func:`_names_listed`), and
+    whether that is all of them: its Greek letters (``θ``, ``phi_2``), each once, and two for ``both angles``,
+    are all; ``another`` or ``a second`` (``2 (another angle for the second bob)``) adds one to one it implies,
+    and says no more than that there are at least so many (``6 (a second triple for rotation)``). Not those
+    said to be fixed or that would be needed only if something were otherwise (``1 (θ — φ is fixed)``,
+    ``1 (another would be needed if l varied)``). 0 where they name none, or hold a count of their own in
+    digits (``6 (3 translations + 3 rotations: φ, θ, ψ)`` names the rotations only: a breakdown, see
+    :func:`_breaks_down`)."""
     if _NUMBER.search(rest):
-        return 0
-    greek = {token.lower() for token in _COORDINATE_WORD.findall(rest) if _is_greek(token)}
-    more = len(_ANOTHER.findall(rest))
-    return max(len(greek), 1 + more if more else 0, 2 if _BOTH.search(rest) else 0)
+        return 0, False
+    greek, more, both = set(), 0, False
+    for clause in _CLAUSE.split(rest):
+        whole = _NOT_COUNTED.search(clause) and _ALL_NOT_COUNTED.search(clause)
+        for part in _AND.split(clause):
+            if whole or _NOT_COUNTED.search(part):
+                continue  # θ and φ fixed: θ, and φ fixed; with φ and r fixed: neither
+            greek |= {token.lower() for token in _COORDINATE_WORD.findall(part) if _is_greek(token)}
+            more += len(_ANOTHER.findall(part))
+            both = both or _BOTH.search(part) is not None
+    named = max(len(greek), 1 + more if more else 0, 2 if both else 0)
+    return named, bool(greek or both)
 
 
 def _is_greek(token: str) -> bool:
@@ -1067,7 +1079,18 @@ def _is_greek(token: str) -> bool:
 
 
 _COORDINATE_WORD = re.compile(r"(?<![\\\w])[^\W\d_][\w₀-₉']*")  # θ₁, theta_1, and words, of which the Greek count
-_ANOTHER = re.compile(r"\b(?:another|(?:a|the)\s+second|one\s+more)\b", re.I)  # a coordinate added to the count
+# a coordinate added to the count; not the second bob, whose coordinate it is
+_ANOTHER = re.compile(r"\b(?:another|a\s+second|the\s+second\s+(?:angle|coordinate|one)|one\s+more)\b", re.I)
+_CLAUSE = re.compile(r"[,;:()\[\]—–]|\s-\s|\b(?:but|while|whereas)\b", re.I)
+_AND = re.compile(r"\band\b", re.I)
+# a coordinate that is not one the count counts: φ fixed, r = l constant, another would be needed if l varied;
+# not φ no longer fixed, which says it is one
+_NOT_COUNTED = re.compile(
+    r"(?<!\bnot\s)(?<!n't\s)(?<!\bno\s)(?<!\blonger\s)\b(?:fixed|constant|const|held|frozen)\b"
+    r"|\b(?:if|unless|otherwise)\b",
+    re.I,
+)
+_ALL_NOT_COUNTED = re.compile(r"^\s*(?:with|keeping|holding)\b|\b(?:are|both)\s+(?:fixed|constant|held)\b", re.I)
 _BOTH = re.compile(r"\bboth\s+(?:the\s+)?(?:angles|coordinates)\b", re.I)
 
 
