@@ -1098,3 +1098,25 @@ PREMISES_OF_A_LAGRANGIAN = [
 def test_a_lagrangian_after_a_step_from_another_goes_to_a_person(submitted, status, feedback):
     verdict = compare(L_PENDULUM, submitted, kind="lagrangian", **PENDULUM)
     assert (verdict.status, verdict.feedback) == (status, feedback), verdict
+
+
+QUALIFIED = "which may make it another number, or no one number: a person will decide what your answer is."
+
+
+@pytest.mark.parametrize(
+    ("expected", "submitted", "words"),
+    [
+        # a count per thing beside the count: for a person, who reads whether it is the total (before, refused
+        # as words in a formula, and a right count scored 0 in a batch)
+        ("15", "15 (3 per particle)", "per"),
+        ("15", "15, 3 for each particle", "for each"),
+        ("2", "2, one angle per bob", "per"),
+        ("2", "2 (one angle each)", "each"),
+    ],
+)
+def test_a_count_with_a_count_per_thing_beside_it_goes_to_a_person(expected, submitted, words):
+    verdict = compare(expected, submitted, kind="integer", name="n")
+    assert (verdict.status, verdict.feedback[0]) == (
+        "undecided",
+        f"Your number `{expected}` comes with `{words}`, {QUALIFIED}",
+    ), verdict

@@ -1363,6 +1363,8 @@ def _is_remark(rest: str, names: Collection[str], number: str = "", unit: str = 
     words = rest.lstrip("([{,:;–—- ")
     if _PRECISION.fullmatch(words):
         return True  # 2.006 s, to 4 figures: how it was rounded, whose digit is no other number
+    if _RATE_REMARK.fullmatch(words):
+        return True  # 15 (3 per particle), 2, one angle per bob: what each thing counts, no other number
     if not words or words[0] in "0123456789." or words.rstrip(".").lower() in _UNIT_WORDS:
         return False  # 2,01, 3 is a list; 2 sec a unit
     if _PER_CENT.search(words):
@@ -1406,6 +1408,12 @@ def _as_count(word: re.Match) -> str:
 
 # "one coordinate for each bob": a count per thing, not another number for the answer ("one angle per
 # rod" stays a hedge: per is a word of arithmetic, as in kg per m)
+# a remark that is a count per thing: 3 per particle, one angle each, 3 for each particle
+_RATE_REMARK = re.compile(
+    r"(?:[0-9]{1,2}|one|two|three|four|five|six)\s+(?:[A-Za-z]+\s+)?"
+    r"(?:(?:per|for\s+each|for\s+every|on\s+each)\s+[A-Za-z]+|each)\s*[)\].]?\s*",
+    re.I,
+)
 _PER_EACH = re.compile(r"\bone\s+[A-Za-z]+\s+(?:for\s+each|for\s+every|on\s+each)\b", re.I)
 _REPEATED = re.compile(r"\(\s*([0-9]+)\s*\)\.?")
 _BRACKETED = re.compile(r"\(([^()]{1,120})\)\.?")
