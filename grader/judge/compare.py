@@ -1287,20 +1287,27 @@ def _with_definitions(answer: ParsedAnswer, expected: Expected, deadline) -> Par
     return ParsedAnswer(answer.text, tuple(items), "equations")
 
 
+def _energy_lines(answer: ParsedAnswer, spec: Kind, expected: Expected) -> tuple[dict, list]:
+    """The sums of the energies that name a quantity (L = T − V …), and the lines of ``answer`` that name one,
+    where working may give energies before it: a system, where a Lagrangian or an expression is asked, in a
+    problem that does not use T, V, L or H as its own names. ({}, []) where not."""
+    if (
+        answer.kind != "equations"
+        or spec.name not in ("lagrangian", "expression")
+        or _DEFINING_LETTERS & expected.names
+    ):
+        return {}, []
+    sums = _energy_sums(expected)
+    return sums, [item for item in answer.value if item.lhs.is_Symbol and item.lhs.name in sums]
+
+
 def _energies_disagree(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline) -> tuple:
     """``T = m l² θ̇²; V = −m g l cos θ; L = T − V = ½ m l² θ̇² + m g l cos θ``: lines of working that give
     the energies, then the Lagrangian (or H or E, where they are T + V) with a value that their difference
     (sum) is not. The value may be right, but the working says otherwise, as a chain's wrong earlier side
     does: a note for a person. None where the energies come to it, are the problem's names, or cannot be
     compared."""
-    if (
-        answer.kind != "equations"
-        or spec.name not in ("lagrangian", "expression")
-        or _DEFINING_LETTERS & expected.names
-    ):
-        return ()
-    sums = _energy_sums(expected)
-    named = [item for item in answer.value if item.lhs.is_Symbol and item.lhs.name in sums]
+    sums, named = _energy_lines(answer, spec, expected)
     if len(named) != 1:
         return ()
     (last,) = named  # L = T − V = …, where T = …: the energies may come after it
@@ -1334,15 +1341,8 @@ def _energy_moves(answer: ParsedAnswer, spec: Kind, expected: Expected, deadline
     (:func:`_energies_disagree`). Where the expected value has a term linear in the velocities, it may be a
     potential's (q A·v of a charge in a magnetic field), so only what is not linear in them is told. None
     where the working is not so, holds names of the student's own, or cannot be judged."""
-    if (
-        answer.kind != "equations"
-        or spec.name not in ("lagrangian", "expression")
-        or _DEFINING_LETTERS & expected.names
-    ):
-        return ()
-    sums = _energy_sums(expected)
+    sums, named = _energy_lines(answer, spec, expected)
     asked = {"L"} if spec.name == "lagrangian" else set(expected.option("name") or ())
-    named = [item for item in answer.value if item.lhs.is_Symbol and item.lhs.name in sums]
     if len(named) != 1 or named[0].lhs.name not in asked:
         return ()
     (last,), label = named, named[0].lhs.name
