@@ -241,9 +241,8 @@ def _stated_values_false(
         # T = 2π√(l/g) = 2.837 s, where l = 2 m: the working holds, at a value the problem does not give
         own = [name for name in sorted(stated) if not _same_at(held, {name: stated[name]}, reads)]
         kept = tuple(note for note in notes if note[0] not in {"working_false_for_a_person", *_READ_PAST})
-        names = listed([f"`{unicode_name(name)}`" for name in own])
         details = {
-            "names": names,
+            "names": listed([f"`{unicode_name(name)}`" for name in own]),
             "values": "value" if len(own) == 1 else "values",
             "ones": "one" if len(own) == 1 else "ones",
         }
