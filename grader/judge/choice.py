@@ -555,26 +555,28 @@ def _hedges(
     (``b (a is correct)``)."""
     own = " ".join(texts[label] for label in (labels or texts) if label in texts).lower()  # d) both: no hedge
 
-    # b (no error), b (not a trap): a denial taken back affirms; b (not valid): a truth taken back denies
-    # b, a is untrue; c, as d holds: a word about another option, a reason, where it says what the question
-    # says of options not chosen; where it says the opposite (b (a is correct)), a doubt
-    def about_another(found: re.Match) -> bool:
-        return bool(labels) and _about_another(submitted, found, set(labels), readings, texts)
+    def said_of(found: re.Match) -> str:
+        """Of what the denial or truth word ``found`` is said: taken ``back`` (b (no error), b (not valid)), of
+        ``another`` option and of none chosen (b, a is untrue; c, as d holds), or of the ``chosen`` one."""
+        if _negated(submitted, found):
+            return "back"
+        return "another" if labels and _about_another(submitted, found, set(labels), readings, texts) else "chosen"
 
-    denials = [found for found in _DOUBT.finditer(submitted) if _DENIAL.fullmatch(found[0])]
-    doubts = [found[0].lower() for found in _DOUBT.finditer(submitted) if not _DENIAL.fullmatch(found[0])]
-    truths = list(_TRUE.finditer(submitted))
-    untrue = [found[0].lower() for found in truths if _negated(submitted, found)]
-    if not asks_false:
-        doubts += [found[0].lower() for found in denials if not _negated(submitted, found) and not about_another(found)]
-        doubts += [f"not {word}" for word in untrue]
-        doubts += ["true" for found in truths if not _negated(submitted, found) and about_another(found)]
+    matches = list(_DOUBT.finditer(submitted))
+    doubts = [found[0].lower() for found in matches if not _DENIAL.fullmatch(found[0])]
+    denials = [(found[0].lower(), said_of(found)) for found in matches if _DENIAL.fullmatch(found[0])]
+    truths = [(found[0].lower(), said_of(found)) for found in _TRUE.finditer(submitted)]
+    if not asks_false:  # b (false) doubts b; b (not valid) and b (a is correct) too; b, a is untrue is a reason
+        doubts += [word for word, said in denials if said == "chosen"]
+        doubts += [f"not {word}" for word, said in truths if said == "back"]
+        doubts += ["true" for _, said in truths if said == "another"]
     else:  # c) false: the claim asked for; c (true), c (correct): it is no answer, or the opposite one
         own += f" {_DENIALS} a lie"
+        untrue = {word for word, said in truths if said == "back"}
         doubts = [doubt for doubt in doubts if doubt.split()[-1] not in untrue]  # c (not true): c is false
-        doubts += [found[0].lower() for found in truths if not _negated(submitted, found) and not about_another(found)]
-        doubts += ["true" for found in denials if _negated(submitted, found)]
-        doubts += ["another" for found in denials if not _negated(submitted, found) and about_another(found)]
+        doubts += [word for word, said in truths if said == "chosen"]  # c, as d holds: a reason
+        doubts += ["true" for _, said in denials if said == "back"]  # c (not false)
+        doubts += ["another" for _, said in denials if said == "another"]  # c, a is false too
     doubted = any(not re.search(rf"(?<!\w){re.escape(doubt)}(?!\w)", own) for doubt in doubts)
     if labels is None:
         named, _ = _mentioned(submitted, readings, texts)
