@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import re
 import time
-from collections.abc import Callable, Collection, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from functools import partial
@@ -300,20 +300,16 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
     in it, is judged so. ``L = … ⇒ …`` is read as working, the L, then the equation
     (:func:`_working_before_steps`), which Lagrange's equation with that L must give
     (:func:`_lagrangian_disagrees`)."""
-    if spec.shape not in ("equation", "expression") or len(submitted) > _PREMISE_LENGTH:
-        return None
-    if not _PREMISE_STEP.search(submitted):
+    if spec.shape not in ("equation", "expression"):
         return None
     started = time.monotonic()
-    names, coords = sorted(expected.names), expected.setting.coords
-    *premises, conclusion = _PREMISE_STEP.split(submitted)
+    premises = _premises(submitted, expected)
     if spec.name == "lagrangian":
-        return _premise_of_lagrangian(spec, premises, expected, timeout, bare="=" not in conclusion)
+        bare = "=" not in _PREMISE_STEP.split(submitted)[-1]
+        return _premise_of_lagrangian(spec, premises, expected, timeout, bare=bare)
     if spec.shape == "expression":
         return _premise_of_acceleration(premises, expected)
-    for premise in premises:
-        premise = premise.strip(" ,;:.")
-        read = parse_answer(premise, coords=coords, known=names)
+    for premise, read in premises:
         if not (read.ok and read.kind == "equation" and accelerations_in(read.value, expected)):
             continue
         if {symbol.name for symbol in read.symbols} - expected.names - {TIME.name}:
@@ -333,17 +329,23 @@ def _premise_undefined(spec: Kind, expected: Expected, submitted: str) -> str | 
     zero, or takes log 0), so that nothing follows from it; as typed, or None. The parser keeps only what
     follows the last step, so the premise was dropped unseen. Its other refusals are read past, as words are:
     honest working writes ẋ of a name of its own, Σ or v⃗, which the parser does not read."""
-    if spec.shape not in _GIVES or spec.name in ("integer", "number") or len(submitted) > _PREMISE_LENGTH:
+    if spec.shape not in _GIVES or spec.name in ("integer", "number"):
         return None  # a number's working is read where it is asked for (see read_number)
-    if not _PREMISE_STEP.search(submitted):
-        return None
+    return next(
+        (premise for premise, read in _premises(submitted, expected) if not read.ok and read.code in _NO_VALUE), None
+    )
+
+
+def _premises(submitted: str, expected: Expected) -> Iterator[tuple[str, ParsedAnswer]]:
+    """What stands before each step of a derivation (⇒, so), which the parser leaves behind: each as typed,
+    without the punctuation around it, and as read in the problem's names; none where there is no step, or
+    the answer is longer than is read so."""
+    if len(submitted) > _PREMISE_LENGTH or not _PREMISE_STEP.search(submitted):
+        return
     coords, names = expected.setting.coords, sorted(expected.names)
     for premise in _PREMISE_STEP.split(submitted)[:-1]:
         premise = premise.strip(" ,;:.")
-        read = parse_answer(premise, coords=coords, known=names)
-        if not read.ok and read.code in _NO_VALUE:
-            return premise
-    return None
+        yield premise, parse_answer(premise, coords=coords, known=names)
 
 
 _NO_VALUE = frozenset({"division_by_zero", "undefined_value"})  # the parser's refusals of a formula with no value
@@ -356,7 +358,7 @@ _GIVES = {
 
 
 def _premise_of_lagrangian(
-    spec: Kind, premises: list[str], expected: Expected, timeout: float, *, bare: bool
+    spec: Kind, premises: Iterable[tuple[str, ParsedAnswer]], expected: Expected, timeout: float, *, bare: bool
 ) -> str | None:
     """``L = ½ m l² θ̇² − m g l cos θ ⇒ L = ½ m l² θ̇² + m g l cos θ`` where a Lagrangian is asked: a
     Lagrangian before the step, in the problem's names, that is not one of the same motion; as typed, or
@@ -364,10 +366,7 @@ def _premise_of_lagrangian(
     may start from T. The parser keeps only what follows the last step; energies before it, ``T = …, V = …
     ⇒ L = …``, are read as lines (:func:`_energies_then_value`) and judged by :func:`_energies_disagree`."""
     started = time.monotonic()
-    coords, names = expected.setting.coords, sorted(expected.names)
-    for premise in premises:
-        premise = premise.strip(" ,;:.")
-        read = parse_answer(premise, coords=coords, known=names)
+    for premise, read in premises:
         if not read.ok:
             continue
         if read.kind == "equation" and read.value.lhs == _LAGRANGIAN:
@@ -386,7 +385,7 @@ def _premise_of_lagrangian(
     return None
 
 
-def _premise_of_acceleration(premises: list[str], expected: Expected) -> str | None:
+def _premise_of_acceleration(premises: Iterable[tuple[str, ParsedAnswer]], expected: Expected) -> str | None:
     """``2 (m₁ + m₂) ẍ = (m₁ − m₂) g, so ẍ = …`` where an acceleration is asked for (the option ``name``
     holds ``xddot``): an equation before the step, in the problem's names and with that acceleration in
     it, which the expected value does not solve; as typed, or None."""
@@ -395,9 +394,7 @@ def _premise_of_acceleration(premises: list[str], expected: Expected) -> str | N
     if len(wanted) != 1:
         return None
     acceleration = expected.setting.acceleration(wanted[0])
-    for premise in premises:
-        premise = premise.strip(" ,;:.")
-        read = parse_answer(premise, coords=expected.setting.coords, known=sorted(expected.names))
+    for premise, read in premises:
         if not (read.ok and read.kind == "equation") or {s.name for s in read.symbols} - expected.names - {TIME.name}:
             continue
         plain = expected.setting.plain(read.value.lhs - read.value.rhs)
