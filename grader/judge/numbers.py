@@ -1295,7 +1295,7 @@ def _decimal_points_inside(text: str, *, every: bool = False) -> tuple[str, tupl
     typed = [number[0] for number in found]
     return read, (
         "decimal_commas",
-        {"typed": _listed_as_typed(typed), "numbers": _joined([number.replace(",", ".") for number in typed])},
+        {"typed": _listed_as_typed(typed), "numbers": listed([number.replace(",", ".") for number in typed])},
     )
 
 
@@ -1305,11 +1305,7 @@ def _listed_as_typed(numbers: list[str]) -> str:
     >>> _listed_as_typed(["1,00", "9,81", "2,5"])
     '`1,00`, `9,81` and `2,5`'
     """
-    return _joined([f"`{number}`" for number in numbers])
-
-
-def _joined(items: list[str]) -> str:
-    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} and {items[-1]}"
+    return listed([f"`{number}`" for number in numbers])
 
 
 def _number_in(piece: str, names: Collection[str]):
