@@ -32,7 +32,7 @@ from functools import lru_cache
 import sympy
 
 from grader.judge.feedback import SHOWN, shown
-from grader.judge.units import SI_UNITS, in_units, unit_like, unit_named
+from grader.judge.units import PREFIX_WORDS, SI_UNITS, in_units, unit_like, unit_named
 from grader.judge.words import is_prose, says_otherwise
 from grader.parse import ParsedAnswer, parse_answer
 from grader.parse.messages import listed
@@ -1248,9 +1248,7 @@ def _spelled(text: str, decimal_comma: bool, unit: str) -> tuple[str, tuple]:
 # was refused, and 2.006x10^0 right only as 2.006·x₁₀⁰
 _TIMES_TEN = re.compile(r"(?<=[0-9.])\s*[xX]\s*(?=10\s*\^)")
 # 2.006 milli seconds, micro-seconds: one unit, not a number then a remark (seconds) after a word (milli)
-_PREFIX_APART = re.compile(
-    r"(?<=[0-9.\s])(femto|pico|nano|micro|milli|centi|deci|kilo|mega|giga|tera)[\s-]+(secs?|seconds?)\b", re.I
-)
+_PREFIX_APART = re.compile(rf"(?<=[0-9.\s])({'|'.join(PREFIX_WORDS)})[\s-]+(secs?|seconds?)\b", re.I)
 _TEX_UNIT = re.compile(
     r"([0-9.])\s*(?:~|\\[,;:! ])?\s*(\\mu\s*|μ)?\\(?:text|textrm|mathrm|rm|mbox)\{\s*([A-Za-z/^0-9 .\\-]+?)\s*\}"
 )

@@ -3,6 +3,7 @@
 Contents:
     DIMENSIONS                   a dimension's name → its powers of mass, length and time
     QUANTITY_WORDS               a quantity's word (period) → its dimension's name
+    PREFIX_WORDS                 a unit prefix's word (milli) → its symbol (m)
     units_of(expr, setting)      the powers of an expression in plain symbols; None where unknown
     Mixed                        raised where terms of a sum, or a function's argument, disagree
     units_mistake(expected, value)  what a wrong answer's units say, as a feedback key and details
@@ -36,6 +37,7 @@ if TYPE_CHECKING:  # setting.py reads DIMENSIONS from here
 
 __all__ = [
     "DIMENSIONS",
+    "PREFIX_WORDS",
     "QUANTITY_WORDS",
     "SI_UNITS",
     "Mixed",
@@ -238,11 +240,11 @@ _SPELLED = {
     **dict.fromkeys(("year", "years", "yr", "yrs"), _si_unit(31557600, "time")),  # a Julian year
 }
 # and the prefixed seconds spelled or cut short: 2.006 nsec, nanosec, picoseconds, millis were graded as 2.006 s
-_PREFIX_WORDS = {"femto": "f", "pico": "p", "nano": "n", "micro": "mu", "milli": "m", "centi": "c", "deci": "d",
+PREFIX_WORDS = {"femto": "f", "pico": "p", "nano": "n", "micro": "mu", "milli": "m", "centi": "c", "deci": "d",
                  "kilo": "k", "mega": "M", "giga": "G", "tera": "T"}  # fmt: skip
 _SPELLED |= {
     word + ending: SI_UNITS[prefix + "s"]
-    for word, prefix in _PREFIX_WORDS.items()
+    for word, prefix in PREFIX_WORDS.items()
     for ending in ("sec", "secs", "second", "seconds")
 }
 _SPELLED |= {
@@ -269,7 +271,7 @@ def unit_like(word: str) -> bool:
     number: the start of a unit's name (``sec``, ``mill``), a word for seconds (``flubsec``), or one with
     a prefix (``millisex``). Graded as the bare number, 2.006 of such a unit was right."""
     word = word.lower().rstrip(".")
-    if word in _UNIT_STEMS or word.endswith(_TIME_ENDINGS) or word.startswith(tuple(_PREFIX_WORDS)):
+    if word in _UNIT_STEMS or word.endswith(_TIME_ENDINGS) or word.startswith(tuple(PREFIX_WORDS)):
         return True
     return len(word) >= 3 and any(stem.startswith(word) for stem in _UNIT_STEMS)
 
