@@ -300,8 +300,8 @@ def _premise_said_wrong(spec: Kind, expected: Expected, submitted: str, timeout:
     in it, is judged so. ``L = … ⇒ …`` is read as working, the L, then the equation
     (:func:`_working_before_steps`), which Lagrange's equation with that L must give
     (:func:`_lagrangian_disagrees`)."""
-    if spec.shape not in ("equation", "expression"):
-        return None
+    if spec.shape not in ("equation", "expression") or not _PREMISE_STEP.search(submitted):
+        return None  # as nearly every answer: no step, and nothing to split (see _premises)
     started = time.monotonic()
     premises = _premises(submitted, expected)
     if spec.name == "lagrangian":
